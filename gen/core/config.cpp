@@ -1,0 +1,319 @@
+#include "config.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace fpstereo {
+namespace {
+
+[[noreturn]] void reject(const std::string& name, const std::string& value, const std::string& allowed) {
+  throw ConfigError(name + " = " + value + ": " + allowed);
+}
+
+int parse_int(const std::string& name, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || v < -1000000000L || v > 1000000000L)
+    reject(name, "'" + text + "'", "expected an integer");
+  return int(v);
+}
+
+bool parse_bool(const std::string& name, const std::string& text) {
+  if (text == "on" || text == "true" || text == "1" || text == "yes") return true;
+  if (text == "off" || text == "false" || text == "0" || text == "no") return false;
+  reject(name, "'" + text + "'", "expected on or off");
+}
+
+// "off" is accepted wherever 0 means off.
+int parse_int_or_off(const std::string& name, const std::string& text) {
+  return text == "off" ? 0 : parse_int(name, text);
+}
+
+const std::vector<std::pair<std::string, CostFunction>> kCostNames = {
+    {"census", CostFunction::Census}, {"rank", CostFunction::Rank}, {"sad", CostFunction::Sad},
+    {"zsad", CostFunction::Zsad},     {"shd", CostFunction::Shd}};
+const std::vector<std::pair<std::string, LrCheck>> kLrNames = {
+    {"none", LrCheck::None}, {"lr1", LrCheck::Lr1}, {"lr2", LrCheck::Lr2}};
+
+template <class E>
+E parse_enum(const std::string& name, const std::string& text,
+             const std::vector<std::pair<std::string, E>>& table) {
+  std::string lower = text;
+  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+  for (const auto& [n, e] : table)
+    if (n == lower) return e;
+  std::string allowed = "expected one of";
+  for (const auto& entry : table) allowed += " " + entry.first;
+  reject(name, "'" + text + "'", allowed);
+}
+
+template <class E>
+std::string enum_name(E value, const std::vector<std::pair<std::string, E>>& table) {
+  for (const auto& [n, e] : table)
+    if (e == value) return n;
+  return "?";
+}
+
+unsigned parse_paths(const std::string& name, const std::string& text) {
+  if (text == "all") return kAllPaths;
+  unsigned mask = 0;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    item.erase(std::remove_if(item.begin(), item.end(), ::isspace), item.end());
+    bool found = false;
+    for (const auto& p : path_directions())
+      if (item == std::to_string(p.angle)) {
+        if (mask & p.mask) reject(name, "'" + text + "'", "each angle at most once");
+        mask |= p.mask;
+        found = true;
+      }
+    if (!found) reject(name, "'" + text + "'", "expected a comma-separated subset of 0,45,90,135");
+  }
+  if (mask == 0) reject(name, "'" + text + "'", "expected a non-empty subset of 0,45,90,135");
+  return mask;
+}
+
+void check_range(const std::string& name, int v, int lo, int hi, const std::string& what = "") {
+  if (v < lo || v > hi)
+    reject(name, std::to_string(v),
+           "must be " + (what.empty() ? "" : what + " ") + "in " + std::to_string(lo) + " .. " +
+               std::to_string(hi));
+}
+
+void check_odd_window(const std::string& name, int v, int lo, int hi) {
+  if (v < lo || v > hi || v % 2 == 0)
+    reject(name, std::to_string(v),
+           "must be an odd window side from " + std::to_string(lo) + " to " + std::to_string(hi));
+}
+
+}  // namespace
+
+const std::vector<PathDirection>& path_directions() {
+  static const std::vector<PathDirection> dirs = {
+      {kPath0, 0, -1, 0}, {kPath45, 45, -1, -1}, {kPath90, 90, 0, -1}, {kPath135, 135, 1, -1}};
+  return dirs;
+}
+
+int StereoConfig::path_count() const {
+  int n = 0;
+  for (const auto& p : path_directions()) n += (paths & p.mask) ? 1 : 0;
+  return n;
+}
+
+bool StereoConfig::operator==(const StereoConfig& o) const {
+  return describe(*this) == describe(o);
+}
+
+std::string to_string(CostFunction c) { return enum_name(c, kCostNames); }
+std::string to_string(LrCheck l) { return enum_name(l, kLrNames); }
+
+std::string paths_to_string(unsigned paths) {
+  std::string s;
+  for (const auto& p : path_directions())
+    if (paths & p.mask) s += (s.empty() ? "" : ",") + std::to_string(p.angle);
+  return s;
+}
+
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs = {
+      {"width", "image width in pixels (the maximum the hardware accepts)",
+       [](StereoConfig& c, const std::string& v) { c.width = parse_int("width", v); },
+       [](const StereoConfig& c) { return std::to_string(c.width); }},
+      {"height", "image height in pixels (the maximum the hardware accepts)",
+       [](StereoConfig& c, const std::string& v) { c.height = parse_int("height", v); },
+       [](const StereoConfig& c) { return std::to_string(c.height); }},
+      {"cost", "matching cost: census, rank, sad, zsad or shd",
+       [](StereoConfig& c, const std::string& v) { c.cost = parse_enum("cost", v, kCostNames); },
+       [](const StereoConfig& c) { return to_string(c.cost); }},
+      {"window", "cost window side: odd, 3 to 11",
+       [](StereoConfig& c, const std::string& v) { c.window = parse_int("window", v); },
+       [](const StereoConfig& c) { return std::to_string(c.window); }},
+      {"shd-window", "SHD: side of the window Hamming distances are summed over: odd, 1 to 11",
+       [](StereoConfig& c, const std::string& v) { c.shd_window = parse_int("shd-window", v); },
+       [](const StereoConfig& c) { return std::to_string(c.shd_window); }},
+      {"dmax", "disparity range (disparities 0 .. dmax-1): 16 to 256, a multiple of uf",
+       [](StereoConfig& c, const std::string& v) { c.dmax = parse_int("dmax", v); },
+       [](const StereoConfig& c) { return std::to_string(c.dmax); }},
+      {"uf", "unroll factor: disparities per clock, a divisor of dmax",
+       [](StereoConfig& c, const std::string& v) { c.uf = parse_int("uf", v); },
+       [](const StereoConfig& c) { return std::to_string(c.uf); }},
+      {"paths", "aggregation paths: comma-separated subset of 0,45,90,135, or all",
+       [](StereoConfig& c, const std::string& v) { c.paths = parse_paths("paths", v); },
+       [](const StereoConfig& c) { return paths_to_string(c.paths); }},
+      {"p1", "SGM penalty for a disparity change of 1: 0 to 255, at most p2",
+       [](StereoConfig& c, const std::string& v) { c.p1 = parse_int("p1", v); },
+       [](const StereoConfig& c) { return std::to_string(c.p1); }},
+      {"p2", "SGM penalty for a larger disparity change: p1 to 4095",
+       [](StereoConfig& c, const std::string& v) { c.p2 = parse_int("p2", v); },
+       [](const StereoConfig& c) { return std::to_string(c.p2); }},
+      {"lr", "left-right check: none, lr1 (reuse base costs) or lr2 (match side from scratch)",
+       [](StereoConfig& c, const std::string& v) { c.lr = parse_enum("lr", v, kLrNames); },
+       [](const StereoConfig& c) { return to_string(c.lr); }},
+      {"lr-threshold", "largest |D_base - D_match| that passes the left-right check: 0 to 15",
+       [](StereoConfig& c, const std::string& v) { c.lr_threshold = parse_int("lr-threshold", v); },
+       [](const StereoConfig& c) { return std::to_string(c.lr_threshold); }},
+      {"uniqueness", "uniqueness ratio in percent, 0 or off to disable: 0 to 99",
+       [](StereoConfig& c, const std::string& v) { c.uniqueness = parse_int_or_off("uniqueness", v); },
+       [](const StereoConfig& c) { return std::to_string(c.uniqueness); }},
+      {"median", "median filter window: 0 or off, 3, 5 or 7",
+       [](StereoConfig& c, const std::string& v) { c.median = parse_int_or_off("median", v); },
+       [](const StereoConfig& c) { return std::to_string(c.median); }},
+      {"gap-interp", "fill invalid pixels along the row: on or off",
+       [](StereoConfig& c, const std::string& v) { c.gap_interpolation = parse_bool("gap-interp", v); },
+       [](const StereoConfig& c) { return std::string(c.gap_interpolation ? "on" : "off"); }},
+  };
+  return specs;
+}
+
+void set_param(StereoConfig& cfg, const std::string& name, const std::string& value) {
+  for (const auto& spec : param_specs())
+    if (spec.name == name) return spec.set(cfg, value);
+  throw ConfigError("unknown parameter '" + name + "'");
+}
+
+void validate(const StereoConfig& c) {
+  check_range("width", c.width, 8, 8192);
+  check_range("height", c.height, 4, 8192);
+  check_odd_window("window", c.window, 3, 11);
+  if (c.cost == CostFunction::Shd) check_odd_window("shd-window", c.shd_window, 1, 11);
+  check_range("dmax", c.dmax, 16, 256);
+  if (c.uf < 1 || c.uf > c.dmax || c.dmax % c.uf != 0)
+    reject("uf", std::to_string(c.uf), "must divide dmax (" + std::to_string(c.dmax) + ")");
+  if (c.dmax > c.width)
+    reject("dmax", std::to_string(c.dmax), "must not exceed the image width (" + std::to_string(c.width) + ")");
+  if ((c.paths & ~unsigned(kAllPaths)) != 0 || c.paths == 0)
+    reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135");
+  check_range("p1", c.p1, 0, 255);
+  check_range("p2", c.p2, 0, 4095);
+  if (c.p1 > c.p2)
+    reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
+  check_range("lr-threshold", c.lr_threshold, 0, 15);
+  check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
+  if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
+    reject("median", std::to_string(c.median), "expected 0 (off), 3, 5 or 7");
+}
+
+std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4"}; }
+
+StereoConfig preset(const std::string& name) {
+  // All presets: 4 paths, P1 = 7, P2 = 86, median 5, 1242x375 (the defaults), as in the paper.
+  // S0/S1 are the paper's xfOpenCV baselines; their parameters equal C0/C1, only the
+  // implementation in the paper differs.
+  StereoConfig c;
+  auto census = [&](int window, int dmax, int uf) {
+    c.window = window;
+    c.dmax = dmax;
+    c.uf = uf;
+  };
+  if (name == "S0" || name == "C0") census(5, 64, 16);
+  else if (name == "S1" || name == "C1") census(5, 128, 32);
+  else if (name == "C2") census(7, 128, 32);
+  else if (name == "C3") { census(7, 128, 32); c.lr = LrCheck::Lr1; }
+  else if (name == "C4") { census(7, 128, 32); c.lr = LrCheck::Lr2; }
+  else {
+    std::string allowed = "expected one of";
+    for (const auto& n : preset_names()) allowed += " " + n;
+    reject("preset", "'" + name + "'", allowed);
+  }
+  return c;
+}
+
+namespace {
+
+std::string json_value_text(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
+  if (v.is_number_integer()) return std::to_string(v.get<long long>());
+  if (v.is_array()) {
+    std::string s;
+    for (const auto& e : v) s += (s.empty() ? "" : ",") + json_value_text(e);
+    return s;
+  }
+  return v.dump();
+}
+
+std::string toml_value_text(const toml::node& v) {
+  if (auto s = v.as_string()) return s->get();
+  if (auto b = v.as_boolean()) return b->get() ? "on" : "off";
+  if (auto i = v.as_integer()) return std::to_string(i->get());
+  if (auto a = v.as_array()) {
+    std::string s;
+    for (const auto& e : *a) s += (s.empty() ? "" : ",") + toml_value_text(e);
+    return s;
+  }
+  if (auto f = v.as_floating_point()) return std::to_string(f->get());
+  return "(a table or date)";
+}
+
+void apply_entries(StereoConfig& cfg, const std::vector<std::pair<std::string, std::string>>& entries,
+                   const std::string& path) {
+  for (const auto& [key, value] : entries)
+    if (key == "preset") cfg = preset(value);
+  for (const auto& [key, value] : entries) {
+    if (key == "preset") continue;
+    bool known = std::any_of(param_specs().begin(), param_specs().end(),
+                             [&](const ParamSpec& s) { return s.name == key; });
+    if (!known) throw ConfigError("unknown parameter '" + key + "' in " + path);
+    set_param(cfg, key, value);
+  }
+}
+
+}  // namespace
+
+void apply_config_file(StereoConfig& cfg, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError("config file '" + path + "': cannot be read");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::vector<std::pair<std::string, std::string>> entries;
+  auto ends_with = [&](const std::string& suffix) {
+    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if (ends_with(".json")) {
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(buf.str());
+    } catch (const nlohmann::json::exception& e) {
+      throw ConfigError("config file '" + path + "': not valid JSON (" + e.what() + ")");
+    }
+    if (!j.is_object()) throw ConfigError("config file '" + path + "': expected a JSON object");
+    for (const auto& [key, value] : j.items()) entries.emplace_back(key, json_value_text(value));
+  } else if (ends_with(".toml")) {
+    toml::table t;
+    try {
+      t = toml::parse(buf.str(), path);
+    } catch (const toml::parse_error& e) {
+      throw ConfigError("config file '" + path + "': not valid TOML (" + std::string(e.description()) + ")");
+    }
+    for (const auto& [key, value] : t) entries.emplace_back(std::string(key.str()), toml_value_text(value));
+  } else {
+    throw ConfigError("config file '" + path + "': expected a .json or .toml file");
+  }
+  apply_entries(cfg, entries, path);
+}
+
+std::string describe(const StereoConfig& cfg, const std::string& line_prefix) {
+  std::string s;
+  for (const auto& spec : param_specs()) s += line_prefix + spec.name + " = " + spec.get(cfg) + "\n";
+  return s;
+}
+
+std::string config_tag(const StereoConfig& cfg) {
+  // FNV-1a over the full description: stable across runs and platforms.
+  uint32_t h = 2166136261u;
+  for (char ch : describe(cfg)) h = (h ^ uint8_t(ch)) * 16777619u;
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08x", h);
+  return "fps_" + to_string(cfg.cost) + std::to_string(cfg.window) + "_d" + std::to_string(cfg.dmax) +
+         "u" + std::to_string(cfg.uf) + "_" + std::string(hex, 6);
+}
+
+}  // namespace fpstereo

@@ -1,0 +1,95 @@
+// StereoConfig: the single source of truth for every pipeline parameter.
+// The golden model, the emitters, the test benches and the CLIs all read it.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fpstereo {
+
+enum class CostFunction { Census, Rank, Sad, Zsad, Shd };
+enum class LrCheck { None, Lr1, Lr2 };
+
+// Aggregation path bit masks. The angle names the direction the path comes from in raster
+// order: 0 = from the left (x-1, y), 45 = from the upper left (x-1, y-1),
+// 90 = from above (x, y-1), 135 = from the upper right (x+1, y-1).
+enum PathMask : unsigned {
+  kPath0 = 1u << 0,
+  kPath45 = 1u << 1,
+  kPath90 = 1u << 2,
+  kPath135 = 1u << 3,
+  kAllPaths = kPath0 | kPath45 | kPath90 | kPath135,
+};
+
+struct PathDirection {
+  PathMask mask;
+  int angle;
+  int dx, dy;  // offset from a pixel to its predecessor on the path
+};
+// The four paths in a fixed order; every model iterates them in this order.
+const std::vector<PathDirection>& path_directions();
+
+// Defaults are FP-Stereo's C2 configuration (census 7x7, dmax 128, uf 32, 4 paths,
+// P1 = 7, P2 = 86, median 5, KITTI image size).
+struct StereoConfig {
+  int width = 1242;
+  int height = 375;
+  CostFunction cost = CostFunction::Census;
+  int window = 7;      // cost window side (odd)
+  int shd_window = 5;  // SHD only: side of the window the Hamming distances are summed over
+  int dmax = 128;      // disparities 0 .. dmax-1
+  int uf = 32;         // disparities computed per clock (hardware unroll factor)
+  unsigned paths = kAllPaths;
+  int p1 = 7;
+  int p2 = 86;
+  LrCheck lr = LrCheck::None;
+  int lr_threshold = 1;  // max |D_b - D_m| that passes the left-right check
+  int uniqueness = 0;    // percent; 0 = off
+  int median = 5;        // median window side; 0 = off
+  bool gap_interpolation = false;
+
+  int path_count() const;
+  bool operator==(const StereoConfig&) const;
+  bool operator!=(const StereoConfig& o) const { return !(*this == o); }
+};
+
+// An invalid parameter or combination. what() is one line naming the parameter, the value
+// and what is allowed.
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws ConfigError for the first invalid value or combination.
+void validate(const StereoConfig& cfg);
+
+// Every parameter once: its name (the same as a command-line flag without "--" and as a
+// config-file key), a help line, and how to set it from text and print it as text.
+struct ParamSpec {
+  std::string name;
+  std::string help;
+  void (*set)(StereoConfig&, const std::string& value);  // throws ConfigError on bad syntax
+  std::string (*get)(const StereoConfig&);
+};
+const std::vector<ParamSpec>& param_specs();
+void set_param(StereoConfig& cfg, const std::string& name, const std::string& value);
+
+// Named presets reproducing the FP-Stereo paper's table (S0, S1, C0 .. C4).
+std::vector<std::string> preset_names();
+StereoConfig preset(const std::string& name);  // throws ConfigError for an unknown name
+
+// Applies a JSON (.json) or TOML (.toml) file whose keys are parameter names (and optionally
+// "preset", applied first). Throws ConfigError on unknown keys, bad values or unreadable files.
+void apply_config_file(StereoConfig& cfg, const std::string& path);
+
+std::string to_string(CostFunction c);
+std::string to_string(LrCheck l);
+std::string paths_to_string(unsigned paths);
+// "name = value" for every parameter, one per line, in param_specs() order.
+std::string describe(const StereoConfig& cfg, const std::string& line_prefix = "");
+// Short identifier derived from the configuration (used for module prefixes and caches).
+std::string config_tag(const StereoConfig& cfg);
+
+}  // namespace fpstereo

@@ -1,0 +1,359 @@
+// Naive reference model: a literal, slow transcription of docs/semantics.md.
+// Every quantity is computed directly from its defining formula (full cost volume, full
+// path-cost volumes, window loops everywhere). It shares no code with the golden model on
+// purpose: the two are compared pixel for pixel by the tests.
+#include "naive_model.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+#include "widths.hpp"
+
+namespace fpstereo {
+namespace {
+
+// Internal marker for an invalid disparity (the output word is chosen only at the very end).
+constexpr int64_t kInvalid = -1;
+
+// Zero-extended pixel access (semantics section 1): every window reads 0 outside the image.
+int64_t pixel(const GrayImage& img, int x, int y) {
+  if (!img.contains(x, y)) return 0;
+  return int64_t(img.at(x, y));
+}
+
+// Everything the cost functions need from one image: the raw pixels and its transforms.
+struct Side {
+  const GrayImage* img = nullptr;
+  int width = 0;
+  int height = 0;
+  std::vector<std::vector<bool>> census;  // per pixel, N*N-1 bits in window raster order
+  std::vector<int64_t> rank;              // per pixel
+  std::vector<int64_t> mean;              // per pixel, floor(window sum / N^2)
+
+  bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
+  size_t index(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+
+  // Census code, all zeros outside the image (needed by SHD's summation window).
+  std::vector<bool> census_at(int x, int y, size_t bits) const {
+    if (!inside(x, y)) return std::vector<bool>(bits, false);
+    return census[index(x, y)];
+  }
+  int64_t rank_at(int x, int y) const { return inside(x, y) ? rank[index(x, y)] : 0; }
+  int64_t mean_at(int x, int y) const { return inside(x, y) ? mean[index(x, y)] : 0; }
+};
+
+Side make_side(const GrayImage& img, int window) {
+  const int r = (window - 1) / 2;
+  Side s;
+  s.img = &img;
+  s.width = img.width;
+  s.height = img.height;
+  const size_t n = size_t(img.width) * size_t(img.height);
+  s.census.assign(n, std::vector<bool>());
+  s.rank.assign(n, 0);
+  s.mean.assign(n, 0);
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      const int64_t centre = pixel(img, x, y);
+      std::vector<bool> code;
+      int64_t rank = 0;
+      int64_t sum = 0;
+      // Window positions in raster order; the centre contributes to the sum only.
+      for (int oy = -r; oy <= r; ++oy) {
+        for (int ox = -r; ox <= r; ++ox) {
+          const int64_t q = pixel(img, x + ox, y + oy);
+          sum += q;
+          if (ox == 0 && oy == 0) continue;
+          code.push_back(centre > q);  // CT bit: 1 iff I(p) > I(q)
+          if (q < centre) ++rank;      // RT: #{q : I(q) < I(p)}
+        }
+      }
+      s.census[s.index(x, y)] = code;
+      s.rank[s.index(x, y)] = rank;
+      // Sum is non-negative, so integer division is the floor.
+      s.mean[s.index(x, y)] = sum / (int64_t(window) * int64_t(window));
+    }
+  }
+  return s;
+}
+
+int64_t hamming(const std::vector<bool>& a, const std::vector<bool>& b) {
+  int64_t h = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i] != b[i]) ++h;
+  return h;
+}
+
+// Cost between pixel (ax, y) of side `a` (playing the base role) and pixel (bx, y) of side `b`
+// (playing the match role), straight from the table of semantics section 2. The caller has
+// already handled the out-of-image match case (Cmax). The base-side volume calls this with
+// (B, M, x, x-d); the LR2 match-side volume with (M, B, x', x'+d).
+int64_t pair_cost(const StereoConfig& cfg, const Side& a, const Side& b, int ax, int bx, int y) {
+  const int r = (cfg.window - 1) / 2;
+  const size_t bits = size_t(cfg.window) * size_t(cfg.window) - 1;
+  switch (cfg.cost) {
+    case CostFunction::Census:
+      return hamming(a.census_at(ax, y, bits), b.census_at(bx, y, bits));
+    case CostFunction::Rank:
+      return std::llabs(a.rank_at(ax, y) - b.rank_at(bx, y));
+    case CostFunction::Sad: {
+      int64_t c = 0;
+      for (int oy = -r; oy <= r; ++oy)
+        for (int ox = -r; ox <= r; ++ox)
+          c += std::llabs(pixel(*a.img, ax + ox, y + oy) - pixel(*b.img, bx + ox, y + oy));
+      return c;
+    }
+    case CostFunction::Zsad: {
+      const int64_t ma = a.mean_at(ax, y);
+      const int64_t mb = b.mean_at(bx, y);
+      int64_t c = 0;
+      // Positions outside the image read 0 and still have the mean subtracted.
+      for (int oy = -r; oy <= r; ++oy)
+        for (int ox = -r; ox <= r; ++ox)
+          c += std::llabs((pixel(*a.img, ax + ox, y + oy) - ma) -
+                          (pixel(*b.img, bx + ox, y + oy) - mb));
+      return c;
+    }
+    case CostFunction::Shd: {
+      const int k = (cfg.shd_window - 1) / 2;
+      const int shift = bx - ax;  // q in a's window pairs with q + shift in b
+      int64_t c = 0;
+      for (int qy = y - k; qy <= y + k; ++qy)
+        for (int qx = ax - k; qx <= ax + k; ++qx)
+          c += hamming(a.census_at(qx, qy, bits), b.census_at(qx + shift, qy, bits));
+      return c;
+    }
+  }
+  return 0;  // unreachable: every enumerator is handled above
+}
+
+// A W x H x D volume of int64 values.
+struct Volume {
+  int width = 0, height = 0, depth = 0;
+  std::vector<int64_t> v;
+  Volume(int w, int h, int d)
+      : width(w), height(h), depth(d), v(size_t(w) * size_t(h) * size_t(d), 0) {}
+  int64_t& at(int x, int y, int d) {
+    return v[(size_t(y) * size_t(width) + size_t(x)) * size_t(depth) + size_t(d)];
+  }
+  int64_t at(int x, int y, int d) const {
+    return v[(size_t(y) * size_t(width) + size_t(x)) * size_t(depth) + size_t(d)];
+  }
+};
+
+// Base-side matching cost: base pixel (x, y) against match pixel (x - d, y).
+Volume base_costs(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
+  Volume c(base.width, base.height, cfg.dmax);
+  for (int y = 0; y < base.height; ++y)
+    for (int x = 0; x < base.width; ++x)
+      for (int d = 0; d < cfg.dmax; ++d)
+        c.at(x, y, d) = (x - d < 0) ? cmax : pair_cost(cfg, base, match, x, x - d, y);
+  return c;
+}
+
+// LR2 match-side cost: match pixel (x', y) against base pixel (x' + d, y), roles swapped.
+Volume match_costs(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
+  Volume c(match.width, match.height, cfg.dmax);
+  for (int y = 0; y < match.height; ++y)
+    for (int x = 0; x < match.width; ++x)
+      for (int d = 0; d < cfg.dmax; ++d)
+        c.at(x, y, d) =
+            (x + d >= match.width) ? cmax : pair_cost(cfg, match, base, x, x + d, y);
+  return c;
+}
+
+// One path's L_r volume by explicit recursion (section 3). Raster order suffices because
+// every predecessor (x-1,y), (x-1,y-1), (x,y-1), (x+1,y-1) is earlier in raster order.
+Volume path_costs(const StereoConfig& cfg, const Volume& c, int dx, int dy) {
+  const int w = c.width, h = c.height, D = c.depth;
+  Volume l(w, h, D);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int px = x + dx, py = y + dy;
+      const bool start = px < 0 || py < 0 || px >= w || py >= h;
+      if (start) {
+        for (int d = 0; d < D; ++d) l.at(x, y, d) = c.at(x, y, d);
+        continue;
+      }
+      int64_t m = std::numeric_limits<int64_t>::max();
+      for (int i = 0; i < D; ++i) m = std::min(m, l.at(px, py, i));
+      for (int d = 0; d < D; ++d) {
+        int64_t best = l.at(px, py, d);
+        if (d >= 1) best = std::min(best, l.at(px, py, d - 1) + int64_t(cfg.p1));
+        if (d <= D - 2) best = std::min(best, l.at(px, py, d + 1) + int64_t(cfg.p1));
+        best = std::min(best, m + int64_t(cfg.p2));
+        l.at(x, y, d) = c.at(x, y, d) + best - m;
+      }
+    }
+  }
+  return l;
+}
+
+// S = sum of L_r over the enabled paths.
+Volume aggregate(const StereoConfig& cfg, const Volume& c) {
+  Volume s(c.width, c.height, c.depth);
+  for (const PathDirection& p : path_directions()) {
+    if ((cfg.paths & p.mask) == 0) continue;
+    const Volume l = path_costs(cfg, c, p.dx, p.dy);
+    for (size_t i = 0; i < s.v.size(); ++i) s.v[i] += l.v[i];
+  }
+  return s;
+}
+
+// Smallest d with the minimal S(x, y, d) (ties to the smaller disparity).
+int64_t wta(const Volume& s, int x, int y) {
+  int64_t best_d = 0;
+  for (int d = 1; d < s.depth; ++d)
+    if (s.at(x, y, d) < s.at(x, y, int(best_d))) best_d = d;
+  return best_d;
+}
+
+// A disparity map during refinement: a disparity per pixel, or kInvalid.
+struct DispMap {
+  int width = 0, height = 0;
+  std::vector<int64_t> v;
+  DispMap(int w, int h) : width(w), height(h), v(size_t(w) * size_t(h), kInvalid) {}
+  int64_t& at(int x, int y) { return v[size_t(y) * size_t(width) + size_t(x)]; }
+  int64_t at(int x, int y) const { return v[size_t(y) * size_t(width) + size_t(x)]; }
+};
+
+// Section 4: invalid iff S2 * (100 - u) < S1 * 100, S2 = min over |d - D| >= 2.
+void apply_uniqueness(const StereoConfig& cfg, const Volume& sum, DispMap& disp) {
+  const int64_t u = cfg.uniqueness;
+  const int64_t none = std::numeric_limits<int64_t>::max();
+  for (int y = 0; y < disp.height; ++y) {
+    for (int x = 0; x < disp.width; ++x) {
+      const int64_t D = disp.at(x, y);
+      const int64_t s1 = sum.at(x, y, int(D));
+      // dmax >= 16 (validate), so the set |d - D| >= 2 is never empty; if it were, S2 is
+      // taken as infinite and the pixel stays valid.
+      int64_t s2 = none;
+      for (int d = 0; d < sum.depth; ++d)
+        if (std::llabs(int64_t(d) - D) >= 2) s2 = std::min(s2, sum.at(x, y, d));
+      if (s2 != none && s2 * (100 - u) < s1 * 100) disp.at(x, y) = kInvalid;
+    }
+  }
+}
+
+// LR1: Dm(x') = smallest d minimising S(x' + d, y, d) over d with x' + d < W.
+DispMap lr1_match_disparities(const Volume& sum) {
+  DispMap dm(sum.width, sum.height);
+  for (int y = 0; y < sum.height; ++y) {
+    for (int xm = 0; xm < sum.width; ++xm) {
+      int best_d = 0;  // d = 0 always qualifies since xm < W
+      for (int d = 1; d < sum.depth && xm + d < sum.width; ++d)
+        if (sum.at(xm + d, y, d) < sum.at(xm + best_d, y, best_d)) best_d = d;
+      dm.at(xm, y) = best_d;
+    }
+  }
+  return dm;
+}
+
+// LR2: match-side cost with the roles swapped, its own aggregation, plain WTA.
+DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match,
+                              int64_t cmax) {
+  const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax));
+  DispMap dm(msum.width, msum.height);
+  for (int y = 0; y < msum.height; ++y)
+    for (int xm = 0; xm < msum.width; ++xm) dm.at(xm, y) = wta(msum, xm, y);
+  return dm;
+}
+
+// Section 5: compare each still-valid base disparity with Dm at x' = x - D.
+void apply_lr_check(const StereoConfig& cfg, const DispMap& dm, DispMap& disp) {
+  for (int y = 0; y < disp.height; ++y) {
+    for (int x = 0; x < disp.width; ++x) {
+      const int64_t D = disp.at(x, y);
+      if (D == kInvalid) continue;
+      const int64_t xm = int64_t(x) - D;
+      if (xm < 0 || std::llabs(D - dm.at(int(xm), y)) > int64_t(cfg.lr_threshold))
+        disp.at(x, y) = kInvalid;
+    }
+  }
+}
+
+// Section 6: lower median of the valid in-image window values; invalid centres stay invalid.
+DispMap median_filter(const DispMap& in, int side) {
+  const int k = (side - 1) / 2;
+  DispMap out(in.width, in.height);
+  for (int y = 0; y < in.height; ++y) {
+    for (int x = 0; x < in.width; ++x) {
+      if (in.at(x, y) == kInvalid) continue;  // filling holes is gap interpolation's job
+      std::vector<int64_t> values;
+      for (int qy = y - k; qy <= y + k; ++qy)
+        for (int qx = x - k; qx <= x + k; ++qx)
+          if (qx >= 0 && qy >= 0 && qx < in.width && qy < in.height && in.at(qx, qy) != kInvalid)
+            values.push_back(in.at(qx, qy));
+      std::sort(values.begin(), values.end());  // non-empty: the centre is valid
+      out.at(x, y) = values[(values.size() - 1) / 2];
+    }
+  }
+  return out;
+}
+
+// Section 7: fill each maximal invalid run of a row from the valid pixels bounding it.
+void gap_interpolate(DispMap& disp) {
+  for (int y = 0; y < disp.height; ++y) {
+    int x = 0;
+    while (x < disp.width) {
+      if (disp.at(x, y) != kInvalid) {
+        ++x;
+        continue;
+      }
+      const int run_start = x;
+      while (x < disp.width && disp.at(x, y) == kInvalid) ++x;
+      const int run_end = x;  // one past the run
+      const bool has_left = run_start > 0;
+      const bool has_right = run_end < disp.width;
+      if (!has_left && !has_right) continue;  // whole row invalid: stays invalid
+      int64_t fill = 0;
+      if (has_left && has_right)
+        fill = std::min(disp.at(run_start - 1, y), disp.at(run_end, y));
+      else if (has_left)
+        fill = disp.at(run_start - 1, y);
+      else
+        fill = disp.at(run_end, y);
+      for (int i = run_start; i < run_end; ++i) disp.at(i, y) = fill;
+    }
+  }
+}
+
+}  // namespace
+
+DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right) {
+  // The run's size is the images' size (the caller checked left and right agree).
+  const int W = left.width, H = left.height;
+  const Widths widths = derive_widths(cfg);
+  const int64_t cmax = int64_t(widths.cost_max);
+
+  const Side base = make_side(left, cfg.window);
+  const Side match = make_side(right, cfg.window);
+
+  // Cost, aggregation, winner-take-all.
+  const Volume sum = aggregate(cfg, base_costs(cfg, base, match, cmax));
+  DispMap disp(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) disp.at(x, y) = wta(sum, x, y);
+
+  if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
+
+  if (cfg.lr == LrCheck::Lr1) apply_lr_check(cfg, lr1_match_disparities(sum), disp);
+  if (cfg.lr == LrCheck::Lr2)
+    apply_lr_check(cfg, lr2_match_disparities(cfg, base, match, cmax), disp);
+
+  if (cfg.median > 0) disp = median_filter(disp, cfg.median);
+
+  if (cfg.gap_interpolation) gap_interpolate(disp);
+
+  // Output words: the disparity, or the invalid flag alone.
+  DisparityImage out(W, H, widths.invalid_word);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (disp.at(x, y) != kInvalid) out.at(x, y) = uint16_t(disp.at(x, y));
+  return out;
+}
+
+}  // namespace fpstereo

@@ -1,0 +1,50 @@
+#include "widths.hpp"
+
+namespace fpstereo {
+
+int bits_for(uint64_t max_value) {
+  int bits = 1;
+  while (bits < 64 && (max_value >> bits) != 0) ++bits;
+  return bits;
+}
+
+Widths derive_widths(const StereoConfig& cfg) {
+  Widths w;
+  const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);  // pixels in the cost window
+  const uint64_t m = uint64_t(cfg.shd_window) * uint64_t(cfg.shd_window);
+  switch (cfg.cost) {
+    case CostFunction::Census:
+      w.code = int(n - 1);
+      w.cost_max = n - 1;
+      break;
+    case CostFunction::Rank:
+      w.code = bits_for(n - 1);
+      w.cost_max = n - 1;
+      break;
+    case CostFunction::Sad:
+      w.code = w.pixel;
+      w.cost_max = 255 * n;
+      break;
+    case CostFunction::Zsad:
+      // sum |u_i - delta| with |delta - mean(u)| < 1 is below 255 n - 255/n + n <= 256 n.
+      w.code = w.pixel;
+      w.cost_max = 256 * n;
+      break;
+    case CostFunction::Shd:
+      w.code = int(n - 1);
+      w.cost_max = (n - 1) * m;
+      break;
+  }
+  w.cost = bits_for(w.cost_max);
+  w.path_cost_max = w.cost_max + uint64_t(cfg.p2);
+  w.path_cost = bits_for(w.path_cost_max);
+  w.aggregated_max = uint64_t(cfg.path_count()) * w.path_cost_max;
+  w.aggregated = bits_for(w.aggregated_max);
+  w.disparity = bits_for(uint64_t(cfg.dmax - 1));
+  w.output_word = w.disparity + 1;
+  w.invalid_word = uint16_t(1u << w.disparity);
+  w.uniqueness_product = bits_for(w.aggregated_max * 100);
+  return w;
+}
+
+}  // namespace fpstereo

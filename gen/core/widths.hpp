@@ -1,0 +1,31 @@
+// Minimal bit widths of every intermediate, derived from the configuration by closed-form
+// formulas (docs/semantics.md, "Bit widths"). The one place widths come from.
+#pragma once
+
+#include <cstdint>
+
+#include "config.hpp"
+
+namespace fpstereo {
+
+// Number of bits needed to hold every value in 0 .. max_value (at least 1).
+int bits_for(uint64_t max_value);
+
+struct Widths {
+  int pixel = 8;
+  int code = 0;           // census code (N*N-1 bits) or rank value; 8 for SAD/ZSAD (the pixel)
+  uint64_t cost_max = 0;  // largest matching cost, also the cost of an out-of-image match
+  int cost = 0;
+  uint64_t path_cost_max = 0;  // cost_max + P2
+  int path_cost = 0;
+  uint64_t aggregated_max = 0;  // paths * path_cost_max
+  int aggregated = 0;
+  int disparity = 0;    // bits for 0 .. dmax-1
+  int output_word = 0;  // disparity bits plus the invalid flag in the top bit
+  uint16_t invalid_word = 0;
+  int uniqueness_product = 0;  // bits of aggregated_max * 100 (the uniqueness comparison)
+};
+
+Widths derive_widths(const StereoConfig& cfg);
+
+}  // namespace fpstereo

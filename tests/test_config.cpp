@@ -1,0 +1,182 @@
+// StereoConfig: presets, parsing, config files, and every rejected value or combination.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+
+#include "config.hpp"
+
+using namespace fpstereo;
+
+namespace {
+
+// The ConfigError message for cfg, or "" if it is valid.
+std::string rejection(const StereoConfig& cfg) {
+  try {
+    validate(cfg);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string rejection_of(const std::string& name, const std::string& value) {
+  StereoConfig cfg;
+  try {
+    set_param(cfg, name, value);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return rejection(cfg);
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = "fpstereo_test_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("defaults are the paper's C2 and valid", "[config]") {
+  const StereoConfig c;
+  CHECK(c == preset("C2"));
+  CHECK(rejection(c).empty());
+  CHECK(c.cost == CostFunction::Census);
+  CHECK(c.window == 7);
+  CHECK(c.dmax == 128);
+  CHECK(c.uf == 32);
+  CHECK(c.path_count() == 4);
+}
+
+TEST_CASE("presets follow the paper's table", "[config]") {
+  struct Row { const char* name; int window, dmax, uf; LrCheck lr; };
+  const Row table[] = {{"S0", 5, 64, 16, LrCheck::None}, {"S1", 5, 128, 32, LrCheck::None},
+                       {"C0", 5, 64, 16, LrCheck::None}, {"C1", 5, 128, 32, LrCheck::None},
+                       {"C2", 7, 128, 32, LrCheck::None}, {"C3", 7, 128, 32, LrCheck::Lr1},
+                       {"C4", 7, 128, 32, LrCheck::Lr2}};
+  for (const auto& row : table) {
+    INFO(row.name);
+    const StereoConfig c = preset(row.name);
+    CHECK(rejection(c).empty());
+    CHECK(c.cost == CostFunction::Census);
+    CHECK(c.window == row.window);
+    CHECK(c.dmax == row.dmax);
+    CHECK(c.uf == row.uf);
+    CHECK(c.lr == row.lr);
+    CHECK(c.p1 == 7);
+    CHECK(c.p2 == 86);
+    CHECK(c.median == 5);
+    CHECK(c.width == 1242);
+    CHECK(c.height == 375);
+  }
+  CHECK_THROWS_WITH(preset("C9"), Catch::Contains("preset = 'C9'") && Catch::Contains("C4"));
+}
+
+TEST_CASE("parameters parse from text", "[config]") {
+  StereoConfig c;
+  set_param(c, "cost", "SAD");
+  set_param(c, "paths", "0, 90");
+  set_param(c, "median", "off");
+  set_param(c, "gap-interp", "on");
+  set_param(c, "lr", "lr2");
+  CHECK(c.cost == CostFunction::Sad);
+  CHECK(c.paths == (kPath0 | kPath90));
+  CHECK(c.median == 0);
+  CHECK(c.gap_interpolation);
+  CHECK(c.lr == LrCheck::Lr2);
+  // Every parameter prints back to text that parses to the same value.
+  StereoConfig copy;
+  for (const auto& spec : param_specs()) set_param(copy, spec.name, spec.get(c));
+  CHECK(copy == c);
+}
+
+TEST_CASE("every invalid value is rejected with its name, value and what is allowed", "[config]") {
+  struct Case { const char* name; const char* value; const char* expected; };
+  const Case cases[] = {
+      {"width", "4", "width = 4: must be in 8 .. 8192"},
+      {"width", "abc", "width = 'abc': expected an integer"},
+      {"height", "9000", "height = 9000: must be in 4 .. 8192"},
+      {"cost", "ncc", "cost = 'ncc': expected one of census rank sad zsad shd"},
+      {"window", "6", "window = 6: must be an odd window side from 3 to 11"},
+      {"window", "13", "window = 13: must be an odd window side from 3 to 11"},
+      {"window", "1", "window = 1: must be an odd window side from 3 to 11"},
+      {"dmax", "8", "dmax = 8: must be in 16 .. 256"},
+      {"dmax", "512", "dmax = 512: must be in 16 .. 256"},
+      {"dmax", "100", "uf = 32: must divide dmax (100)"},
+      {"uf", "0", "uf = 0: must divide dmax (128)"},
+      {"uf", "48", "uf = 48: must divide dmax (128)"},
+      {"uf", "256", "uf = 256: must divide dmax (128)"},
+      {"paths", "", "paths = '': expected a non-empty subset of 0,45,90,135"},
+      {"paths", "0,30", "paths = '0,30': expected a comma-separated subset of 0,45,90,135"},
+      {"paths", "0,0", "paths = '0,0': each angle at most once"},
+      {"p1", "-1", "p1 = -1: must be in 0 .. 255"},
+      {"p1", "100", "p1 = 100: must not exceed p2 (86)"},
+      {"p2", "5000", "p2 = 5000: must be in 0 .. 4095"},
+      {"p2", "3", "p1 = 7: must not exceed p2 (3)"},
+      {"lr", "lr3", "lr = 'lr3': expected one of none lr1 lr2"},
+      {"lr-threshold", "16", "lr-threshold = 16: must be in 0 .. 15"},
+      {"uniqueness", "100", "uniqueness = 100: must be a percentage in 0 .. 99"},
+      {"median", "4", "median = 4: expected 0 (off), 3, 5 or 7"},
+      {"median", "9", "median = 9: expected 0 (off), 3, 5 or 7"},
+      {"gap-interp", "maybe", "gap-interp = 'maybe': expected on or off"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name << " = " << c.value);
+    CHECK(rejection_of(c.name, c.value) == c.expected);
+  }
+}
+
+TEST_CASE("invalid combinations are rejected", "[config]") {
+  StereoConfig c;
+  c.width = 100;  // narrower than dmax 128
+  CHECK(rejection(c) == "dmax = 128: must not exceed the image width (100)");
+
+  StereoConfig shd;
+  shd.cost = CostFunction::Shd;
+  shd.shd_window = 4;
+  CHECK(rejection(shd) == "shd-window = 4: must be an odd window side from 1 to 11");
+  shd.cost = CostFunction::Census;  // the SHD window only matters for SHD
+  CHECK(rejection(shd).empty());
+
+  CHECK_THROWS_WITH([] { StereoConfig x; set_param(x, "colour", "red"); }(),
+                    "unknown parameter 'colour'");
+}
+
+TEST_CASE("legal dmax and uf combinations are accepted", "[config]") {
+  for (int dmax : {16, 48, 96, 100, 128, 256})
+    for (int uf : {1, 2, 4, 5, 8, 16, 32, 64, 128, 256}) {
+      StereoConfig c;
+      c.dmax = dmax;
+      c.uf = uf;
+      INFO(dmax << "/" << uf);
+      CHECK(rejection(c).empty() == (dmax % uf == 0 && uf <= dmax));
+    }
+}
+
+TEST_CASE("config files in JSON and TOML use the same names", "[config]") {
+  const std::string json = write_temp("a.json",
+      R"({"preset": "C0", "cost": "rank", "paths": [0, 90], "gap-interp": true, "uniqueness": 15})");
+  const std::string toml = write_temp("a.toml",
+      "preset = \"C0\"\ncost = \"rank\"\npaths = [0, 90]\ngap-interp = true\nuniqueness = 15\n");
+  StereoConfig from_json, from_toml;
+  apply_config_file(from_json, json);
+  apply_config_file(from_toml, toml);
+  CHECK(from_json == from_toml);
+  CHECK(from_json.dmax == 64);  // from the preset
+  CHECK(from_json.cost == CostFunction::Rank);
+  CHECK(from_json.paths == (kPath0 | kPath90));
+  CHECK(from_json.gap_interpolation);
+  CHECK(from_json.uniqueness == 15);
+
+  StereoConfig c;
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("b.json", R"({"dmx": 64})")),
+                    Catch::Contains("unknown parameter 'dmx'"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("c.json", "{dmax: 64")), Catch::Contains("not valid JSON"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("d.toml", "dmax = = 3")), Catch::Contains("not valid TOML"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("e.yaml", "dmax: 3")), Catch::Contains("expected a .json or .toml"));
+  CHECK_THROWS_WITH(apply_config_file(c, "no/such/file.json"), Catch::Contains("cannot be read"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("f.json", R"({"dmax": "x"})")),
+                    "dmax = 'x': expected an integer");
+  for (const char* f : {"a.json", "a.toml", "b.json", "c.json", "d.toml", "e.yaml", "f.json"})
+    std::remove((std::string("fpstereo_test_") + f).c_str());
+}

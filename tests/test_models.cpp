@@ -1,0 +1,105 @@
+// The golden model against the naive model (full cost volume, explicit recursion) on many
+// random configurations and images: zero mismatching pixels, borders included.
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "compare.hpp"
+#include "golden_model.hpp"
+#include "naive_model.hpp"
+#include "test_support.hpp"
+
+using namespace fpstereo;
+
+namespace {
+
+template <class T>
+T pick(std::mt19937& rng, std::initializer_list<T> options) {
+  std::uniform_int_distribution<size_t> i(0, options.size() - 1);
+  return *(options.begin() + i(rng));
+}
+
+StereoConfig random_config(std::mt19937& rng) {
+  StereoConfig c;
+  c.cost = pick(rng, {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad,
+                      CostFunction::Shd});
+  c.window = pick(rng, {3, 5, 7});
+  if (c.cost == CostFunction::Census) c.window = pick(rng, {3, 5, 7, 9, 11});  // codes over 64 bits
+  c.shd_window = pick(rng, {1, 3, 5});
+  c.dmax = pick(rng, {16, 24, 32, 48});
+  c.uf = pick(rng, {1, 8, 16});
+  if (c.dmax % c.uf != 0) c.uf = c.dmax;
+  c.paths = std::uniform_int_distribution<unsigned>(1, kAllPaths)(rng);
+  c.p1 = std::uniform_int_distribution<int>(0, 40)(rng);
+  c.p2 = c.p1 + std::uniform_int_distribution<int>(0, 200)(rng);
+  c.lr = pick(rng, {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2});
+  c.lr_threshold = pick(rng, {0, 1, 2});
+  c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
+  c.median = pick(rng, {0, 3, 5, 7});
+  c.gap_interpolation = pick(rng, {false, true});
+  c.width = c.dmax + std::uniform_int_distribution<int>(0, 24)(rng);
+  c.height = std::uniform_int_distribution<int>(4, 20)(rng);
+  return c;
+}
+
+// Random textures, few-level textures (many ties) and pairs with a true shift.
+std::pair<GrayImage, GrayImage> random_pair(const StereoConfig& c, std::mt19937& rng) {
+  switch (rng() % 3) {
+    case 0: return {test::random_image(c.width, c.height, rng), test::random_image(c.width, c.height, rng)};
+    case 1: return {test::random_image(c.width, c.height, rng, 3), test::random_image(c.width, c.height, rng, 3)};
+    default: {
+      const int d0 = int(rng() % unsigned(c.dmax));
+      return test::shifted_pair(c.width, c.height, rng, [&](int x, int) { return x < c.width / 2 ? d0 : d0 / 2; });
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("golden model equals the naive model on random configurations", "[models]") {
+  std::mt19937 rng(20261121);
+  const int cases = 400;
+  for (int i = 0; i < cases; ++i) {
+    const StereoConfig cfg = random_config(rng);
+    validate(cfg);
+    const auto [left, right] = random_pair(cfg, rng);
+    const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
+    INFO("case " << i << "\n" << describe(cfg) << cmp.report());
+    REQUIRE(cmp.equal());
+  }
+}
+
+TEST_CASE("golden model equals the naive model for each option alone", "[models]") {
+  std::mt19937 rng(7);
+  StereoConfig base;
+  base.width = 48;
+  base.height = 12;
+  base.dmax = 16;
+  base.uf = 4;
+  base.median = 0;
+  std::vector<std::pair<std::string, StereoConfig>> variants;
+  for (const auto& spec : {std::pair<const char*, const char*>{"cost", "census"}, {"cost", "rank"}, {"cost", "sad"},
+                           {"cost", "zsad"}, {"cost", "shd"}, {"paths", "0"}, {"paths", "45"}, {"paths", "90"},
+                           {"paths", "135"}, {"lr", "lr1"}, {"lr", "lr2"}, {"uniqueness", "20"}, {"median", "3"},
+                           {"median", "5"}, {"median", "7"}, {"gap-interp", "on"}}) {
+    StereoConfig c = base;
+    set_param(c, spec.first, spec.second);
+    variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);
+  }
+  for (const auto& [name, cfg] : variants) {
+    const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });
+    const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
+    INFO(name << ": " << cmp.report());
+    CHECK(cmp.equal());
+  }
+}
+
+TEST_CASE("the comparison reports the first mismatches with coordinates", "[models]") {
+  DisparityImage a(4, 2, 3), b = a;
+  b.at(2, 1) = 5;
+  b.at(0, 0) = 128;
+  const Comparison c = compare_words(a, b);
+  CHECK(c.mismatches == 2);
+  CHECK(c.report() == "2 mismatching pixels\n  (0, 0): expected 3, got 128\n  (2, 1): expected 3, got 5");
+  CHECK(compare_words(a, a).equal());
+  CHECK_FALSE(compare_words(a, DisparityImage(4, 3)).equal());
+}
