@@ -1,0 +1,290 @@
+// The golden model's streaming stages (docs/semantics.md sections 1-3), each a class that
+// turns one row of its input into one row of output, as the hardware stages do. Exposed so
+// that tests can drive a single stage to its extremes.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+#include "config.hpp"
+#include "image.hpp"
+#include "widths.hpp"
+
+namespace fpstereo::golden {
+
+// ---------------------------------------------------------------------------------------------
+// Section 1-2: transforms and matching cost rows.
+
+// Census codes of up to 120 bits (11x11 window), stored in 64-bit words.
+constexpr int kMaxCodeWords = 2;
+using CensusCode = std::array<uint64_t, kMaxCodeWords>;
+
+inline int pixel_or_zero(const GrayImage& img, int x, int y) {
+  return img.contains(x, y) ? img.at(x, y) : 0;
+}
+
+// The image with a frame of r zero pixels, so windows need no bounds tests (section 1).
+inline GrayImage zero_padded(const GrayImage& img, int r) {
+  GrayImage padded(img.width + 2 * r, img.height + 2 * r, 0);
+  for (int y = 0; y < img.height; ++y)
+    std::copy(&img.at(0, y), &img.at(0, y) + img.width, &padded.at(r, y + r));
+  return padded;
+}
+
+// Calls visit(x, y, centre, window_pixel) for every pixel and every window position but the
+// centre, in raster order of window positions.
+template <class Visit>
+void for_each_window_neighbour(const GrayImage& img, int window, Visit visit) {
+  const int r = window / 2;
+  const GrayImage padded = zero_padded(img, r);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const int centre = img.at(x, y);
+      for (int dy = -r; dy <= r; ++dy) {
+        const uint8_t* row = &padded.at(x + r, y + r + dy);
+        for (int dx = -r; dx <= r; ++dx)
+          if (dx != 0 || dy != 0) visit(x, y, centre, int(row[dx]));
+      }
+    }
+}
+
+inline Image<CensusCode> census_transform(const GrayImage& img, int window) {
+  const int r = window / 2;
+  const GrayImage padded = zero_padded(img, r);
+  Image<CensusCode> codes(img.width, img.height);
+  for (int y = 0; y < img.height; ++y) {
+    const uint8_t* centre = &padded.at(r, y + r);
+    CensusCode* row_codes = &codes.at(0, y);
+    int bit = window * window - 2;  // the first window position in the most significant bit
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        if (dx == 0 && dy == 0) continue;
+        const uint8_t* neighbour = &padded.at(r + dx, y + r + dy);
+        for (int x = 0; x < img.width; ++x)
+          row_codes[x][bit / 64] |= uint64_t(centre[x] > neighbour[x]) << (bit % 64);
+        --bit;
+      }
+  }
+  return codes;
+}
+
+inline Image<int> rank_transform(const GrayImage& img, int window) {
+  Image<int> ranks(img.width, img.height, 0);
+  for_each_window_neighbour(img, window, [&](int x, int y, int centre, int q) { ranks.at(x, y) += q < centre; });
+  return ranks;
+}
+
+// floor(window sum / N^2) over the zero-extended image (ZSAD).
+inline Image<int> window_means(const GrayImage& img, int window) {
+  Image<int> sums(img.width, img.height, 0);
+  for_each_window_neighbour(img, window, [&](int x, int y, int, int q) { sums.at(x, y) += q; });
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) sums.at(x, y) = (sums.at(x, y) + img.at(x, y)) / (window * window);
+  return sums;
+}
+
+inline int hamming(const CensusCode& a, const CensusCode& b) {
+  int h = 0;
+  for (int i = 0; i < kMaxCodeWords; ++i) h += __builtin_popcountll(a[i] ^ b[i]);
+  return h;
+}
+
+// Produces C(x, y, d) for one row, laid out [x * dmax + d].
+template <class T>
+class CostRows {
+ public:
+  CostRows(const StereoConfig& cfg, const Widths& widths, const GrayImage& base, const GrayImage& match)
+      : cfg_(cfg), cost_max_(T(widths.cost_max)), base_(base), match_(match) {
+    switch (cfg.cost) {
+      case CostFunction::Census:
+      case CostFunction::Shd:
+        base_codes_ = census_transform(base, cfg.window);
+        match_codes_ = census_transform(match, cfg.window);
+        break;
+      case CostFunction::Rank:
+        base_ranks_ = rank_transform(base, cfg.window);
+        match_ranks_ = rank_transform(match, cfg.window);
+        break;
+      case CostFunction::Zsad:
+        base_means_ = window_means(base, cfg.window);
+        match_means_ = window_means(match, cfg.window);
+        break;
+      case CostFunction::Sad:
+        break;
+    }
+  }
+
+  void compute(int y, T* out) const {
+    const int width = base_.width, dmax = cfg_.dmax;
+    switch (cfg_.cost) {
+      case CostFunction::Census:
+        for (int x = 0; x < width; ++x)
+          for (int d = 0; d <= std::min(x, dmax - 1); ++d)
+            out[x * dmax + d] = T(hamming(base_codes_.at(x, y), match_codes_.at(x - d, y)));
+        break;
+      case CostFunction::Rank:
+        for (int x = 0; x < width; ++x)
+          for (int d = 0; d <= std::min(x, dmax - 1); ++d)
+            out[x * dmax + d] = T(std::abs(base_ranks_.at(x, y) - match_ranks_.at(x - d, y)));
+        break;
+      case CostFunction::Sad:
+        box_sum_row(y, cfg_.window, out, [&](int xb, int yy, int d) {
+          return std::abs(pixel_or_zero(base_, xb, yy) - pixel_or_zero(match_, xb - d, yy));
+        });
+        break;
+      case CostFunction::Shd:
+        box_sum_row(y, cfg_.shd_window, out, [&](int xb, int yy, int d) {
+          return hamming(code_or_zero(base_codes_, xb, yy), code_or_zero(match_codes_, xb - d, yy));
+        });
+        break;
+      case CostFunction::Zsad:
+        for (int x = 0; x < width; ++x)
+          for (int d = 0; d <= std::min(x, dmax - 1); ++d) out[x * dmax + d] = T(zsad(x, y, d));
+        break;
+    }
+    // Match pixel outside the image (x - d < 0): the largest cost.
+    for (int x = 0; x < std::min(width, dmax); ++x)
+      for (int d = x + 1; d < dmax; ++d) out[x * dmax + d] = cost_max_;
+  }
+
+ private:
+  static CensusCode code_or_zero(const Image<CensusCode>& codes, int x, int y) {
+    return codes.contains(x, y) ? codes.at(x, y) : CensusCode{};
+  }
+
+  // out[x, d] = sum over the window x offsets of (sum over the window rows of term(x', y', d)),
+  // as a column sum followed by a sliding horizontal sum.
+  template <class Term>
+  void box_sum_row(int y, int window, T* out, Term term) const {
+    const int width = base_.width, dmax = cfg_.dmax, r = window / 2;
+    std::vector<int> column(size_t(width + 2 * r));
+    for (int d = 0; d < dmax; ++d) {
+      for (int xc = -r; xc < width + r; ++xc) {
+        int sum = 0;
+        for (int dy = -r; dy <= r; ++dy) sum += term(xc, y + dy, d);
+        column[size_t(xc + r)] = sum;
+      }
+      int sum = 0;
+      for (int i = 0; i < window - 1; ++i) sum += column[size_t(i)];
+      for (int x = 0; x < width; ++x) {
+        sum += column[size_t(x + 2 * r)];
+        out[x * dmax + d] = T(sum);
+        sum -= column[size_t(x)];
+      }
+    }
+  }
+
+  int zsad(int x, int y, int d) const {
+    const int r = cfg_.window / 2;
+    const int base_mean = base_means_.at(x, y), match_mean = match_means_.at(x - d, y);
+    int sum = 0;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx)
+        sum += std::abs((pixel_or_zero(base_, x + dx, y + dy) - base_mean) -
+                        (pixel_or_zero(match_, x - d + dx, y + dy) - match_mean));
+    return sum;
+  }
+
+  const StereoConfig& cfg_;
+  const T cost_max_;
+  const GrayImage& base_;
+  const GrayImage& match_;
+  Image<CensusCode> base_codes_, match_codes_;
+  Image<int> base_ranks_, match_ranks_;
+  Image<int> base_means_, match_means_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Section 3: path costs and their sum, one row at a time. Each path keeps the row it is writing
+// and the previous row; the 0-degree path reads its predecessor from the row being written.
+template <class T>
+class PathAggregator {
+ public:
+  PathAggregator(const StereoConfig& cfg, int width, T sentinel)
+      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2) {
+    for (const auto& dir : path_directions())
+      if (cfg.paths & dir.mask) paths_.push_back(PathState{dir, RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)});
+  }
+
+  // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S.
+  void push_row(int y, const T* cost, T* sum) {
+    const int dmax = cfg_.dmax;
+    std::fill(sum, sum + size_t(width_) * size_t(dmax), T(0));
+    for (auto& path : paths_) {
+      for (int x = 0; x < width_; ++x) {
+        const int px = x + path.dir.dx;
+        const bool has_pred = px >= 0 && px < width_ && (path.dir.dy == 0 || y > 0);
+        const RowBuffer& pred_row = path.dir.dy == 0 ? path.current : path.previous;
+        const size_t at = size_t(x) * size_t(dmax);
+        path.current.minimum[size_t(x)] =
+            has_pred ? step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)], path.current.costs(x), sum + at)
+                     : start(cost + at, path.current.costs(x), sum + at);
+      }
+      std::swap(path.current, path.previous);
+    }
+  }
+
+  // The path costs of the last row pushed, for tests that check widths.
+  T max_path_cost() const {
+    T m = 0;
+    for (const auto& path : paths_)
+      for (int x = 0; x < width_; ++x) {
+        const T* L = path.previous.costs(x);
+        m = std::max(m, *std::max_element(L, L + cfg_.dmax));
+      }
+    return m;
+  }
+
+ private:
+  // One row of path costs: dmax values per pixel framed by a sentinel on each side, so the
+  // d-1 and d+1 terms need no range test (the sentinel never wins the minimum).
+  struct RowBuffer {
+    RowBuffer(int width, int stride, T sentinel)
+        : stride(stride), values(size_t(width) * size_t(stride), sentinel), minimum(size_t(width), 0) {}
+    T* costs(int x) { return values.data() + size_t(x) * size_t(stride) + 1; }
+    const T* costs(int x) const { return values.data() + size_t(x) * size_t(stride) + 1; }
+    int stride;
+    std::vector<T> values;
+    std::vector<T> minimum;
+  };
+  struct PathState {
+    PathDirection dir;
+    RowBuffer current, previous;
+  };
+
+  // L = C at a path start; adds L to S and returns min_d L.
+  T start(const T* C, T* L, T* S) const {
+    T minimum = std::numeric_limits<T>::max();
+    for (int d = 0; d < cfg_.dmax; ++d) {
+      L[d] = C[d];
+      S[d] = T(S[d] + C[d]);
+      minimum = std::min(minimum, C[d]);
+    }
+    return minimum;
+  }
+
+  // The recursion of section 3; adds L to S and returns min_d L.
+  T step(const T* C, const T* pred, T pred_min, T* L, T* S) const {
+    const T p1 = T(cfg_.p1);
+    const T jump = T(pred_min + cfg_.p2);
+    T minimum = std::numeric_limits<T>::max();
+    for (int d = 0; d < cfg_.dmax; ++d) {
+      const T neighbour = T(std::min(pred[d - 1], pred[d + 1]) + p1);
+      const T l = T(C[d] + std::min(std::min(pred[d], jump), neighbour) - pred_min);
+      L[d] = l;
+      S[d] = T(S[d] + l);
+      minimum = std::min(minimum, l);
+    }
+    return minimum;
+  }
+
+  const StereoConfig& cfg_;
+  const int width_, stride_;
+  std::vector<PathState> paths_;
+};
+
+}  // namespace fpstereo::golden

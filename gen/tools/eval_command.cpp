@@ -1,0 +1,421 @@
+#include "eval_command.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "config_cli.hpp"
+#include "dataset.hpp"
+#include "golden_model.hpp"
+#include "image_io.hpp"
+#include "metrics.hpp"
+#include "sgbm_baseline.hpp"
+
+namespace fpstereo {
+namespace {
+
+constexpr const char* kTool = "fpstereo";
+constexpr const char* kSgbmName = "opencv-sgbm";
+
+struct EvalOptions {
+  ConfigFlags config;
+  std::string dataset_dir;
+  std::string baseline;
+  SgbmOptions sgbm;
+  std::string json_path, csv_path;
+  std::vector<std::string> pair_names;
+};
+
+// Ground truth over one set of pixels: all pixels with GT (occ) or the non-occluded ones (noc).
+struct Region {
+  cv::Mat1f gt;
+  cv::Mat1b mask;  // empty: every pixel with ground truth
+};
+
+// Everything a pair needs, loaded and checked before any model runs, so bad input fails fast.
+struct PairInputs {
+  DatasetPair pair;
+  GrayImage left, right;
+  StereoConfig cfg;  // the run's configuration: the pair's own image size
+  std::optional<Region> occ, noc;
+};
+
+struct Scores {
+  std::optional<ErrorCounts> occ, noc;
+};
+
+struct MethodResult {
+  std::string method;
+  double seconds = 0;
+  Scores valid_only, filled;
+};
+
+struct PairResult {
+  std::string name;
+  int width = 0, height = 0;
+  std::vector<MethodResult> methods;
+};
+
+// ---- loading ---------------------------------------------------------------------------------
+
+std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::vector<std::string>& names) {
+  if (names.empty()) return all;
+  std::vector<DatasetPair> chosen;
+  for (const auto& p : all)
+    if (std::find(names.begin(), names.end(), p.name) != names.end()) chosen.push_back(p);
+  for (const auto& name : names) {
+    const bool known = std::any_of(all.begin(), all.end(), [&](const DatasetPair& p) { return p.name == name; });
+    if (known) continue;
+    std::string available;
+    for (const auto& p : all) available += (available.empty() ? "" : ", ") + p.name;
+    throw InputError(fmt::format("--pairs: no pair '{}' in the dataset (it has {})", name, available));
+  }
+  return chosen;
+}
+
+cv::Mat1f read_gt(const std::string& path, const PairInputs& in) {
+  cv::Mat1f gt = read_disparity(path, in.pair.gt_scale, in.pair.gt_invalid);
+  if (gt.cols != in.left.width || gt.rows != in.left.height)
+    throw InputError(fmt::format("ground truth '{}' is {}x{} but the images are {}x{}", path, gt.cols, gt.rows,
+                                 in.left.width, in.left.height));
+  return gt;
+}
+
+cv::Mat1b read_mask(const std::string& path, const PairInputs& in) {
+  const GrayImage mask = load_gray(path, "noc mask");
+  if (mask.width != in.left.width || mask.height != in.left.height)
+    throw InputError(fmt::format("noc mask '{}' is {}x{} but the images are {}x{}", path, mask.width, mask.height,
+                                 in.left.width, in.left.height));
+  return cv::Mat1b(mask.height, mask.width, const_cast<uint8_t*>(mask.pixels.data())).clone();
+}
+
+// The configured width/height are the hardware's maximum; accuracy does not depend on them, so
+// every pair runs at its own size.
+StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in) {
+  StereoConfig run = cfg;
+  run.width = in.left.width;
+  run.height = in.left.height;
+  try {
+    check_pair(in.left, in.right, run);
+    validate(run);
+  } catch (const std::runtime_error& e) {
+    throw InputError(fmt::format("pair '{}': {}", in.pair.name, e.what()));
+  }
+  return run;
+}
+
+void warn_if_out_of_range(const PairInputs& in) {
+  if (in.pair.max_disp_px && *in.pair.max_disp_px > in.cfg.dmax - 1)
+    std::cerr << fmt::format("{}: warning: pair '{}' has disparities up to {} px, beyond dmax - 1 = {}\n", kTool,
+                             in.pair.name, *in.pair.max_disp_px, in.cfg.dmax - 1);
+}
+
+PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg) {
+  PairInputs in;
+  in.pair = pair;
+  in.left = load_gray(pair.left, "left image");
+  in.right = load_gray(pair.right, "right image");
+  in.cfg = config_for_pair(cfg, in);
+  if (!pair.gt_occ.empty()) in.occ = Region{read_gt(pair.gt_occ, in), {}};
+  const cv::Mat1b mask = pair.noc_mask.empty() ? cv::Mat1b() : read_mask(pair.noc_mask, in);
+  if (!pair.gt_noc.empty()) in.noc = Region{read_gt(pair.gt_noc, in), mask};
+  else if (in.occ && !mask.empty()) in.noc = Region{in.occ->gt, mask};
+  warn_if_out_of_range(in);
+  return in;
+}
+
+// ---- running ---------------------------------------------------------------------------------
+
+template <class F>
+cv::Mat1f timed(F&& run, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  cv::Mat1f result = run();
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::optional<ErrorCounts> score_region(const cv::Mat1f& est, const std::optional<Region>& region) {
+  if (!region) return std::nullopt;
+  return count_errors(est, region->gt, region->mask.empty() ? nullptr : &region->mask);
+}
+
+Scores score(const cv::Mat1f& est, const PairInputs& in) { return {score_region(est, in.occ), score_region(est, in.noc)}; }
+
+MethodResult evaluate(const std::string& method, double seconds, const cv::Mat1f& est, const PairInputs& in) {
+  return {method, seconds, score(est, in), score(kitti_fill(est), in)};
+}
+
+PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::string& label, const std::string& progress) {
+  PairResult result{in.pair.name, in.left.width, in.left.height, {}};
+  std::cerr << progress << ": fpstereo" << std::flush;
+  double seconds = 0;
+  const cv::Mat1f est = timed([&] { return to_float_disparity(run_golden(in.cfg, in.left, in.right), in.cfg); }, seconds);
+  std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
+  result.methods.push_back(evaluate(label, seconds, est, in));
+  if (!o.baseline.empty()) {
+    std::cerr << ", " << kSgbmName << std::flush;
+    SgbmOptions sgbm = o.sgbm;
+    sgbm.num_disparities = in.cfg.dmax;
+    const cv::Mat1f base = timed([&] { return run_sgbm(in.left, in.right, sgbm); }, seconds);
+    std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
+    result.methods.push_back(evaluate(kSgbmName, seconds, base, in));
+  }
+  std::cerr << "\n";
+  return result;
+}
+
+// Pooled counts of a region exist only if every pair has that region: a pool over a subset of
+// the pairs would not be comparable with the others.
+void pool(std::optional<ErrorCounts>& total, const std::optional<ErrorCounts>& part) {
+  if (total && part) *total += *part;
+  else total.reset();
+}
+
+std::vector<MethodResult> overall(const std::vector<PairResult>& results) {
+  std::vector<MethodResult> totals = results.front().methods;
+  for (size_t i = 1; i < results.size(); ++i)
+    for (size_t m = 0; m < totals.size(); ++m) {
+      const MethodResult& part = results[i].methods[m];
+      totals[m].seconds += part.seconds;
+      pool(totals[m].valid_only.occ, part.valid_only.occ);
+      pool(totals[m].valid_only.noc, part.valid_only.noc);
+      pool(totals[m].filled.occ, part.filled.occ);
+      pool(totals[m].filled.noc, part.filled.noc);
+    }
+  return totals;
+}
+
+// ---- human-readable table --------------------------------------------------------------------
+
+constexpr int kLabelWidth = 30;
+
+std::string pairs_text(size_t n) { return fmt::format("{} pair{}", n, n == 1 ? "" : "s"); }
+
+std::string cell(double v) { return std::isfinite(v) ? fmt::format(" {:6.2f}", v) : fmt::format(" {:>6}", "-"); }
+
+// D1 on noc and occ; bad-N, MAE and density over all ground-truth pixels (occ).
+std::string metric_cells(const Scores& s) {
+  const ErrorCounts none;  // every rate NaN: printed as dashes
+  const ErrorCounts& occ = s.occ ? *s.occ : none;
+  const ErrorCounts& noc = s.noc ? *s.noc : none;
+  std::string out;
+  for (double v : {noc.d1_percent(), occ.d1_percent(), occ.bad1_percent(), occ.bad2_percent(), occ.bad4_percent(),
+                   occ.mae_px(), occ.density_percent()})
+    out += cell(v);
+  return out;
+}
+
+std::string method_row(const MethodResult& m) {
+  return fmt::format("  {:<{}}{} |{} | {:7.2f}\n", m.method, kLabelWidth - 2, metric_cells(m.valid_only),
+                     metric_cells(m.filled), m.seconds);
+}
+
+std::string config_summary(const StereoConfig& cfg) {
+  std::string s;
+  for (const auto& spec : param_specs())
+    if (spec.name != "width" && spec.name != "height") s += " " + spec.name + "=" + spec.get(cfg);
+  return s;
+}
+
+std::string table_header() {
+  const std::string columns = " D1-noc D1-occ  bad-1  bad-2  bad-4    MAE  dens%";
+  return fmt::format("{:<{}}{:-^49} |{:-^49} |\n", "", kLabelWidth, " valid pixels only ",
+                     " filled (KITTI background interpolation) ") +
+         fmt::format("{:<{}}{} |{} | {:>7}\n", "pair / method", kLabelWidth, columns, columns, "time s");
+}
+
+std::string format_table(const std::string& dataset, const StereoConfig& cfg, const std::string& label,
+                         const EvalOptions& o, const std::vector<PairResult>& results) {
+  std::string out = fmt::format("dataset {} ({})\n", dataset, pairs_text(results.size()));
+  out += fmt::format("{}:{}\n", label, config_summary(cfg));
+  if (!o.baseline.empty()) {
+    SgbmOptions sgbm = o.sgbm;
+    sgbm.num_disparities = cfg.dmax;
+    out += fmt::format("{}: {}\n", kSgbmName, describe(sgbm));
+  }
+  out += "D1: |err| > 3 px and > 5 % of GT; bad-N: |err| > N px; bad-N, MAE, density over all GT pixels (occ);\n"
+         "rates in % of the pixels with an estimate, density in % of GT pixels; '-': not available\n\n";
+  out += table_header();
+  for (const auto& r : results) {
+    out += fmt::format("{} ({}x{})\n", r.name, r.width, r.height);
+    for (const auto& m : r.methods) out += method_row(m);
+  }
+  out += fmt::format("overall ({}, pixel counts pooled)\n", pairs_text(results.size()));
+  for (const auto& m : overall(results)) out += method_row(m);
+  return out;
+}
+
+// ---- machine-readable output -----------------------------------------------------------------
+
+nlohmann::json counts_json(const std::optional<ErrorCounts>& c) {
+  if (!c) return nullptr;
+  // nlohmann writes non-finite rates (no estimated pixels) as null.
+  return {{"gt_pixels", c->gt_pixels},         {"estimated", c->estimated},
+          {"d1_outliers", c->d1_outliers},     {"bad1", c->bad1},
+          {"bad2", c->bad2},                   {"bad4", c->bad4},
+          {"abs_error_sum", c->abs_error_sum}, {"d1_percent", c->d1_percent()},
+          {"bad1_percent", c->bad1_percent()}, {"bad2_percent", c->bad2_percent()},
+          {"bad4_percent", c->bad4_percent()}, {"mae_px", c->mae_px()},
+          {"density_percent", c->density_percent()}};
+}
+
+nlohmann::json method_json(const MethodResult& m) {
+  const auto scores = [](const Scores& s) { return nlohmann::json{{"occ", counts_json(s.occ)}, {"noc", counts_json(s.noc)}}; };
+  return {{"method", m.method}, {"seconds", m.seconds}, {"valid_only", scores(m.valid_only)}, {"filled", scores(m.filled)}};
+}
+
+std::string format_json(const std::string& dataset, const StereoConfig& cfg, const std::string& label,
+                        const EvalOptions& o, const std::vector<PairResult>& results) {
+  nlohmann::json config;
+  for (const auto& spec : param_specs()) config[spec.name] = spec.get(cfg);
+  SgbmOptions sgbm = o.sgbm;
+  sgbm.num_disparities = cfg.dmax;
+  nlohmann::json j = {{"dataset", dataset},
+                      {"fpstereo", {{"method", label}, {"config", config}}},
+                      {"baseline", o.baseline.empty() ? nlohmann::json(nullptr)
+                                                      : nlohmann::json{{"method", kSgbmName}, {"description", describe(sgbm)}}},
+                      {"pairs", nlohmann::json::array()},
+                      {"overall", nlohmann::json::array()}};
+  for (const auto& r : results) {
+    nlohmann::json methods = nlohmann::json::array();
+    for (const auto& m : r.methods) methods.push_back(method_json(m));
+    j["pairs"].push_back({{"pair", r.name}, {"width", r.width}, {"height", r.height}, {"methods", methods}});
+  }
+  for (const auto& m : overall(results)) j["overall"].push_back(method_json(m));
+  return j.dump(2) + "\n";
+}
+
+std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
+
+std::string csv_rows(const std::string& pair, const MethodResult& m) {
+  std::string out;
+  const auto add = [&](const char* fill, const char* region, const std::optional<ErrorCounts>& c) {
+    if (!c) return;
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", pair, m.method, fill, region, c->gt_pixels,
+                       c->estimated, csv_number(c->d1_percent()), csv_number(c->bad1_percent()),
+                       csv_number(c->bad2_percent()), csv_number(c->bad4_percent()), csv_number(c->mae_px()),
+                       csv_number(c->density_percent()), csv_number(m.seconds));
+  };
+  add("valid_only", "occ", m.valid_only.occ);
+  add("valid_only", "noc", m.valid_only.noc);
+  add("filled", "occ", m.filled.occ);
+  add("filled", "noc", m.filled.noc);
+  return out;
+}
+
+// One row per pair, method, filling and region; the pooled rows have pair "overall".
+std::string format_csv(const std::vector<PairResult>& results) {
+  std::string out =
+      "pair,method,fill,region,gt_pixels,estimated,d1_percent,bad1_percent,bad2_percent,bad4_percent,mae_px,"
+      "density_percent,seconds\n";
+  for (const auto& r : results)
+    for (const auto& m : r.methods) out += csv_rows(r.name, m);
+  for (const auto& m : overall(results)) out += csv_rows("overall", m);
+  return out;
+}
+
+// A result file named on the command line, "-" for stdout. Opened before any work so that a bad
+// path fails before minutes of computation.
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& path) : path_(path) {
+    if (path_.empty() || path_ == "-") return;
+    file_.open(path_, std::ios::trunc);
+    if (!file_) throw InputError(fmt::format("cannot write '{}': {}", path_, std::strerror(errno)));
+  }
+  bool wanted() const { return !path_.empty(); }
+  void write(const std::string& text) {
+    std::ostream& out = path_ == "-" ? std::cout : file_;
+    out << text << std::flush;
+    if (!out) throw InputError(fmt::format("cannot write '{}'", path_));
+  }
+
+ private:
+  std::string path_;
+  std::ofstream file_;
+};
+
+// ---- the command -----------------------------------------------------------------------------
+
+void run(const EvalOptions& o) {
+  const StereoConfig cfg = o.config.resolve();
+  if (!o.baseline.empty() && o.baseline != kSgbmName)
+    throw InputError(fmt::format("--baseline '{}': expected {}", o.baseline, kSgbmName));
+  if (!o.baseline.empty()) validate(o.sgbm);
+  OutputFile json(o.json_path), csv(o.csv_path);
+
+  const std::vector<DatasetPair> pairs = select_pairs(read_pairs_csv(o.dataset_dir), o.pair_names);
+  std::vector<PairInputs> inputs;
+  for (const auto& p : pairs) inputs.push_back(load_pair(p, cfg));
+
+  const std::string label = config_tag(cfg);
+  std::vector<PairResult> results;
+  for (size_t i = 0; i < inputs.size(); ++i)
+    results.push_back(run_pair(inputs[i], o, label, fmt::format("[{}/{}] {}", i + 1, inputs.size(), inputs[i].pair.name)));
+
+  // Machine-readable output on stdout moves the table to stderr, so stdout stays parseable.
+  const bool stdout_taken = o.json_path == "-" || o.csv_path == "-";
+  (stdout_taken ? std::cerr : std::cout) << format_table(o.dataset_dir, cfg, label, o, results) << std::flush;
+  if (json.wanted()) json.write(format_json(o.dataset_dir, cfg, label, o, results));
+  if (csv.wanted()) csv.write(format_csv(results));
+}
+
+void add_sgbm_flags(CLI::App& sub, EvalOptions& o) {
+  const std::string group = "OpenCV StereoSGBM baseline, with --baseline opencv-sgbm (numDisparities = dmax)";
+  const auto add = [&](const std::string& flag, auto& value, const std::string& help) {
+    sub.add_option(flag, value, help)->default_val(value)->group(group);
+  };
+  add("--sgbm-mode", o.sgbm.mode, "sgbm, 3way, hh or hh4");
+  add("--sgbm-block", o.sgbm.block, "block side, odd");
+  add("--sgbm-p1", o.sgbm.p1, "P1; -1: 8 * block^2");
+  add("--sgbm-p2", o.sgbm.p2, "P2; -1: 32 * block^2");
+  add("--sgbm-uniqueness", o.sgbm.uniqueness, "uniqueness ratio, percent");
+  add("--sgbm-disp12maxdiff", o.sgbm.disp12_max_diff, "left-right check threshold in px; negative: off");
+  add("--sgbm-speckle-window", o.sgbm.speckle_window, "speckle filter window in pixels; 0: off");
+  add("--sgbm-speckle-range", o.sgbm.speckle_range, "speckle filter disparity range");
+  add("--sgbm-prefilter-cap", o.sgbm.prefilter_cap, "prefilter clipping value");
+}
+
+}  // namespace
+
+void register_eval_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<EvalOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "eval",
+      "Accuracy on a dataset with ground truth (a folder with pairs.csv): D1, bad-1/2/4, MAE and density, "
+      "on valid pixels only and after KITTI background filling, optionally against OpenCV's StereoSGBM");
+  sub->add_option("DATASET_DIR", o->dataset_dir, "dataset folder containing pairs.csv")->required()->type_name("DIR");
+  o->config.add_to(*sub);
+  sub->add_option("--baseline", o->baseline, "also evaluate a baseline: opencv-sgbm")->type_name("NAME");
+  add_sgbm_flags(*sub, *o);
+  sub->add_option("--json", o->json_path, "write all results as JSON to FILE ('-': stdout)")->type_name("FILE");
+  sub->add_option("--csv", o->csv_path, "write all results as CSV to FILE ('-': stdout)")->type_name("FILE");
+  sub->add_option("--pairs", o->pair_names, "evaluate only these pairs (comma-separated names)")
+      ->delimiter(',')
+      ->type_name("NAME");
+  sub->footer(
+      "Each pair runs at its own image size: --width/--height are the hardware's maximum and do not change "
+      "accuracy, so they are not applied here. A table goes to stdout (to stderr if --json or --csv is '-'), "
+      "progress to stderr.");
+  sub->callback([o, &exit_code] {
+    try {
+      run(*o);
+      exit_code = 0;
+    } catch (const InputError& e) {
+      exit_code = report_error(kTool, e.what());
+    } catch (const ConfigError& e) {
+      exit_code = report_error(kTool, e.what());
+    }
+  });
+}
+
+}  // namespace fpstereo
