@@ -23,10 +23,9 @@ using golden::PathAggregator;
 // Section 4: winner-take-all and uniqueness over one pixel's sums.
 template <class T>
 int winner(const T* S, int dmax) {
-  int best = 0;
-  for (int d = 1; d < dmax; ++d)
-    if (S[d] < S[best]) best = d;
-  return best;
+  // The minimum first (a vectorisable reduction), then its first position: the smallest d.
+  const T best = *std::min_element(S, S + dmax);
+  return int(std::find(S, S + dmax, best) - S);
 }
 
 template <class T>
@@ -60,21 +59,38 @@ std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dm
 // Sections 6-7 on a map of disparities with -1 for invalid.
 constexpr int kInvalid = -1;
 
-Image<int> median_filter(const Image<int>& in, int window) {
+// Lower median of the valid in-image window values, with a histogram that slides along the
+// row (add the entering column, drop the leaving one) and a median pointer that only moves
+// as far as the counts changed.
+Image<int> median_filter(const Image<int>& in, int window, int dmax) {
   const int r = window / 2;
   Image<int> out = in;
-  std::vector<int> values;
-  for (int y = 0; y < in.height; ++y)
+  std::vector<int> histogram(static_cast<size_t>(dmax));
+  for (int y = 0; y < in.height; ++y) {
+    std::fill(histogram.begin(), histogram.end(), 0);
+    int count = 0, median = 0, below = 0;  // below: values smaller than median
+    auto update_column = [&](int x, int delta) {
+      if (x < 0 || x >= in.width) return;
+      for (int yy = std::max(0, y - r); yy <= std::min(in.height - 1, y + r); ++yy) {
+        const int v = in.at(x, yy);
+        if (v == kInvalid) continue;
+        histogram[size_t(v)] += delta;
+        count += delta;
+        if (v < median) below += delta;
+      }
+    };
+    for (int x = -r; x < r; ++x) update_column(x, +1);
     for (int x = 0; x < in.width; ++x) {
-      if (in.at(x, y) == kInvalid) continue;
-      values.clear();
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx)
-          if (in.contains(x + dx, y + dy) && in.at(x + dx, y + dy) != kInvalid) values.push_back(in.at(x + dx, y + dy));
-      const size_t lower_median = (values.size() - 1) / 2;
-      std::nth_element(values.begin(), values.begin() + long(lower_median), values.end());
-      out.at(x, y) = values[lower_median];
+      update_column(x + r, +1);
+      if (in.at(x, y) != kInvalid) {
+        const int target = (count - 1) / 2;  // index of the lower median in sorted order
+        while (below > target) below -= histogram[size_t(--median)];
+        while (below + histogram[size_t(median)] <= target) below += histogram[size_t(median++)];
+        out.at(x, y) = median;
+      }
+      update_column(x - r, -1);
     }
+  }
   return out;
 }
 
@@ -136,7 +152,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       }
   }
 
-  if (cfg.median != 0) disparity = median_filter(disparity, cfg.median);
+  if (cfg.median != 0) disparity = median_filter(disparity, cfg.median, dmax);
   if (cfg.gap_interpolation) interpolate_gaps(disparity);
 
   DisparityImage out(width, height);

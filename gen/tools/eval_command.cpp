@@ -73,7 +73,8 @@ std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::v
   for (const auto& p : all)
     if (std::find(names.begin(), names.end(), p.name) != names.end()) chosen.push_back(p);
   for (const auto& name : names) {
-    const bool known = std::any_of(all.begin(), all.end(), [&](const DatasetPair& p) { return p.name == name; });
+    const bool known =
+        std::any_of(all.begin(), all.end(), [&](const DatasetPair& p) { return p.name == name; });
     if (known) continue;
     std::string available;
     for (const auto& p : all) available += (available.empty() ? "" : ", ") + p.name;
@@ -85,16 +86,16 @@ std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::v
 cv::Mat1f read_gt(const std::string& path, const PairInputs& in) {
   cv::Mat1f gt = read_disparity(path, in.pair.gt_scale, in.pair.gt_invalid);
   if (gt.cols != in.left.width || gt.rows != in.left.height)
-    throw InputError(fmt::format("ground truth '{}' is {}x{} but the images are {}x{}", path, gt.cols, gt.rows,
-                                 in.left.width, in.left.height));
+    throw InputError(fmt::format("ground truth '{}' is {}x{} but the images are {}x{}", path, gt.cols,
+                                 gt.rows, in.left.width, in.left.height));
   return gt;
 }
 
 cv::Mat1b read_mask(const std::string& path, const PairInputs& in) {
   const GrayImage mask = load_gray(path, "noc mask");
   if (mask.width != in.left.width || mask.height != in.left.height)
-    throw InputError(fmt::format("noc mask '{}' is {}x{} but the images are {}x{}", path, mask.width, mask.height,
-                                 in.left.width, in.left.height));
+    throw InputError(fmt::format("noc mask '{}' is {}x{} but the images are {}x{}", path, mask.width,
+                                 mask.height, in.left.width, in.left.height));
   return cv::Mat1b(mask.height, mask.width, const_cast<uint8_t*>(mask.pixels.data())).clone();
 }
 
@@ -115,8 +116,8 @@ StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in) {
 
 void warn_if_out_of_range(const PairInputs& in) {
   if (in.pair.max_disp_px && *in.pair.max_disp_px > in.cfg.dmax - 1)
-    std::cerr << fmt::format("{}: warning: pair '{}' has disparities up to {} px, beyond dmax - 1 = {}\n", kTool,
-                             in.pair.name, *in.pair.max_disp_px, in.cfg.dmax - 1);
+    std::cerr << fmt::format("{}: warning: pair '{}' has disparities up to {} px, beyond dmax - 1 = {}\n",
+                             kTool, in.pair.name, *in.pair.max_disp_px, in.cfg.dmax - 1);
 }
 
 PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg) {
@@ -127,18 +128,27 @@ PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg) {
   in.cfg = config_for_pair(cfg, in);
   if (!pair.gt_occ.empty()) in.occ = Region{read_gt(pair.gt_occ, in), {}};
   const cv::Mat1b mask = pair.noc_mask.empty() ? cv::Mat1b() : read_mask(pair.noc_mask, in);
-  if (!pair.gt_noc.empty()) in.noc = Region{read_gt(pair.gt_noc, in), mask};
-  else if (in.occ && !mask.empty()) in.noc = Region{in.occ->gt, mask};
+  if (!pair.gt_noc.empty())
+    in.noc = Region{read_gt(pair.gt_noc, in), mask};
+  else if (in.occ && !mask.empty())
+    in.noc = Region{in.occ->gt, mask};
   warn_if_out_of_range(in);
   return in;
 }
 
 // ---- running ---------------------------------------------------------------------------------
 
+// The baseline searches the same disparity range as the pipeline.
+SgbmOptions sgbm_options(const EvalOptions& o, const StereoConfig& cfg) {
+  SgbmOptions sgbm = o.sgbm;
+  sgbm.num_disparities = cfg.dmax;
+  return sgbm;
+}
+
 template <class F>
-cv::Mat1f timed(F&& run, double& seconds) {
+auto timed(F&& run, double& seconds) {
   const auto start = std::chrono::steady_clock::now();
-  cv::Mat1f result = run();
+  auto result = run();
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -148,24 +158,26 @@ std::optional<ErrorCounts> score_region(const cv::Mat1f& est, const std::optiona
   return count_errors(est, region->gt, region->mask.empty() ? nullptr : &region->mask);
 }
 
-Scores score(const cv::Mat1f& est, const PairInputs& in) { return {score_region(est, in.occ), score_region(est, in.noc)}; }
+Scores score(const cv::Mat1f& est, const PairInputs& in) {
+  return {score_region(est, in.occ), score_region(est, in.noc)};
+}
 
 MethodResult evaluate(const std::string& method, double seconds, const cv::Mat1f& est, const PairInputs& in) {
   return {method, seconds, score(est, in), score(kitti_fill(est), in)};
 }
 
-PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::string& label, const std::string& progress) {
+PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::string& label,
+                    const std::string& progress) {
   PairResult result{in.pair.name, in.left.width, in.left.height, {}};
   std::cerr << progress << ": fpstereo" << std::flush;
   double seconds = 0;
-  const cv::Mat1f est = timed([&] { return to_float_disparity(run_golden(in.cfg, in.left, in.right), in.cfg); }, seconds);
+  const DisparityImage words = timed([&] { return run_golden(in.cfg, in.left, in.right); }, seconds);
   std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
-  result.methods.push_back(evaluate(label, seconds, est, in));
+  result.methods.push_back(evaluate(label, seconds, to_float_disparity(words, in.cfg), in));
   if (!o.baseline.empty()) {
     std::cerr << ", " << kSgbmName << std::flush;
-    SgbmOptions sgbm = o.sgbm;
-    sgbm.num_disparities = in.cfg.dmax;
-    const cv::Mat1f base = timed([&] { return run_sgbm(in.left, in.right, sgbm); }, seconds);
+    const cv::Mat1f base =
+        timed([&] { return run_sgbm(in.left, in.right, sgbm_options(o, in.cfg)); }, seconds);
     std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
     result.methods.push_back(evaluate(kSgbmName, seconds, base, in));
   }
@@ -176,8 +188,10 @@ PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::strin
 // Pooled counts of a region exist only if every pair has that region: a pool over a subset of
 // the pairs would not be comparable with the others.
 void pool(std::optional<ErrorCounts>& total, const std::optional<ErrorCounts>& part) {
-  if (total && part) *total += *part;
-  else total.reset();
+  if (total && part)
+    *total += *part;
+  else
+    total.reset();
 }
 
 std::vector<MethodResult> overall(const std::vector<PairResult>& results) {
@@ -200,7 +214,9 @@ constexpr int kLabelWidth = 30;
 
 std::string pairs_text(size_t n) { return fmt::format("{} pair{}", n, n == 1 ? "" : "s"); }
 
-std::string cell(double v) { return std::isfinite(v) ? fmt::format(" {:6.2f}", v) : fmt::format(" {:>6}", "-"); }
+std::string cell(double v) {
+  return std::isfinite(v) ? fmt::format(" {:6.2f}", v) : fmt::format(" {:>6}", "-");
+}
 
 // D1 on noc and occ; bad-N, MAE and density over all ground-truth pixels (occ).
 std::string metric_cells(const Scores& s) {
@@ -208,8 +224,8 @@ std::string metric_cells(const Scores& s) {
   const ErrorCounts& occ = s.occ ? *s.occ : none;
   const ErrorCounts& noc = s.noc ? *s.noc : none;
   std::string out;
-  for (double v : {noc.d1_percent(), occ.d1_percent(), occ.bad1_percent(), occ.bad2_percent(), occ.bad4_percent(),
-                   occ.mae_px(), occ.density_percent()})
+  for (double v : {noc.d1_percent(), occ.d1_percent(), occ.bad1_percent(), occ.bad2_percent(),
+                   occ.bad4_percent(), occ.mae_px(), occ.density_percent()})
     out += cell(v);
   return out;
 }
@@ -237,13 +253,10 @@ std::string format_table(const std::string& dataset, const StereoConfig& cfg, co
                          const EvalOptions& o, const std::vector<PairResult>& results) {
   std::string out = fmt::format("dataset {} ({})\n", dataset, pairs_text(results.size()));
   out += fmt::format("{}:{}\n", label, config_summary(cfg));
-  if (!o.baseline.empty()) {
-    SgbmOptions sgbm = o.sgbm;
-    sgbm.num_disparities = cfg.dmax;
-    out += fmt::format("{}: {}\n", kSgbmName, describe(sgbm));
-  }
-  out += "D1: |err| > 3 px and > 5 % of GT; bad-N: |err| > N px; bad-N, MAE, density over all GT pixels (occ);\n"
-         "rates in % of the pixels with an estimate, density in % of GT pixels; '-': not available\n\n";
+  if (!o.baseline.empty()) out += fmt::format("{}: {}\n", kSgbmName, describe(sgbm_options(o, cfg)));
+  out +=
+      "D1: |err| > 3 px and > 5 % of GT; bad-N: |err| > N px; bad-N, MAE, density over all GT pixels (occ);\n"
+      "rates in % of the pixels with an estimate, density in % of GT pixels; '-': not available\n\n";
   out += table_header();
   for (const auto& r : results) {
     out += fmt::format("{} ({}x{})\n", r.name, r.width, r.height);
@@ -259,32 +272,43 @@ std::string format_table(const std::string& dataset, const StereoConfig& cfg, co
 nlohmann::json counts_json(const std::optional<ErrorCounts>& c) {
   if (!c) return nullptr;
   // nlohmann writes non-finite rates (no estimated pixels) as null.
-  return {{"gt_pixels", c->gt_pixels},         {"estimated", c->estimated},
-          {"d1_outliers", c->d1_outliers},     {"bad1", c->bad1},
-          {"bad2", c->bad2},                   {"bad4", c->bad4},
-          {"abs_error_sum", c->abs_error_sum}, {"d1_percent", c->d1_percent()},
-          {"bad1_percent", c->bad1_percent()}, {"bad2_percent", c->bad2_percent()},
-          {"bad4_percent", c->bad4_percent()}, {"mae_px", c->mae_px()},
+  return {{"gt_pixels", c->gt_pixels},
+          {"estimated", c->estimated},
+          {"d1_outliers", c->d1_outliers},
+          {"bad1", c->bad1},
+          {"bad2", c->bad2},
+          {"bad4", c->bad4},
+          {"abs_error_sum", c->abs_error_sum},
+          {"d1_percent", c->d1_percent()},
+          {"bad1_percent", c->bad1_percent()},
+          {"bad2_percent", c->bad2_percent()},
+          {"bad4_percent", c->bad4_percent()},
+          {"mae_px", c->mae_px()},
           {"density_percent", c->density_percent()}};
 }
 
 nlohmann::json method_json(const MethodResult& m) {
-  const auto scores = [](const Scores& s) { return nlohmann::json{{"occ", counts_json(s.occ)}, {"noc", counts_json(s.noc)}}; };
-  return {{"method", m.method}, {"seconds", m.seconds}, {"valid_only", scores(m.valid_only)}, {"filled", scores(m.filled)}};
+  const auto scores = [](const Scores& s) {
+    return nlohmann::json{{"occ", counts_json(s.occ)}, {"noc", counts_json(s.noc)}};
+  };
+  return {{"method", m.method},
+          {"seconds", m.seconds},
+          {"valid_only", scores(m.valid_only)},
+          {"filled", scores(m.filled)}};
 }
 
 std::string format_json(const std::string& dataset, const StereoConfig& cfg, const std::string& label,
                         const EvalOptions& o, const std::vector<PairResult>& results) {
   nlohmann::json config;
   for (const auto& spec : param_specs()) config[spec.name] = spec.get(cfg);
-  SgbmOptions sgbm = o.sgbm;
-  sgbm.num_disparities = cfg.dmax;
-  nlohmann::json j = {{"dataset", dataset},
-                      {"fpstereo", {{"method", label}, {"config", config}}},
-                      {"baseline", o.baseline.empty() ? nlohmann::json(nullptr)
-                                                      : nlohmann::json{{"method", kSgbmName}, {"description", describe(sgbm)}}},
-                      {"pairs", nlohmann::json::array()},
-                      {"overall", nlohmann::json::array()}};
+  nlohmann::json j = {
+      {"dataset", dataset},
+      {"fpstereo", {{"method", label}, {"config", config}}},
+      {"baseline", o.baseline.empty() ? nlohmann::json(nullptr)
+                                      : nlohmann::json{{"method", kSgbmName},
+                                                       {"description", describe(sgbm_options(o, cfg))}}},
+      {"pairs", nlohmann::json::array()},
+      {"overall", nlohmann::json::array()}};
   for (const auto& r : results) {
     nlohmann::json methods = nlohmann::json::array();
     for (const auto& m : r.methods) methods.push_back(method_json(m));
@@ -360,7 +384,8 @@ void run(const EvalOptions& o) {
   const std::string label = config_tag(cfg);
   std::vector<PairResult> results;
   for (size_t i = 0; i < inputs.size(); ++i)
-    results.push_back(run_pair(inputs[i], o, label, fmt::format("[{}/{}] {}", i + 1, inputs.size(), inputs[i].pair.name)));
+    results.push_back(
+        run_pair(inputs[i], o, label, fmt::format("[{}/{}] {}", i + 1, inputs.size(), inputs[i].pair.name)));
 
   // Machine-readable output on stdout moves the table to stderr, so stdout stays parseable.
   const bool stdout_taken = o.json_path == "-" || o.csv_path == "-";
@@ -393,11 +418,14 @@ void register_eval_command(CLI::App& app, int& exit_code) {
       "eval",
       "Accuracy on a dataset with ground truth (a folder with pairs.csv): D1, bad-1/2/4, MAE and density, "
       "on valid pixels only and after KITTI background filling, optionally against OpenCV's StereoSGBM");
-  sub->add_option("DATASET_DIR", o->dataset_dir, "dataset folder containing pairs.csv")->required()->type_name("DIR");
+  sub->add_option("DATASET_DIR", o->dataset_dir, "dataset folder containing pairs.csv")
+      ->required()
+      ->type_name("DIR");
   o->config.add_to(*sub);
   sub->add_option("--baseline", o->baseline, "also evaluate a baseline: opencv-sgbm")->type_name("NAME");
   add_sgbm_flags(*sub, *o);
-  sub->add_option("--json", o->json_path, "write all results as JSON to FILE ('-': stdout)")->type_name("FILE");
+  sub->add_option("--json", o->json_path, "write all results as JSON to FILE ('-': stdout)")
+      ->type_name("FILE");
   sub->add_option("--csv", o->csv_path, "write all results as CSV to FILE ('-': stdout)")->type_name("FILE");
   sub->add_option("--pairs", o->pair_names, "evaluate only these pairs (comma-separated names)")
       ->delimiter(',')

@@ -1,0 +1,133 @@
+#include "dataset.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "image_io.hpp"
+
+namespace fpstereo {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kColumns = {"pair",     "left",     "right",      "gt_occ",     "gt_noc",
+                                           "noc_mask", "gt_scale", "gt_invalid", "max_disp_px"};
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+// Plain comma separation: the format has no quoting (paths and names contain no commas).
+std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream ss(line);
+  std::string field;
+  while (std::getline(ss, field, ',')) fields.push_back(trim(field));
+  if (!line.empty() && line.back() == ',') fields.emplace_back();  // getline drops a trailing empty field
+  return fields;
+}
+
+// One row's fields by column name, with the location for error messages.
+class Row {
+ public:
+  Row(std::map<std::string, std::string> fields, std::string where)
+      : fields_(std::move(fields)), where_(std::move(where)) {}
+
+  const std::string& operator[](const std::string& column) const { return fields_.at(column); }
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(where_ + ": " + message); }
+
+  double number(const std::string& column) const {
+    const std::string& text = (*this)[column];
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v))
+      fail(fmt::format("{} '{}' is not a number", column, text));
+    return v;
+  }
+
+ private:
+  std::map<std::string, std::string> fields_;
+  std::string where_;
+};
+
+std::map<std::string, size_t> header_columns(const std::string& line, const std::string& csv) {
+  const std::vector<std::string> names = split_fields(line);
+  std::map<std::string, size_t> index;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (!index.emplace(names[i], i).second)
+      throw InputError(fmt::format("'{}' line 1: column '{}' appears twice", csv, names[i]));
+  for (const auto& column : kColumns)
+    if (!index.count(column))
+      throw InputError(fmt::format("'{}' line 1: no column '{}' in the header", csv, column));
+  return index;
+}
+
+std::string dataset_path(const std::string& dir, const std::string& field) {
+  return field.empty() ? "" : (fs::path(dir) / field).string();
+}
+
+DatasetPair pair_from_row(const Row& row, const std::string& dir) {
+  DatasetPair p;
+  p.name = row["pair"];
+  if (p.name.empty()) row.fail("empty pair name");
+  if (row["left"].empty() || row["right"].empty()) row.fail("left and right images are required");
+  p.left = dataset_path(dir, row["left"]);
+  p.right = dataset_path(dir, row["right"]);
+  p.gt_occ = dataset_path(dir, row["gt_occ"]);
+  p.gt_noc = dataset_path(dir, row["gt_noc"]);
+  p.noc_mask = dataset_path(dir, row["noc_mask"]);
+  if (p.has_gt()) {
+    p.gt_scale = row.number("gt_scale");
+    if (p.gt_scale <= 0) row.fail(fmt::format("gt_scale {} must be positive", p.gt_scale));
+    p.gt_invalid = row["gt_invalid"];
+    if (p.gt_invalid != "0" && p.gt_invalid != "inf" && p.gt_invalid != "none")
+      row.fail(fmt::format("gt_invalid '{}': expected 0, inf or none", p.gt_invalid));
+  }
+  if (!row["max_disp_px"].empty()) p.max_disp_px = row.number("max_disp_px");
+  return p;
+}
+
+}  // namespace
+
+std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dataset_dir, ec))
+    throw InputError(fmt::format("dataset '{}': no such directory", dataset_dir));
+  const std::string csv = (fs::path(dataset_dir) / "pairs.csv").string();
+  std::ifstream in(csv);
+  if (!in) throw InputError(fmt::format("dataset '{}': no readable pairs.csv", dataset_dir));
+
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty file", csv));
+  const auto index = header_columns(line, csv);
+
+  std::vector<DatasetPair> pairs;
+  for (int line_no = 2; std::getline(in, line); ++line_no) {
+    if (trim(line).empty()) continue;
+    const std::string where = fmt::format("'{}' line {}", csv, line_no);
+    const std::vector<std::string> fields = split_fields(line);
+    if (fields.size() != index.size())
+      throw InputError(fmt::format("{}: {} fields, expected {}", where, fields.size(), index.size()));
+    std::map<std::string, std::string> by_name;
+    for (const auto& [name, i] : index) by_name[name] = fields[i];
+    DatasetPair pair = pair_from_row(Row(std::move(by_name), where), dataset_dir);
+    const bool duplicate =
+        std::any_of(pairs.begin(), pairs.end(), [&](const DatasetPair& p) { return p.name == pair.name; });
+    if (duplicate) throw InputError(fmt::format("{}: pair '{}' appears twice", where, pair.name));
+    pairs.push_back(std::move(pair));
+  }
+  if (pairs.empty()) throw InputError(fmt::format("'{}': no pairs", csv));
+  return pairs;
+}
+
+}  // namespace fpstereo

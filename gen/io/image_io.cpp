@@ -1,0 +1,309 @@
+#include "image_io.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "widths.hpp"
+
+namespace fpstereo {
+namespace {
+
+std::string size_text(int width, int height) { return fmt::format("{}x{}", width, height); }
+
+// Reads the whole file ourselves (instead of cv::imread) so that "missing" and "not an image"
+// get distinct messages and OpenCV never logs warnings about the path.
+std::vector<uchar> read_bytes(const std::string& path, const std::string& role) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{} '{}': no such file", role, path));
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(fmt::format("{} '{}': is a directory, expected a file", role, path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{} '{}': cannot be read ({})", role, path, std::strerror(errno)));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::string& path, const void* data, size_t size) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (out) out.write(static_cast<const char*>(data), std::streamsize(size));
+  if (out) out.close();
+  if (!out) throw InputError(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+}
+
+void write_png(const cv::Mat& image, const std::string& path) {
+  std::vector<uchar> encoded;
+  cv::imencode(".png", image, encoded);
+  write_bytes(path, encoded.data(), encoded.size());
+}
+
+cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const std::string& role) {
+  cv::Mat image;
+  try {
+    if (!bytes.empty()) image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {
+    image.release();  // a decoder that throws on corrupt data: same answer as one returning empty
+  }
+  if (image.empty()) throw InputError(fmt::format("{} '{}': not a decodable image", role, path));
+  return image;
+}
+
+std::string depth_text(int depth) {
+  switch (depth) {
+    case CV_8U:
+    case CV_8S: return "8-bit";
+    case CV_16U:
+    case CV_16S: return "16-bit";
+    case CV_32S: return "32-bit integer";
+    case CV_16F: return "16-bit float";
+    case CV_32F: return "32-bit float";
+    default: return "64-bit float";
+  }
+}
+
+cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::string& role) {
+  if (image.depth() != CV_8U)
+    throw InputError(fmt::format("{} '{}': {} image, expected 8-bit", role, path, depth_text(image.depth())));
+  cv::Mat1b gray;
+  switch (image.channels()) {
+    case 1: gray = image; break;
+    case 3: cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY); break;
+    case 4: cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY); break;
+    default:
+      throw InputError(fmt::format("{} '{}': {} channels, expected gray, colour or colour with alpha", role,
+                                   path, image.channels()));
+  }
+  return gray;
+}
+
+// ---- PFM -------------------------------------------------------------------------------------
+
+bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+std::string next_token(const std::vector<uchar>& bytes, size_t& pos) {
+  while (pos < bytes.size() && is_space(bytes[pos])) ++pos;
+  std::string token;
+  while (pos < bytes.size() && !is_space(bytes[pos]) && token.size() < 32) token += char(bytes[pos++]);
+  return token;
+}
+
+bool has_pfm_magic(const std::vector<uchar>& bytes) {
+  return bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == 'f' || bytes[1] == 'F') && is_space(bytes[2]);
+}
+
+float decode_float(const uchar* p, bool little_endian) {
+  const uint32_t bits =
+      little_endian ? uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24
+                    : uint32_t(p[3]) | uint32_t(p[2]) << 8 | uint32_t(p[1]) << 16 | uint32_t(p[0]) << 24;
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+int parse_dimension(const std::string& token, const std::string& path) {
+  char* end = nullptr;
+  const long v = std::strtol(token.c_str(), &end, 10);
+  if (token.empty() || *end != '\0' || v < 1 || v > 65535)
+    throw InputError(fmt::format("PFM '{}': bad image size '{}' in the header", path, token));
+  return int(v);
+}
+
+// Header "PF" (3 channels) or "Pf" (1), width, height, scale (negative: little-endian), then one
+// whitespace byte and the raw floats, rows bottom to top. The scale's magnitude is not applied:
+// stereo datasets leave it at 1 and give their own scale.
+cv::Mat1f parse_pfm(const std::vector<uchar>& bytes, const std::string& path) {
+  size_t pos = 0;
+  const int channels = next_token(bytes, pos) == "PF" ? 3 : 1;
+  const int width = parse_dimension(next_token(bytes, pos), path);
+  const int height = parse_dimension(next_token(bytes, pos), path);
+  const std::string scale_token = next_token(bytes, pos);
+  char* end = nullptr;
+  const double scale = std::strtod(scale_token.c_str(), &end);
+  if (scale_token.empty() || *end != '\0' || scale == 0)
+    throw InputError(fmt::format("PFM '{}': bad scale '{}' in the header", path, scale_token));
+  ++pos;  // the single whitespace byte ending the header
+  const size_t row_bytes = size_t(width) * size_t(channels) * 4;
+  if (bytes.size() < pos + row_bytes * size_t(height))
+    throw InputError(
+        fmt::format("PFM '{}': truncated, expected {}x{}x{} floats", path, width, height, channels));
+  const bool little_endian = scale < 0;
+  cv::Mat1f values(height, width);
+  for (int file_row = 0; file_row < height; ++file_row) {
+    const uchar* src = bytes.data() + pos + size_t(file_row) * row_bytes;
+    float* dst = values[height - 1 - file_row];
+    for (int x = 0; x < width; ++x)
+      dst[x] = decode_float(src + size_t(x) * size_t(channels) * 4, little_endian);
+  }
+  return values;
+}
+
+void append_le_float(std::vector<uchar>& out, float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  for (int i = 0; i < 4; ++i) out.push_back(uchar(bits >> (8 * i)));
+}
+
+// ---- ground truth ----------------------------------------------------------------------------
+
+// Non-finite values are dropped whatever the spec, so only "0" changes anything.
+bool zero_means_invalid(const std::string& spec) {
+  if (spec == "0") return true;
+  if (spec == "inf" || spec == "none") return false;
+  throw InputError(fmt::format("ground-truth invalid value '{}': expected 0, inf or none", spec));
+}
+
+cv::Mat1f stored_values(const std::vector<uchar>& bytes, const std::string& path) {
+  if (has_pfm_magic(bytes)) return parse_pfm(bytes, path);
+  const cv::Mat image = decode(bytes, path, "ground truth");
+  if (image.channels() != 1)
+    throw InputError(fmt::format("ground truth '{}': {} channels, expected a single-channel image", path,
+                                 image.channels()));
+  if (image.depth() != CV_8U && image.depth() != CV_16U)
+    throw InputError(
+        fmt::format("ground truth '{}': {} image, expected 8- or 16-bit", path, depth_text(image.depth())));
+  cv::Mat1f values;
+  image.convertTo(values, CV_32F);
+  return values;
+}
+
+// ---- colour preview --------------------------------------------------------------------------
+
+const cv::Scalar kLegendBackground(48, 48, 48);
+const cv::Scalar kLegendText(255, 255, 255);
+constexpr int kLegendWidth = 90;
+constexpr int kMinCanvasHeight = 160;  // room for the legend under small images
+constexpr int kMargin = 10;
+constexpr int kBarLeft = 8, kBarWidth = 16, kLabelLeft = 30;
+constexpr int kSwatchHeight = 14;
+constexpr double kFontScale = 0.4;
+
+void put_label(cv::Mat3b& panel, const std::string& text, int x, int y_centre) {
+  cv::putText(panel, text, {x, y_centre + 4}, cv::FONT_HERSHEY_SIMPLEX, kFontScale, kLegendText, 1,
+              cv::LINE_AA);
+}
+
+cv::Mat3b turbo(const cv::Mat1b& levels) {
+  cv::Mat3b colour;
+  cv::applyColorMap(levels, colour, cv::COLORMAP_TURBO);
+  return colour;
+}
+
+cv::Mat3b colourise(const cv::Mat1f& disp, float max_disp) {
+  cv::Mat1b levels(disp.size()), invalid(disp.size());
+  for (int y = 0; y < disp.rows; ++y)
+    for (int x = 0; x < disp.cols; ++x) {
+      const float d = disp(y, x);
+      invalid(y, x) = std::isfinite(d) ? 0 : 255;
+      levels(y, x) = std::isfinite(d) ? cv::saturate_cast<uchar>(d / max_disp * 255.0f) : 0;
+    }
+  cv::Mat3b colour = turbo(levels);
+  colour.setTo(cv::Scalar::all(0), invalid);
+  return colour;
+}
+
+// Vertical colour bar (max at the top), five labelled ticks, and a black "invalid" swatch.
+void draw_legend(cv::Mat3b panel, float max_disp) {
+  panel.setTo(kLegendBackground);
+  const int bar_top = kMargin;
+  const int swatch_top = panel.rows - kMargin - kSwatchHeight;
+  const int bar_height = swatch_top - kMargin - bar_top;
+  cv::Mat1b ramp(bar_height, kBarWidth);
+  for (int i = 0; i < bar_height; ++i) ramp.row(i).setTo(255 * (bar_height - 1 - i) / (bar_height - 1));
+  turbo(ramp).copyTo(panel(cv::Rect(kBarLeft, bar_top, kBarWidth, bar_height)));
+  const char* format = max_disp >= 20 ? "{:.0f}" : "{:.1f}";
+  for (int i = 0; i <= 4; ++i) {
+    const int y = bar_top + (bar_height - 1) * (4 - i) / 4;
+    cv::line(panel, {kBarLeft + kBarWidth, y}, {kBarLeft + kBarWidth + 3, y}, kLegendText);
+    put_label(panel, fmt::format(fmt::runtime(format), max_disp * float(i) / 4), kLabelLeft, y);
+  }
+  const cv::Rect swatch(kBarLeft, swatch_top, kBarWidth, kSwatchHeight);
+  panel(swatch).setTo(cv::Scalar::all(0));
+  cv::rectangle(panel, swatch, cv::Scalar::all(160));  // outline: black on dark gray needs one
+  put_label(panel, "invalid", kLabelLeft, swatch_top + kSwatchHeight / 2);
+}
+
+}  // namespace
+
+GrayImage load_gray(const std::string& path, const std::string& role) {
+  const cv::Mat1b gray = to_gray(decode(read_bytes(path, role), path, role), path, role);
+  GrayImage image(gray.cols, gray.rows);
+  for (int y = 0; y < gray.rows; ++y) std::copy(gray[y], gray[y] + gray.cols, &image.at(0, y));
+  return image;
+}
+
+void check_pair(const GrayImage& left, const GrayImage& right, const StereoConfig& cfg) {
+  if (left.width != right.width || left.height != right.height)
+    throw InputError(fmt::format("left image is {} but right image is {}: the two must be the same size",
+                                 size_text(left.width, left.height), size_text(right.width, right.height)));
+  if (left.width > cfg.width || left.height > cfg.height)
+    throw InputError(
+        fmt::format("images are {} but the configuration allows at most {} (raise --width/--height)",
+                    size_text(left.width, left.height), size_text(cfg.width, cfg.height)));
+}
+
+cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cfg) {
+  const uint16_t invalid = derive_widths(cfg).invalid_word;
+  cv::Mat1f disp(words.height, words.width);
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x) {
+      const uint16_t w = words.at(x, y);
+      disp(y, x) = w == invalid ? NAN : float(w);
+    }
+  return disp;
+}
+
+void write_kitti_png(const cv::Mat1f& disp, const std::string& path) {
+  cv::Mat_<uint16_t> stored(disp.size());
+  for (int y = 0; y < disp.rows; ++y)
+    for (int x = 0; x < disp.cols; ++x) {
+      const float d = disp(y, x);
+      // 0 is the invalid code, so a valid disparity that would round to 0 is stored as 1.
+      stored(y, x) = std::isfinite(d) ? uint16_t(std::clamp(std::lround(d * 256.0f), 1L, 65535L)) : 0;
+    }
+  write_png(stored, path);
+}
+
+void write_pfm(const cv::Mat1f& disp, const std::string& path) {
+  const std::string header = fmt::format("Pf\n{} {}\n-1\n", disp.cols, disp.rows);
+  std::vector<uchar> bytes(header.begin(), header.end());
+  bytes.reserve(bytes.size() + disp.total() * 4);
+  for (int y = disp.rows - 1; y >= 0; --y)
+    for (int x = 0; x < disp.cols; ++x) {
+      const float d = disp(y, x);
+      append_le_float(bytes, std::isfinite(d) ? d : INFINITY);
+    }
+  write_bytes(path, bytes.data(), bytes.size());
+}
+
+void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path) {
+  if (!(max_disp > 0))
+    throw InputError(fmt::format("colour map for '{}': the disparity range must be positive", path));
+  const cv::Mat3b colour = colourise(disp, max_disp);
+  cv::Mat3b canvas(std::max(disp.rows, kMinCanvasHeight), disp.cols + kLegendWidth);
+  canvas.setTo(kLegendBackground);
+  colour.copyTo(canvas(cv::Rect(0, 0, disp.cols, disp.rows)));
+  draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), max_disp);
+  write_png(canvas, path);
+}
+
+cv::Mat1f read_disparity(const std::string& path, double scale, const std::string& invalid_spec) {
+  const bool zero_invalid = zero_means_invalid(invalid_spec);
+  if (!(scale > 0))
+    throw InputError(fmt::format("ground truth '{}': scale {} must be positive", path, scale));
+  cv::Mat1f disp = stored_values(read_bytes(path, "ground truth"), path);
+  for (auto& v : disp) {
+    const bool no_value = !std::isfinite(v) || (zero_invalid && v == 0);
+    v = no_value ? NAN : float(v / scale);
+  }
+  return disp;
+}
+
+}  // namespace fpstereo
