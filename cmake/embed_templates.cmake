@@ -1,0 +1,16 @@
+# Writes OUTPUT: a C++ source that holds every rtl_templates/*.v file as a string, so the
+# generator is one self-contained binary. Run at build time (cmake -P) with TEMPLATE_DIR, OUTPUT.
+file(GLOB templates "${TEMPLATE_DIR}/*.v")
+list(SORT templates)
+set(body "// Generated from rtl_templates/ by cmake/embed_templates.cmake. Do not edit.\n")
+string(APPEND body "#include \"rtl_templates.hpp\"\n\nnamespace fpstereo::rtl {\n\n")
+string(APPEND body "const std::map<std::string, std::string>& templates() {\n")
+string(APPEND body "  static const std::map<std::string, std::string> files = {\n")
+foreach(path IN LISTS templates)
+  get_filename_component(name "${path}" NAME_WE)
+  file(READ "${path}" text)
+  string(APPEND body "      {\"${name}\", R\"FPSV(${text})FPSV\"},\n")
+endforeach()
+string(APPEND body "  };\n  return files;\n}\n\n}  // namespace fpstereo::rtl\n")
+file(WRITE "${OUTPUT}.tmp" "${body}")
+file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)

@@ -1,0 +1,60 @@
+// fpstereo-rtl: emit the Verilog of a configuration.
+//   fpstereo-rtl --dmax 128 --uf 32 > top.v       one self-contained file
+//   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "config_cli.hpp"
+#include "rtl_emitter.hpp"
+
+namespace fpstereo {
+namespace {
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
+  std::string filelist;
+  for (const auto& file : rtl::emit(design)) {
+    write_file(dir / file.name, file.text);
+    filelist += file.name + "\n";
+  }
+  write_file(dir / "filelist.f", filelist);
+  nlohmann::ordered_json config;
+  for (const auto& spec : param_specs()) config[spec.name] = spec.get(design.cfg);
+  write_file(dir / "config.json", config.dump(2) + "\n");
+}
+
+}  // namespace
+}  // namespace fpstereo
+
+int main(int argc, char** argv) {
+  using namespace fpstereo;
+  CLI::App app{"fpstereo-rtl: emit the synthesizable Verilog of an SGM stereo pipeline"};
+  ConfigFlags flags;
+  flags.add_to(app);
+  std::string out_dir;
+  app.add_option("-o,--output-dir", out_dir, "write one file per module, filelist.f and config.json here");
+  try {
+    app.parse(argc, argv);
+    const rtl::RtlDesign design = rtl::plan(flags.resolve());
+    if (out_dir.empty()) std::cout << rtl::emit_single_file(design);
+    else write_directory(design, out_dir);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : kExitBadInput;
+  } catch (const ConfigError& e) {
+    return report_error("fpstereo-rtl", std::string("invalid config: ") + e.what());
+  } catch (const std::exception& e) {
+    return report_error("fpstereo-rtl", e.what());
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+`resetall
+`default_nettype none
+// UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
+// of the codes; rank: absolute difference. Where the match pixel lies left of the image
+// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). One register stage.
+module fpstereo_cost_lanes #(
+  // 0 = census (Hamming distance), 1 = rank (absolute difference)
+  parameter KIND = 0,
+  parameter CODE_W = 48,
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter COST_MAX = 48,
+  // bits of the group index and of the x coordinate
+  parameter GROUP_W = 2,
+  parameter X_W = 11
+) (
+  input  wire                 clk,
+  input  wire                 en,
+  input  wire [CODE_W-1:0]    base_code,
+  input  wire [UF*CODE_W-1:0] match_codes,
+  input  wire [GROUP_W-1:0]   group,
+  input  wire [X_W-1:0]       x,
+  output reg  [UF*COST_W-1:0] costs
+);
+  // wide enough for x and for any disparity, plus one bit so both zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 1;
+  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0];
+      reg  [COST_W-1:0] cost;
+      integer b;
+      always @* begin
+        cost = 0;
+        if (KIND == 0) begin
+          for (b = 0; b < CODE_W; b = b + 1) cost = cost + {{(COST_W-1){1'b0}}, base_code[b] ^ m[b]};
+        end else begin
+          cost = base_code > m ? base_code - m : m - base_code;
+        end
+      end
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= (x_wide < d) ? COST_MAX[COST_W-1:0] : cost;
+    end
+  endgenerate
+endmodule
+`resetall

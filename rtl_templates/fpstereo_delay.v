@@ -1,0 +1,25 @@
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high.
+module fpstereo_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall

@@ -1,0 +1,47 @@
+`resetall
+`default_nettype none
+// One aggregation path for UF lanes (docs/semantics.md, section 3):
+//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
+// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
+// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
+// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
+module fpstereo_path_lanes #(
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter PATH_W = 8,
+  parameter P1 = 7,
+  parameter P2 = 86
+) (
+  input  wire                 clk,
+  input  wire                 en,
+  input  wire [UF*COST_W-1:0] cost,
+  input  wire                 has_pred,
+  input  wire [UF*PATH_W-1:0] prev,
+  input  wire [PATH_W-1:0]    prev_below,
+  input  wire [PATH_W-1:0]    prev_above,
+  input  wire [PATH_W-1:0]    prev_min,
+  output reg  [UF*PATH_W-1:0] path
+);
+  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
+  localparam EXT_W = PATH_W + 1;
+  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
+  wire [EXT_W-1:0] jump = {1'b0, prev_min} + P2[EXT_W-1:0];
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + P1[EXT_W-1:0];
+      wire [EXT_W-1:0] stay = same < jump ? same : jump;
+      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
+      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits.
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      always @(posedge clk)
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+    end
+  endgenerate
+endmodule
+`resetall

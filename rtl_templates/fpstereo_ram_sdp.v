@@ -1,0 +1,28 @@
+`resetall
+`default_nettype none
+// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
+// register only loads when re is high, so a stalled pipeline keeps its read data.
+module fpstereo_ram_sdp #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 16,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 4
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire              re,
+  input  wire [ADDR_W-1:0] raddr,
+  output reg  [WIDTH-1:0]  rdata
+);
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+
+  always @(posedge clk) begin
+    if (we) mem[waddr] <= wdata;
+    if (re) rdata <= mem[raddr];
+  end
+endmodule
+`resetall

@@ -1,0 +1,475 @@
+`resetall
+`default_nettype none
+// The SGM pipeline between the input and output skid buffers (docs/architecture.md): front end
+// in raster order, cost reorder RAM, aggregation in K interleaved chains, winner-take-all,
+// disparity reorder RAM and output. Every register advances only in steps where adv is high,
+// so the whole pipeline stalls together; the stages find their pixel from step counters.
+module fpstereo_sgm_core #(
+  // image and time base: W x H pixels, ROW_SLOTS = K * SLEN slots per row-time, G steps per slot
+  parameter W = 64,
+  parameter H = 16,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter SLEN = 32,
+  parameter G = 4,
+  // disparities: DMAX = G * UF
+  parameter UF = 8,
+  parameter DMAX = 32,
+  // cost function: 0 = census, 1 = rank; window side N; transform code width
+  parameter COST_KIND = 0,
+  parameter N = 5,
+  parameter CODE_W = 24,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  // path cost, sum and disparity widths (docs/semantics.md, "Bit widths")
+  parameter PATH_W = 7,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter P1 = 7,
+  parameter P2 = 86,
+  // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
+  parameter PATHS = 15,
+  // compare-select levels per register stage in the minimum trees, and the trees' latencies
+  parameter LEVELS_PER_STAGE = 3,
+  parameter PATH_TREE_LAT = 1,
+  parameter WTA_TREE_LAT = 1,
+  // steps after the frame's first step at which aggregation and output begin
+  parameter AGG_START = 100,
+  parameter OUT_START = 200,
+  // counter widths
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter G_W = 2,
+  parameter K_W = 1,
+  parameter LANE_W = 3,
+  parameter STEP_W = 20
+) (
+  input  wire              clk,
+  input  wire              rst,
+  // one pixel of each image, taken when in_take is high
+  input  wire              in_valid,
+  input  wire [7:0]        in_left,
+  input  wire [7:0]        in_right,
+  output wire              in_take,
+  // output word (invalid flag above the disparity), pushed when out_push is high
+  input  wire              out_ready,
+  output wire              out_push,
+  output wire [DISP_W:0]   out_word,
+  output wire              out_first,
+  output wire              out_last
+);
+  localparam R = N / 2;
+  localparam ONES = {PATH_W{1'b1}};
+  localparam COST_DEPTH = K * ROW_SLOTS * G;
+  localparam COST_AW = $clog2(COST_DEPTH);
+  localparam ROW_DEPTH = (W + 1) * G;
+  localparam ROW_AW = $clog2(ROW_DEPTH);
+  localparam MIN_AW = $clog2(W + 1);
+  localparam STATE_DEPTH = K * G;
+  localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
+  localparam DISP_DEPTH = K * ROW_SLOTS;
+  localparam DISP_AW = $clog2(DISP_DEPTH);
+  localparam LANES_W = UF * PATH_W;
+
+  // ------------------------------------------------------------------------------------------
+  // Global advance and frame sequencing.
+  wire in_due, out_due, frame_done;
+  wire adv = !(in_due && !in_valid) && !(out_due && !out_ready);
+  reg  [STEP_W-1:0] step;
+  always @(posedge clk)
+    if (rst) step <= 0;
+    else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
+  wire restart = rst || (adv && frame_done);
+
+  // ------------------------------------------------------------------------------------------
+  // Front end: input counters (group, slot, row-time).
+  reg [G_W-1:0] gi;
+  reg [X_W-1:0] si;
+  reg [Y_W-1:0] ti;
+  wire slot_end = gi == G - 1;
+  always @(posedge clk)
+    if (restart) begin
+      gi <= 0;
+      si <= 0;
+      ti <= 0;
+    end else if (adv) begin
+      gi <= slot_end ? {G_W{1'b0}} : gi + 1'b1;
+      if (slot_end) begin
+        si <= (si == ROW_SLOTS - 1) ? {X_W{1'b0}} : si + 1'b1;
+        if (si == ROW_SLOTS - 1) ti <= ti + 1'b1;
+      end
+    end
+  assign in_due  = slot_end && si < W && ti < H;
+  assign in_take = adv && in_due;
+  wire shift = adv && slot_end;
+  wire [X_W-1:0] next_col = (si == ROW_SLOTS - 1) ? {X_W{1'b0}} : si + 1'b1;
+
+  wire [N*N*8-1:0] window_left, window_right;
+  fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .pixel(in_due ? in_left : 8'd0), .window(window_left));
+  fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .pixel(in_due ? in_right : 8'd0), .window(window_right));
+
+  // Centre of the window that forms in this shift: r rows and r slots behind the input
+  // (integers: the centre may lie left of or above the image).
+  integer centre_x, centre_y, window_x, window_y;
+  always @* begin
+    centre_x = si - R;
+    centre_y = ti - R;
+    if (centre_x < 0) begin
+      centre_x = centre_x + ROW_SLOTS;
+      centre_y = centre_y - 1;
+    end
+  end
+  always @(posedge clk)
+    if (shift) begin
+      window_x <= centre_x;
+      window_y <= centre_y;
+    end
+
+  // Window positions inside the image (semantics section 1).
+  reg [N-1:0] row_valid, col_valid;
+  integer v;
+  always @*
+    for (v = 0; v < N; v = v + 1) begin
+      row_valid[v] = window_y + v - R >= 0 && window_y + v - R < H;
+      col_valid[v] = window_x + v - R >= 0 && window_x + v - R < W;
+    end
+
+  // Transform, registered once per slot.
+  wire [CODE_W-1:0] code_left, code_right;
+  generate
+    if (COST_KIND == 0) begin : census
+      fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
+      fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
+    end else begin : rank
+      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
+      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
+    end
+  endgenerate
+  reg [CODE_W-1:0] code_base_t, code_match_t;
+  integer transform_x, transform_y;
+  always @(posedge clk)
+    if (shift) begin
+      code_base_t  <= code_left;
+      code_match_t <= code_right;
+      transform_x  <= window_x;
+      transform_y  <= window_y;
+    end
+
+  // Match history and the base code of the pixel whose costs are computed in this slot.
+  reg [CODE_W-1:0] code_base_h;
+  integer history_x, history_y;
+  always @(posedge clk)
+    if (shift) begin
+      code_base_h <= code_base_t;
+      history_x   <= transform_x;
+      history_y   <= transform_y;
+    end
+  wire [UF*CODE_W-1:0] match_lanes;
+  fpstereo_match_ring #(.CODE_W(CODE_W), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .code_in(code_match_t), .lanes(match_lanes));
+
+  wire history_valid = history_x < W && history_y >= 0 && history_y < H;
+  wire [UF*COST_W-1:0] costs;
+  fpstereo_cost_lanes #(.KIND(COST_KIND), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+                        .GROUP_W(G_W), .X_W(X_W)) cost_lanes (
+    .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(gi),
+    .x(history_x[X_W-1:0]), .costs(costs));
+  reg             cost_valid;
+  reg [X_W-1:0]   cost_x;
+  reg [K_W-1:0]   cost_row_slot;
+  reg [G_W-1:0]   cost_group;
+  always @(posedge clk)
+    if (adv) begin
+      cost_valid    <= history_valid;
+      cost_x        <= history_x[X_W-1:0];
+      cost_row_slot <= history_y % K;
+      cost_group    <= gi;
+    end
+
+  // ------------------------------------------------------------------------------------------
+  // Cost reorder RAM: K rows, written in raster order, read in chain order.
+  wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
+  wire [COST_AW-1:0] cost_raddr;
+  wire [UF*COST_W-1:0] cost_q;
+  fpstereo_ram_sdp #(.WIDTH(UF*COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+    .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
+    .re(adv), .raddr(cost_raddr), .rdata(cost_q));
+
+  // ------------------------------------------------------------------------------------------
+  // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
+  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  wire agg_on = step >= AGG_START;
+  reg [G_W-1:0] ga;
+  reg [K_W-1:0] ka, base, ta_slot;  // ta_slot = ta mod K
+  reg [X_W-1:0] ja;
+  reg [Y_W-1:0] ta;
+  always @(posedge clk)
+    if (restart) begin
+      ga <= 0;
+      ka <= 0;
+      ja <= 0;
+      ta <= 0;
+      base <= 0;
+      ta_slot <= 0;
+    end else if (adv && agg_on) begin
+      ga <= (ga == G - 1) ? {G_W{1'b0}} : ga + 1'b1;
+      if (ga == G - 1) begin
+        ka <= (ka == K - 1) ? {K_W{1'b0}} : ka + 1'b1;
+        if (ka == K - 1) begin
+          ja <= (ja == SLEN - 1) ? {X_W{1'b0}} : ja + 1'b1;
+          if (ja == SLEN - 1) begin
+            ta <= ta + 1'b1;
+            ta_slot <= (ta_slot == K - 1) ? {K_W{1'b0}} : ta_slot + 1'b1;
+            base <= (base == 0) ? K - 1 : base - 1'b1;
+          end
+        end
+      end
+    end
+  wire [X_W-1:0] x0 = ka * SLEN + ja;
+  wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
+  wire           active0 = agg_on && !row0[Y_W] && row0 < H && x0 < W;
+  wire [K_W-1:0] row_slot0 = (ta_slot + K - ka) % K;
+  wire [K_W-1:0] chain_slot0 = (ka + base) % K;
+  assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
+
+  // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W;
+  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0};
+  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
+  always @(posedge clk)
+    if (adv) begin
+      tag1 <= tag0;
+      tag2 <= tag1;
+      tag3 <= tag2;
+      tag4 <= tag3;
+    end
+  `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
+  `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W-1:0]
+
+  wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
+  wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
+  wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
+  wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
+  wire             first_group2 = g2 == 0;
+  wire             last_group2 = g2 == G - 1;
+  wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
+  wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
+
+  wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
+  wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
+  wire [K_W-1:0]   chain3 = `FPS_TAG_CHAIN(tag3);
+  wire             active3 = `FPS_TAG_ACTIVE(tag3);
+  wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
+
+  // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here).
+  reg [UF*COST_W-1:0] cost2;
+  always @(posedge clk)
+    if (adv) cost2 <= cost_q;
+
+  // Path tag delayed by the path minimum trees' latency, for the running minimum.
+  wire [TAG_W-1:0] tag_m;
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .en(adv), .in(tag3), .out(tag_m));
+  wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
+
+  wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
+  wire [PATH_W-1:0]  min_0, min_45, min_90, min_135;  // finished minimum of the pixel in tag_m
+
+  // ---- 0 degrees: the predecessor is the chain's previous pixel (state RAM by chain slot).
+  generate
+    if (PATHS & 1) begin : path0
+      wire [LANES_W-1:0] cur, nxt;
+      fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+        .clk(clk), .we(adv && active3), .waddr(chain3 * G + g3), .wdata(path_0),
+        .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
+      reg [PATH_W-1:0] below_q;
+      always @(posedge clk)
+        if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
+      reg [PATH_W-1:0] minimum [0:K-1];
+      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
+        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
+        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
+        .prev_min(minimum[chain2]), .path(path_0));
+      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G(G), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
+      always @(posedge clk)
+        if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
+    end else begin : no_path0
+      assign path_0 = 0;
+    end
+  endgenerate
+
+  // ---- 45 degrees: the predecessor is (x-1, row-1). The chain reads the row above at x and
+  // keeps it (state RAM) for its next pixel, before its own write overwrites it.
+  generate
+    if (PATHS & 2) begin : path45
+      wire [LANES_W-1:0] above_q, cur, nxt;
+      wire [PATH_W-1:0] above_min_q;
+      reg  [LANES_W-1:0] above2;
+      reg  [PATH_W-1:0] above_min2;
+      fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+        .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_45),
+        .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
+      fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+        .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
+        .re(adv), .raddr(x0), .rdata(above_min_q));
+      always @(posedge clk)
+        if (adv) begin
+          above2 <= above_q;
+          above_min2 <= above_min_q;
+        end
+      fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+        .clk(clk), .we(adv), .waddr(state_addr2), .wdata(above2),
+        .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
+      reg [PATH_W-1:0] below_q;
+      always @(posedge clk)
+        if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
+      reg [PATH_W-1:0] minimum [0:K-1];
+      always @(posedge clk)
+        if (adv && last_group2) minimum[chain2] <= above_min2;
+      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
+        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
+        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
+        .prev_min(minimum[chain2]), .path(path_45));
+      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G(G), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
+    end else begin : no_path45
+      assign path_45 = 0;
+    end
+  endgenerate
+
+  // ---- 90 and 135 degrees: the predecessor is (x, row-1) or (x+1, row-1), read from the row
+  // RAM one group ahead, so the d+1 neighbour of the last lane is there before it is overwritten.
+  generate
+    genvar p;
+    for (p = 0; p < 2; p = p + 1) begin : vertical
+      localparam ENABLED = p == 0 ? (PATHS & 4) : (PATHS & 8);
+      localparam DX = p;  // predecessor column offset
+      if (ENABLED) begin : path
+        wire [LANES_W-1:0] above_q, path_out;
+        wire [PATH_W-1:0]  above_min_q, min_out;
+        reg  [LANES_W-1:0] cur;
+        reg  [PATH_W-1:0]  below_q, above_min2;
+        fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+          .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_out),
+          .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
+        fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+          .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
+          .re(adv), .raddr(x0 + DX), .rdata(above_min_q));
+        always @(posedge clk)
+          if (adv) begin
+            cur <= above_q;
+            below_q <= cur[LANES_W-1 -: PATH_W];
+            above_min2 <= above_min_q;
+          end
+        fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
+          .clk(clk), .en(adv), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < W), .prev(cur),
+          .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
+          .prev_min(above_min2), .path(path_out));
+        fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G(G), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+          reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
+      end
+    end
+    if (PATHS & 4) begin : path90_out
+      assign path_90 = vertical[0].path.path_out;
+    end else begin : no_path90
+      assign path_90 = 0;
+    end
+    if (PATHS & 8) begin : path135_out
+      assign path_135 = vertical[1].path.path_out;
+    end else begin : no_path135
+      assign path_135 = 0;
+    end
+  endgenerate
+
+  // ---- Sum over the paths (S3 -> S4).
+  reg [UF*SUM_W-1:0] sum4;
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane_sum
+      wire [SUM_W-1:0] s = {{(SUM_W-PATH_W){1'b0}}, path_0[l*PATH_W +: PATH_W]}
+                         + {{(SUM_W-PATH_W){1'b0}}, path_45[l*PATH_W +: PATH_W]}
+                         + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
+                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
+      always @(posedge clk)
+        if (adv) sum4[l*SUM_W +: SUM_W] <= s;
+    end
+  endgenerate
+
+  // ------------------------------------------------------------------------------------------
+  // Winner-take-all: minimum over the lanes, then over the groups (the earlier group wins ties).
+  wire [SUM_W-1:0]  group_min;
+  wire [LANE_W-1:0] group_lane;
+  fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) wta_tree (
+    .clk(clk), .en(adv), .values(sum4), .min_value(group_min), .min_index(group_lane));
+  wire [TAG_W-1:0] tag_w;
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (.clk(clk), .en(adv), .in(tag4), .out(tag_w));
+  wire [G_W-1:0]   g_w = `FPS_TAG_GROUP(tag_w);
+  wire [DISP_W-1:0] group_disparity = g_w * UF + group_lane;
+  reg  [SUM_W-1:0]  best_sum;
+  reg  [DISP_W-1:0] best_disparity;
+  wire take_group = g_w == 0 || group_min < best_sum;
+  wire [DISP_W-1:0] disparity_w = take_group ? group_disparity : best_disparity;
+  always @(posedge clk)
+    if (adv && take_group) begin
+      best_sum <= group_min;
+      best_disparity <= group_disparity;
+    end
+
+  // ------------------------------------------------------------------------------------------
+  // Disparity reorder RAM (K rows) and output in raster order.
+  wire [Y_W:0] row_w = `FPS_TAG_ROW(tag_w);
+  wire [DISP_AW-1:0] disp_waddr = (row_w % K) * ROW_SLOTS + `FPS_TAG_X(tag_w);
+  wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == G - 1;
+
+  wire out_on = step >= OUT_START;
+  reg [G_W-1:0] go;
+  reg [X_W-1:0] so;
+  reg [Y_W-1:0] to;
+  always @(posedge clk)
+    if (restart) begin
+      go <= 0;
+      so <= 0;
+      to <= 0;
+    end else if (adv && out_on) begin
+      go <= (go == G - 1) ? {G_W{1'b0}} : go + 1'b1;
+      if (go == G - 1) begin
+        so <= (so == ROW_SLOTS - 1) ? {X_W{1'b0}} : so + 1'b1;
+        if (so == ROW_SLOTS - 1) to <= to + 1'b1;
+      end
+    end
+  wire read_out = out_on && go == G - 1 && so < W && to < H;
+  wire [DISP_W-1:0] disparity_q;
+  fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+    .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(disparity_w),
+    .re(adv && read_out), .raddr((to % K) * ROW_SLOTS + so), .rdata(disparity_q));
+  reg           out_pending;
+  reg [X_W-1:0] out_x;
+  reg [Y_W-1:0] out_y;
+  always @(posedge clk)
+    if (restart) out_pending <= 1'b0;
+    else if (adv) begin
+      out_pending <= read_out;
+      out_x <= so;
+      out_y <= to;
+    end
+  assign out_due    = out_pending;
+  assign out_push   = adv && out_pending;
+  assign out_word   = {1'b0, disparity_q};
+  assign out_first  = out_x == 0 && out_y == 0;
+  assign out_last   = out_x == W - 1;
+  assign frame_done = out_pending && out_x == W - 1 && out_y == H - 1;
+
+  `undef FPS_TAG_ACTIVE
+  `undef FPS_TAG_X
+  `undef FPS_TAG_ROW
+  `undef FPS_TAG_GROUP
+  `undef FPS_TAG_CHAIN
+endmodule
+`resetall
