@@ -32,15 +32,18 @@ module fpstereo_cost_lanes #(
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
       wire [D_W-1:0]    d = group_base + l[D_W-1:0];
-      reg  [COST_W-1:0] cost;
-      integer b;
-      always @* begin
-        cost = 0;
-        if (KIND == 0) begin
-          for (b = 0; b < CODE_W; b = b + 1) cost = cost + {{(COST_W-1){1'b0}}, base_code[b] ^ m[b]};
-        end else begin
-          cost = base_code > m ? base_code - m : m - base_code;
+      wire [COST_W-1:0] cost;
+      if (KIND == 0) begin : hamming
+        reg [COST_W-1:0] count;
+        integer b;
+        always @* begin
+          count = 0;
+          for (b = 0; b < CODE_W; b = b + 1) count = count + {{(COST_W-1){1'b0}}, base_code[b] ^ m[b]};
         end
+        assign cost = count;
+      end else begin : absolute_difference
+        // rank values and costs have the same width
+        assign cost = base_code > m ? base_code - m : m - base_code;
       end
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= (x_wide < d) ? COST_MAX[COST_W-1:0] : cost;

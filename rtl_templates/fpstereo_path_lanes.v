@@ -37,8 +37,10 @@ module fpstereo_path_lanes #(
       wire [EXT_W-1:0] stay = same < jump ? same : jump;
       wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
       wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
-      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits.
+      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
+      /* verilator lint_off UNUSEDSIGNAL */
       wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      /* verilator lint_on UNUSEDSIGNAL */
       always @(posedge clk)
         if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
     end

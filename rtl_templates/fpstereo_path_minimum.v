@@ -6,7 +6,6 @@
 module fpstereo_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
-  parameter G = 4,
   parameter G_W = 2,
   parameter LEVELS_PER_STAGE = 3
 ) (

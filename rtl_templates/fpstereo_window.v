@@ -15,22 +15,25 @@ module fpstereo_window #(
   input  wire              clk,
   // high in the step where this slot's pixel enters
   input  wire              shift,
-  // column of the entering pixel, and the column of the next slot
+  // column of the entering pixel, and the column of the next slot (below ROW_SLOTS)
+  /* verilator lint_off UNUSEDSIGNAL */  // wider than the line buffer address when ROW_SLOTS is a power of two
   input  wire [ADDR_W-1:0] col,
   input  wire [ADDR_W-1:0] next_col,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [7:0]        pixel,
   output wire [N*N*8-1:0]  window
 );
   localparam STORED_W = (N - 1) * 8;
+  localparam LB_AW = $clog2(ROW_SLOTS);
 
   // stored[i*8 +: 8] is the pixel i + 1 rows above the entering one.
   wire [STORED_W-1:0] stored;
   // The column moves down one row: the entering pixel on top, the oldest row dropped (N >= 3).
   wire [STORED_W-1:0] updated = {stored[STORED_W-9:0], pixel};
 
-  fpstereo_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(ADDR_W)) line_buffer (
-    .clk(clk), .we(shift), .waddr(col), .wdata(updated),
-    .re(shift), .raddr(next_col), .rdata(stored));
+  fpstereo_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+    .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
+    .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
 
   reg [N*N*8-1:0] window_q;
   assign window = window_q;
