@@ -277,7 +277,9 @@ module fpstereo_sgm_core #(
   `define FPS_TAG_CHAIN(t)  t[K_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
+  /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
   wire             first_group2 = g2 == 0;
@@ -290,7 +292,9 @@ module fpstereo_sgm_core #(
   wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
   wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
   wire             active3 = `FPS_TAG_ACTIVE(tag3);
+  /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
   wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
+  /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here).
   reg [UF*COST_W-1:0] cost2;

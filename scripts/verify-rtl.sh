@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Generates the RTL for one configuration, lints it, builds its Verilator test bench and runs it.
+#   scripts/verify-rtl.sh [--build-dir B] [config flags] [-- test bench args]
+# B (default: build in the repository) must hold a built fpstereo-rtl. Everything goes to
+# B/rtl/<hash of the config flags>/{rtl,tb}. Exits with the test bench's status (0 pass,
+# 1 mismatch or protocol error, 2 bad input, 3 timeout), the generator's status if it fails
+# (2 for a bad configuration), or 1 when linting or building fails.
+set -euo pipefail
+fail() { echo "verify-rtl: $*" >&2; exit 1; }
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build
+config_flags=()
+tb_args=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
+                 shift 2 ;;
+    --) shift; tb_args=("$@"); break ;;
+    *) config_flags+=("$1"); shift ;;
+  esac
+done
+[ -x "$build/fpstereo-rtl" ] || fail "$build/fpstereo-rtl not found: build the project first (scripts/build.sh)"
+
+work=$build/rtl/$(printf '%s\n' "${config_flags[@]}" | sha1sum | cut -c1-12)
+rtl=$work/rtl
+tb=$work/tb
+
+# 1. Generate into a fresh directory, then copy over only what changed, so that an unchanged
+#    design is neither re-verilated nor recompiled.
+rm -rf "$work/rtl.new"
+"$build/fpstereo-rtl" "${config_flags[@]}" -o "$work/rtl.new"
+mkdir -p "$rtl"
+for f in "$work/rtl.new"/*; do cmp -s "$f" "$rtl/${f##*/}" || cp "$f" "$rtl/"; done
+for f in "$rtl"/*; do [ -e "$work/rtl.new/${f##*/}" ] || rm "$f"; done
+rm -rf "$work/rtl.new"
+
+# 2. Lint: any warning fails.
+lint=$(cd "$rtl" && verilator --lint-only -Wall -f filelist.f 2>&1) || { echo "$lint" >&2; fail "lint failed in $rtl"; }
+
+# 3. Configure (once) and build the test bench, showing the log only when it fails.
+if [ ! -f "$tb/CMakeCache.txt" ]; then
+  cmake -S "$root/verilator_tb" -B "$tb" -G Ninja -DRTL_DIR="$rtl" -DFPSTEREO_BUILD_DIR="$build" \
+    -DFPSTEREO_SOURCE_DIR="$root" >"$work/configure.log" 2>&1 ||
+    { cat "$work/configure.log" >&2; rm -rf "$tb"; fail "configuring the test bench failed"; }
+fi
+cmake --build "$tb" -j "$(nproc)" >"$work/build.log" 2>&1 ||
+  { cat "$work/build.log" >&2; fail "building the test bench failed"; }
+
+# 4. Run it.
+exec "$tb/fpstereo-tb" "${tb_args[@]}"
