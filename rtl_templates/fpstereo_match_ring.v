@@ -1,32 +1,41 @@
 `resetall
 `default_nettype none
-// The last DMAX match-image codes, in a ring that rotates by UF each step, so lane l always
-// reads disparity g*UF + l in step g of a slot from ring[l], without a wide multiplexer. In a
-// slot's last step the ring completes its turn and shifts the next code in:
-// after it, ring[i] holds the code of the pixel i columns left of the new one.
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
 module fpstereo_match_ring #(
-  // code width
-  parameter CODE_W = 48,
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
   // disparity range
   parameter DMAX = 128,
   // disparities per step
   parameter UF = 32
 ) (
-  input  wire               clk,
-  input  wire               en,
-  input  wire               slot_end,
-  input  wire [CODE_W-1:0]  code_in,
-  output wire [UF*CODE_W-1:0] lanes
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
 );
-  reg [DMAX*CODE_W-1:0] ring;
-  assign lanes = ring[UF*CODE_W-1:0];
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
 
-  integer i;
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
   always @(posedge clk)
     if (en)
-      for (i = 0; i < DMAX; i = i + 1)
-        if (!slot_end) ring[i*CODE_W +: CODE_W] <= ring[((i + UF) % DMAX)*CODE_W +: CODE_W];
-        else if (i == 0) ring[0 +: CODE_W] <= code_in;
-        else ring[i*CODE_W +: CODE_W] <= ring[((i - 1 + UF) % DMAX)*CODE_W +: CODE_W];
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
 endmodule
 `resetall

@@ -15,12 +15,19 @@ module fpstereo_sgm_core #(
   // disparities: DMAX = G * UF
   parameter UF = 8,
   parameter DMAX = 32,
-  // cost function: 0 = census, 1 = rank; window side N; transform code width
+  // cost function: 0 = census, 1 = rank, 2 = SAD, 3 = ZSAD, 4 = SHD; window side N; census code
+  // or rank width; SHD summation window; cost lanes' latency
   parameter COST_KIND = 0,
   parameter N = 5,
   parameter CODE_W = 24,
+  parameter SHD_K = 3,
   parameter COST_W = 5,
   parameter COST_MAX = 24,
+  parameter COST_LAT = 1,
+  // SAD/ZSAD: width of a window column's pixel sum; ZSAD: mean = (sum * MEAN_MUL) >> MEAN_SHIFT
+  parameter COLSUM_W = 11,
+  parameter MEAN_MUL = 1,
+  parameter MEAN_SHIFT = 0,
   // path cost, sum and disparity widths (docs/semantics.md, "Bit widths")
   parameter PATH_W = 7,
   parameter SUM_W = 9,
@@ -121,10 +128,10 @@ module fpstereo_sgm_core #(
   wire [N*N*8-1:0] window_left, window_right;
   fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .pixel(in_due ? in_left : 8'd0), .window(window_left));
+    .word(in_due ? in_left : 8'd0), .window(window_left));
   fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .pixel(in_due ? in_right : 8'd0), .window(window_right));
+    .word(in_due ? in_right : 8'd0), .window(window_right));
 
   // Centre of the window that forms in this shift: r rows and r slots behind the input. Rows
   // are signed, since the centre may lie above the image.
@@ -132,14 +139,23 @@ module fpstereo_sgm_core #(
   wire signed [YS_W-1:0] centre_y = $signed({2'b00, ti}) - R_Y - ((si >= R_X[X_W-1:0]) ? 0 : 1);
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
+  reg  newest_in_row;
+  reg  signed [YS_W-1:0] newest_y;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
+      newest_in_row <= {1'b0, si} < W_X;
+      newest_y <= $signed({2'b00, ti}) - R_Y;
     end
 
   // Window positions inside the image (semantics section 1).
   wire [N-1:0] row_valid, col_valid;
+  /* verilator lint_off UNUSEDSIGNAL */  // only the window costs (SAD, ZSAD) use it
+  wire [N-1:0] newest_row_valid;
+  /* verilator lint_on UNUSEDSIGNAL */
   genvar v;
   generate
     for (v = 0; v < N; v = v + 1) begin : bounds
@@ -147,72 +163,200 @@ module fpstereo_sgm_core #(
       localparam signed [YS_W-1:0] V_Y = v;
       wire [X_W:0] column = {1'b0, window_x} + V_X;  // image column + R
       wire signed [YS_W-1:0] row = window_y + V_Y;   // image row + R
+      wire signed [YS_W-1:0] newest_row = newest_y + V_Y;  // image row + R
       assign col_valid[v] = column >= R_X && column < W_X + R_X;
       assign row_valid[v] = row >= R_Y && row < H_Y + R_Y;
+      assign newest_row_valid[v] = newest_in_row && newest_row >= R_Y && newest_row < H_Y + R_Y;
     end
   endgenerate
 
-  // Transform, registered once per slot.
-  wire [CODE_W-1:0] code_left, code_right;
+  // Transform, match history and cost lanes of the chosen cost function. Each branch sets
+  // history_x / history_y: the centre whose costs the lanes compute in this slot.
+  reg  [X_W-1:0] history_x;
+  reg  signed [YS_W-1:0] history_y;
+  wire [UF*COST_W-1:0] costs;
   generate
-    if (COST_KIND == 0) begin : census
+    if (COST_KIND <= 1) begin : point_cost
+      // Census or rank: one code per pixel, registered once per slot.
+      wire [CODE_W-1:0] code_left, code_right;
+      if (COST_KIND == 0) begin : census
+        fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
+        fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
+      end else begin : rank
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
+      end
+      reg [CODE_W-1:0] code_base_t, code_match_t, code_base_h;
+      reg [X_W-1:0] transform_x;
+      reg signed [YS_W-1:0] transform_y;
+      always @(posedge clk)
+        if (shift) begin
+          code_base_t  <= code_left;
+          code_match_t <= code_right;
+          transform_x  <= window_x;
+          transform_y  <= window_y;
+          code_base_h  <= code_base_t;
+          history_x    <= transform_x;
+          history_y    <= transform_y;
+        end
+      wire [UF*CODE_W-1:0] match_lanes;
+      fpstereo_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
+        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match_t), .view(match_lanes));
+      fpstereo_cost_lanes #(.KIND(COST_KIND), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+                            .GROUP_W(G_W), .X_W(X_W)) lanes (
+        .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(gi),
+        .x(history_x), .costs(costs));
+
+    end else if (COST_KIND <= 3) begin : pixel_window_cost
+      // SAD or ZSAD: the zero-extended base window, and the match window's newest column, which
+      // enters the match ring (plus, for ZSAD, the base window's mean and the column's sum). The
+      // ring serves later centres too, so the column is zero-extended by its own position.
+      wire [N*N*8-1:0] base_masked;
+      fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
+        .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
+      reg [N*8-1:0]      newest_column;
+      reg [COLSUM_W-1:0] newest_sum;
+      reg [COLSUM_W+7:0] base_sum;
+      integer e;
+      always @* begin
+        newest_sum = 0;
+        base_sum = 0;
+        for (e = 0; e < N; e = e + 1) begin
+          newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
+          newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
+        end
+        for (e = 0; e < N * N; e = e + 1) base_sum = base_sum + {{COLSUM_W{1'b0}}, base_masked[e*8 +: 8]};
+      end
+      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+      wire [7:0] base_mean = (base_sum * MEAN_MUL) >> MEAN_SHIFT;
+      /* verilator lint_on WIDTH */
+      reg [N*N*8-1:0]    base_t, base_h;
+      reg [N*8-1:0]      column_t;
+      reg [COLSUM_W-1:0] column_sum_t;
+      reg [7:0]          base_mean_t, base_mean_h;
+      reg [X_W-1:0]      transform_x;
+      reg signed [YS_W-1:0] transform_y;
+      always @(posedge clk)
+        if (shift) begin
+          base_t       <= base_masked;
+          column_t     <= newest_column;
+          column_sum_t <= newest_sum;
+          base_mean_t  <= base_mean;
+          transform_x  <= window_x;
+          transform_y  <= window_y;
+          base_h       <= base_t;
+          base_mean_h  <= base_mean_t;
+          history_x    <= transform_x;
+          history_y    <= transform_y;
+        end
+      wire [(UF+N-1)*N*8-1:0]    view;
+      wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
+      fpstereo_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
+        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_t), .view(view));
+      fpstereo_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
+        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
+      fpstereo_window_cost_lanes #(.KIND(COST_KIND - 2), .ELEM_W(8), .SPAN(N), .UF(UF), .COST_W(COST_W),
+                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W), .COLSUM_W(COLSUM_W),
+                                   .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
+        .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
+        .group(gi), .x(history_x), .costs(costs));
+
+    end else begin : code_window_cost
+      // SHD: census codes, then a SHD_K x SHD_K window of codes (zero outside the image) whose
+      // newest match column enters the match ring.
+      localparam RS = SHD_K / 2;
+      localparam [X_W:0] RS_X = RS;
+      localparam signed [YS_W-1:0] RS_Y = RS;
+      wire [CODE_W-1:0] code_left, code_right;
       fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
       fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
-    end else begin : rank
-      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
-      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
+      reg [CODE_W-1:0] code_base_t, code_match_t;
+      reg [X_W-1:0] transform_x;
+      reg signed [YS_W-1:0] transform_y;
+      always @(posedge clk)
+        if (shift) begin
+          code_base_t  <= code_left;
+          code_match_t <= code_right;
+          transform_x  <= window_x;
+          transform_y  <= window_y;
+        end
+      // The code windows take in code_base_t / code_match_t, at column transform_x.
+      wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
+      wire [SHD_K*SHD_K*CODE_W-1:0] codes_left, codes_right;
+      fpstereo_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) base_codes (
+        .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_base_t), .window(codes_left));
+      fpstereo_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) match_codes (
+        .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match_t), .window(codes_right));
+      // Centre of the code window: RS rows and RS slots behind the entering code; the newest
+      // column is the entering code's own column (zero outside the image, as for SAD).
+      reg [X_W-1:0] codes_x;
+      reg signed [YS_W-1:0] codes_y;
+      reg code_newest_in_row;
+      reg signed [YS_W-1:0] code_newest_y;
+      always @(posedge clk)
+        if (shift) begin
+          code_newest_in_row <= {1'b0, transform_x} < W_X;
+          code_newest_y <= transform_y - RS_Y;
+          codes_x <= (transform_x >= RS_X[X_W-1:0]) ? transform_x - RS_X[X_W-1:0]
+                                                    : transform_x + (ROW_SLOTS[X_W-1:0] - RS_X[X_W-1:0]);
+          codes_y <= transform_y - RS_Y - ((transform_x >= RS_X[X_W-1:0]) ? 0 : 1);
+        end
+      wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_row_valid;
+      genvar cv;
+      for (cv = 0; cv < SHD_K; cv = cv + 1) begin : code_bounds
+        localparam [X_W:0] V_X = cv;
+        localparam signed [YS_W-1:0] V_Y = cv;
+        wire [X_W:0] column = {1'b0, codes_x} + V_X;  // image column + RS
+        wire signed [YS_W-1:0] row = codes_y + V_Y;   // image row + RS
+        wire signed [YS_W-1:0] newest_row = code_newest_y + V_Y;
+        assign code_col_valid[cv] = column >= RS_X && column < W_X + RS_X;
+        assign code_row_valid[cv] = row >= RS_Y && row < H_Y + RS_Y;
+        assign code_newest_row_valid[cv] = code_newest_in_row && newest_row >= RS_Y && newest_row < H_Y + RS_Y;
+      end
+      wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;
+      fpstereo_window_mask #(.N(SHD_K), .WORD_W(CODE_W)) base_mask (
+        .window(codes_left), .row_valid(code_row_valid), .col_valid(code_col_valid), .masked(base_masked));
+      reg [SHD_K*CODE_W-1:0] newest_column;
+      integer e;
+      always @*
+        for (e = 0; e < SHD_K; e = e + 1)
+          newest_column[e*CODE_W +: CODE_W] = code_newest_row_valid[e] ? codes_right[(e*SHD_K + SHD_K - 1)*CODE_W +: CODE_W]
+                                                                        : {CODE_W{1'b0}};
+      reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
+      always @(posedge clk)
+        if (shift) begin
+          base_h    <= base_masked;
+          history_x <= codes_x;
+          history_y <= codes_y;
+        end
+      wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
+      fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
+        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
+      fpstereo_window_cost_lanes #(.KIND(2), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF), .COST_W(COST_W),
+                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W)) lanes (
+        .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
+        .group(gi), .x(history_x), .costs(costs));
     end
   endgenerate
-  reg [CODE_W-1:0] code_base_t, code_match_t;
-  reg [X_W-1:0] transform_x;
-  reg signed [YS_W-1:0] transform_y;
-  always @(posedge clk)
-    if (shift) begin
-      code_base_t  <= code_left;
-      code_match_t <= code_right;
-      transform_x  <= window_x;
-      transform_y  <= window_y;
-    end
-
-  // Match history and the base code of the pixel whose costs are computed in this slot.
-  reg [CODE_W-1:0] code_base_h;
-  reg [X_W-1:0] history_x;
-  reg signed [YS_W-1:0] history_y;
-  always @(posedge clk)
-    if (shift) begin
-      code_base_h <= code_base_t;
-      history_x   <= transform_x;
-      history_y   <= transform_y;
-    end
-  wire [UF*CODE_W-1:0] match_lanes;
-  fpstereo_match_ring #(.CODE_W(CODE_W), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .code_in(code_match_t), .lanes(match_lanes));
-
   wire history_valid = {1'b0, history_x} < W_X && history_y >= 0 && history_y < H_Y;
-  wire [UF*COST_W-1:0] costs;
-  fpstereo_cost_lanes #(.KIND(COST_KIND), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W)) cost_lanes (
-    .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(gi),
-    .x(history_x), .costs(costs));
+
   // ------------------------------------------------------------------------------------------
   // From here on, RAM addresses are products of narrow unsigned counters and constants; they
   // zero-extend and are cut to the address widths (sized from the RAM depths), which Verilator's
   // WIDTH lint reports. The bit-exact test benches check every address path.
   // verilator lint_off WIDTH
 
-  // The cost word's position: rows outside the image are never written, so only valid rows'
-  // slots (row mod K) matter.
-  reg             cost_valid;
-  reg [X_W-1:0]   cost_x;
-  reg [K_W-1:0]   cost_row_slot;
-  reg [G_W-1:0]   cost_group;
-  always @(posedge clk)
-    if (adv) begin
-      cost_valid    <= history_valid;
-      cost_x        <= history_x;
-      cost_row_slot <= history_y[Y_W-1:0] % K;
-      cost_group    <= gi;
-    end
+  // The cost word's position, delayed as long as the cost lanes take. Rows outside the image
+  // are never written, so only valid rows' slots (row mod K) matter.
+  wire [X_W-1:0] history_x_cut = history_x;
+  wire [K_W-1:0] history_slot = history_y[Y_W-1:0] % K;
+  wire           cost_valid;
+  wire [X_W-1:0] cost_x;
+  wire [K_W-1:0] cost_row_slot;
+  wire [G_W-1:0] cost_group;
+  fpstereo_delay #(.WIDTH(1 + X_W + K_W + G_W), .DEPTH(COST_LAT)) cost_tag (
+    .clk(clk), .en(adv), .in({history_valid, history_x_cut, history_slot, gi}),
+    .out({cost_valid, cost_x, cost_row_slot, cost_group}));
 
   // Cost reorder RAM: K rows, written in raster order, read in chain order.
   wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 #include <regex>
+#include <stdexcept>
+#include <tuple>
 #include <sstream>
 
 #include "rtl_templates.hpp"
@@ -29,22 +31,53 @@ void require(bool ok, const std::string& name, const std::string& value, const s
 void check_supported(const StereoConfig& cfg) {
   const std::string later = "not in the RTL yet (planned: left-right check, uniqueness, median and gap "
                             "interpolation come next); use 0/none/off";
-  require(cfg.cost == CostFunction::Census || cfg.cost == CostFunction::Rank, "cost", to_string(cfg.cost),
-          "the RTL supports census and rank so far");
   require(cfg.lr == LrCheck::None, "lr", to_string(cfg.lr), later);
   require(cfg.uniqueness == 0, "uniqueness", std::to_string(cfg.uniqueness), later);
   require(cfg.median == 0, "median", std::to_string(cfg.median), later);
   require(!cfg.gap_interpolation, "gap-interp", "on", later);
 }
 
+// The core's cost function selector (fpstereo_sgm_core's COST_KIND). SHD over a 1 x 1 window
+// is census.
+enum CostKind { kCensus = 0, kRank = 1, kSad = 2, kZsad = 3, kShd = 4 };
+CostKind cost_kind(const StereoConfig& cfg) {
+  switch (cfg.cost) {
+    case CostFunction::Census: return kCensus;
+    case CostFunction::Rank: return kRank;
+    case CostFunction::Sad: return kSad;
+    case CostFunction::Zsad: return kZsad;
+    case CostFunction::Shd: return cfg.shd_window == 1 ? kCensus : kShd;
+  }
+  return kCensus;
+}
+
 // Modules the top uses, in emission order after the top.
 std::vector<std::string> used_modules(const StereoConfig& cfg) {
-  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_window",
-                                      cfg.cost == CostFunction::Census ? "fpstereo_census" : "fpstereo_rank",
-                                      "fpstereo_match_ring", "fpstereo_cost_lanes", "fpstereo_path_lanes",
-                                      "fpstereo_path_minimum", "fpstereo_min_tree", "fpstereo_delay",
-                                      "fpstereo_ram_sdp", "fpstereo_ram_async"};
+  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_window"};
+  switch (cost_kind(cfg)) {
+    case kCensus: modules.insert(modules.end(), {"fpstereo_census", "fpstereo_cost_lanes"}); break;
+    case kRank: modules.insert(modules.end(), {"fpstereo_rank", "fpstereo_cost_lanes"}); break;
+    case kSad:
+    case kZsad: modules.insert(modules.end(), {"fpstereo_window_mask", "fpstereo_window_cost_lanes"}); break;
+    case kShd:
+      modules.insert(modules.end(), {"fpstereo_census", "fpstereo_window_mask", "fpstereo_window_cost_lanes"});
+      break;
+  }
+  modules.insert(modules.end(), {"fpstereo_match_ring", "fpstereo_path_lanes", "fpstereo_path_minimum",
+                                 "fpstereo_min_tree", "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"});
   return modules;
+}
+
+// floor(s / divisor) == (s * mul) >> shift for every s in 0 .. max_value: the smallest shift
+// whose rounded-up reciprocal is exact over the range (checked exhaustively).
+std::pair<uint64_t, int> reciprocal(uint64_t divisor, uint64_t max_value) {
+  for (int shift = 0; shift < 48; ++shift) {
+    const uint64_t mul = ((uint64_t(1) << shift) + divisor - 1) / divisor;
+    bool exact = true;
+    for (uint64_t v = 0; v <= max_value && exact; ++v) exact = (v * mul) >> shift == v / divisor;
+    if (exact) return {mul, shift};
+  }
+  throw std::logic_error("no exact reciprocal");
 }
 
 std::string banner(const RtlDesign& d) {
@@ -116,7 +149,8 @@ std::string top_module(const RtlDesign& d) {
   os << fmt::format(
       "  {}_sgm_core #(\n"
       "    .W({}), .H({}), .ROW_SLOTS({}), .K({}), .SLEN({}), .G({}), .UF({}), .DMAX({}),\n"
-      "    .COST_KIND({}), .N({}), .CODE_W({}), .COST_W({}), .COST_MAX({}),\n"
+      "    .COST_KIND({}), .N({}), .CODE_W({}), .SHD_K({}), .COST_W({}), .COST_MAX({}), .COST_LAT({}),\n"
+      "    .COLSUM_W({}), .MEAN_MUL({}), .MEAN_SHIFT({}),\n"
       "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .P1({}), .P2({}), .PATHS({}),\n"
       "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .OUT_START({}),\n"
       "    .X_W({}), .Y_W({}), .G_W({}), .K_W({}), .LANE_W({}), .STEP_W({})\n"
@@ -126,7 +160,8 @@ std::string top_module(const RtlDesign& d) {
       "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
       "    .out_last(out_last));\n",
       d.prefix, d.cfg.width, d.cfg.height, d.row_slots, d.chains, d.segment, d.groups, d.cfg.uf, d.cfg.dmax,
-      d.cfg.cost == CostFunction::Census ? 0 : 1, d.cfg.window, w.code, w.cost, w.cost_max, w.path_cost,
+      int(cost_kind(d.cfg)), d.cfg.window, std::max(1, w.code), d.cfg.shd_window, w.cost, w.cost_max,
+      d.cost_latency, d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost,
       w.aggregated, w.disparity, d.cfg.p1, d.cfg.p2, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
       d.wta_tree_latency, d.agg_start, d.out_start, d.x_bits, d.y_bits, d.group_bits, d.chain_bits, d.lane_bits,
       d.step_bits);
@@ -153,6 +188,12 @@ RtlDesign plan(const StereoConfig& cfg) {
   d.prefix = config_tag(cfg);
   d.window_radius = cfg.window / 2;
   d.groups = cfg.dmax / cfg.uf;
+  const CostKind kind = cost_kind(cfg);
+  const bool windowed_cost = kind == kSad || kind == kZsad || kind == kShd;
+  d.cost_latency = windowed_cost ? 2 : 1;
+  d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
+  const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
+  std::tie(d.mean_mul, d.mean_shift) = kind == kZsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
   d.path_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   d.wta_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
@@ -163,11 +204,14 @@ RtlDesign plan(const StereoConfig& cfg) {
           fmt::format("the RTL needs at least 3 pixels per chain ({} chains): use a width of at least {}",
                       d.chains, 3 * d.chains));
   d.row_slots = d.chains * d.segment;
-  const int64_t G = d.groups, R = d.row_slots, r = d.window_radius;
+  const int64_t G = d.groups, R = d.row_slots;
   // Derivations in docs/architecture.md: the first cost word is in the cost RAM r rows, r + 3
-  // slots and 2 steps after the frame starts; a row's last disparity is written K - 1 row-times
-  // and 5 + tree latency steps after aggregation reaches it.
-  d.agg_start = (r * R + r + 3) * G + 2;
+  // slots (one more for SHD's code window, whose radius adds to r) and the cost lanes' latency
+  // plus one step after the frame starts; a row's last disparity is written K - 1 row-times and
+  // 5 + tree latency steps after aggregation reaches it.
+  const int64_t r = d.window_radius + (kind == kShd ? cfg.shd_window / 2 : 0);
+  const int64_t front_slots = kind == kShd ? 4 : 3;
+  d.agg_start = (r * R + r + front_slots) * G + 1 + d.cost_latency;
   d.out_start = d.agg_start + (d.chains - 1) * R * G + 5 + d.wta_tree_latency;
   d.cycles_per_frame = d.out_start + ((int64_t(cfg.height) - 1) * R + cfg.width - 1) * G + G;
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;

@@ -17,6 +17,10 @@ struct RtlDesign {
   Widths widths;
   std::string prefix;      // module name prefix, unique per configuration
   int window_radius = 0;   // r
+  int cost_latency = 1;    // register stages of the cost lanes
+  int column_sum_bits = 0;  // SAD/ZSAD: bits of a window column's pixel sum
+  uint64_t mean_mul = 1;   // ZSAD: floor(s / N^2) == (s * mean_mul) >> mean_shift
+  int mean_shift = 0;
   int groups = 0;          // G = dmax / uf: steps per pixel
   int chains = 0;          // K
   int segment = 0;         // ceil(W / K): pixels per chain per row

@@ -1,0 +1,128 @@
+`resetall
+`default_nettype none
+// UF window-based matching costs per step (docs/semantics.md, section 2), lane l = disparity
+// d = group*UF + l: the sum over a SPAN x SPAN window of
+//   KIND 0 (SAD):  |b - m|                      over pixels
+//   KIND 1 (ZSAD): |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2)
+//   KIND 2 (SHD):  popcount(b xor m)            over census codes
+// b is the (already zero-extended) base window; the match window of lane l is view columns
+// l .. l + SPAN - 1 (fpstereo_match_ring), newest first; its columns outside the image read as 0
+// (at the right border the ring already holds the next row's first columns).
+// Where the match centre lies left of the image (x < d) the cost is COST_MAX. Two register
+// stages: per-row sums, then the total.
+module fpstereo_window_cost_lanes #(
+  parameter KIND = 0,
+  // bits per window element (8 for pixels, the code width for SHD)
+  parameter ELEM_W = 8,
+  parameter SPAN = 5,
+  parameter UF = 32,
+  parameter COST_W = 13,
+  parameter COST_MAX = 6375,
+  parameter GROUP_W = 2,
+  parameter X_W = 11,
+  // image width
+  parameter W = 64,
+  // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
+  parameter COLSUM_W = 11,
+  parameter MEAN_MUL = 1,
+  parameter MEAN_SHIFT = 0
+) (
+  input  wire                                clk,
+  input  wire                                en,
+  input  wire [SPAN*SPAN*ELEM_W-1:0]         base,
+  /* verilator lint_off UNUSEDSIGNAL */  // the means serve ZSAD only
+  input  wire [7:0]                          base_mean,
+  input  wire [(UF+SPAN-1)*COLSUM_W-1:0]     view_sums,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
+  input  wire [GROUP_W-1:0]                  group,
+  input  wire [X_W-1:0]                      x,
+  output reg  [UF*COST_W-1:0]                costs
+);
+  localparam R = SPAN / 2;
+  localparam COLUMN_W = SPAN * ELEM_W;
+  // wide enough for x + SPAN and for any disparity plus R
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
+  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
+  localparam TERM_W = 11;              // |(b - m) - delta| < 2^11 for 8-bit pixels
+  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+
+  genvar l, i, j;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [D_W-1:0] d = group_base + l[D_W-1:0];
+      wire outside = x_wide < d;
+      // Window column j (left to right) is view column l + SPAN - 1 - j; it lies inside the
+      // image where 0 <= x - d + (j - R) < W.
+      wire [SPAN-1:0] column_valid;
+      for (j = 0; j < SPAN; j = j + 1) begin : column
+        wire [D_W-1:0] position = x_wide + j[D_W-1:0];  // x - d + (j - R) + d + R
+        assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + W[D_W-1:0];
+      end
+
+      // ZSAD: the match window's mean from its column sums.
+      wire signed [9:0] delta;
+      if (KIND == 1) begin : zero_mean
+        reg [WINSUM_W-1:0] match_sum;
+        integer c;
+        always @* begin
+          match_sum = 0;
+          for (c = 0; c < SPAN; c = c + 1)
+            if (column_valid[c])
+              match_sum = match_sum + {{(WINSUM_W-COLSUM_W){1'b0}}, view_sums[(l + SPAN - 1 - c)*COLSUM_W +: COLSUM_W]};
+        end
+        /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+        wire [7:0] match_mean = (match_sum * MEAN_MUL) >> MEAN_SHIFT;
+        /* verilator lint_on WIDTH */
+        assign delta = $signed({2'b00, base_mean}) - $signed({2'b00, match_mean});
+      end else begin : no_mean
+        assign delta = 10'sd0;
+      end
+
+      // Per-row sums (register stage 1).
+      wire [SPAN*COST_W-1:0] row_sums;
+      for (i = 0; i < SPAN; i = i + 1) begin : row
+        reg [COST_W-1:0] row_sum;
+        integer k, b2;
+        reg [ELEM_W-1:0] bv, mv;
+        reg signed [TERM_W-1:0] diff;
+        reg [TERM_W-1:0] magnitude;  // its own assignment: in the sum, -diff would widen first
+        always @* begin
+          row_sum = 0;
+          for (k = 0; k < SPAN; k = k + 1) begin
+            bv = base[(i*SPAN + k)*ELEM_W +: ELEM_W];
+            mv = column_valid[k] ? view[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
+            if (KIND == 2) begin
+              for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) row_sum = row_sum + {{(COST_W-1){1'b0}}, bv[b2] ^ mv[b2]};
+            end else begin
+              /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference
+              diff = $signed({3'b000, bv}) - $signed({3'b000, mv}) - delta;
+              magnitude = diff < 0 ? -diff : diff;
+              row_sum = row_sum + magnitude;
+              /* verilator lint_on WIDTH */
+            end
+          end
+        end
+        reg [COST_W-1:0] row_sum_q;
+        always @(posedge clk)
+          if (en) row_sum_q <= row_sum;
+        assign row_sums[i*COST_W +: COST_W] = row_sum_q;
+      end
+      reg outside_q;
+      always @(posedge clk)
+        if (en) outside_q <= outside;
+
+      // Total (register stage 2).
+      reg [COST_W-1:0] total;
+      integer t;
+      always @* begin
+        total = 0;
+        for (t = 0; t < SPAN; t = t + 1) total = total + row_sums[t*COST_W +: COST_W];
+      end
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= outside_q ? COST_MAX[COST_W-1:0] : total;
+    end
+  endgenerate
+endmodule
+`resetall
