@@ -199,10 +199,8 @@ RtlDesign plan(const StereoConfig& cfg) {
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
   // tree and the running minimum take G + latency + 1 steps; K chains give it K * G.
   d.chains = std::max(2, 1 + ceil_div(d.path_tree_latency + 1, d.groups));
+  // Segments need at least 3 pixels (docs/architecture.md); K <= 5 and width >= dmax >= 16 give it.
   d.segment = ceil_div(cfg.width, d.chains);
-  require(d.segment >= 3, "width", std::to_string(cfg.width),
-          fmt::format("the RTL needs at least 3 pixels per chain ({} chains): use a width of at least {}",
-                      d.chains, 3 * d.chains));
   d.row_slots = d.chains * d.segment;
   const int64_t G = d.groups, R = d.row_slots;
   // Derivations in docs/architecture.md: the first cost word is in the cost RAM r rows, r + 3
