@@ -1,11 +1,13 @@
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high.
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
 module fpstereo_delay #(
   parameter WIDTH = 8,
   parameter DEPTH = 1
 ) (
   input  wire             clk,
+  input  wire             rst,
   input  wire             en,
   input  wire [WIDTH-1:0] in,
   output wire [WIDTH-1:0] out
@@ -14,10 +16,12 @@ module fpstereo_delay #(
   generate
     if (DEPTH == 1) begin : one
       always @(posedge clk)
-        if (en) line <= in;
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
     end else begin : several
       always @(posedge clk)
-        if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
     end
   endgenerate
   assign out = line[WIDTH*DEPTH-1 -: WIDTH];

@@ -34,6 +34,8 @@ module fpstereo_sgm_core #(
   parameter DISP_W = 5,
   parameter P1 = 7,
   parameter P2 = 86,
+  // median filter window (0 = off, 3, 5 or 7)
+  parameter MEDIAN = 0,
   // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
   parameter PATHS = 15,
   // compare-select levels per register stage in the minimum trees, and the trees' latencies
@@ -105,17 +107,22 @@ module fpstereo_sgm_core #(
   reg [G_W-1:0] gi;
   reg [X_W-1:0] si;
   reg [Y_W-1:0] ti;
+  reg [K_W-1:0] ti_slot;  // ti mod K: which row of the cost reorder RAM the row uses
   wire slot_end = gi == LAST_GROUP;
   always @(posedge clk)
     if (restart) begin
       gi <= 0;
       si <= 0;
       ti <= 0;
+      ti_slot <= 0;
     end else if (adv) begin
       gi <= slot_end ? {G_W{1'b0}} : gi + 1'b1;
       if (slot_end) begin
         si <= (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
-        if (si == LAST_SLOT) ti <= ti + 1'b1;
+        if (si == LAST_SLOT) begin
+          ti <= ti + 1'b1;
+          ti_slot <= (ti_slot == LAST_CHAIN) ? {K_W{1'b0}} : ti_slot + 1'b1;
+        end
       end
     end
   localparam [X_W-1:0] W_S = W;
@@ -137,8 +144,14 @@ module fpstereo_sgm_core #(
   // are signed, since the centre may lie above the image.
   wire [X_W-1:0] centre_x = (si >= R_X[X_W-1:0]) ? si - R_X[X_W-1:0] : si + (ROW_SLOTS[X_W-1:0] - R_X[X_W-1:0]);
   wire signed [YS_W-1:0] centre_y = $signed({2'b00, ti}) - R_Y - ((si >= R_X[X_W-1:0]) ? 0 : 1);
+  // The same row modulo K, from small numbers only (a wide modulo by K would be slow logic).
+  localparam integer SLOT_BIAS = K * ((R + K) / K);  // a multiple of K above R
+  /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
+  wire [K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - ((si >= R_X[X_W-1:0]) ? 1'b0 : 1'b1)) % K;
+  /* verilator lint_on WIDTH */
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
+  reg  [K_W-1:0] window_slot;
   // The window's newest column is the input column itself: in the image if the input column is,
   // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   reg  newest_in_row;
@@ -147,6 +160,7 @@ module fpstereo_sgm_core #(
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
+      window_slot <= centre_slot;
       newest_in_row <= {1'b0, si} < W_X;
       newest_y <= $signed({2'b00, ti}) - R_Y;
     end
@@ -174,6 +188,7 @@ module fpstereo_sgm_core #(
   // history_x / history_y: the centre whose costs the lanes compute in this slot.
   reg  [X_W-1:0] history_x;
   reg  signed [YS_W-1:0] history_y;
+  reg  [K_W-1:0] history_slot;
   wire [UF*COST_W-1:0] costs;
   generate
     if (COST_KIND <= 1) begin : point_cost
@@ -189,15 +204,18 @@ module fpstereo_sgm_core #(
       reg [CODE_W-1:0] code_base_t, code_match_t, code_base_h;
       reg [X_W-1:0] transform_x;
       reg signed [YS_W-1:0] transform_y;
+      reg [K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
-          code_base_t  <= code_left;
-          code_match_t <= code_right;
-          transform_x  <= window_x;
-          transform_y  <= window_y;
-          code_base_h  <= code_base_t;
-          history_x    <= transform_x;
-          history_y    <= transform_y;
+          code_base_t    <= code_left;
+          code_match_t   <= code_right;
+          transform_x    <= window_x;
+          transform_y    <= window_y;
+          transform_slot <= window_slot;
+          code_base_h    <= code_base_t;
+          history_x      <= transform_x;
+          history_y      <= transform_y;
+          history_slot   <= transform_slot;
         end
       wire [UF*CODE_W-1:0] match_lanes;
       fpstereo_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
@@ -236,8 +254,11 @@ module fpstereo_sgm_core #(
       reg [7:0]          base_mean_t, base_mean_h;
       reg [X_W-1:0]      transform_x;
       reg signed [YS_W-1:0] transform_y;
+      reg [K_W-1:0]      transform_slot;
       always @(posedge clk)
         if (shift) begin
+          transform_slot <= window_slot;
+          history_slot <= transform_slot;
           base_t       <= base_masked;
           column_t     <= newest_column;
           column_sum_t <= newest_sum;
@@ -273,12 +294,14 @@ module fpstereo_sgm_core #(
       reg [CODE_W-1:0] code_base_t, code_match_t;
       reg [X_W-1:0] transform_x;
       reg signed [YS_W-1:0] transform_y;
+      reg [K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
-          code_base_t  <= code_left;
-          code_match_t <= code_right;
-          transform_x  <= window_x;
-          transform_y  <= window_y;
+          code_base_t    <= code_left;
+          code_match_t   <= code_right;
+          transform_x    <= window_x;
+          transform_y    <= window_y;
+          transform_slot <= window_slot;
         end
       // The code windows take in code_base_t / code_match_t, at column transform_x.
       wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
@@ -289,8 +312,14 @@ module fpstereo_sgm_core #(
         .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match_t), .window(codes_right));
       // Centre of the code window: RS rows and RS slots behind the entering code; the newest
       // column is the entering code's own column (zero outside the image, as for SAD).
+      localparam integer CODE_SLOT_BIAS = K * ((RS + K) / K);
+      /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
+      wire [K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS
+                                        - ((transform_x >= RS_X[X_W-1:0]) ? 1'b0 : 1'b1)) % K;
+      /* verilator lint_on WIDTH */
       reg [X_W-1:0] codes_x;
       reg signed [YS_W-1:0] codes_y;
+      reg [K_W-1:0] codes_slot;
       reg code_newest_in_row;
       reg signed [YS_W-1:0] code_newest_y;
       always @(posedge clk)
@@ -300,6 +329,7 @@ module fpstereo_sgm_core #(
           codes_x <= (transform_x >= RS_X[X_W-1:0]) ? transform_x - RS_X[X_W-1:0]
                                                     : transform_x + (ROW_SLOTS[X_W-1:0] - RS_X[X_W-1:0]);
           codes_y <= transform_y - RS_Y - ((transform_x >= RS_X[X_W-1:0]) ? 0 : 1);
+          codes_slot <= codes_slot_next;
         end
       wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_row_valid;
       genvar cv;
@@ -325,9 +355,10 @@ module fpstereo_sgm_core #(
       reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
       always @(posedge clk)
         if (shift) begin
-          base_h    <= base_masked;
-          history_x <= codes_x;
-          history_y <= codes_y;
+          base_h       <= base_masked;
+          history_x    <= codes_x;
+          history_y    <= codes_y;
+          history_slot <= codes_slot;
         end
       wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
       fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
@@ -349,13 +380,12 @@ module fpstereo_sgm_core #(
   // The cost word's position, delayed as long as the cost lanes take. Rows outside the image
   // are never written, so only valid rows' slots (row mod K) matter.
   wire [X_W-1:0] history_x_cut = history_x;
-  wire [K_W-1:0] history_slot = history_y[Y_W-1:0] % K;
   wire           cost_valid;
   wire [X_W-1:0] cost_x;
   wire [K_W-1:0] cost_row_slot;
   wire [G_W-1:0] cost_group;
   fpstereo_delay #(.WIDTH(1 + X_W + K_W + G_W), .DEPTH(COST_LAT)) cost_tag (
-    .clk(clk), .en(adv), .in({history_valid, history_x_cut, history_slot, gi}),
+    .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x_cut, history_slot, gi}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
 
   // Cost reorder RAM: K rows, written in raster order, read in chain order.
@@ -404,11 +434,16 @@ module fpstereo_sgm_core #(
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0};
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + K_W;
+  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, row_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
   always @(posedge clk)
-    if (adv) begin
+    if (restart) begin
+      tag1 <= {TAG_W{1'b0}};
+      tag2 <= {TAG_W{1'b0}};
+      tag3 <= {TAG_W{1'b0}};
+      tag4 <= {TAG_W{1'b0}};
+    end else if (adv) begin
       tag1 <= tag0;
       tag2 <= tag1;
       tag3 <= tag2;
@@ -416,9 +451,10 @@ module fpstereo_sgm_core #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+2*K_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+2*K_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[2*K_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[K_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -447,7 +483,7 @@ module fpstereo_sgm_core #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .en(adv), .in(tag3), .out(tag_m));
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag3), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -587,7 +623,7 @@ module fpstereo_sgm_core #(
   fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) wta_tree (
     .clk(clk), .en(adv), .values(sum4), .min_value(group_min), .min_index(group_lane));
   wire [TAG_W-1:0] tag_w;
-  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (.clk(clk), .en(adv), .in(tag4), .out(tag_w));
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_w));
   wire [G_W-1:0]   g_w = `FPS_TAG_GROUP(tag_w);
   wire [DISP_W-1:0] group_disparity = g_w * UF + group_lane;
   reg  [SUM_W-1:0]  best_sum;
@@ -602,48 +638,139 @@ module fpstereo_sgm_core #(
 
   // ------------------------------------------------------------------------------------------
   // Disparity reorder RAM (K rows) and output in raster order.
-  wire [Y_W:0] row_w = `FPS_TAG_ROW(tag_w);
-  wire [DISP_AW-1:0] disp_waddr = (row_w % K) * ROW_SLOTS + `FPS_TAG_X(tag_w);
+  wire [DISP_AW-1:0] disp_waddr = `FPS_TAG_SLOT(tag_w) * ROW_SLOTS + `FPS_TAG_X(tag_w);
   wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == G - 1;
 
   wire out_on = step >= OUT_START;
   reg [G_W-1:0] go;
   reg [X_W-1:0] so;
   reg [Y_W-1:0] to;
+  reg [K_W-1:0] to_slot;  // to mod K
   always @(posedge clk)
     if (restart) begin
       go <= 0;
       so <= 0;
       to <= 0;
+      to_slot <= 0;
     end else if (adv && out_on) begin
-      go <= (go == G - 1) ? {G_W{1'b0}} : go + 1'b1;
-      if (go == G - 1) begin
-        so <= (so == ROW_SLOTS - 1) ? {X_W{1'b0}} : so + 1'b1;
-        if (so == ROW_SLOTS - 1) to <= to + 1'b1;
+      go <= (go == LAST_GROUP) ? {G_W{1'b0}} : go + 1'b1;
+      if (go == LAST_GROUP) begin
+        so <= (so == LAST_SLOT) ? {X_W{1'b0}} : so + 1'b1;
+        if (so == LAST_SLOT) begin
+          to <= to + 1'b1;
+          to_slot <= (to_slot == LAST_CHAIN) ? {K_W{1'b0}} : to_slot + 1'b1;
+        end
       end
     end
-  wire read_out = out_on && go == G - 1 && so < W && to < H;
+  // One read per slot, in raster order; rows below the image (the median's last rows need
+  // them) and bubble slots read as invalid words.
+  wire read_slot = out_on && go == LAST_GROUP;
+  wire read_valid = read_slot && so < W && to < H;
   wire [DISP_W-1:0] disparity_q;
   fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(disparity_w),
-    .re(adv && read_out), .raddr((to % K) * ROW_SLOTS + so), .rdata(disparity_q));
-  reg           out_pending;
-  reg [X_W-1:0] out_x;
-  reg [Y_W-1:0] out_y;
+    .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
+  reg           read_was_valid;
+  reg [X_W-1:0] read_x;
+  reg [Y_W-1:0] read_y;
   always @(posedge clk)
-    if (restart) out_pending <= 1'b0;
+    if (restart) read_was_valid <= 1'b0;
     else if (adv) begin
-      out_pending <= read_out;
-      out_x <= so;
-      out_y <= to;
+      read_was_valid <= read_valid;
+      read_x <= so;
+      read_y <= to;
     end
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  wire [DISP_W:0] read_word = read_was_valid ? {1'b0, disparity_q} : INVALID_WORD;
+
+  // Optional median filter (semantics section 6), then the output word.
+  wire            out_pending;  // a register in both branches
+  wire [X_W-1:0]  out_x;
+  wire [Y_W-1:0]  out_y;
+  wire [DISP_W:0] final_word;
+  generate
+    if (MEDIAN == 0) begin : no_median
+      assign out_pending = read_was_valid;
+      assign out_x = read_x;
+      assign out_y = read_y;
+      assign final_word = read_word;
+    end else begin : median
+      // The word read in the previous slot enters an M x M window; its centre is RM rows and
+      // RM slots behind.
+      localparam RM = MEDIAN / 2;
+      localparam [X_W:0] RM_X = RM;
+      localparam [Y_W:0] RM_Y = RM;
+      reg read_done;  // the previous step read a slot's word (or would have, outside the image)
+      always @(posedge clk)
+        if (restart) read_done <= 1'b0;
+        else if (adv) read_done <= read_slot;
+      wire median_shift = adv && read_done;
+      wire [X_W-1:0] median_next_col = (read_x == LAST_SLOT) ? {X_W{1'b0}} : read_x + 1'b1;
+      wire [MEDIAN*MEDIAN*(DISP_W+1)-1:0] window;
+      fpstereo_window #(.N(MEDIAN), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+        .clk(clk), .shift(median_shift), .col(read_x), .next_col(median_next_col), .word(read_word),
+        .window(window));
+      reg [X_W-1:0] median_x;
+      reg [Y_W:0]   median_y;  // row + RM, so that it stays non-negative
+      reg           fresh;     // high in the step after a shift: one result per slot
+      always @(posedge clk)
+        if (restart) fresh <= 1'b0;
+        else if (adv) fresh <= read_done;
+      always @(posedge clk)
+        if (median_shift) begin
+          median_x <= (read_x >= RM_X[X_W-1:0]) ? read_x - RM_X[X_W-1:0]
+                                                : read_x + (ROW_SLOTS[X_W-1:0] - RM_X[X_W-1:0]);
+          median_y <= {1'b0, read_y} - ((read_x >= RM_X[X_W-1:0]) ? {(Y_W+1){1'b0}} : {{Y_W{1'b0}}, 1'b1});
+        end
+      // Window positions inside the image: column median_x + v - RM, row median_y + v - 2 * RM.
+      wire [MEDIAN-1:0] row_valid_m, col_valid_m;
+      genvar v2;
+      for (v2 = 0; v2 < MEDIAN; v2 = v2 + 1) begin : bounds
+        localparam [X_W:0] V_X = v2;
+        localparam [Y_W:0] V_Y = v2;
+        wire [X_W:0] column = {1'b0, median_x} + V_X;  // image column + RM
+        wire [Y_W:0] row = median_y + V_Y;             // image row + 2 * RM
+        assign col_valid_m[v2] = column >= RM_X && column < W_X + RM_X;
+        assign row_valid_m[v2] = row >= RM_Y + RM_Y && row < H + RM_Y + RM_Y;
+      end
+      fpstereo_median_select #(.M(MEDIAN), .WORD_W(DISP_W + 1)) select (
+        .clk(clk), .en(adv), .window(window), .row_valid(row_valid_m), .col_valid(col_valid_m),
+        .median(final_word));
+      // The centre's coordinates travel as long as the selection takes.
+      wire in_image = median_x < W && median_y >= RM_Y && median_y < H + RM_Y;
+      /* verilator lint_off UNUSEDSIGNAL */  // the top bit is 0 whenever in_image
+      wire [Y_W:0] median_row = median_y - RM_Y;
+      /* verilator lint_on UNUSEDSIGNAL */
+      wire          done_m;
+      wire [X_W-1:0] x_m;
+      wire [Y_W-1:0] y_m;
+      fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(DISP_W + 1)) median_delay (
+        .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}), .out({done_m, x_m, y_m}));
+      reg           pending_q;
+      reg [X_W-1:0] x_q;
+      reg [Y_W-1:0] y_q;
+      always @(posedge clk)
+        if (restart) pending_q <= 1'b0;
+        else if (adv) begin
+          pending_q <= done_m;
+          x_q <= x_m;
+          y_q <= y_m;
+        end
+      assign out_pending = pending_q;
+      assign out_x = x_q;
+      assign out_y = y_q;
+    end
+  endgenerate
+  // After the median, one more register holds the word of the pixel in out_x / out_y.
+  reg [DISP_W:0] out_word_q;
+  always @(posedge clk)
+    if (adv) out_word_q <= final_word;
   assign out_due    = out_pending;
   assign out_push   = adv && out_pending;
-  assign out_word   = {1'b0, disparity_q};
+  assign out_word   = MEDIAN == 0 ? read_word : out_word_q;
   assign out_first  = out_x == 0 && out_y == 0;
   assign out_last   = out_x == W - 1;
   assign frame_done = out_pending && out_x == W - 1 && out_y == H - 1;
-
   // verilator lint_on WIDTH
 
   `undef FPS_TAG_ACTIVE
@@ -651,5 +778,6 @@ module fpstereo_sgm_core #(
   `undef FPS_TAG_ROW
   `undef FPS_TAG_GROUP
   `undef FPS_TAG_CHAIN
+  `undef FPS_TAG_SLOT
 endmodule
 `resetall
