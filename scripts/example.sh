@@ -9,3 +9,5 @@ build/fpstereo run --preset C2 examples/cones/left.png examples/cones/right.png 
   -o out/cones_disparity.png --colour out/cones_colour.png
 build/fpstereo eval examples/cones --preset C2 --baseline opencv-sgbm
 echo "wrote out/cones_disparity.png (KITTI 16-bit) and out/cones_colour.png"
+build/fpstereo-rtl --preset C2 > out/c2_top.v
+echo "wrote out/c2_top.v (the C2 pipeline in Verilog; see its banner)"
