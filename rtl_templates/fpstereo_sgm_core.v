@@ -104,27 +104,14 @@ module fpstereo_sgm_core #(
 
   // ------------------------------------------------------------------------------------------
   // Front end: input counters (group, slot, row-time).
-  reg [G_W-1:0] gi;
-  reg [X_W-1:0] si;
-  reg [Y_W-1:0] ti;
-  reg [K_W-1:0] ti_slot;  // ti mod K: which row of the cost reorder RAM the row uses
-  wire slot_end = gi == LAST_GROUP;
-  always @(posedge clk)
-    if (restart) begin
-      gi <= 0;
-      si <= 0;
-      ti <= 0;
-      ti_slot <= 0;
-    end else if (adv) begin
-      gi <= slot_end ? {G_W{1'b0}} : gi + 1'b1;
-      if (slot_end) begin
-        si <= (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
-        if (si == LAST_SLOT) begin
-          ti <= ti + 1'b1;
-          ti_slot <= (ti_slot == LAST_CHAIN) ? {K_W{1'b0}} : ti_slot + 1'b1;
-        end
-      end
-    end
+  wire [G_W-1:0] gi;
+  wire [X_W-1:0] si;
+  wire [Y_W-1:0] ti;
+  wire [K_W-1:0] ti_slot;  // ti mod K: which row of the cost reorder RAM the row uses
+  wire slot_end;
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(K), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(K_W))
+    input_position (.clk(clk), .restart(restart), .en(adv), .group(gi), .slot(si), .row(ti), .row_slot(ti_slot),
+                    .slot_end(slot_end));
   localparam [X_W-1:0] W_S = W;
   localparam [Y_W-1:0] H_T = H;
   assign in_due  = slot_end && si < W_S && ti < H_T;
@@ -642,29 +629,19 @@ module fpstereo_sgm_core #(
   wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == G - 1;
 
   wire out_on = step >= OUT_START;
-  reg [G_W-1:0] go;
-  reg [X_W-1:0] so;
-  reg [Y_W-1:0] to;
-  reg [K_W-1:0] to_slot;  // to mod K
-  always @(posedge clk)
-    if (restart) begin
-      go <= 0;
-      so <= 0;
-      to <= 0;
-      to_slot <= 0;
-    end else if (adv && out_on) begin
-      go <= (go == LAST_GROUP) ? {G_W{1'b0}} : go + 1'b1;
-      if (go == LAST_GROUP) begin
-        so <= (so == LAST_SLOT) ? {X_W{1'b0}} : so + 1'b1;
-        if (so == LAST_SLOT) begin
-          to <= to + 1'b1;
-          to_slot <= (to_slot == LAST_CHAIN) ? {K_W{1'b0}} : to_slot + 1'b1;
-        end
-      end
-    end
+  /* verilator lint_off UNUSEDSIGNAL */  // out_slot_end says what the output needs of the group
+  wire [G_W-1:0] go;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [X_W-1:0] so;
+  wire [Y_W-1:0] to;
+  wire [K_W-1:0] to_slot;  // to mod K
+  wire out_slot_end;
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(K), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(K_W))
+    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
+                     .row_slot(to_slot), .slot_end(out_slot_end));
   // One read per slot, in raster order; rows below the image (the median's last rows need
   // them) and bubble slots read as invalid words.
-  wire read_slot = out_on && go == LAST_GROUP;
+  wire read_slot = out_on && out_slot_end;
   wire read_valid = read_slot && so < W && to < H;
   wire [DISP_W-1:0] disparity_q;
   fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (

@@ -30,6 +30,8 @@ tb=$work/tb
 rm -rf "$work/rtl.new"
 "$build/fpstereo-rtl" "${config_flags[@]}" -o "$work/rtl.new"
 mkdir -p "$rtl"
+# A different set of files needs a freshly configured test bench (verilate() lists them then).
+cmp -s "$work/rtl.new/filelist.f" "$rtl/filelist.f" || rm -rf "$tb"
 for f in "$work/rtl.new"/*; do cmp -s "$f" "$rtl/${f##*/}" || cp "$f" "$rtl/"; done
 for f in "$rtl"/*; do [ -e "$work/rtl.new/${f##*/}" ] || rm "$f"; done
 rm -rf "$work/rtl.new"

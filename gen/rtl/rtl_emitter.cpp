@@ -63,7 +63,8 @@ std::vector<std::string> used_modules(const StereoConfig& cfg) {
       break;
   }
   if (cfg.median != 0) modules.push_back("fpstereo_median_select");
-  modules.insert(modules.end(), {"fpstereo_match_ring", "fpstereo_path_lanes", "fpstereo_path_minimum",
+  modules.insert(modules.end(), {"fpstereo_raster_counter", "fpstereo_match_ring", "fpstereo_path_lanes",
+                                 "fpstereo_path_minimum",
                                  "fpstereo_min_tree", "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"});
   return modules;
 }

@@ -1,0 +1,47 @@
+`resetall
+`default_nettype none
+// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
+// row-time `row`, and row mod K (which row of a K-row reorder RAM the row uses).
+module fpstereo_raster_counter #(
+  parameter G = 4,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter G_W = 2,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter K_W = 1
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           en,
+  output reg  [G_W-1:0] group,
+  output reg  [X_W-1:0] slot,
+  output reg  [Y_W-1:0] row,
+  output reg  [K_W-1:0] row_slot,
+  output wire           slot_end
+);
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam integer LAST_CHAIN_I = K - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+
+  assign slot_end = group == LAST_GROUP;
+  always @(posedge clk)
+    if (restart) begin
+      group <= 0;
+      slot <= 0;
+      row <= 0;
+      row_slot <= 0;
+    end else if (en) begin
+      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
+      if (slot_end) begin
+        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
+        if (slot == LAST_SLOT) begin
+          row <= row + 1'b1;
+          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
+        end
+      end
+    end
+endmodule
+`resetall
