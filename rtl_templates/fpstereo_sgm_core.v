@@ -34,7 +34,8 @@ module fpstereo_sgm_core #(
   parameter DISP_W = 5,
   parameter P1 = 7,
   parameter P2 = 86,
-  // median filter window (0 = off, 3, 5 or 7)
+  // uniqueness ratio in percent (0 = off) and median filter window (0 = off, 3, 5 or 7)
+  parameter UNIQUENESS = 0,
   parameter MEDIAN = 0,
   // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
   parameter PATHS = 15,
@@ -79,6 +80,7 @@ module fpstereo_sgm_core #(
   localparam DISP_DEPTH = K * ROW_SLOTS;
   localparam DISP_AW = $clog2(DISP_DEPTH);
   localparam LANES_W = UF * PATH_W;
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   // Sized copies of the constants the counters are compared with (keeps widths exact).
   localparam integer LAST_GROUP_I = G - 1;
   localparam integer LAST_CHAIN_I = K - 1;
@@ -604,29 +606,59 @@ module fpstereo_sgm_core #(
   endgenerate
 
   // ------------------------------------------------------------------------------------------
-  // Winner-take-all: minimum over the lanes, then over the groups (the earlier group wins ties).
-  wire [SUM_W-1:0]  group_min;
-  wire [LANE_W-1:0] group_lane;
-  fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) wta_tree (
-    .clk(clk), .en(adv), .values(sum4), .min_value(group_min), .min_index(group_lane));
+  // Winner-take-all: minimum over the lanes, then over the groups (the earlier group wins ties);
+  // with uniqueness, the summaries of fpstereo_unique_tree instead (semantics section 4).
   wire [TAG_W-1:0] tag_w;
   fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_w));
-  wire [G_W-1:0]   g_w = `FPS_TAG_GROUP(tag_w);
-  wire [DISP_W-1:0] group_disparity = g_w * UF + group_lane;
-  reg  [SUM_W-1:0]  best_sum;
-  reg  [DISP_W-1:0] best_disparity;
-  wire take_group = g_w == 0 || group_min < best_sum;
-  wire [DISP_W-1:0] disparity_w = take_group ? group_disparity : best_disparity;
-  always @(posedge clk)
-    if (adv && take_group) begin
-      best_sum <= group_min;
-      best_disparity <= group_disparity;
+  wire [G_W-1:0] g_w = `FPS_TAG_GROUP(tag_w);
+  wire [DISP_W:0] word_w;  // the pixel's word, invalid flag on top, in its last group's step
+  generate
+    if (UNIQUENESS == 0) begin : plain_wta
+      wire [SUM_W-1:0]  group_min;
+      wire [LANE_W-1:0] group_lane;
+      fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+        .clk(clk), .en(adv), .values(sum4), .min_value(group_min), .min_index(group_lane));
+      wire [DISP_W-1:0] group_disparity = g_w * UF + group_lane;
+      reg  [SUM_W-1:0]  best_sum;
+      reg  [DISP_W-1:0] best_disparity;
+      wire take_group = g_w == 0 || group_min < best_sum;
+      always @(posedge clk)
+        if (adv && take_group) begin
+          best_sum <= group_min;
+          best_disparity <= group_disparity;
+        end
+      assign word_w = {1'b0, take_group ? group_disparity : best_disparity};
+    end else begin : unique_wta
+      localparam S_W = 5 * SUM_W + DISP_W + 2;
+      wire [SUM_W-1:0]  best, all, but_first, but_last, second;
+      wire [LANE_W-1:0] lane;
+      wire              first, last;
+      fpstereo_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+        .clk(clk), .en(adv), .values(sum4), .best(best), .index(lane), .first(first), .last(last), .all(all),
+        .but_first(but_first), .but_last(but_last), .second(second));
+      wire [DISP_W-1:0] group_disparity = g_w * UF + lane;
+      wire [S_W-1:0] group_summary = {best, all, but_first, but_last, second, group_disparity, first, last};
+      reg  [S_W-1:0] running;  // groups 0 .. g_w - 1
+      wire [S_W-1:0] joined;
+      fpstereo_unique_join #(.W(SUM_W), .IDX_W(DISP_W)) join_groups (.a(running), .b(group_summary), .joined(joined));
+      wire [S_W-1:0] total = g_w == 0 ? group_summary : joined;
+      always @(posedge clk)
+        if (adv) running <= total;
+      wire [SUM_W-1:0]  s1 = total[S_W-1 -: SUM_W];
+      wire [SUM_W-1:0]  s2 = total[S_W-4*SUM_W-1 -: SUM_W];
+      wire [DISP_W-1:0] winner = total[DISP_W+1:2];
+      // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division.
+      localparam [7:0] KEEP = 100 - UNIQUENESS;
+      wire [SUM_W+7:0] scaled_second = s2 * KEEP;
+      wire [SUM_W+7:0] scaled_best = s1 * 8'd100;
+      assign word_w = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
     end
+  endgenerate
 
   // ------------------------------------------------------------------------------------------
   // Disparity reorder RAM (K rows) and output in raster order.
   wire [DISP_AW-1:0] disp_waddr = `FPS_TAG_SLOT(tag_w) * ROW_SLOTS + `FPS_TAG_X(tag_w);
-  wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == G - 1;
+  wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == LAST_GROUP;
 
   wire out_on = step >= OUT_START;
   /* verilator lint_off UNUSEDSIGNAL */  // out_slot_end says what the output needs of the group
@@ -643,9 +675,9 @@ module fpstereo_sgm_core #(
   // them) and bubble slots read as invalid words.
   wire read_slot = out_on && out_slot_end;
   wire read_valid = read_slot && so < W && to < H;
-  wire [DISP_W-1:0] disparity_q;
-  fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
-    .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(disparity_w),
+  wire [DISP_W:0] disparity_q;
+  fpstereo_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+    .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(word_w),
     .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
   reg           read_was_valid;
   reg [X_W-1:0] read_x;
@@ -657,8 +689,7 @@ module fpstereo_sgm_core #(
       read_x <= so;
       read_y <= to;
     end
-  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
-  wire [DISP_W:0] read_word = read_was_valid ? {1'b0, disparity_q} : INVALID_WORD;
+  wire [DISP_W:0] read_word = read_was_valid ? disparity_q : INVALID_WORD;
 
   // Optional median filter (semantics section 6), then the output word.
   wire            out_pending;  // a register in both branches

@@ -29,10 +29,9 @@ void require(bool ok, const std::string& name, const std::string& value, const s
 }
 
 void check_supported(const StereoConfig& cfg) {
-  const std::string later = "not in the RTL yet (the left-right check, uniqueness and gap interpolation "
-                            "come next); use 0/none/off";
+  const std::string later = "not in the RTL yet (the left-right check and gap interpolation come next); "
+                            "use none/off";
   require(cfg.lr == LrCheck::None, "lr", to_string(cfg.lr), later);
-  require(cfg.uniqueness == 0, "uniqueness", std::to_string(cfg.uniqueness), later);
   require(!cfg.gap_interpolation, "gap-interp", "on", later);
 }
 
@@ -62,6 +61,7 @@ std::vector<std::string> used_modules(const StereoConfig& cfg) {
       modules.insert(modules.end(), {"fpstereo_census", "fpstereo_window_mask", "fpstereo_window_cost_lanes"});
       break;
   }
+  if (cfg.uniqueness != 0) modules.insert(modules.end(), {"fpstereo_unique_tree", "fpstereo_unique_join"});
   if (cfg.median != 0) modules.push_back("fpstereo_median_select");
   modules.insert(modules.end(), {"fpstereo_raster_counter", "fpstereo_match_ring", "fpstereo_path_lanes",
                                  "fpstereo_path_minimum",
@@ -152,7 +152,8 @@ std::string top_module(const RtlDesign& d) {
       "    .W({}), .H({}), .ROW_SLOTS({}), .K({}), .SLEN({}), .G({}), .UF({}), .DMAX({}),\n"
       "    .COST_KIND({}), .N({}), .CODE_W({}), .SHD_K({}), .COST_W({}), .COST_MAX({}), .COST_LAT({}),\n"
       "    .COLSUM_W({}), .MEAN_MUL({}), .MEAN_SHIFT({}),\n"
-      "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .P1({}), .P2({}), .MEDIAN({}), .PATHS({}),\n"
+      "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .P1({}), .P2({}), .UNIQUENESS({}), .MEDIAN({}),\n"
+      "    .PATHS({}),\n"
       "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .OUT_START({}),\n"
       "    .X_W({}), .Y_W({}), .G_W({}), .K_W({}), .LANE_W({}), .STEP_W({})\n"
       "  ) core (\n"
@@ -163,7 +164,7 @@ std::string top_module(const RtlDesign& d) {
       d.prefix, d.cfg.width, d.cfg.height, d.row_slots, d.chains, d.segment, d.groups, d.cfg.uf, d.cfg.dmax,
       int(cost_kind(d.cfg)), d.cfg.window, std::max(1, w.code), d.cfg.shd_window, w.cost, w.cost_max,
       d.cost_latency, d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost,
-      w.aggregated, w.disparity, d.cfg.p1, d.cfg.p2, d.cfg.median, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
+      w.aggregated, w.disparity, d.cfg.p1, d.cfg.p2, d.cfg.uniqueness, d.cfg.median, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
       d.wta_tree_latency, d.agg_start, d.out_start, d.x_bits, d.y_bits, d.group_bits, d.chain_bits, d.lane_bits,
       d.step_bits);
   const int pad = d.output_bits - w.output_word;
