@@ -37,6 +37,8 @@ module fpstereo_sgm_core #(
   // uniqueness ratio in percent (0 = off) and median filter window (0 = off, 3, 5 or 7)
   parameter UNIQUENESS = 0,
   parameter MEDIAN = 0,
+  // gap interpolation (0 = off, 1 = on)
+  parameter GAP = 0,
   // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
   parameter PATHS = 15,
   // compare-select levels per register stage in the minimum trees, and the trees' latencies
@@ -672,35 +674,45 @@ module fpstereo_sgm_core #(
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
                      .row_slot(to_slot), .slot_end(out_slot_end));
   // One read per slot, in raster order; rows below the image (the median's last rows need
-  // them) and bubble slots read as invalid words.
+  // them) and bubble slots read as invalid words. Gap interpolation, one row behind, needs one
+  // more row of events.
+  localparam [Y_W-1:0] H_R = H;
+  localparam [Y_W-1:0] EVENT_ROWS = H + GAP;
   wire read_slot = out_on && out_slot_end;
-  wire read_valid = read_slot && so < W && to < H;
+  wire read_event = read_slot && so < W && to < EVENT_ROWS;
+  wire read_valid = read_event && to < H_R;
   wire [DISP_W:0] disparity_q;
   fpstereo_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(word_w),
     .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
+  /* verilator lint_off UNUSEDSIGNAL */  // with a median, its window makes the events
+  reg           read_was_event;
+  /* verilator lint_on UNUSEDSIGNAL */
   reg           read_was_valid;
   reg [X_W-1:0] read_x;
   reg [Y_W-1:0] read_y;
   always @(posedge clk)
-    if (restart) read_was_valid <= 1'b0;
-    else if (adv) begin
+    if (restart) begin
+      read_was_event <= 1'b0;
+      read_was_valid <= 1'b0;
+    end else if (adv) begin
+      read_was_event <= read_event;
       read_was_valid <= read_valid;
       read_x <= so;
       read_y <= to;
     end
   wire [DISP_W:0] read_word = read_was_valid ? disparity_q : INVALID_WORD;
 
-  // Optional median filter (semantics section 6), then the output word.
-  wire            out_pending;  // a register in both branches
-  wire [X_W-1:0]  out_x;
-  wire [Y_W-1:0]  out_y;
+  // Optional median filter (semantics section 6): the stream of words before gap interpolation.
+  wire            pre_pending;  // a register in both branches
+  wire [X_W-1:0]  pre_x;
+  wire [Y_W-1:0]  pre_y;
   wire [DISP_W:0] final_word;
   generate
     if (MEDIAN == 0) begin : no_median
-      assign out_pending = read_was_valid;
-      assign out_x = read_x;
-      assign out_y = read_y;
+      assign pre_pending = read_was_event;
+      assign pre_x = read_x;
+      assign pre_y = read_y;
       assign final_word = read_word;
     end else begin : median
       // The word read in the previous slot enters an M x M window; its centre is RM rows and
@@ -745,7 +757,7 @@ module fpstereo_sgm_core #(
         .clk(clk), .en(adv), .window(window), .row_valid(row_valid_m), .col_valid(col_valid_m),
         .median(final_word));
       // The centre's coordinates travel as long as the selection takes.
-      wire in_image = median_x < W && median_y >= RM_Y && median_y < H + RM_Y;
+      wire in_image = median_x < W && median_y >= RM_Y && median_y < EVENT_ROWS + RM_Y;
       /* verilator lint_off UNUSEDSIGNAL */  // the top bit is 0 whenever in_image
       wire [Y_W:0] median_row = median_y - RM_Y;
       /* verilator lint_on UNUSEDSIGNAL */
@@ -764,18 +776,35 @@ module fpstereo_sgm_core #(
           x_q <= x_m;
           y_q <= y_m;
         end
-      assign out_pending = pending_q;
-      assign out_x = x_q;
-      assign out_y = y_q;
+      assign pre_pending = pending_q;
+      assign pre_x = x_q;
+      assign pre_y = y_q;
     end
   endgenerate
-  // After the median, one more register holds the word of the pixel in out_x / out_y.
-  reg [DISP_W:0] out_word_q;
+  // After the median, one more register holds the word of the pixel in pre_x / pre_y.
+  reg [DISP_W:0] median_word_q;
   always @(posedge clk)
-    if (adv) out_word_q <= final_word;
+    if (adv) median_word_q <= final_word;
+  wire [DISP_W:0] pre_word = MEDIAN == 0 ? read_word : median_word_q;
+
+  // Optional gap interpolation (semantics section 7), then the output.
+  wire            out_pending;  // a register in both branches
+  wire [X_W-1:0]  out_x;
+  wire [Y_W-1:0]  out_y;
+  generate
+    if (GAP == 0) begin : no_gap
+      assign out_pending = pre_pending;
+      assign out_x = pre_x;
+      assign out_y = pre_y;
+      assign out_word = pre_word;
+    end else begin : gap
+      fpstereo_gap_fill #(.W(W), .H(H), .WORD_W(DISP_W + 1), .X_W(X_W), .Y_W(Y_W)) stage (
+        .clk(clk), .rst(restart), .en(adv), .in_event(pre_pending), .in_x(pre_x), .in_y(pre_y), .in_word(pre_word),
+        .out_event(out_pending), .out_x(out_x), .out_y(out_y), .out_word(out_word));
+    end
+  endgenerate
   assign out_due    = out_pending;
   assign out_push   = adv && out_pending;
-  assign out_word   = MEDIAN == 0 ? read_word : out_word_q;
   assign out_first  = out_x == 0 && out_y == 0;
   assign out_last   = out_x == W - 1;
   assign frame_done = out_pending && out_x == W - 1 && out_y == H - 1;

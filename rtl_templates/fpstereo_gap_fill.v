@@ -1,0 +1,114 @@
+`resetall
+`default_nettype none
+// Gap interpolation (docs/semantics.md, section 7), one row behind its input. Each input event
+// brings the word of (x, y); the stage stores row y and, in the same event, emits its result for
+// (x, y - 1), so the caller sends one more (dummy) row after the image. Every maximal run of invalid
+// words in a row is filled with the smaller of the two valid words around it, or with the one there
+// is at a row end; a row without valid words stays invalid.
+//   Writing row y: each word is stored with the start of the invalid run it belongs to; when a run
+//   ends, its right neighbour (or "none" at the row end) is stored under the run's start.
+//   Reading row y - 1: the left neighbour is the last valid word read; the right one is fetched
+//   by the run start stored with the word. Two rows of each (ping-pong by row parity).
+// Latency: the result for (x, y - 1) leaves 3 en-steps after the event of (x, y).
+module fpstereo_gap_fill #(
+  parameter W = 64,
+  parameter H = 16,
+  // word: disparity bits with the invalid flag on top
+  parameter WORD_W = 8,
+  parameter X_W = 7,
+  parameter Y_W = 6
+) (
+  input  wire              clk,
+  input  wire              rst,
+  input  wire              en,
+  input  wire              in_event,
+  input  wire [X_W-1:0]    in_x,
+  input  wire [Y_W-1:0]    in_y,
+  input  wire [WORD_W-1:0] in_word,
+  output reg               out_event,
+  output reg  [X_W-1:0]    out_x,
+  output reg  [Y_W-1:0]    out_y,
+  output reg  [WORD_W-1:0] out_word
+);
+  localparam ADDR_W = $clog2(2 * W);
+  localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
+  localparam [X_W-1:0] LAST_X = W - 1;
+  localparam [Y_W-1:0] ROWS = H;
+
+  function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
+    // verilator lint_off WIDTH
+    address = parity * W + x;
+    // verilator lint_on WIDTH
+  endfunction
+
+  // ---- Writing row in_y.
+  wire writing = in_event && in_y < ROWS;
+  wire word_invalid = in_word[WORD_W-1];
+  reg  run_open;  // the previous word of the row was invalid
+  reg  [X_W-1:0] run_start;
+  wire continues = run_open && in_x != 0;
+  wire [X_W-1:0] start = continues ? run_start : in_x;
+  always @(posedge clk)
+    if (rst) run_open <= 1'b0;
+    else if (en && writing) begin
+      run_open <= word_invalid;
+      run_start <= start;
+    end
+  // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
+  wire side_we = en && writing && (word_invalid ? in_x == LAST_X : continues);
+  wire [ADDR_W-1:0] side_waddr = address(in_y[0], word_invalid ? start : run_start);
+
+  // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
+  wire reading = in_event && in_y != 0;
+  wire [WORD_W+X_W-1:0] stored;
+  fpstereo_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
+    .clk(clk), .we(en && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
+    .re(en), .raddr(address(!in_y[0], in_x)), .rdata(stored));
+  reg           event1;
+  reg [X_W-1:0] x1;
+  reg [Y_W-1:0] y1;
+  always @(posedge clk)
+    if (rst) event1 <= 1'b0;
+    else if (en) begin
+      event1 <= reading;
+      x1 <= in_x;
+      y1 <= in_y - 1'b1;
+    end
+  wire [WORD_W-1:0] word1 = stored[WORD_W+X_W-1 -: WORD_W];
+  wire [X_W-1:0]    start1 = stored[X_W-1:0];
+  wire [WORD_W-1:0] right2;
+  fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
+    .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
+    .re(en), .raddr(address(y1[0], start1)), .rdata(right2));
+
+  reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
+  wire [WORD_W-1:0] left_before = x1 == 0 ? INVALID : left;
+  reg               event2;
+  reg  [X_W-1:0]    x2;
+  reg  [Y_W-1:0]    y2;
+  reg  [WORD_W-1:0] word2, left2;
+  always @(posedge clk)
+    if (rst) event2 <= 1'b0;
+    else if (en) begin
+      event2 <= event1;
+      x2 <= x1;
+      y2 <= y1;
+      word2 <= word1;
+      left2 <= left_before;
+      if (event1) left <= word1[WORD_W-1] ? left_before : word1;
+    end
+
+  // ---- Stage 3: the result.
+  wire left_ok = !left2[WORD_W-1], right_ok = !right2[WORD_W-1];
+  wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right2 < left2 ? right2 : left2)
+                         : left_ok ? left2 : right2;
+  always @(posedge clk)
+    if (rst) out_event <= 1'b0;
+    else if (en) begin
+      out_event <= event2;
+      out_x <= x2;
+      out_y <= y2;
+      out_word <= word2[WORD_W-1] ? filled : word2;
+    end
+endmodule
+`resetall
