@@ -34,7 +34,10 @@ module fpstereo_sgm_core #(
   parameter DISP_W = 5,
   parameter P1 = 7,
   parameter P2 = 86,
-  // uniqueness ratio in percent (0 = off) and median filter window (0 = off, 3, 5 or 7)
+  // left-right check (0 = none, 1 = LR1) and its threshold; uniqueness ratio in percent (0 = off)
+  // and median filter window (0 = off, 3, 5 or 7)
+  parameter LR = 0,
+  parameter LR_THRESHOLD = 1,
   parameter UNIQUENESS = 0,
   parameter MEDIAN = 0,
   // gap interpolation (0 = off, 1 = on)
@@ -79,7 +82,11 @@ module fpstereo_sgm_core #(
   localparam MIN_AW = $clog2(W + 1);
   localparam STATE_DEPTH = K * G;
   localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
-  localparam DISP_DEPTH = K * ROW_SLOTS;
+  // Rows of the disparity (and LR1 match disparity) RAMs: K, one more for the output's lag, one
+  // more with LR1, whose output waits a row longer for the match side to finish.
+  localparam OUT_ROWS = K + 1 + (LR == 1 ? 1 : 0);
+  localparam OUT_K_W = $clog2(OUT_ROWS);
+  localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
   localparam DISP_AW = $clog2(DISP_DEPTH);
   localparam LANES_W = UF * PATH_W;
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
@@ -393,6 +400,7 @@ module fpstereo_sgm_core #(
   wire agg_on = step >= AGG_START;
   reg [G_W-1:0] ga;
   reg [K_W-1:0] ka, base, ta_slot;  // ta_slot = ta mod K
+  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   reg [Y_W-1:0] ta;
   always @(posedge clk)
@@ -403,6 +411,7 @@ module fpstereo_sgm_core #(
       ta <= 0;
       base <= 0;
       ta_slot <= 0;
+      ta_out_slot <= 0;
     end else if (adv && agg_on) begin
       ga <= (ga == LAST_GROUP) ? {G_W{1'b0}} : ga + 1'b1;
       if (ga == LAST_GROUP) begin
@@ -412,6 +421,7 @@ module fpstereo_sgm_core #(
           if (ja == LAST_SEGMENT_SLOT) begin
             ta <= ta + 1'b1;
             ta_slot <= (ta_slot == LAST_CHAIN) ? {K_W{1'b0}} : ta_slot + 1'b1;
+            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
         end
@@ -421,12 +431,13 @@ module fpstereo_sgm_core #(
   wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
   wire           active0 = agg_on && !row0[Y_W] && row0 < H && x0 < W;
   wire [K_W-1:0] row_slot0 = (ta_slot + K - ka) % K;
+  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + K_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, row_slot0};
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
+  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
   always @(posedge clk)
     if (restart) begin
@@ -442,10 +453,10 @@ module fpstereo_sgm_core #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+2*K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+2*K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[2*K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -668,9 +679,10 @@ module fpstereo_sgm_core #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0] so;
   wire [Y_W-1:0] to;
-  wire [K_W-1:0] to_slot;  // to mod K
+  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
   wire out_slot_end;
-  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(K), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(K_W))
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+                            .K_W(OUT_K_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
                      .row_slot(to_slot), .slot_end(out_slot_end));
   // One read per slot, in raster order; rows below the image (the median's last rows need
@@ -685,23 +697,120 @@ module fpstereo_sgm_core #(
   fpstereo_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(word_w),
     .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
-  /* verilator lint_off UNUSEDSIGNAL */  // with a median, its window makes the events
-  reg           read_was_event;
-  /* verilator lint_on UNUSEDSIGNAL */
-  reg           read_was_valid;
-  reg [X_W-1:0] read_x;
-  reg [Y_W-1:0] read_y;
+  reg               read_done, read_was_event, read_was_valid;
+  reg [X_W-1:0]     read_x;
+  reg [Y_W-1:0]     read_y;
+  reg [OUT_K_W-1:0] read_slot_row;
   always @(posedge clk)
     if (restart) begin
+      read_done <= 1'b0;
       read_was_event <= 1'b0;
       read_was_valid <= 1'b0;
     end else if (adv) begin
+      read_done <= read_slot;
       read_was_event <= read_event;
       read_was_valid <= read_valid;
       read_x <= so;
       read_y <= to;
+      read_slot_row <= to_slot;
     end
   wire [DISP_W:0] read_word = read_was_valid ? disparity_q : INVALID_WORD;
+
+  // Left-right check (semantics section 5): the stream after it, one step later with LR1.
+  /* verilator lint_off UNUSEDSIGNAL */  // the median uses the slot steps, the plain output the events
+  wire            checked_done, checked_event;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [X_W-1:0]  checked_x;
+  wire [Y_W-1:0]  checked_y;
+  wire [DISP_W:0] checked_word;
+  generate
+    if (LR == 0) begin : no_lr
+      assign checked_done = read_done;
+      assign checked_event = read_was_event;
+      assign checked_x = read_x;
+      assign checked_y = read_y;
+      assign checked_word = read_word;
+    end else begin : lr1
+      // Match side (LR1): Dm(x') = argmin_d S(x' + d, d). Each chain keeps, for the match pixels
+      // x - e (e < DMAX) of its current pixel x, the best (sum, disparity) over d <= e so far; the
+      // next pixel shifts them by one and offers its own S(x + 1, e + 1), smaller d winning ties.
+      // At e = DMAX - 1 a match pixel is complete; at the row's end the rest are (row-end RAM).
+      // The state follows the chains like the path costs do.
+      localparam E_W = SUM_W + DISP_W;
+      localparam END_AW = $clog2(OUT_ROWS * G);
+      wire [K_W-1:0]      chain4 = `FPS_TAG_CHAIN(tag4);
+      wire [G_W-1:0]      g4 = `FPS_TAG_GROUP(tag4);
+      wire [X_W-1:0]      x4 = `FPS_TAG_X(tag4);
+      wire                active4 = `FPS_TAG_ACTIVE(tag4);
+      wire [OUT_K_W-1:0]  slot4 = `FPS_TAG_SLOT(tag4);
+      wire [STATE_AW-1:0] entry_addr = chain4 * G + g4;
+      wire [UF*E_W-1:0]   previous, updated;
+      wire [UF*DISP_W-1:0] end_disparities;
+      /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
+      wire [UF*E_W-1:0]   previous_unused;
+      /* verilator lint_on UNUSEDSIGNAL */
+      fpstereo_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
+        .clk(clk), .we(adv && active4), .waddr(entry_addr), .wdata(updated),
+        .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
+      reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
+      always @(posedge clk)
+        if (adv) below_q <= previous[UF*E_W-1 -: E_W];
+      genvar l2;
+      for (l2 = 0; l2 < UF; l2 = l2 + 1) begin : lane
+        wire [DISP_W-1:0] disparity = g4 * UF + l2;
+        wire [E_W-1:0]    earlier = (l2 == 0) ? below_q : previous[(l2-1)*E_W +: E_W];
+        wire [SUM_W-1:0]  offered = sum4[l2*SUM_W +: SUM_W];
+        wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
+        assign updated[l2*E_W +: E_W] = take ? {offered, disparity} : earlier;
+        assign end_disparities[l2*DISP_W +: DISP_W] = updated[l2*E_W +: DISP_W];
+      end
+      wire [X_W-1:0] completed_x = x4 - (DMAX - 1);
+
+      // Dm(x') of x' = x - D, from the completed match pixels or, for the last DMAX - 1 of the row,
+      // from the row-end RAM; then the check.
+      wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
+      wire outside = read_word[DISP_W] || read_x < d;
+      wire [X_W-1:0] xm = read_x - d;
+      wire from_row_end = xm > W - DMAX;
+      wire [DISP_W-1:0] from_end = W - 1 - xm;  // the row-end entry of x'
+      wire [DISP_W-1:0] match_q;
+      wire [UF*DISP_W-1:0] end_q;
+      fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) completed (
+        .clk(clk), .we(adv && active4 && g4 == LAST_GROUP && x4 >= DMAX - 1),
+        .waddr(slot4 * ROW_SLOTS + completed_x), .wdata(updated[(UF-1)*E_W +: DISP_W]),
+        .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
+      fpstereo_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
+        .clk(clk), .we(adv && active4 && x4 == W - 1), .waddr(slot4 * G + g4), .wdata(end_disparities),
+        .re(adv), .raddr(read_slot_row * G + from_end / UF), .rdata(end_q));
+      reg               done_c, event_c, outside_c, from_row_end_c;
+      reg [X_W-1:0]     x_c;
+      reg [Y_W-1:0]     y_c;
+      reg [DISP_W:0]    word_c;
+      reg [LANE_W-1:0]  lane_c;
+      always @(posedge clk)
+        if (restart) begin
+          done_c <= 1'b0;
+          event_c <= 1'b0;
+        end else if (adv) begin
+          done_c <= read_done;
+          event_c <= read_was_event;
+          x_c <= read_x;
+          y_c <= read_y;
+          word_c <= read_word;
+          outside_c <= outside;
+          from_row_end_c <= from_row_end;
+          lane_c <= from_end % UF;
+        end
+      wire [DISP_W-1:0] dm = from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] : match_q;
+      wire [DISP_W-1:0] db = word_c[DISP_W-1:0];
+      wire [DISP_W-1:0] difference = db > dm ? db - dm : dm - db;
+      assign checked_done = done_c;
+      assign checked_event = event_c;
+      assign checked_x = x_c;
+      assign checked_y = y_c;
+      assign checked_word = (outside_c || difference > LR_THRESHOLD) ? INVALID_WORD : word_c;
+    end
+  endgenerate
 
   // Optional median filter (semantics section 6): the stream of words before gap interpolation.
   wire            pre_pending;  // a register in both branches
@@ -710,37 +819,33 @@ module fpstereo_sgm_core #(
   wire [DISP_W:0] final_word;
   generate
     if (MEDIAN == 0) begin : no_median
-      assign pre_pending = read_was_event;
-      assign pre_x = read_x;
-      assign pre_y = read_y;
-      assign final_word = read_word;
+      assign pre_pending = checked_event;
+      assign pre_x = checked_x;
+      assign pre_y = checked_y;
+      assign final_word = checked_word;
     end else begin : median
       // The word read in the previous slot enters an M x M window; its centre is RM rows and
       // RM slots behind.
       localparam RM = MEDIAN / 2;
       localparam [X_W:0] RM_X = RM;
       localparam [Y_W:0] RM_Y = RM;
-      reg read_done;  // the previous step read a slot's word (or would have, outside the image)
-      always @(posedge clk)
-        if (restart) read_done <= 1'b0;
-        else if (adv) read_done <= read_slot;
-      wire median_shift = adv && read_done;
-      wire [X_W-1:0] median_next_col = (read_x == LAST_SLOT) ? {X_W{1'b0}} : read_x + 1'b1;
+      wire median_shift = adv && checked_done;  // a slot's word (or the invalid word outside the image)
+      wire [X_W-1:0] median_next_col = (checked_x == LAST_SLOT) ? {X_W{1'b0}} : checked_x + 1'b1;
       wire [MEDIAN*MEDIAN*(DISP_W+1)-1:0] window;
       fpstereo_window #(.N(MEDIAN), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
-        .clk(clk), .shift(median_shift), .col(read_x), .next_col(median_next_col), .word(read_word),
+        .clk(clk), .shift(median_shift), .col(checked_x), .next_col(median_next_col), .word(checked_word),
         .window(window));
       reg [X_W-1:0] median_x;
       reg [Y_W:0]   median_y;  // row + RM, so that it stays non-negative
       reg           fresh;     // high in the step after a shift: one result per slot
       always @(posedge clk)
         if (restart) fresh <= 1'b0;
-        else if (adv) fresh <= read_done;
+        else if (adv) fresh <= checked_done;
       always @(posedge clk)
         if (median_shift) begin
-          median_x <= (read_x >= RM_X[X_W-1:0]) ? read_x - RM_X[X_W-1:0]
-                                                : read_x + (ROW_SLOTS[X_W-1:0] - RM_X[X_W-1:0]);
-          median_y <= {1'b0, read_y} - ((read_x >= RM_X[X_W-1:0]) ? {(Y_W+1){1'b0}} : {{Y_W{1'b0}}, 1'b1});
+          median_x <= (checked_x >= RM_X[X_W-1:0]) ? checked_x - RM_X[X_W-1:0]
+                                                : checked_x + (ROW_SLOTS[X_W-1:0] - RM_X[X_W-1:0]);
+          median_y <= {1'b0, checked_y} - ((checked_x >= RM_X[X_W-1:0]) ? {(Y_W+1){1'b0}} : {{Y_W{1'b0}}, 1'b1});
         end
       // Window positions inside the image: column median_x + v - RM, row median_y + v - 2 * RM.
       wire [MEDIAN-1:0] row_valid_m, col_valid_m;
@@ -785,7 +890,7 @@ module fpstereo_sgm_core #(
   reg [DISP_W:0] median_word_q;
   always @(posedge clk)
     if (adv) median_word_q <= final_word;
-  wire [DISP_W:0] pre_word = MEDIAN == 0 ? read_word : median_word_q;
+  wire [DISP_W:0] pre_word = MEDIAN == 0 ? checked_word : median_word_q;
 
   // Optional gap interpolation (semantics section 7), then the output.
   wire            out_pending;  // a register in both branches
