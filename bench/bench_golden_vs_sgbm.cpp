@@ -1,10 +1,11 @@
 // Times the golden model (C2: census 7x7, dmax 128, 4 paths, median 5) against OpenCV's
 // StereoSGBM (MODE_SGBM, blockSize 5, 128 disparities) on the same 1242x375 pair, both on one
 // thread, and prints the ratio. Target: golden model time <= 2x OpenCV's.
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fmt/core.h>
 #include <functional>
 #include <opencv2/core/utility.hpp>
 #include <random>

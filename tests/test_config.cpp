@@ -49,9 +49,13 @@ TEST_CASE("defaults are the paper's C2 and valid", "[config]") {
 }
 
 TEST_CASE("presets follow the paper's table", "[config]") {
-  struct Row { const char* name; int window, dmax, uf; LrCheck lr; };
-  const Row table[] = {{"S0", 5, 64, 16, LrCheck::None}, {"S1", 5, 128, 32, LrCheck::None},
-                       {"C0", 5, 64, 16, LrCheck::None}, {"C1", 5, 128, 32, LrCheck::None},
+  struct Row {
+    const char* name;
+    int window, dmax, uf;
+    LrCheck lr;
+  };
+  const Row table[] = {{"S0", 5, 64, 16, LrCheck::None},  {"S1", 5, 128, 32, LrCheck::None},
+                       {"C0", 5, 64, 16, LrCheck::None},  {"C1", 5, 128, 32, LrCheck::None},
                        {"C2", 7, 128, 32, LrCheck::None}, {"C3", 7, 128, 32, LrCheck::Lr1},
                        {"C4", 7, 128, 32, LrCheck::Lr2}};
   for (const auto& row : table) {
@@ -91,7 +95,11 @@ TEST_CASE("parameters parse from text", "[config]") {
 }
 
 TEST_CASE("every invalid value is rejected with its name, value and what is allowed", "[config]") {
-  struct Case { const char* name; const char* value; const char* expected; };
+  struct Case {
+    const char* name;
+    const char* value;
+    const char* expected;
+  };
   const Case cases[] = {
       {"width", "4", "width = 4: must be in 8 .. 8192"},
       {"width", "abc", "width = 'abc': expected an integer"},
@@ -138,8 +146,12 @@ TEST_CASE("invalid combinations are rejected", "[config]") {
   shd.cost = CostFunction::Census;  // the SHD window only matters for SHD
   CHECK(rejection(shd).empty());
 
-  CHECK_THROWS_WITH([] { StereoConfig x; set_param(x, "colour", "red"); }(),
-                    "unknown parameter 'colour'");
+  CHECK_THROWS_WITH(
+      [] {
+        StereoConfig x;
+        set_param(x, "colour", "red");
+      }(),
+      "unknown parameter 'colour'");
 }
 
 TEST_CASE("legal dmax and uf combinations are accepted", "[config]") {
@@ -154,10 +166,11 @@ TEST_CASE("legal dmax and uf combinations are accepted", "[config]") {
 }
 
 TEST_CASE("config files in JSON and TOML use the same names", "[config]") {
-  const std::string json = write_temp("a.json",
+  const std::string json = write_temp(
+      "a.json",
       R"({"preset": "C0", "cost": "rank", "paths": [0, 90], "gap-interp": true, "uniqueness": 15})");
-  const std::string toml = write_temp("a.toml",
-      "preset = \"C0\"\ncost = \"rank\"\npaths = [0, 90]\ngap-interp = true\nuniqueness = 15\n");
+  const std::string toml = write_temp(
+      "a.toml", "preset = \"C0\"\ncost = \"rank\"\npaths = [0, 90]\ngap-interp = true\nuniqueness = 15\n");
   StereoConfig from_json, from_toml;
   apply_config_file(from_json, json);
   apply_config_file(from_toml, toml);
@@ -171,9 +184,12 @@ TEST_CASE("config files in JSON and TOML use the same names", "[config]") {
   StereoConfig c;
   CHECK_THROWS_WITH(apply_config_file(c, write_temp("b.json", R"({"dmx": 64})")),
                     Catch::Contains("unknown parameter 'dmx'"));
-  CHECK_THROWS_WITH(apply_config_file(c, write_temp("c.json", "{dmax: 64")), Catch::Contains("not valid JSON"));
-  CHECK_THROWS_WITH(apply_config_file(c, write_temp("d.toml", "dmax = = 3")), Catch::Contains("not valid TOML"));
-  CHECK_THROWS_WITH(apply_config_file(c, write_temp("e.yaml", "dmax: 3")), Catch::Contains("expected a .json or .toml"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("c.json", "{dmax: 64")),
+                    Catch::Contains("not valid JSON"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("d.toml", "dmax = = 3")),
+                    Catch::Contains("not valid TOML"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("e.yaml", "dmax: 3")),
+                    Catch::Contains("expected a .json or .toml"));
   CHECK_THROWS_WITH(apply_config_file(c, "no/such/file.json"), Catch::Contains("cannot be read"));
   CHECK_THROWS_WITH(apply_config_file(c, write_temp("f.json", R"({"dmax": "x"})")),
                     "dmax = 'x': expected an integer");

@@ -1,8 +1,7 @@
 // Image and disparity files, dataset lists and the OpenCV baseline (gen/io). Every file is
 // created at run time in a temporary directory.
-#include <catch2/catch.hpp>
-
 #include <atomic>
+#include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdint>

@@ -1,6 +1,5 @@
 // Accuracy metrics and KITTI background filling on small hand-made maps (gen/io/metrics.hpp).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <vector>
 

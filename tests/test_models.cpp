@@ -44,11 +44,14 @@ StereoConfig random_config(std::mt19937& rng) {
 // Random textures, few-level textures (many ties) and pairs with a true shift.
 std::pair<GrayImage, GrayImage> random_pair(const StereoConfig& c, std::mt19937& rng) {
   switch (rng() % 3) {
-    case 0: return {test::random_image(c.width, c.height, rng), test::random_image(c.width, c.height, rng)};
-    case 1: return {test::random_image(c.width, c.height, rng, 3), test::random_image(c.width, c.height, rng, 3)};
+    case 0:
+      return {test::random_image(c.width, c.height, rng), test::random_image(c.width, c.height, rng)};
+    case 1:
+      return {test::random_image(c.width, c.height, rng, 3), test::random_image(c.width, c.height, rng, 3)};
     default: {
       const int d0 = int(rng() % unsigned(c.dmax));
-      return test::shifted_pair(c.width, c.height, rng, [&](int x, int) { return x < c.width / 2 ? d0 : d0 / 2; });
+      return test::shifted_pair(c.width, c.height, rng,
+                                [&](int x, int) { return x < c.width / 2 ? d0 : d0 / 2; });
     }
   }
 }
@@ -77,16 +80,29 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
   base.uf = 4;
   base.median = 0;
   std::vector<std::pair<std::string, StereoConfig>> variants;
-  for (const auto& spec : {std::pair<const char*, const char*>{"cost", "census"}, {"cost", "rank"}, {"cost", "sad"},
-                           {"cost", "zsad"}, {"cost", "shd"}, {"paths", "0"}, {"paths", "45"}, {"paths", "90"},
-                           {"paths", "135"}, {"lr", "lr1"}, {"lr", "lr2"}, {"uniqueness", "20"}, {"median", "3"},
-                           {"median", "5"}, {"median", "7"}, {"gap-interp", "on"}}) {
+  for (const auto& spec : {std::pair<const char*, const char*>{"cost", "census"},
+                           {"cost", "rank"},
+                           {"cost", "sad"},
+                           {"cost", "zsad"},
+                           {"cost", "shd"},
+                           {"paths", "0"},
+                           {"paths", "45"},
+                           {"paths", "90"},
+                           {"paths", "135"},
+                           {"lr", "lr1"},
+                           {"lr", "lr2"},
+                           {"uniqueness", "20"},
+                           {"median", "3"},
+                           {"median", "5"},
+                           {"median", "7"},
+                           {"gap-interp", "on"}}) {
     StereoConfig c = base;
     set_param(c, spec.first, spec.second);
     variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);
   }
   for (const auto& [name, cfg] : variants) {
-    const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });
+    const auto [left, right] =
+        test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });
     const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
     INFO(name << ": " << cmp.report());
     CHECK(cmp.equal());

@@ -54,13 +54,15 @@ TEST_CASE("a textured fronto-parallel plane is recovered exactly", "[synthetic]"
         if (std::string(cost) == "rank" && std::string(paths) != "all") continue;  // see allowed_errors
         StereoConfig cfg = small_config(cost, 80, 24);
         set_param(cfg, "paths", paths);
-        const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
+        const auto [left, right] =
+            test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
         const DisparityImage out = run_golden(cfg, left, right);
         // Windows that see only matching texture and no zero border (at the border, census
         // codes of bright pixels saturate and tie), past the settling distance.
         const int r = cfg.window / 2 + (std::string(cost) == "shd" ? cfg.shd_window / 2 : 0);
         INFO(cost << " paths " << paths << " d0 " << d0);
-        CHECK(wrong_pixels(out, d0 + r + kSettle, cfg.width - r, r, cfg.height - r, [&](int, int) { return d0; }) == 0);
+        CHECK(wrong_pixels(out, d0 + r + kSettle, cfg.width - r, r, cfg.height - r,
+                           [&](int, int) { return d0; }) == 0);
       }
 }
 
@@ -93,8 +95,8 @@ TEST_CASE("a horizontal disparity step is recovered above and below the edge", "
     const int region = (cfg.width - 17 - 2 * margin) * (20 - margin);
     CHECK(wrong_pixels(out, 17 + margin, cfg.width - margin, 0, 20 - margin, [](int, int) { return 6; }) <=
           allowed_errors(cost, region));
-    CHECK(wrong_pixels(out, 17 + margin, cfg.width - margin, 20 + margin, cfg.height, [](int, int) { return 17; }) <=
-          allowed_errors(cost, region));
+    CHECK(wrong_pixels(out, 17 + margin, cfg.width - margin, 20 + margin, cfg.height,
+                       [](int, int) { return 17; }) <= allowed_errors(cost, region));
   }
 }
 

@@ -19,7 +19,8 @@ void check_width_is_minimal(uint64_t reached, int width, uint64_t bound) {
   CHECK(reached >= (uint64_t(1) << (width - 1)));  // one bit fewer would overflow
 }
 
-std::vector<uint32_t> cost_row(const StereoConfig& cfg, const GrayImage& base, const GrayImage& match, int y) {
+std::vector<uint32_t> cost_row(const StereoConfig& cfg, const GrayImage& base, const GrayImage& match,
+                               int y) {
   const golden::CostRows<uint32_t> costs(cfg, derive_widths(cfg), base, match);
   std::vector<uint32_t> row(size_t(base.width) * size_t(cfg.dmax));
   costs.compute(y, row.data());
@@ -69,7 +70,8 @@ std::pair<GrayImage, GrayImage> worst_case_pair(const StereoConfig& cfg, int x0,
 }  // namespace
 
 TEST_CASE("matching cost width holds the worst case and is minimal", "[widths]") {
-  for (auto cost : {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad, CostFunction::Shd})
+  for (auto cost :
+       {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad, CostFunction::Shd})
     for (int window : {3, 5, 7, 9, 11})
       for (int shd_window : {1, 3, 5, 7}) {
         if (cost != CostFunction::Shd && shd_window != 1) continue;
@@ -95,7 +97,8 @@ TEST_CASE("matching cost width holds the worst case and is minimal", "[widths]")
 
 TEST_CASE("no matching cost exceeds Cmax on random images", "[widths]") {
   std::mt19937 rng(3);
-  for (auto cost : {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad, CostFunction::Shd}) {
+  for (auto cost :
+       {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad, CostFunction::Shd}) {
     StereoConfig cfg;
     cfg.cost = cost;
     cfg.window = 5;
@@ -114,8 +117,11 @@ TEST_CASE("path cost and sum widths hold the worst case and are minimal", "[widt
   // Every pixel: cost 0 at disparity 3, Cmax elsewhere. Along each path the costs of the other
   // disparities grow until the P2 jump caps them at Cmax + P2, on all paths at once. P1 is as
   // large as allowed so that the d +- 1 terms do not cap them earlier.
-  for (auto [cost, window] : {std::pair{CostFunction::Census, 3}, {CostFunction::Census, 7}, {CostFunction::Rank, 5},
-                              {CostFunction::Sad, 5}, {CostFunction::Zsad, 3}})
+  for (auto [cost, window] : {std::pair{CostFunction::Census, 3},
+                              {CostFunction::Census, 7},
+                              {CostFunction::Rank, 5},
+                              {CostFunction::Sad, 5},
+                              {CostFunction::Zsad, 3}})
     for (int p2 : {0, 7, 86, 300})
       for (unsigned paths : {unsigned(kAllPaths), unsigned(kPath0), unsigned(kPath45 | kPath135)}) {
         StereoConfig cfg;
@@ -155,7 +161,8 @@ TEST_CASE("disparity and output word widths", "[widths]") {
     cfg.median = 0;
     const Widths w = derive_widths(cfg);
     // The largest disparity, dmax - 1, is produced by a pair shifted by that much.
-    const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
+    const auto [left, right] =
+        test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
     const DisparityImage out = run_golden(cfg, left, right);
     const uint16_t largest = *std::max_element(out.pixels.begin(), out.pixels.end());
     INFO("dmax " << dmax);

@@ -1,6 +1,7 @@
 #include "stream_bench.hpp"
 
 #include <fmt/core.h>
+
 #include <memory>
 #include <optional>
 #include <random>
@@ -67,7 +68,10 @@ struct OutputBeat {
 class OutputMonitor {
  public:
   OutputMonitor(int width, int height, size_t frames, StreamRun& run)
-      : width_(width), height_(height), total_(frames * size_t(width) * size_t(height)), run_(run),
+      : width_(width),
+        height_(height),
+        total_(frames * size_t(width) * size_t(height)),
+        run_(run),
         frame_(width, height) {}
 
   void observe(uint64_t cycle, bool valid, bool ready, const OutputBeat& beat) {
@@ -86,10 +90,11 @@ class OutputMonitor {
       run_.protocol.add(fmt::format("cycle {}: tvalid dropped before a handshake", cycle));
       return;
     }
-    run_.protocol.add(fmt::format("cycle {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
-                                  "tlast {} -> {}",
-                                  cycle, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
-                                  int(stalled_->last), int(beat.last)));
+    run_.protocol.add(
+        fmt::format("cycle {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
+                    "tlast {} -> {}",
+                    cycle, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
+                    int(stalled_->last), int(beat.last)));
   }
 
   void take(uint64_t cycle, const OutputBeat& beat) {
@@ -125,11 +130,12 @@ class OutputMonitor {
   std::optional<OutputBeat> stalled_;  // the beat offered without tready at the previous edge
 };
 
-std::string timeout_message(uint64_t cycles, const OutputMonitor& out, size_t expected, const AxisSource& left,
-                            const AxisSource& right) {
-  return fmt::format("timeout: no output handshake for {} cycles; {} of {} output pixels received, inputs taken: "
-                     "left {} of {}, right {} of {}",
-                     cycles, out.received(), expected, left.taken(), left.total(), right.taken(), right.total());
+std::string timeout_message(uint64_t cycles, const OutputMonitor& out, size_t expected,
+                            const AxisSource& left, const AxisSource& right) {
+  return fmt::format(
+      "timeout: no output handshake for {} cycles; {} of {} output pixels received, inputs taken: "
+      "left {} of {}, right {} of {}",
+      cycles, out.received(), expected, left.taken(), left.total(), right.taken(), right.total());
 }
 
 }  // namespace
@@ -189,8 +195,10 @@ StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoP
   uint64_t last_progress = 0;  // cycle of the last output handshake (or reset)
   uint64_t cycle = 0;
   for (;; ++cycle) {
-    left.drive(dut->s_axis_left_tdata, dut->s_axis_left_tvalid, dut->s_axis_left_tuser, dut->s_axis_left_tlast);
-    right.drive(dut->s_axis_right_tdata, dut->s_axis_right_tvalid, dut->s_axis_right_tuser, dut->s_axis_right_tlast);
+    left.drive(dut->s_axis_left_tdata, dut->s_axis_left_tvalid, dut->s_axis_left_tuser,
+               dut->s_axis_left_tlast);
+    right.drive(dut->s_axis_right_tdata, dut->s_axis_right_tvalid, dut->s_axis_right_tuser,
+                dut->s_axis_right_tlast);
     dut->m_axis_disp_tready = ready;
     half_cycle(false);
 
@@ -204,8 +212,9 @@ StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoP
       seen_input = true;
       run.first_input_cycle = cycle;
     }
-    monitor.observe(cycle, output_valid, ready,
-                    {uint16_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
+    monitor.observe(
+        cycle, output_valid, ready,
+        {uint16_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
     half_cycle(true);
 
     if (output_valid && ready) last_progress = cycle;

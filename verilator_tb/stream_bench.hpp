@@ -28,7 +28,7 @@ struct ProtocolErrors {
 };
 
 struct StreamRun {
-  std::vector<DisparityImage> outputs;   // the complete output frames, in order
+  std::vector<DisparityImage> outputs;    // the complete output frames, in order
   std::vector<uint64_t> frame_end_cycle;  // cycle of each frame's last output handshake
   uint64_t first_input_cycle = 0;         // cycle of the first input handshake on either stream
   uint64_t cycles = 0;                    // cycles simulated after reset

@@ -5,9 +5,10 @@
 // measures latency and cycles per frame, then the checked run with the requested idle and
 // backpressure probabilities. Every frame of both runs is compared pixel for pixel.
 // Exit status: 0 pass, 1 mismatch or protocol error, 2 bad input, 3 timeout.
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <fmt/core.h>
 #include <random>
 
 #include "compare.hpp"
@@ -66,7 +67,8 @@ GrayImage load_input(const std::string& path, const std::string& role, const Ste
 // its own pair (at least two, so that the throughput run streams two different ones).
 std::vector<StereoPair> make_pairs(const Options& opt, const StereoConfig& cfg) {
   if (!opt.left.empty())
-    return {{load_input(opt.left, "left image", cfg, opt.crop), load_input(opt.right, "right image", cfg, opt.crop)}};
+    return {{load_input(opt.left, "left image", cfg, opt.crop),
+             load_input(opt.right, "right image", cfg, opt.crop)}};
   std::mt19937 rng(opt.seed);
   std::vector<StereoPair> pairs;
   for (int i = 0; i < std::max(opt.frames, 2); ++i)
@@ -76,8 +78,10 @@ std::vector<StereoPair> make_pairs(const Options& opt, const StereoConfig& cfg) 
 }
 
 std::string describe_input(const Options& opt) {
-  if (!opt.left.empty()) return fmt::format("'{}' and '{}'{}", opt.left, opt.right, opt.crop ? ", cropped" : "");
-  const std::string kind = opt.shift >= 0 ? fmt::format("shifted pairs (disparity {})", opt.shift) : "random pairs";
+  if (!opt.left.empty())
+    return fmt::format("'{}' and '{}'{}", opt.left, opt.right, opt.crop ? ", cropped" : "");
+  const std::string kind =
+      opt.shift >= 0 ? fmt::format("shifted pairs (disparity {})", opt.shift) : "random pairs";
   return fmt::format("{}, {} gray levels, seed {}", kind, opt.levels, opt.seed);
 }
 
@@ -129,9 +133,10 @@ void print_throughput(const StreamRun& run, const StereoConfig& cfg) {
   const uint64_t per_frame = run.frame_end_cycle[1] - run.frame_end_cycle[0];
   const uint64_t ideal = ideal_cycles_per_frame(cfg);
   fmt::print("latency: {} cycles (first input handshake to the first frame's last output pixel)\n", latency);
-  fmt::print("steady state: {} cycles per frame (between the last output pixels of frames 0 and 1)\n", per_frame);
-  fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.3f}\n", ideal, cfg.width, cfg.height,
-             cfg.dmax, cfg.uf, double(per_frame) / double(ideal));
+  fmt::print("steady state: {} cycles per frame (between the last output pixels of frames 0 and 1)\n",
+             per_frame);
+  fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.3f}\n", ideal, cfg.width,
+             cfg.height, cfg.dmax, cfg.uf, double(per_frame) / double(ideal));
 }
 
 int run_bench(const Options& opt) {
@@ -172,7 +177,8 @@ int run_bench(const Options& opt) {
     settings.idle = opt.idle;
     settings.backpressure = opt.backpressure;
     settings.seed = opt.seed + 1;
-    const std::string title = fmt::format("checked run, idle {}, backpressure {}", opt.idle, opt.backpressure);
+    const std::string title =
+        fmt::format("checked run, idle {}, backpressure {}", opt.idle, opt.backpressure);
     const StreamRun checked = check_run(title, cfg, pairs, expected, opt.frames, settings, totals);
     if (!checked.timeout.empty()) {
       fmt::print("{}\n", checked.timeout);
@@ -181,8 +187,8 @@ int run_bench(const Options& opt) {
   }
 
   const bool pass = totals.mismatches == 0 && totals.protocol_errors == 0;
-  fmt::print("{}: {} frames, {} mismatching pixels, {} protocol errors\n", pass ? "PASS" : "FAIL", totals.frames,
-             totals.mismatches, totals.protocol_errors);
+  fmt::print("{}: {} frames, {} mismatching pixels, {} protocol errors\n", pass ? "PASS" : "FAIL",
+             totals.frames, totals.mismatches, totals.protocol_errors);
   return pass ? 0 : kExitFail;
 }
 
@@ -197,10 +203,12 @@ int main(int argc, char** argv) {
   auto* left = app.add_option("--left", opt.left, "left (base) image file");
   auto* right = app.add_option("--right", opt.right, "right (match) image file");
   auto* crop = app.add_flag("--crop", opt.crop, "take the top-left region of larger images");
-  auto* random = app.add_flag("--random", opt.random, "random texture pairs, a new one per frame (the default)");
-  auto* shifted = app.add_option("--shifted", opt.shift,
-                                 "pairs with a constant disparity D: right random, left = right shifted by D px")
-                      ->check(CLI::Range(0, 8192));
+  auto* random =
+      app.add_flag("--random", opt.random, "random texture pairs, a new one per frame (the default)");
+  auto* shifted =
+      app.add_option("--shifted", opt.shift,
+                     "pairs with a constant disparity D: right random, left = right shifted by D px")
+          ->check(CLI::Range(0, 8192));
   app.add_option("--levels", opt.levels, "gray levels of generated textures (few levels: many ties)")
       ->capture_default_str()
       ->check(CLI::Range(2, 256));

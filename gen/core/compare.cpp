@@ -23,7 +23,8 @@ std::string Comparison::report() const {
   if (!size_matches) return "output size differs from the expected size";
   std::ostringstream os;
   os << mismatches << " mismatching pixels";
-  for (const auto& m : first) os << "\n  (" << m.x << ", " << m.y << "): expected " << m.expected << ", got " << m.got;
+  for (const auto& m : first)
+    os << "\n  (" << m.x << ", " << m.y << "): expected " << m.expected << ", got " << m.got;
   if (mismatches > first.size()) os << "\n  ...";
   return os.str();
 }

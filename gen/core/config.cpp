@@ -1,5 +1,7 @@
 #include "config.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdlib>
@@ -7,7 +9,6 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <toml++/toml.h>
 
 namespace fpstereo {
 namespace {
@@ -36,9 +37,11 @@ int parse_int_or_off(const std::string& name, const std::string& text) {
   return text == "off" ? 0 : parse_int(name, text);
 }
 
-const std::vector<std::pair<std::string, CostFunction>> kCostNames = {
-    {"census", CostFunction::Census}, {"rank", CostFunction::Rank}, {"sad", CostFunction::Sad},
-    {"zsad", CostFunction::Zsad},     {"shd", CostFunction::Shd}};
+const std::vector<std::pair<std::string, CostFunction>> kCostNames = {{"census", CostFunction::Census},
+                                                                      {"rank", CostFunction::Rank},
+                                                                      {"sad", CostFunction::Sad},
+                                                                      {"zsad", CostFunction::Zsad},
+                                                                      {"shd", CostFunction::Shd}};
 const std::vector<std::pair<std::string, LrCheck>> kLrNames = {
     {"none", LrCheck::None}, {"lr1", LrCheck::Lr1}, {"lr2", LrCheck::Lr2}};
 
@@ -108,9 +111,7 @@ int StereoConfig::path_count() const {
   return n;
 }
 
-bool StereoConfig::operator==(const StereoConfig& o) const {
-  return describe(*this) == describe(o);
-}
+bool StereoConfig::operator==(const StereoConfig& o) const { return describe(*this) == describe(o); }
 
 std::string to_string(CostFunction c) { return enum_name(c, kCostNames); }
 std::string to_string(LrCheck l) { return enum_name(l, kLrNames); }
@@ -188,13 +189,13 @@ void validate(const StereoConfig& c) {
   if (c.uf < 1 || c.uf > c.dmax || c.dmax % c.uf != 0)
     reject("uf", std::to_string(c.uf), "must divide dmax (" + std::to_string(c.dmax) + ")");
   if (c.dmax > c.width)
-    reject("dmax", std::to_string(c.dmax), "must not exceed the image width (" + std::to_string(c.width) + ")");
+    reject("dmax", std::to_string(c.dmax),
+           "must not exceed the image width (" + std::to_string(c.width) + ")");
   if ((c.paths & ~unsigned(kAllPaths)) != 0 || c.paths == 0)
     reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135");
   check_range("p1", c.p1, 0, 255);
   check_range("p2", c.p2, 0, 4095);
-  if (c.p1 > c.p2)
-    reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
+  if (c.p1 > c.p2) reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
   check_range("lr-threshold", c.lr_threshold, 0, 15);
   check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
@@ -213,12 +214,19 @@ StereoConfig preset(const std::string& name) {
     c.dmax = dmax;
     c.uf = uf;
   };
-  if (name == "S0" || name == "C0") census(5, 64, 16);
-  else if (name == "S1" || name == "C1") census(5, 128, 32);
-  else if (name == "C2") census(7, 128, 32);
-  else if (name == "C3") { census(7, 128, 32); c.lr = LrCheck::Lr1; }
-  else if (name == "C4") { census(7, 128, 32); c.lr = LrCheck::Lr2; }
-  else {
+  if (name == "S0" || name == "C0")
+    census(5, 64, 16);
+  else if (name == "S1" || name == "C1")
+    census(5, 128, 32);
+  else if (name == "C2")
+    census(7, 128, 32);
+  else if (name == "C3") {
+    census(7, 128, 32);
+    c.lr = LrCheck::Lr1;
+  } else if (name == "C4") {
+    census(7, 128, 32);
+    c.lr = LrCheck::Lr2;
+  } else {
     std::string allowed = "expected one of";
     for (const auto& n : preset_names()) allowed += " " + n;
     reject("preset", "'" + name + "'", allowed);
@@ -275,7 +283,8 @@ void apply_config_file(StereoConfig& cfg, const std::string& path) {
   buf << in.rdbuf();
   std::vector<std::pair<std::string, std::string>> entries;
   auto ends_with = [&](const std::string& suffix) {
-    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return path.size() >= suffix.size() &&
+           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (ends_with(".json")) {
     nlohmann::json j;
@@ -312,8 +321,8 @@ std::string config_tag(const StereoConfig& cfg) {
   for (char ch : describe(cfg)) h = (h ^ uint8_t(ch)) * 16777619u;
   char hex[9];
   std::snprintf(hex, sizeof hex, "%08x", h);
-  return "fps_" + to_string(cfg.cost) + std::to_string(cfg.window) + "_d" + std::to_string(cfg.dmax) +
-         "u" + std::to_string(cfg.uf) + "_" + std::string(hex, 6);
+  return "fps_" + to_string(cfg.cost) + std::to_string(cfg.window) + "_d" + std::to_string(cfg.dmax) + "u" +
+         std::to_string(cfg.uf) + "_" + std::string(hex, 6);
 }
 
 }  // namespace fpstereo

@@ -19,8 +19,10 @@ void fill_row_gaps(T* row, int width, IsValid is_valid) {
     const bool has_left = run_start > 0, has_right = x < width;
     if (!has_left && !has_right) return;
     T fill;
-    if (has_left && has_right) fill = row[run_start - 1] < row[x] ? row[run_start - 1] : row[x];
-    else fill = has_left ? row[run_start - 1] : row[x];
+    if (has_left && has_right)
+      fill = row[run_start - 1] < row[x] ? row[run_start - 1] : row[x];
+    else
+      fill = has_left ? row[run_start - 1] : row[x];
     for (int i = run_start; i < x; ++i) row[i] = fill;
   }
 }

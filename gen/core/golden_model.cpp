@@ -169,7 +169,8 @@ DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const 
     throw std::invalid_argument("run_golden: images must have equal sizes within the configured size");
   const Widths widths = derive_widths(cfg);
   // 16-bit storage whenever sums, and the sentinel above any path cost plus P2, fit.
-  if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 && widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
+  if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 &&
+      widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
     return run_pipeline<uint16_t>(cfg, widths, left, right);
   return run_pipeline<uint32_t>(cfg, widths, left, right);
 }

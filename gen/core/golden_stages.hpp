@@ -23,9 +23,7 @@ namespace fpstereo::golden {
 constexpr int kMaxCodeWords = 2;
 using CensusCode = std::array<uint64_t, kMaxCodeWords>;
 
-inline int pixel_or_zero(const GrayImage& img, int x, int y) {
-  return img.contains(x, y) ? img.at(x, y) : 0;
-}
+inline int pixel_or_zero(const GrayImage& img, int x, int y) { return img.contains(x, y) ? img.at(x, y) : 0; }
 
 // The image with a frame of r zero pixels, so windows need no bounds tests (section 1).
 inline GrayImage zero_padded(const GrayImage& img, int r) {
@@ -74,7 +72,8 @@ inline Image<CensusCode> census_transform(const GrayImage& img, int window) {
 
 inline Image<int> rank_transform(const GrayImage& img, int window) {
   Image<int> ranks(img.width, img.height, 0);
-  for_each_window_neighbour(img, window, [&](int x, int y, int centre, int q) { ranks.at(x, y) += q < centre; });
+  for_each_window_neighbour(img, window,
+                            [&](int x, int y, int centre, int q) { ranks.at(x, y) += q < centre; });
   return ranks;
 }
 
@@ -207,7 +206,9 @@ class PathAggregator {
   PathAggregator(const StereoConfig& cfg, int width, T sentinel)
       : cfg_(cfg), width_(width), stride_(cfg.dmax + 2) {
     for (const auto& dir : path_directions())
-      if (cfg.paths & dir.mask) paths_.push_back(PathState{dir, RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)});
+      if (cfg.paths & dir.mask)
+        paths_.push_back(
+            PathState{dir, RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)});
   }
 
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S.
@@ -221,7 +222,8 @@ class PathAggregator {
         const RowBuffer& pred_row = path.dir.dy == 0 ? path.current : path.previous;
         const size_t at = size_t(x) * size_t(dmax);
         path.current.minimum[size_t(x)] =
-            has_pred ? step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)], path.current.costs(x), sum + at)
+            has_pred ? step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)],
+                            path.current.costs(x), sum + at)
                      : start(cost + at, path.current.costs(x), sum + at);
       }
       std::swap(path.current, path.previous);

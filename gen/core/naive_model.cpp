@@ -113,8 +113,7 @@ int64_t pair_cost(const StereoConfig& cfg, const Side& a, const Side& b, int ax,
       // Positions outside the image read 0 and still have the mean subtracted.
       for (int oy = -r; oy <= r; ++oy)
         for (int ox = -r; ox <= r; ++ox)
-          c += std::llabs((pixel(*a.img, ax + ox, y + oy) - ma) -
-                          (pixel(*b.img, bx + ox, y + oy) - mb));
+          c += std::llabs((pixel(*a.img, ax + ox, y + oy) - ma) - (pixel(*b.img, bx + ox, y + oy) - mb));
       return c;
     }
     case CostFunction::Shd: {
@@ -134,8 +133,7 @@ int64_t pair_cost(const StereoConfig& cfg, const Side& a, const Side& b, int ax,
 struct Volume {
   int width = 0, height = 0, depth = 0;
   std::vector<int64_t> v;
-  Volume(int w, int h, int d)
-      : width(w), height(h), depth(d), v(size_t(w) * size_t(h) * size_t(d), 0) {}
+  Volume(int w, int h, int d) : width(w), height(h), depth(d), v(size_t(w) * size_t(h) * size_t(d), 0) {}
   int64_t& at(int x, int y, int d) {
     return v[(size_t(y) * size_t(width) + size_t(x)) * size_t(depth) + size_t(d)];
   }
@@ -160,8 +158,7 @@ Volume match_costs(const StereoConfig& cfg, const Side& base, const Side& match,
   for (int y = 0; y < match.height; ++y)
     for (int x = 0; x < match.width; ++x)
       for (int d = 0; d < cfg.dmax; ++d)
-        c.at(x, y, d) =
-            (x + d >= match.width) ? cmax : pair_cost(cfg, match, base, x, x + d, y);
+        c.at(x, y, d) = (x + d >= match.width) ? cmax : pair_cost(cfg, match, base, x, x + d, y);
   return c;
 }
 
@@ -253,8 +250,7 @@ DispMap lr1_match_disparities(const Volume& sum) {
 }
 
 // LR2: match-side cost with the roles swapped, its own aggregation, plain WTA.
-DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match,
-                              int64_t cmax) {
+DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
   const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax));
   DispMap dm(msum.width, msum.height);
   for (int y = 0; y < msum.height; ++y)
@@ -269,8 +265,7 @@ void apply_lr_check(const StereoConfig& cfg, const DispMap& dm, DispMap& disp) {
       const int64_t D = disp.at(x, y);
       if (D == kInvalid) continue;
       const int64_t xm = int64_t(x) - D;
-      if (xm < 0 || std::llabs(D - dm.at(int(xm), y)) > int64_t(cfg.lr_threshold))
-        disp.at(x, y) = kInvalid;
+      if (xm < 0 || std::llabs(D - dm.at(int(xm), y)) > int64_t(cfg.lr_threshold)) disp.at(x, y) = kInvalid;
     }
   }
 }
@@ -341,8 +336,7 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
 
   if (cfg.lr == LrCheck::Lr1) apply_lr_check(cfg, lr1_match_disparities(sum), disp);
-  if (cfg.lr == LrCheck::Lr2)
-    apply_lr_check(cfg, lr2_match_disparities(cfg, base, match, cmax), disp);
+  if (cfg.lr == LrCheck::Lr2) apply_lr_check(cfg, lr2_match_disparities(cfg, base, match, cmax), disp);
 
   if (cfg.median > 0) disp = median_filter(disp, cfg.median);
 

@@ -59,13 +59,19 @@ cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const s
 std::string depth_text(int depth) {
   switch (depth) {
     case CV_8U:
-    case CV_8S: return "8-bit";
+    case CV_8S:
+      return "8-bit";
     case CV_16U:
-    case CV_16S: return "16-bit";
-    case CV_32S: return "32-bit integer";
-    case CV_16F: return "16-bit float";
-    case CV_32F: return "32-bit float";
-    default: return "64-bit float";
+    case CV_16S:
+      return "16-bit";
+    case CV_32S:
+      return "32-bit integer";
+    case CV_16F:
+      return "16-bit float";
+    case CV_32F:
+      return "32-bit float";
+    default:
+      return "64-bit float";
   }
 }
 
@@ -74,9 +80,15 @@ cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::stri
     throw InputError(fmt::format("{} '{}': {} image, expected 8-bit", role, path, depth_text(image.depth())));
   cv::Mat1b gray;
   switch (image.channels()) {
-    case 1: gray = image; break;
-    case 3: cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY); break;
-    case 4: cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY); break;
+    case 1:
+      gray = image;
+      break;
+    case 3:
+      cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+      break;
+    case 4:
+      cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
+      break;
     default:
       throw InputError(fmt::format("{} '{}': {} channels, expected gray, colour or colour with alpha", role,
                                    path, image.channels()));

@@ -15,20 +15,20 @@ namespace fpstereo::rtl {
 struct RtlDesign {
   StereoConfig cfg;
   Widths widths;
-  std::string prefix;      // module name prefix, unique per configuration
-  int window_radius = 0;   // r
-  int cost_latency = 1;    // register stages of the cost lanes
+  std::string prefix;       // module name prefix, unique per configuration
+  int window_radius = 0;    // r
+  int cost_latency = 1;     // register stages of the cost lanes
   int column_sum_bits = 0;  // SAD/ZSAD: bits of a window column's pixel sum
-  uint64_t mean_mul = 1;   // ZSAD: floor(s / N^2) == (s * mean_mul) >> mean_shift
+  uint64_t mean_mul = 1;    // ZSAD: floor(s / N^2) == (s * mean_mul) >> mean_shift
   int mean_shift = 0;
-  int groups = 0;          // G = dmax / uf: steps per pixel
-  int chains = 0;          // K
-  int segment = 0;         // ceil(W / K): pixels per chain per row
-  int row_slots = 0;       // K * segment: slots per row-time
+  int groups = 0;     // G = dmax / uf: steps per pixel
+  int chains = 0;     // K
+  int segment = 0;    // ceil(W / K): pixels per chain per row
+  int row_slots = 0;  // K * segment: slots per row-time
   int levels_per_stage = 3;
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
-  int64_t agg_start = 0;   // steps from a frame's first step to aggregation and to output
+  int64_t agg_start = 0;  // steps from a frame's first step to aggregation and to output
   int64_t out_start = 0;
   int64_t cycles_per_frame = 0;  // steps from a frame's first step to its last output, plus one
   int64_t latency_cycles = 0;    // cycles_per_frame - W * H * G

@@ -1,7 +1,8 @@
 // fpstereo: run the golden model on image pairs and measure its accuracy.
+#include <fmt/core.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <fmt/core.h>
 #include <iostream>
 
 #include "config_cli.hpp"
@@ -25,7 +26,8 @@ int run_pair(const RunOptions& opt) {
   check_pair(left, right, cfg);
   const auto start = std::chrono::steady_clock::now();
   const DisparityImage words = run_golden(cfg, left, right);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(words, cfg);
   if (!opt.output.empty()) write_kitti_png(disparity, opt.output);
   if (!opt.colour.empty()) write_colour_png(disparity, float(cfg.dmax - 1), opt.colour);
@@ -40,10 +42,11 @@ int print_config(const ConfigFlags& flags) {
   const StereoConfig cfg = flags.resolve();
   const Widths w = derive_widths(cfg);
   fmt::print("{}", describe(cfg));
-  fmt::print("# derived widths (bits)\ncode = {}\ncost = {} (max {})\npath_cost = {} (max {})\n"
-             "aggregated = {} (max {})\ndisparity = {}\noutput_word = {} (invalid = {})\n",
-             w.code, w.cost, w.cost_max, w.path_cost, w.path_cost_max, w.aggregated, w.aggregated_max,
-             w.disparity, w.output_word, w.invalid_word);
+  fmt::print(
+      "# derived widths (bits)\ncode = {}\ncost = {} (max {})\npath_cost = {} (max {})\n"
+      "aggregated = {} (max {})\ndisparity = {}\noutput_word = {} (invalid = {})\n",
+      w.code, w.cost, w.cost_max, w.path_cost, w.path_cost_max, w.aggregated, w.aggregated_max, w.disparity,
+      w.output_word, w.invalid_word);
   return 0;
 }
 

@@ -47,8 +47,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     const rtl::RtlDesign design = rtl::plan(flags.resolve());
-    if (out_dir.empty()) std::cout << rtl::emit_single_file(design);
-    else write_directory(design, out_dir);
+    if (out_dir.empty())
+      std::cout << rtl::emit_single_file(design);
+    else
+      write_directory(design, out_dir);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : kExitBadInput;
   } catch (const ConfigError& e) {
