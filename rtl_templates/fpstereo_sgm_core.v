@@ -74,12 +74,8 @@ module fpstereo_sgm_core #(
   output wire              out_last
 );
   localparam R = N / 2;
-  localparam ONES = {PATH_W{1'b1}};
   localparam COST_DEPTH = K * ROW_SLOTS * G;
   localparam COST_AW = $clog2(COST_DEPTH);
-  localparam ROW_DEPTH = (W + 1) * G;
-  localparam ROW_AW = $clog2(ROW_DEPTH);
-  localparam MIN_AW = $clog2(W + 1);
   localparam STATE_DEPTH = K * G;
   localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
   // Rows of the disparity (and LR1 match disparity) RAMs: K, one more for the output's lag, one
@@ -88,15 +84,11 @@ module fpstereo_sgm_core #(
   localparam OUT_K_W = $clog2(OUT_ROWS);
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
   localparam DISP_AW = $clog2(DISP_DEPTH);
-  localparam LANES_W = UF * PATH_W;
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   // Sized copies of the constants the counters are compared with (keeps widths exact).
   localparam integer LAST_GROUP_I = G - 1;
-  localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
-  localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SLEN - 1;
   localparam [X_W:0]   R_X = R;
   localparam [X_W:0]   W_X = W;
   localparam YS_W = Y_W + 2;  // signed row coordinates: a window centre may lie above the image
@@ -395,228 +387,29 @@ module fpstereo_sgm_core #(
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
 
   // ------------------------------------------------------------------------------------------
-  // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
-  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  // Aggregation in K interleaved chains (fpstereo_aggregator), from step AGG_START.
   wire agg_on = step >= AGG_START;
-  reg [G_W-1:0] ga;
-  reg [K_W-1:0] ka, base, ta_slot;  // ta_slot = ta mod K
-  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
-  reg [X_W-1:0] ja;
-  reg [Y_W-1:0] ta;
-  always @(posedge clk)
-    if (restart) begin
-      ga <= 0;
-      ka <= 0;
-      ja <= 0;
-      ta <= 0;
-      base <= 0;
-      ta_slot <= 0;
-      ta_out_slot <= 0;
-    end else if (adv && agg_on) begin
-      ga <= (ga == LAST_GROUP) ? {G_W{1'b0}} : ga + 1'b1;
-      if (ga == LAST_GROUP) begin
-        ka <= (ka == LAST_CHAIN) ? {K_W{1'b0}} : ka + 1'b1;
-        if (ka == LAST_CHAIN) begin
-          ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
-          if (ja == LAST_SEGMENT_SLOT) begin
-            ta <= ta + 1'b1;
-            ta_slot <= (ta_slot == LAST_CHAIN) ? {K_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
-            base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
-          end
-        end
-      end
-    end
-  wire [X_W-1:0] x0 = ka * SLEN + ja;
-  wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
-  wire           active0 = agg_on && !row0[Y_W] && row0 < H && x0 < W;
-  wire [K_W-1:0] row_slot0 = (ta_slot + K - ka) % K;
-  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
-  wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
-
-  // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
-  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
-  always @(posedge clk)
-    if (restart) begin
-      tag1 <= {TAG_W{1'b0}};
-      tag2 <= {TAG_W{1'b0}};
-      tag3 <= {TAG_W{1'b0}};
-      tag4 <= {TAG_W{1'b0}};
-    end else if (adv) begin
-      tag1 <= tag0;
-      tag2 <= tag1;
-      tag3 <= tag2;
-      tag4 <= tag3;
-    end
+  wire [UF*SUM_W-1:0] sum4;
+  wire                active4;
+  wire [X_W-1:0]      x4;
+  wire [G_W-1:0]      group4;
+  wire [K_W-1:0]      chain4;
+  wire [OUT_K_W-1:0]  slot4;
+  fpstereo_aggregator #(.W(W), .H(H), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF), .COST_W(COST_W),
+                        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .P1(P1), .P2(P2), .PATHS(PATHS),
+                        .MATCH_SIDE(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
+                        .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W), .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W),
+                        .K_W(K_W)) aggregation (
+    .clk(clk), .restart(restart), .adv(adv), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q),
+    .sum4(sum4), .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+  // What the stages after the sums need of a pixel's position.
+  localparam TAG_W = 1 + X_W + G_W + K_W + OUT_K_W;
+  wire [TAG_W-1:0] tag4 = {active4, x4, group4, chain4, slot4};
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
   `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
   `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
   `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
-
-  wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
-  /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
-  wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
-  wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
-  wire             first_group2 = g2 == 0;
-  wire             last_group2 = g2 == G - 1;
-  /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
-  wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
-  wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
-  /* verilator lint_on UNUSEDSIGNAL */
-
-  wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
-  wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
-  wire             active3 = `FPS_TAG_ACTIVE(tag3);
-  /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
-  /* verilator lint_on UNUSEDSIGNAL */
-
-  // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here).
-  reg [UF*COST_W-1:0] cost2;
-  always @(posedge clk)
-    if (adv) cost2 <= cost_q;
-
-  // Path tag delayed by the path minimum trees' latency, for the running minimum.
-  wire [TAG_W-1:0] tag_m;
-  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag3), .out(tag_m));
-  wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
-
-  wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
-
-  // ---- 0 degrees: the predecessor is the chain's previous pixel (state RAM by chain slot).
-  generate
-    if ((PATHS & 1) != 0) begin : path0
-      wire [LANES_W-1:0] cur;
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [LANES_W-1:0] nxt;  // only its first lane (d + 1 of this group's last lane) is used
-      /* verilator lint_on UNUSEDSIGNAL */
-      wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
-      fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active3), .waddr(`FPS_TAG_CHAIN(tag3) * G + g3), .wdata(path_0),
-        .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
-      reg [PATH_W-1:0] below_q;
-      always @(posedge clk)
-        if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
-      reg [PATH_W-1:0] minimum [0:K-1];
-      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
-        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_0));
-      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
-        reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
-      always @(posedge clk)
-        if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
-    end else begin : no_path0
-      assign path_0 = 0;
-    end
-  endgenerate
-
-  // ---- 45 degrees: the predecessor is (x-1, row-1). The chain reads the row above at x and
-  // keeps it (state RAM) for its next pixel, before its own write overwrites it.
-  generate
-    if ((PATHS & 2) != 0) begin : path45
-      wire [LANES_W-1:0] above_q, cur;
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [LANES_W-1:0] nxt;  // only its first lane (d + 1 of this group's last lane) is used
-      /* verilator lint_on UNUSEDSIGNAL */
-      wire [PATH_W-1:0] above_min_q, min_45;
-      reg  [LANES_W-1:0] above2;
-      reg  [PATH_W-1:0] above_min2;
-      fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-        .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_45),
-        .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
-      fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-        .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
-        .re(adv), .raddr(x0), .rdata(above_min_q));
-      always @(posedge clk)
-        if (adv) begin
-          above2 <= above_q;
-          above_min2 <= above_min_q;
-        end
-      fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv), .waddr(state_addr2), .wdata(above2),
-        .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
-      reg [PATH_W-1:0] below_q;
-      always @(posedge clk)
-        if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
-      reg [PATH_W-1:0] minimum [0:K-1];
-      always @(posedge clk)
-        if (adv && last_group2) minimum[chain2] <= above_min2;
-      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
-        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_45));
-      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
-        reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
-    end else begin : no_path45
-      assign path_45 = 0;
-    end
-  endgenerate
-
-  // ---- 90 and 135 degrees: the predecessor is (x, row-1) or (x+1, row-1), read from the row
-  // RAM one group ahead, so the d+1 neighbour of the last lane is there before it is overwritten.
-  generate
-    genvar p;
-    for (p = 0; p < 2; p = p + 1) begin : vertical
-      localparam ENABLED = p == 0 ? (PATHS & 4) != 0 : (PATHS & 8) != 0;
-      localparam DX = p;  // predecessor column offset
-      if (ENABLED) begin : path
-        wire [LANES_W-1:0] above_q, path_out;
-        wire [PATH_W-1:0]  above_min_q, min_out;
-        reg  [LANES_W-1:0] cur;
-        reg  [PATH_W-1:0]  below_q, above_min2;
-        fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-          .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_out),
-          .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
-        fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-          .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
-          .re(adv), .raddr(x0 + DX), .rdata(above_min_q));
-        always @(posedge clk)
-          if (adv) begin
-            cur <= above_q;
-            below_q <= cur[LANES_W-1 -: PATH_W];
-            above_min2 <= above_min_q;
-          end
-        fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-          .clk(clk), .en(adv), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < W), .prev(cur),
-          .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
-          .prev_min(above_min2), .path(path_out));
-        fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
-          reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
-      end
-    end
-    if ((PATHS & 4) != 0) begin : path90_out
-      assign path_90 = vertical[0].path.path_out;
-    end else begin : no_path90
-      assign path_90 = 0;
-    end
-    if ((PATHS & 8) != 0) begin : path135_out
-      assign path_135 = vertical[1].path.path_out;
-    end else begin : no_path135
-      assign path_135 = 0;
-    end
-  endgenerate
-
-  // ---- Sum over the paths (S3 -> S4).
-  reg [UF*SUM_W-1:0] sum4;
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane_sum
-      wire [SUM_W-1:0] s = {{(SUM_W-PATH_W){1'b0}}, path_0[l*PATH_W +: PATH_W]}
-                         + {{(SUM_W-PATH_W){1'b0}}, path_45[l*PATH_W +: PATH_W]}
-                         + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
-                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
-      always @(posedge clk)
-        if (adv) sum4[l*SUM_W +: SUM_W] <= s;
-    end
-  endgenerate
 
   // ------------------------------------------------------------------------------------------
   // Winner-take-all: minimum over the lanes, then over the groups (the earlier group wins ties);
@@ -700,7 +493,9 @@ module fpstereo_sgm_core #(
   reg               read_done, read_was_event, read_was_valid;
   reg [X_W-1:0]     read_x;
   reg [Y_W-1:0]     read_y;
+  /* verilator lint_off UNUSEDSIGNAL */  // the left-right check reads with it
   reg [OUT_K_W-1:0] read_slot_row;
+  /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk)
     if (restart) begin
       read_done <= 1'b0;
@@ -738,11 +533,7 @@ module fpstereo_sgm_core #(
       // The state follows the chains like the path costs do.
       localparam E_W = SUM_W + DISP_W;
       localparam END_AW = $clog2(OUT_ROWS * G);
-      wire [K_W-1:0]      chain4 = `FPS_TAG_CHAIN(tag4);
-      wire [G_W-1:0]      g4 = `FPS_TAG_GROUP(tag4);
-      wire [X_W-1:0]      x4 = `FPS_TAG_X(tag4);
-      wire                active4 = `FPS_TAG_ACTIVE(tag4);
-      wire [OUT_K_W-1:0]  slot4 = `FPS_TAG_SLOT(tag4);
+      wire [G_W-1:0]      g4 = group4;
       wire [STATE_AW-1:0] entry_addr = chain4 * G + g4;
       wire [UF*E_W-1:0]   previous, updated;
       wire [UF*DISP_W-1:0] end_disparities;
@@ -917,7 +708,6 @@ module fpstereo_sgm_core #(
 
   `undef FPS_TAG_ACTIVE
   `undef FPS_TAG_X
-  `undef FPS_TAG_ROW
   `undef FPS_TAG_GROUP
   `undef FPS_TAG_CHAIN
   `undef FPS_TAG_SLOT

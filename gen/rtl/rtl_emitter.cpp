@@ -75,9 +75,9 @@ std::vector<std::string> used_modules(const StereoConfig& cfg) {
   if (cfg.uniqueness != 0) modules.insert(modules.end(), {"fpstereo_unique_tree", "fpstereo_unique_join"});
   if (cfg.median != 0) modules.push_back("fpstereo_median_select");
   if (cfg.gap_interpolation) modules.push_back("fpstereo_gap_fill");
-  modules.insert(modules.end(), {"fpstereo_raster_counter", "fpstereo_match_ring", "fpstereo_path_lanes",
-                                 "fpstereo_path_minimum", "fpstereo_min_tree", "fpstereo_delay",
-                                 "fpstereo_ram_sdp", "fpstereo_ram_async"});
+  modules.insert(modules.end(), {"fpstereo_raster_counter", "fpstereo_match_ring", "fpstereo_aggregator",
+                                 "fpstereo_path_lanes", "fpstereo_path_minimum", "fpstereo_min_tree",
+                                 "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"});
   return modules;
 }
 
