@@ -31,7 +31,10 @@ module fpstereo_aggregator #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter G_W = 2,
-  parameter K_W = 1
+  parameter K_W = 1,
+  // rows of the cost reorder RAM (K, or more) and the bits of a row slot
+  parameter COST_ROWS = 2,
+  parameter COST_K_W = 1
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -70,7 +73,8 @@ module fpstereo_aggregator #(
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
   // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
   reg [G_W-1:0] ga;
-  reg [K_W-1:0] ka, base, ta_slot;  // ta_slot = ta mod K
+  reg [K_W-1:0] ka, base;
+  reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
   reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   reg [Y_W-1:0] ta;
@@ -91,7 +95,7 @@ module fpstereo_aggregator #(
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
             ta <= ta + 1'b1;
-            ta_slot <= (ta_slot == LAST_CHAIN) ? {K_W{1'b0}} : ta_slot + 1'b1;
+            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
             ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
@@ -101,7 +105,7 @@ module fpstereo_aggregator #(
   wire [X_W-1:0] x0 = ka * SLEN + ja;
   wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
   wire           active0 = agg_on && !row0[Y_W] && row0 < H && x0 < W;
-  wire [K_W-1:0] row_slot0 = (ta_slot + K - ka) % K;
+  wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;

@@ -48,8 +48,10 @@ module fpstereo_sgm_core #(
   parameter LEVELS_PER_STAGE = 3,
   parameter PATH_TREE_LAT = 1,
   parameter WTA_TREE_LAT = 1,
-  // steps after the frame's first step at which aggregation and output begin
+  // steps after the frame's first step at which aggregation, LR2's match-side aggregation and
+  // output begin
   parameter AGG_START = 100,
+  parameter MATCH_START = 200,
   parameter OUT_START = 200,
   // counter widths
   parameter X_W = 7,
@@ -74,13 +76,16 @@ module fpstereo_sgm_core #(
   output wire              out_last
 );
   localparam R = N / 2;
-  localparam COST_DEPTH = K * ROW_SLOTS * G;
+  // Rows of the cost reorder RAM: K, one more with LR2, whose match side reads a row longer.
+  localparam COST_ROWS = K + (LR == 2 ? 1 : 0);
+  localparam COST_K_W = $clog2(COST_ROWS);
+  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   localparam COST_AW = $clog2(COST_DEPTH);
   localparam STATE_DEPTH = K * G;
   localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
-  // Rows of the disparity (and LR1 match disparity) RAMs: K, one more for the output's lag, one
-  // more with LR1, whose output waits a row longer for the match side to finish.
-  localparam OUT_ROWS = K + 1 + (LR == 1 ? 1 : 0);
+  // Rows of the disparity (and match disparity) RAMs: K, one more for the output's lag, and one
+  // (LR1) or two (LR2) more, as long as the output waits for the match side to finish a row.
+  localparam OUT_ROWS = K + 1 + LR;
   localparam OUT_K_W = $clog2(OUT_ROWS);
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
   localparam DISP_AW = $clog2(DISP_DEPTH);
@@ -110,9 +115,10 @@ module fpstereo_sgm_core #(
   wire [G_W-1:0] gi;
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
-  wire [K_W-1:0] ti_slot;  // ti mod K: which row of the cost reorder RAM the row uses
+  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS: which row of the cost reorder RAM the row uses
   wire slot_end;
-  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(K), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(K_W))
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+                            .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(gi), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
   localparam [X_W-1:0] W_S = W;
@@ -134,14 +140,14 @@ module fpstereo_sgm_core #(
   // are signed, since the centre may lie above the image.
   wire [X_W-1:0] centre_x = (si >= R_X[X_W-1:0]) ? si - R_X[X_W-1:0] : si + (ROW_SLOTS[X_W-1:0] - R_X[X_W-1:0]);
   wire signed [YS_W-1:0] centre_y = $signed({2'b00, ti}) - R_Y - ((si >= R_X[X_W-1:0]) ? 0 : 1);
-  // The same row modulo K, from small numbers only (a wide modulo by K would be slow logic).
-  localparam integer SLOT_BIAS = K * ((R + K) / K);  // a multiple of K above R
+  // The same row modulo COST_ROWS, from small numbers only (a wide modulo would be slow logic).
+  localparam integer SLOT_BIAS = COST_ROWS * ((R + COST_ROWS) / COST_ROWS);  // a multiple above R
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  wire [K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - ((si >= R_X[X_W-1:0]) ? 1'b0 : 1'b1)) % K;
+  wire [COST_K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - ((si >= R_X[X_W-1:0]) ? 1'b0 : 1'b1)) % COST_ROWS;
   /* verilator lint_on WIDTH */
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
-  reg  [K_W-1:0] window_slot;
+  reg  [COST_K_W-1:0] window_slot;
   // The window's newest column is the input column itself: in the image if the input column is,
   // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   reg  newest_in_row;
@@ -178,7 +184,7 @@ module fpstereo_sgm_core #(
   // history_x / history_y: the centre whose costs the lanes compute in this slot.
   reg  [X_W-1:0] history_x;
   reg  signed [YS_W-1:0] history_y;
-  reg  [K_W-1:0] history_slot;
+  reg  [COST_K_W-1:0] history_slot;
   wire [UF*COST_W-1:0] costs;
   generate
     if (COST_KIND <= 1) begin : point_cost
@@ -194,7 +200,7 @@ module fpstereo_sgm_core #(
       reg [CODE_W-1:0] code_base_t, code_match_t, code_base_h;
       reg [X_W-1:0] transform_x;
       reg signed [YS_W-1:0] transform_y;
-      reg [K_W-1:0] transform_slot;
+      reg [COST_K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
           code_base_t    <= code_left;
@@ -244,7 +250,7 @@ module fpstereo_sgm_core #(
       reg [7:0]          base_mean_t, base_mean_h;
       reg [X_W-1:0]      transform_x;
       reg signed [YS_W-1:0] transform_y;
-      reg [K_W-1:0]      transform_slot;
+      reg [COST_K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
           transform_slot <= window_slot;
@@ -284,7 +290,7 @@ module fpstereo_sgm_core #(
       reg [CODE_W-1:0] code_base_t, code_match_t;
       reg [X_W-1:0] transform_x;
       reg signed [YS_W-1:0] transform_y;
-      reg [K_W-1:0] transform_slot;
+      reg [COST_K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
           code_base_t    <= code_left;
@@ -302,14 +308,14 @@ module fpstereo_sgm_core #(
         .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match_t), .window(codes_right));
       // Centre of the code window: RS rows and RS slots behind the entering code; the newest
       // column is the entering code's own column (zero outside the image, as for SAD).
-      localparam integer CODE_SLOT_BIAS = K * ((RS + K) / K);
+      localparam integer CODE_SLOT_BIAS = COST_ROWS * ((RS + COST_ROWS) / COST_ROWS);
       /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-      wire [K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS
-                                        - ((transform_x >= RS_X[X_W-1:0]) ? 1'b0 : 1'b1)) % K;
+      wire [COST_K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS
+                                             - ((transform_x >= RS_X[X_W-1:0]) ? 1'b0 : 1'b1)) % COST_ROWS;
       /* verilator lint_on WIDTH */
       reg [X_W-1:0] codes_x;
       reg signed [YS_W-1:0] codes_y;
-      reg [K_W-1:0] codes_slot;
+      reg [COST_K_W-1:0] codes_slot;
       reg code_newest_in_row;
       reg signed [YS_W-1:0] code_newest_y;
       always @(posedge clk)
@@ -354,7 +360,7 @@ module fpstereo_sgm_core #(
       fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
         .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
       fpstereo_window_cost_lanes #(.KIND(2), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF), .COST_W(COST_W),
-                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W)) lanes (
+                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W), .COLSUM_W(COLSUM_W)) lanes (
         .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
         .group(gi), .x(history_x), .costs(costs));
     end
@@ -372,9 +378,9 @@ module fpstereo_sgm_core #(
   wire [X_W-1:0] history_x_cut = history_x;
   wire           cost_valid;
   wire [X_W-1:0] cost_x;
-  wire [K_W-1:0] cost_row_slot;
+  wire [COST_K_W-1:0] cost_row_slot;
   wire [G_W-1:0] cost_group;
-  fpstereo_delay #(.WIDTH(1 + X_W + K_W + G_W), .DEPTH(COST_LAT)) cost_tag (
+  fpstereo_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(COST_LAT)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x_cut, history_slot, gi}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
 
@@ -399,7 +405,7 @@ module fpstereo_sgm_core #(
                         .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .P1(P1), .P2(P2), .PATHS(PATHS),
                         .MATCH_SIDE(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
                         .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W), .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W),
-                        .K_W(K_W)) aggregation (
+                        .K_W(K_W), .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q),
     .sum4(sum4), .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
   // What the stages after the sums need of a pixel's position.
@@ -525,53 +531,122 @@ module fpstereo_sgm_core #(
       assign checked_x = read_x;
       assign checked_y = read_y;
       assign checked_word = read_word;
-    end else begin : lr1
-      // Match side (LR1): Dm(x') = argmin_d S(x' + d, d). Each chain keeps, for the match pixels
-      // x - e (e < DMAX) of its current pixel x, the best (sum, disparity) over d <= e so far; the
-      // next pixel shifts them by one and offers its own S(x + 1, e + 1), smaller d winning ties.
-      // At e = DMAX - 1 a match pixel is complete; at the row's end the rest are (row-end RAM).
-      // The state follows the chains like the path costs do.
-      localparam E_W = SUM_W + DISP_W;
+    end else begin : lr
+      // The match side writes Dm(x') into the completed RAM (and, for LR1, the row-end RAM).
       localparam END_AW = $clog2(OUT_ROWS * G);
-      wire [G_W-1:0]      g4 = group4;
-      wire [STATE_AW-1:0] entry_addr = chain4 * G + g4;
-      wire [UF*E_W-1:0]   previous, updated;
-      wire [UF*DISP_W-1:0] end_disparities;
-      /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
-      wire [UF*E_W-1:0]   previous_unused;
-      /* verilator lint_on UNUSEDSIGNAL */
-      fpstereo_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
-        .clk(clk), .we(adv && active4), .waddr(entry_addr), .wdata(updated),
-        .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
-      reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
-      always @(posedge clk)
-        if (adv) below_q <= previous[UF*E_W-1 -: E_W];
-      genvar l2;
-      for (l2 = 0; l2 < UF; l2 = l2 + 1) begin : lane
-        wire [DISP_W-1:0] disparity = g4 * UF + l2;
-        wire [E_W-1:0]    earlier = (l2 == 0) ? below_q : previous[(l2-1)*E_W +: E_W];
-        wire [SUM_W-1:0]  offered = sum4[l2*SUM_W +: SUM_W];
-        wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
-        assign updated[l2*E_W +: E_W] = take ? {offered, disparity} : earlier;
-        assign end_disparities[l2*DISP_W +: DISP_W] = updated[l2*E_W +: DISP_W];
+      wire                 completed_we, end_we;
+      wire [DISP_AW-1:0]   completed_waddr;
+      wire [DISP_W-1:0]    completed_wdata;
+      wire [END_AW-1:0]    end_waddr;
+      wire [UF*DISP_W-1:0] end_wdata;
+      if (LR == 1) begin : lr1
+        // Dm(x') = argmin_d S(x' + d, d) from the base side's sums. Each chain keeps, for the
+        // match pixels x - e (e < DMAX) of its current pixel x, the best (sum, disparity) over
+        // d <= e so far; the next pixel shifts them by one and offers its own S(x + 1, e + 1),
+        // smaller d winning ties. At e = DMAX - 1 a match pixel is complete; at the row's end the
+        // rest are (row-end RAM). The state follows the chains like the path costs do.
+        localparam E_W = SUM_W + DISP_W;
+        wire [STATE_AW-1:0] entry_addr = chain4 * G + group4;
+        wire [UF*E_W-1:0]   previous, updated;
+        /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
+        wire [UF*E_W-1:0]   previous_unused;
+        /* verilator lint_on UNUSEDSIGNAL */
+        fpstereo_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
+          .clk(clk), .we(adv && active4), .waddr(entry_addr), .wdata(updated),
+          .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
+        reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
+        always @(posedge clk)
+          if (adv) below_q <= previous[UF*E_W-1 -: E_W];
+        genvar l2;
+        for (l2 = 0; l2 < UF; l2 = l2 + 1) begin : lane
+          wire [DISP_W-1:0] disparity = group4 * UF + l2;
+          wire [E_W-1:0]    earlier = (l2 == 0) ? below_q : previous[(l2-1)*E_W +: E_W];
+          wire [SUM_W-1:0]  offered = sum4[l2*SUM_W +: SUM_W];
+          wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
+          assign updated[l2*E_W +: E_W] = take ? {offered, disparity} : earlier;
+          assign end_wdata[l2*DISP_W +: DISP_W] = updated[l2*E_W +: DISP_W];
+        end
+        assign completed_we = adv && active4 && group4 == LAST_GROUP && x4 >= DMAX - 1;
+        assign completed_waddr = slot4 * ROW_SLOTS + (x4 - (DMAX - 1));
+        assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
+        assign end_we = adv && active4 && x4 == W - 1;
+        assign end_waddr = slot4 * G + group4;
+      end else begin : lr2
+        // A second cost volume and aggregation with the images' roles swapped. Every cost is
+        // symmetric, so the match side's C(x', d) is the base side's C(x' + d, d): lane l of each
+        // base cost word goes to its own RAM bank at match pixel x - d, and a word of the match
+        // side reads all banks at one address.
+        wire [UF*COST_W-1:0] match_costs;
+        wire [COST_AW-1:0]   match_raddr;
+        genvar l3;
+        for (l3 = 0; l3 < UF; l3 = l3 + 1) begin : bank
+          wire [DISP_W-1:0] disparity = cost_group * UF + l3;
+          fpstereo_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+            .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
+            .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
+            .wdata(costs[l3*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
+            .rdata(match_costs[l3*COST_W +: COST_W]));
+        end
+        wire [UF*SUM_W-1:0] match_sum4;
+        wire                match_active4;
+        wire [X_W-1:0]      match_x4;
+        wire [G_W-1:0]      match_group4;
+        /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
+        wire [K_W-1:0]      match_chain4;
+        /* verilator lint_on UNUSEDSIGNAL */
+        wire [OUT_K_W-1:0]  match_slot4;
+        fpstereo_aggregator #(.W(W), .H(H), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+                              .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .P1(P1),
+                              .P2(P2), .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
+                              .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
+                              .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
+          .clk(clk), .restart(restart), .adv(adv), .agg_on(step >= MATCH_START), .cost_raddr(match_raddr),
+          .cost_q(match_costs), .sum4(match_sum4), .active4(match_active4), .x4(match_x4),
+          .group4(match_group4), .chain4(match_chain4), .slot4(match_slot4));
+        // Winner-take-all of the match side (no uniqueness).
+        wire [SUM_W-1:0]  group_min;
+        wire [LANE_W-1:0] group_lane;
+        fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+          .clk(clk), .en(adv), .values(match_sum4), .min_value(group_min), .min_index(group_lane));
+        wire              active_w;
+        wire [X_W-1:0]    x_w;
+        wire [G_W-1:0]    group_w;
+        wire [OUT_K_W-1:0] slot_w;
+        fpstereo_delay #(.WIDTH(1 + X_W + G_W + OUT_K_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (
+          .clk(clk), .rst(restart), .en(adv), .in({match_active4, match_x4, match_group4, match_slot4}),
+          .out({active_w, x_w, group_w, slot_w}));
+        wire [DISP_W-1:0] group_disparity = group_w * UF + group_lane;
+        reg  [SUM_W-1:0]  best_sum;
+        reg  [DISP_W-1:0] best_disparity;
+        wire take_group = group_w == 0 || group_min < best_sum;
+        always @(posedge clk)
+          if (adv && take_group) begin
+            best_sum <= group_min;
+            best_disparity <= group_disparity;
+          end
+        assign completed_we = adv && active_w && group_w == LAST_GROUP;
+        assign completed_waddr = slot_w * ROW_SLOTS + x_w;
+        assign completed_wdata = take_group ? group_disparity : best_disparity;
+        assign end_we = 1'b0;
+        assign end_waddr = {END_AW{1'b0}};
+        assign end_wdata = {UF*DISP_W{1'b0}};
       end
-      wire [X_W-1:0] completed_x = x4 - (DMAX - 1);
 
-      // Dm(x') of x' = x - D, from the completed match pixels or, for the last DMAX - 1 of the row,
-      // from the row-end RAM; then the check.
+      // Dm(x') of x' = x - D, from the completed match pixels or, for LR1's last DMAX - 1 of the
+      // row, from the row-end RAM; then the check.
       wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
       wire outside = read_word[DISP_W] || read_x < d;
       wire [X_W-1:0] xm = read_x - d;
-      wire from_row_end = xm > W - DMAX;
+      wire from_row_end = LR == 1 && xm > W - DMAX;
       wire [DISP_W-1:0] from_end = W - 1 - xm;  // the row-end entry of x'
       wire [DISP_W-1:0] match_q;
       wire [UF*DISP_W-1:0] end_q;
       fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) completed (
-        .clk(clk), .we(adv && active4 && g4 == LAST_GROUP && x4 >= DMAX - 1),
-        .waddr(slot4 * ROW_SLOTS + completed_x), .wdata(updated[(UF-1)*E_W +: DISP_W]),
+        .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
         .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
       fpstereo_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
-        .clk(clk), .we(adv && active4 && x4 == W - 1), .waddr(slot4 * G + g4), .wdata(end_disparities),
+        .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata),
         .re(adv), .raddr(read_slot_row * G + from_end / UF), .rdata(end_q));
       reg               done_c, event_c, outside_c, from_row_end_c;
       reg [X_W-1:0]     x_c;

@@ -25,15 +25,6 @@ int min_tree_latency(int n, int levels_per_stage) {
   return std::max(1, ceil_div(levels, levels_per_stage));
 }
 
-void require(bool ok, const std::string& name, const std::string& value, const std::string& why) {
-  if (!ok) throw ConfigError(name + " = " + value + ": " + why);
-}
-
-void check_supported(const StereoConfig& cfg) {
-  require(cfg.lr != LrCheck::Lr2, "lr", to_string(cfg.lr),
-          "not in the RTL yet (LR2 comes next); use lr1 or none");
-}
-
 // The core's cost function selector (fpstereo_sgm_core's COST_KIND). SHD over a 1 x 1 window
 // is census.
 enum CostKind { kCensus = 0, kRank = 1, kSad = 2, kZsad = 3, kShd = 4 };
@@ -168,7 +159,8 @@ std::string top_module(const RtlDesign& d) {
       "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .P1({}), .P2({}), .LR({}), .LR_THRESHOLD({}),\n"
       "    .UNIQUENESS({}), .MEDIAN({}), .GAP({}),\n"
       "    .PATHS({}),\n"
-      "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .OUT_START({}),\n"
+      "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .MATCH_START({}), "
+      ".OUT_START({}),\n"
       "    .X_W({}), .Y_W({}), .G_W({}), .K_W({}), .LANE_W({}), .STEP_W({})\n"
       "  ) core (\n"
       "    .clk(aclk), .rst(rst),\n"
@@ -179,10 +171,10 @@ std::string top_module(const RtlDesign& d) {
       d.prefix, d.cfg.width, d.cfg.height, d.row_slots, d.chains, d.segment, d.groups, d.cfg.uf, d.cfg.dmax,
       int(cost_kind(d.cfg)), d.cfg.window, std::max(1, w.code), d.cfg.shd_window, w.cost, w.cost_max,
       d.cost_latency, d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost, w.aggregated, w.disparity,
-      d.cfg.p1, d.cfg.p2, d.cfg.lr == LrCheck::Lr1 ? 1 : 0, d.cfg.lr_threshold, d.cfg.uniqueness,
-      d.cfg.median, d.cfg.gap_interpolation ? 1 : 0, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
-      d.wta_tree_latency, d.agg_start, d.out_start, d.x_bits, d.y_bits, d.group_bits, d.chain_bits,
-      d.lane_bits, d.step_bits);
+      d.cfg.p1, d.cfg.p2, int(d.cfg.lr), d.cfg.lr_threshold, d.cfg.uniqueness, d.cfg.median,
+      d.cfg.gap_interpolation ? 1 : 0, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
+      d.wta_tree_latency, d.agg_start, d.match_start, d.out_start, d.x_bits, d.y_bits, d.group_bits,
+      d.chain_bits, d.lane_bits, d.step_bits);
   const int pad = d.output_bits - w.output_word;
   os << "\n  // Output register slice.\n"
      << fmt::format("  {}_axis_skid #(.DATA_W({})) disp_slice (\n", d.prefix, d.output_bits + 2)
@@ -200,7 +192,6 @@ std::string top_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg) {
   validate(cfg);
-  check_supported(cfg);
   RtlDesign d;
   d.cfg = cfg;
   d.widths = derive_widths(cfg);
@@ -230,15 +221,17 @@ RtlDesign plan(const StereoConfig& cfg) {
   const int64_t r = d.window_radius + (kind == kShd ? cfg.shd_window / 2 : 0);
   const int64_t front_slots = kind == kShd ? 4 : 3;
   d.agg_start = (r * R + r + front_slots) * G + 1 + d.cost_latency;
-  // LR1's output waits one more row-time, until the match side has finished the row.
-  const bool lr1 = cfg.lr == LrCheck::Lr1;
-  d.out_start = d.agg_start + (d.chains - 1 + (lr1 ? 1 : 0)) * R * G + 5 + d.wta_tree_latency;
+  // LR2's match side runs dmax pixels behind (its costs need the base pixels up to x' + dmax - 1);
+  // the output waits one (LR1) or two (LR2) more row-times for the match side to finish a row.
+  const int lr = int(cfg.lr);
+  d.match_start = d.agg_start + (int64_t(cfg.dmax) + 2) * G;
+  d.out_start = d.agg_start + (d.chains - 1 + lr) * R * G + 5 + d.wta_tree_latency;
   // The last pixel is pushed two steps after its read (one with the median's window, whose
   // newest word is RM rows and slots further on, plus its selection, one step per word bit).
   const int64_t rm = cfg.median / 2;
   const int64_t last_read = (int64_t(cfg.height) - 1 + rm) * R + cfg.width - 1 + rm;
   // Gap interpolation emits a row when the next one comes in, 3 steps later.
-  d.cycles_per_frame = d.out_start + last_read * G + G + 1 + (lr1 ? 1 : 0) +
+  d.cycles_per_frame = d.out_start + last_read * G + G + 1 + (lr != 0 ? 1 : 0) +
                        (cfg.median ? 2 + d.widths.output_word : 0) + (cfg.gap_interpolation ? R * G + 3 : 0);
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;

@@ -28,7 +28,9 @@ struct RtlDesign {
   int levels_per_stage = 3;
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
-  int64_t agg_start = 0;  // steps from a frame's first step to aggregation and to output
+  // steps from a frame's first step to aggregation, LR2's match-side aggregation and output
+  int64_t agg_start = 0;
+  int64_t match_start = 0;
   int64_t out_start = 0;
   int64_t cycles_per_frame = 0;  // steps from a frame's first step to its last output, plus one
   int64_t latency_cycles = 0;    // cycles_per_frame - W * H * G
@@ -36,7 +38,7 @@ struct RtlDesign {
   int x_bits = 0, y_bits = 0, group_bits = 0, chain_bits = 0, lane_bits = 0, step_bits = 0;
 };
 
-// Throws ConfigError if the configuration is invalid or asks for what the RTL lacks.
+// Throws ConfigError if the configuration is invalid.
 RtlDesign plan(const StereoConfig& cfg);
 
 struct EmittedFile {
