@@ -1,9 +1,10 @@
 `resetall
 `default_nettype none
 // The SGM pipeline between the input and output skid buffers (docs/architecture.md): front end
-// in raster order, cost reorder RAM, aggregation in K interleaved chains, winner-take-all,
-// disparity reorder RAM and output. Every register advances only in steps where adv is high,
-// so the whole pipeline stalls together; the stages find their pixel from step counters.
+// in raster order, cost reorder RAM, aggregation in K interleaved chains, winner-take-all (with
+// uniqueness), disparity reorder RAM, left-right check (LR1 or LR2), median, gap interpolation
+// and output. Every register advances only in steps where adv is high, so the whole pipeline
+// stalls together; the stages find their pixel from step counters.
 module fpstereo_sgm_core #(
   // image and time base: W x H pixels, ROW_SLOTS = K * SLEN slots per row-time, G steps per slot
   parameter W = 64,
