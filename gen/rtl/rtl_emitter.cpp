@@ -100,7 +100,7 @@ std::string banner(const RtlDesign& d) {
      << " cycles per pixel; expected cycles per frame without stalls: " << d.cycles_per_frame
      << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.latency_cycles
      << "\n"
-     << "// Latency from the first input pixel to the first output pixel: " << d.out_start + d.groups
+     << "// Latency from the first input pixel to the first output pixel: " << d.first_output_latency
      << " cycles\n";
   return os.str();
 }
@@ -223,16 +223,19 @@ RtlDesign plan(const StereoConfig& cfg) {
   d.agg_start = (r * R + r + front_slots) * G + 1 + d.cost_latency;
   // LR2's match side runs dmax pixels behind (its costs need the base pixels up to x' + dmax - 1);
   // the output waits one (LR1) or two (LR2) more row-times for the match side to finish a row.
-  const int lr = int(cfg.lr);
+  const int lr = int(cfg.lr);  // 0, 1, 2 for none, LR1, LR2 (fpstereo_sgm_core's LR)
   d.match_start = d.agg_start + (int64_t(cfg.dmax) + 2) * G;
   d.out_start = d.agg_start + (d.chains - 1 + lr) * R * G + 5 + d.wta_tree_latency;
-  // The last pixel is pushed two steps after its read (one with the median's window, whose
-  // newest word is RM rows and slots further on, plus its selection, one step per word bit).
+  // A pixel is pushed one step after its read's slot ends, one more after the left-right check; with
+  // the median, after the read of its window's newest word (RM rows and slots further on) and the
+  // selection (one step per word bit); gap interpolation emits a row when the next one comes in.
   const int64_t rm = cfg.median / 2;
-  const int64_t last_read = (int64_t(cfg.height) - 1 + rm) * R + cfg.width - 1 + rm;
-  // Gap interpolation emits a row when the next one comes in, 3 steps later.
-  d.cycles_per_frame = d.out_start + last_read * G + G + 1 + (lr != 0 ? 1 : 0) +
-                       (cfg.median ? 2 + d.widths.output_word : 0) + (cfg.gap_interpolation ? R * G + 3 : 0);
+  auto push_step = [&](int64_t x, int64_t y) {
+    return d.out_start + ((y + rm) * R + x + rm) * G + G + (lr != 0 ? 1 : 0) +
+           (cfg.median ? 2 + d.widths.output_word : 0) + (cfg.gap_interpolation ? R * G + 3 : 0);
+  };
+  d.cycles_per_frame = push_step(cfg.width - 1, cfg.height - 1) + 1;
+  d.first_output_latency = push_step(0, 0) - (G - 1);  // the first input is taken in step G - 1
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
   d.x_bits = bits_for(uint64_t(R));

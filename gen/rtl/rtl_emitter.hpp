@@ -32,9 +32,10 @@ struct RtlDesign {
   int64_t agg_start = 0;
   int64_t match_start = 0;
   int64_t out_start = 0;
-  int64_t cycles_per_frame = 0;  // steps from a frame's first step to its last output, plus one
-  int64_t latency_cycles = 0;    // cycles_per_frame - W * H * G
-  int output_bits = 0;           // tdata width of m_axis_disp (8 or 16)
+  int64_t cycles_per_frame = 0;      // steps from a frame's first step to its last output, plus one
+  int64_t latency_cycles = 0;        // cycles_per_frame - W * H * G
+  int64_t first_output_latency = 0;  // cycles from the first input pixel to the first output pixel
+  int output_bits = 0;               // tdata width of m_axis_disp (8 or 16)
   int x_bits = 0, y_bits = 0, group_bits = 0, chain_bits = 0, lane_bits = 0, step_bits = 0;
 };
 
