@@ -9,6 +9,7 @@
 #include "eval_command.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
+#include "synth_command.hpp"
 #include "widths.hpp"
 
 namespace fpstereo {
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
   config_cmd->callback([&] { exit_code = print_config(shown); });
 
   register_eval_command(app, exit_code);
+  register_synth_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,506 @@
+#include "synth_command.hpp"
+
+#include <fcntl.h>
+#include <fmt/core.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "config_cli.hpp"
+#include "rtl_emitter.hpp"
+
+#ifndef FPSTEREO_SOURCE_DIR
+#error "FPSTEREO_SOURCE_DIR must name the source tree, where scripts/synth-yosys.sh lives (CMakeLists.txt)"
+#endif
+
+extern char** environ;
+
+namespace fpstereo {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kTool = "fpstereo";
+constexpr const char* kScriptPrefix = "synth-yosys: ";
+constexpr const char* kScriptWarningPrefix = "synth-yosys: warning: ";
+// The delay is the same model for both families; it ranks designs, it does not predict timing.
+constexpr const char* kDelayNote =
+    "  note: delay = Yosys' abc9 7-series model (LUTs, carry chains, no routing), for comparing designs\n";
+
+struct SynthOptions {
+  ConfigFlags config;
+  std::string family, part, cache_dir, log;
+  bool no_cache = false;
+  bool kv = false;
+};
+
+// ---- parsing ---------------------------------------------------------------------------------
+
+using KvMap = std::map<std::string, std::string>;
+
+const std::string& field(const KvMap& kv, const std::string& key) {
+  const auto it = kv.find(key);
+  if (it == kv.end()) throw SynthError(fmt::format("synthesis report lacks '{}'", key));
+  return it->second;
+}
+
+template <class T>
+T parse_number(const std::string& key, const std::string& value) {
+  T result{};
+  const char* end = value.data() + value.size();
+  const auto [ptr, ec] = std::from_chars(value.data(), end, result);
+  if (ec != std::errc() || ptr != end || value.empty())
+    throw SynthError(fmt::format("synthesis report: {} = '{}' is not a number", key, value));
+  return result;
+}
+
+int64_t integer(const KvMap& kv, const std::string& key) {
+  return parse_number<int64_t>(key, field(kv, key));
+}
+double number(const KvMap& kv, const std::string& key) { return parse_number<double>(key, field(kv, key)); }
+
+// The script prints "na" for the abc9 figures when abc9 mapped nothing.
+std::optional<int64_t> integer_or_na(const KvMap& kv, const std::string& key) {
+  const std::string& value = field(kv, key);
+  if (value == "na") return std::nullopt;
+  return parse_number<int64_t>(key, value);
+}
+
+// "mem.NAME=WORDSxBITS:TARGET"; the shape is "?" for a memory Yosys created during mapping.
+SynthMemory parse_memory(const std::string& name, const std::string& value) {
+  const size_t colon = value.find(':');
+  if (colon == std::string::npos)
+    throw SynthError(fmt::format("synthesis report: mem.{} = '{}'", name, value));
+  SynthMemory mem{name, 0, 0, value.substr(colon + 1)};
+  const std::string shape = value.substr(0, colon);
+  if (shape == "?") return mem;
+  const size_t x = shape.find('x');
+  if (x == std::string::npos) throw SynthError(fmt::format("synthesis report: mem.{} = '{}'", name, value));
+  mem.words = parse_number<int64_t>("mem." + name, shape.substr(0, x));
+  mem.bits = parse_number<int64_t>("mem." + name, shape.substr(x + 1));
+  return mem;
+}
+
+void fill_counts(const KvMap& kv, SynthReport& r) {
+  r.lut = integer(kv, "lut");
+  r.lut_min = integer(kv, "lut_min");
+  r.lutram = integer(kv, "lutram");
+  r.lut_total = integer(kv, "lut_total");
+  r.ff = integer(kv, "ff");
+  r.latches = integer(kv, "latches");
+  r.bram18 = integer(kv, "bram18");
+  r.bram36 = integer(kv, "bram36");
+  r.bram36_equiv = number(kv, "bram36_equiv");
+  r.dsp = integer(kv, "dsp");
+  r.carry4 = integer(kv, "carry4");
+  r.carry8 = integer(kv, "carry8");
+  r.carry4_equiv = integer(kv, "carry4_equiv");
+  r.lut_by_inputs = field(kv, "lut_by_inputs");
+  r.lutram_cells = field(kv, "lutram_cells");
+}
+
+void fill_percentages(const KvMap& kv, SynthReport& r) {
+  r.lut_pct = number(kv, "lut_pct");
+  r.lut_min_pct = number(kv, "lut_min_pct");
+  r.lutram_pct = number(kv, "lutram_pct");
+  r.lut_total_pct = number(kv, "lut_total_pct");
+  r.ff_pct = number(kv, "ff_pct");
+  r.bram18_pct = number(kv, "bram18_pct");
+  r.bram36_pct = number(kv, "bram36_pct");
+  r.bram36_equiv_pct = number(kv, "bram36_equiv_pct");
+  r.dsp_pct = number(kv, "dsp_pct");
+  r.carry_pct = number(kv, "carry_pct");
+}
+
+void fill_part(const KvMap& kv, SynthReport& r) {
+  r.top = field(kv, "top");
+  r.family = field(kv, "family");
+  r.part = field(kv, "part");
+  r.part_lut = integer(kv, "part_lut");
+  r.part_ff = integer(kv, "part_ff");
+  r.part_bram36 = integer(kv, "part_bram36");
+  r.part_dsp = integer(kv, "part_dsp");
+  r.part_lutram = integer(kv, "part_lutram");
+}
+
+// ---- formatting ------------------------------------------------------------------------------
+
+std::string resource_row(const std::string& name, const std::string& used, int64_t available, double pct,
+                         const std::string& note) {
+  return fmt::format("  {:<13} {:>9} {:>8} {:>5.1f} %{}\n", name, used, available, pct,
+                     note.empty() ? "" : "   " + note);
+}
+
+std::string abc9_rows(const SynthReport& r) {
+  const std::string delay = r.delay_ps
+                                ? fmt::format("{:>9} ps   {} LUT levels, {} with carry chains", *r.delay_ps,
+                                              r.levels.value_or(0), r.levels_with_carry.value_or(0))
+                                : fmt::format("{:>9}      abc9 mapped no logic", "n/a");
+  return fmt::format("  {:<13} {}\n", "abc9 delay", delay) + kDelayNote;
+}
+
+std::string memory_rows(const std::vector<SynthMemory>& memories) {
+  if (memories.empty()) return "";
+  size_t name_width = 0;
+  for (const auto& m : memories) name_width = std::max(name_width, m.name.size());
+  std::string out = "memories (words x bits -> mapped to):\n";
+  for (const auto& m : memories) {
+    const std::string shape = m.words ? fmt::format("{}x{}", m.words, m.bits) : "?";
+    out += fmt::format("  {:<{}} {:>10} -> {}\n", m.name, name_width, shape, m.target);
+  }
+  return out;
+}
+
+// ---- files and processes ---------------------------------------------------------------------
+
+std::optional<std::string> read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw SynthError(fmt::format("cannot write '{}'", path.string()));
+}
+
+void make_directory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw SynthError(fmt::format("cannot create directory '{}': {}", dir.string(), ec.message()));
+}
+
+// The script lives in the source tree: it is the one place the resource counting is defined.
+fs::path script_path() { return fs::path(FPSTEREO_SOURCE_DIR) / "scripts" / "synth-yosys.sh"; }
+
+// Follows the XDG base directory rules, which ignore a relative XDG_CACHE_HOME.
+fs::path default_cache_dir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg == '/') return fs::path(xdg) / "fpstereo" / "synth";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".cache" / "fpstereo" / "synth";
+  throw SynthError("no cache directory: HOME is not set; pass --cache DIR");
+}
+
+// Names and contents of every emitted file: what the cache key hashes.
+std::string verilog_text(const std::vector<rtl::EmittedFile>& files) {
+  std::string text;
+  for (const auto& f : files) text += f.name + '\0' + f.text + '\0';
+  return text;
+}
+
+uint64_t fnv1a64(const std::string& text) {
+  uint64_t h = 14695981039346656037ull;
+  for (char ch : text) h = (h ^ uint8_t(ch)) * 1099511628211ull;
+  return h;
+}
+
+// Cache keys become file names: anything but [A-Za-z0-9_] in a user-given name becomes '_' (the
+// hash still tells such names apart).
+std::string file_name_safe(const std::string& s) {
+  std::string out = s.empty() ? "default" : s;
+  for (char& ch : out)
+    if (!std::isalnum(uint8_t(ch)) && ch != '_') ch = '_';
+  return out;
+}
+
+// A fresh directory under the cache for one run's Verilog; removed with everything in it when the
+// run ends. mkdtemp keeps concurrent runs of the same configuration apart.
+class WorkDir {
+ public:
+  WorkDir(const fs::path& parent, const std::string& key) {
+    make_directory(parent);
+    std::string pattern = (parent / (key + ".XXXXXX")).string();
+    if (!mkdtemp(pattern.data()))
+      throw SynthError(
+          fmt::format("cannot create a work directory in '{}': {}", parent.string(), std::strerror(errno)));
+    path_ = pattern;
+  }
+  ~WorkDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  WorkDir(const WorkDir&) = delete;
+  WorkDir& operator=(const WorkDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// One file per module plus filelist.f, the layout fpstereo-rtl -o writes.
+fs::path write_design(const fs::path& dir, const std::vector<rtl::EmittedFile>& files) {
+  std::string filelist;
+  for (const auto& f : files) {
+    write_text(dir / f.name, f.text);
+    filelist += f.name + "\n";
+  }
+  write_text(dir / "filelist.f", filelist);
+  return dir / "filelist.f";
+}
+
+// Runs args[0] (searched in PATH) with stdin from /dev/null and stdout/stderr into files; returns
+// the wait status. Files rather than pipes: nothing to drain while Yosys runs for minutes.
+int run_process(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw SynthError(fmt::format("cannot run {}: {}", args[0], std::strerror(rc)));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw SynthError(fmt::format("waiting for {}: {}", args[0], std::strerror(errno)));
+  return status;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+// The script ends every failure with one line of its own ("synth-yosys: ..."); pass it on as is.
+std::string failure_message(const std::string& stderr_text, int status) {
+  const std::vector<std::string> lines = lines_of(stderr_text);
+  if (!lines.empty()) return lines.back();
+  if (WIFSIGNALED(status)) return fmt::format("synth-yosys.sh was killed by signal {}", WTERMSIG(status));
+  return fmt::format("synth-yosys.sh failed with exit status {}", WEXITSTATUS(status));
+}
+
+// The script's warnings as "warning=..." record lines, so a cached report repeats them.
+std::string warning_lines(const std::string& stderr_text) {
+  std::string out;
+  const size_t prefix = std::strlen(kScriptWarningPrefix);
+  for (const auto& line : lines_of(stderr_text))
+    if (line.compare(0, prefix, kScriptWarningPrefix) == 0) out += "warning=" + line.substr(prefix) + "\n";
+  return out;
+}
+
+// ---- the cache -------------------------------------------------------------------------------
+
+// A cache record is the script's --kv output plus config=, synth_seconds= and warning= lines.
+struct Record {
+  std::string text;
+  SynthReport report;
+};
+
+// A record that does not parse (written by an incompatible version) is a miss, not an error.
+std::optional<Record> load_record(const fs::path& path) {
+  const std::optional<std::string> text = read_text(path);
+  if (!text) return std::nullopt;
+  try {
+    return Record{*text, parse_kv(*text)};
+  } catch (const SynthError&) {
+    return std::nullopt;
+  }
+}
+
+void warn_not_stored(const fs::path& path, int error) {
+  std::cerr << fmt::format("{}: warning: cannot store the result in '{}': {}\n", kTool, path.string(),
+                           std::strerror(error));
+}
+
+// Written to a unique temporary file and renamed into place: readers see the old record or the new
+// one, never half of one, however many runs race. A failure costs only the cache, so it warns.
+void store_record(const fs::path& path, const std::string& text) {
+  std::string temp = path.string() + ".tmp.XXXXXX";
+  const int fd = mkstemp(temp.data());
+  if (fd < 0) return warn_not_stored(path, errno);
+  ::fchmod(fd, 0644);  // mkstemp's 0600 would hide a shared cache from other users
+  const bool written = ::write(fd, text.data(), text.size()) == ssize_t(text.size());
+  const int write_errno = errno;
+  if (::close(fd) == 0 && written && std::rename(temp.c_str(), path.c_str()) == 0) return;
+  const int error = written ? errno : write_errno;
+  ::unlink(temp.c_str());
+  warn_not_stored(path, error);
+}
+
+// ---- the command -----------------------------------------------------------------------------
+
+std::vector<std::string> script_args(const SynthOptions& o, const fs::path& script,
+                                     const fs::path& filelist) {
+  std::vector<std::string> args = {"bash", script.string(), "--kv"};
+  if (!o.family.empty()) args.insert(args.end(), {"--family", o.family});
+  if (!o.part.empty()) args.insert(args.end(), {"--part", o.part});
+  if (!o.log.empty()) args.insert(args.end(), {"--log", o.log});
+  args.push_back(filelist.string());
+  return args;
+}
+
+Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vector<rtl::EmittedFile>& files,
+                  const fs::path& script, const fs::path& cache_dir, const std::string& key) {
+  const WorkDir work(cache_dir / "work", key);
+  const fs::path filelist = write_design(work.path(), files);
+  const std::string tag = config_tag(cfg);
+  // Progress only on a terminal: to a script, a failure stays exactly one line on stderr.
+  const bool progress = isatty(STDERR_FILENO);
+  if (progress) std::cerr << fmt::format("{} synth: {}: running Yosys...", kTool, tag) << std::flush;
+  const auto start = std::chrono::steady_clock::now();
+  const int status =
+      run_process(script_args(o, script, filelist), work.path() / "synth.out", work.path() / "synth.err");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress) std::cerr << fmt::format(" {:.1f} s\n", seconds);
+  const std::string out = read_text(work.path() / "synth.out").value_or("");
+  const std::string err = read_text(work.path() / "synth.err").value_or("");
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw SynthError(failure_message(err, status));
+  const std::string text =
+      fmt::format("config={}\n{}synth_seconds={:.1f}\n{}", tag, out, seconds, warning_lines(err));
+  return Record{text, parse_kv(text)};
+}
+
+// --kv prints the record (warnings go to stderr, as the script does) and whether it was cached.
+std::string kv_output(const Record& record, bool cached) {
+  std::string out;
+  for (const auto& line : lines_of(record.text))
+    if (line.rfind("warning=", 0) != 0) out += line + "\n";
+  return out + fmt::format("cached={}\n", cached ? 1 : 0);
+}
+
+void print(const Record& record, bool cached, bool kv) {
+  for (const auto& w : record.report.warnings) std::cerr << kScriptPrefix << "warning: " << w << "\n";
+  std::cout << (kv ? kv_output(record, cached) : format_report(record.report, cached)) << std::flush;
+}
+
+void run(const SynthOptions& o) {
+  const StereoConfig cfg = o.config.resolve();
+  const std::vector<rtl::EmittedFile> files = rtl::emit(rtl::plan(cfg));
+  const fs::path script = script_path();
+  const std::optional<std::string> script_text = read_text(script);
+  if (!script_text) throw SynthError(fmt::format("cannot read '{}'", script.string()));
+  const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
+  const fs::path cache_dir = o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir);
+  const fs::path record_path = cache_dir / (key + ".kv");
+
+  // A log exists only if Yosys runs, so asking for one bypasses the cache too.
+  std::optional<Record> record;
+  if (!o.no_cache && o.log.empty()) record = load_record(record_path);
+  const bool cached = record.has_value();
+  if (!cached) {
+    record = synthesise(o, cfg, files, script, cache_dir, key);
+    store_record(record_path, record->text);
+  }
+  print(*record, cached, o.kv);
+}
+
+}  // namespace
+
+SynthReport parse_kv(const std::string& text) {
+  KvMap kv;
+  SynthReport r;
+  for (const auto& line : lines_of(text)) {
+    const size_t eq = line.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw SynthError(fmt::format("synthesis report: malformed line '{}'", line));
+    const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
+    if (key.rfind("mem.", 0) == 0)
+      r.memories.push_back(parse_memory(key.substr(4), value));
+    else if (key == "warning")
+      r.warnings.push_back(value);
+    else
+      kv[key] = value;
+  }
+  fill_part(kv, r);
+  fill_counts(kv, r);
+  fill_percentages(kv, r);
+  r.delay_ps = integer_or_na(kv, "delay_ps");
+  r.levels = integer_or_na(kv, "levels");
+  r.levels_with_carry = integer_or_na(kv, "levels_with_carry");
+  if (kv.count("config")) r.config = kv["config"];
+  if (kv.count("synth_seconds")) r.synth_seconds = parse_number<double>("synth_seconds", kv["synth_seconds"]);
+  return r;
+}
+
+std::string format_report(const SynthReport& r, bool cached) {
+  std::string out = fmt::format("{} on {} ({}), Yosys synth_xilinx -abc9 -flatten{}\n", r.top, r.part,
+                                r.family, cached ? " (cached)" : "");
+  out += fmt::format("  {:<13} {:>9} {:>8} {:>7}\n", "resource", "used", "of", "util");
+  out += resource_row("LUT", std::to_string(r.lut), r.part_lut, r.lut_pct,
+                      "LUT1..LUT6 cells " + r.lut_by_inputs);
+  out += resource_row("LUT min", std::to_string(r.lut_min), r.part_lut, r.lut_min_pct,
+                      "LUT6 + half of LUT1..5 (ideal pairing)");
+  out += resource_row("LUTRAM", std::to_string(r.lutram), r.part_lutram, r.lutram_pct,
+                      "LUTs as memory: " + (r.lutram_cells.empty() ? "none" : r.lutram_cells));
+  out += resource_row("FF", std::to_string(r.ff), r.part_ff, r.ff_pct, r.latches ? "includes latches" : "");
+  out += resource_row("BRAM18", std::to_string(r.bram18), 2 * r.part_bram36, r.bram18_pct, "");
+  out += resource_row("BRAM36", std::to_string(r.bram36), r.part_bram36, r.bram36_pct, "");
+  out += resource_row("BRAM36 equiv", fmt::format("{}", r.bram36_equiv), r.part_bram36, r.bram36_equiv_pct,
+                      "BRAM36 + BRAM18/2");
+  out += resource_row("DSP", std::to_string(r.dsp), r.part_dsp, r.dsp_pct, "");
+  out += resource_row("CARRY4 equiv", std::to_string(r.carry4_equiv), r.part_lut / 4, r.carry_pct,
+                      fmt::format("CARRY4 {} + 2 x CARRY8 {}", r.carry4, r.carry8));
+  return out + abc9_rows(r) + memory_rows(r.memories);
+}
+
+std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
+                      const std::string& verilog_text, const std::string& script_text) {
+  // The configuration is hashed in full too: config_tag's own hash is only 24 bits.
+  const std::string decisive =
+      describe(cfg) + '\0' + family + '\0' + part + '\0' + verilog_text + '\0' + script_text;
+  return fmt::format("{}-{}-{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
+                     fnv1a64(decisive));
+}
+
+void register_synth_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<SynthOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "synth",
+      "Synthesise the configuration's Verilog with Yosys (scripts/synth-yosys.sh) and report LUT, FF, "
+      "LUTRAM, BRAM, DSP and carry use on an FPGA part, with abc9's logic delay; results are cached");
+  o->config.add_to(*sub);
+  sub->add_option("--family", o->family, "xcup (UltraScale+, the default) or xc7 (7 series)")
+      ->type_name("NAME");
+  sub->add_option("--part", o->part,
+                  "part for the percentages: xczu9eg (xcup default), xczu7ev, xczu3eg, xck26, xc7z020 (xc7 "
+                  "default), xc7a100t")
+      ->type_name("NAME");
+  sub->add_option("--cache", o->cache_dir,
+                  "cache directory [$XDG_CACHE_HOME/fpstereo/synth or ~/.cache/fpstereo/synth]")
+      ->type_name("DIR");
+  sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");
+  sub->add_flag("--kv", o->kv,
+                "print key=value lines (synth-yosys.sh --kv, plus config, synth_seconds, cached)");
+  sub->add_option("--log", o->log, "keep Yosys' log in FILE (runs Yosys even if a result is cached)")
+      ->type_name("FILE");
+  sub->footer(
+      "A result is cached under the configuration, family, part and a hash of the emitted Verilog and of the "
+      "script, so a changed generator never serves a stale report. Progress goes to stderr when it is "
+      "a terminal.");
+  sub->callback([o, &exit_code] {
+    try {
+      run(*o);
+      exit_code = 0;
+    } catch (const ConfigError& e) {
+      exit_code = report_error(kTool, std::string("invalid config: ") + e.what());
+    } catch (const SynthError& e) {
+      exit_code = report_error(kTool, e.what());
+    }
+  });
+}
+
+}  // namespace fpstereo

@@ -1,0 +1,96 @@
+# `fpstereo synth` end to end on a tiny configuration: the first run synthesises with Yosys, the
+# second is served from the cache with the same figures; errors are one line with exit 2. Run by
+# ctest with FPSTEREO and WORK set.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(cache ${WORK}/cache)
+set(config --width 32 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0)
+
+function(synth out_var err_var)
+  execute_process(COMMAND ${FPSTEREO} synth ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "fpstereo synth ${ARGN} failed (${rc}): ${err}")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+  set(${err_var} "${err}" PARENT_SCOPE)
+endfunction()
+
+# A memory of more than 4096 bits that is not block RAM would cost LUTs the design does not need
+# (synth-yosys.sh warns about the same threshold).
+function(check_memories table)
+  string(REGEX MATCHALL "\n  [^ \n]+ +[0-9]+x[0-9]+ -> [a-z]+" rows "${table}")
+  set(large 0)
+  foreach(row IN LISTS rows)
+    string(REGEX MATCH "([^ \n]+) +([0-9]+)x([0-9]+) -> ([a-z]+)" _ "${row}")
+    math(EXPR bits "${CMAKE_MATCH_2} * ${CMAKE_MATCH_3}")
+    if(bits GREATER 4096)
+      math(EXPR large "${large} + 1")
+      if(NOT CMAKE_MATCH_4 STREQUAL "bram")
+        message(SEND_ERROR "memory ${CMAKE_MATCH_1} (${bits} bits) became ${CMAKE_MATCH_4}, not BRAM")
+      endif()
+    endif()
+  endforeach()
+  if(large EQUAL 0)
+    message(SEND_ERROR "no memory above 4096 bits in the report; the BRAM check proves nothing:\n${table}")
+  endif()
+endfunction()
+
+string(TIMESTAMP start "%s")
+synth(first first_err ${config} --cache ${cache})
+string(TIMESTAMP stop "%s")
+math(EXPR seconds "${stop} - ${start}")
+message(STATUS "first run (Yosys): ${seconds} s\n${first}")
+if(NOT first MATCHES "\n  LUT +([0-9]+) " OR CMAKE_MATCH_1 EQUAL 0)
+  message(SEND_ERROR "no LUT count above 0 in the first run:\n${first}")
+endif()
+set(luts ${CMAKE_MATCH_1})
+string(FIND "${first}" "(cached)" cached_first)
+if(NOT cached_first EQUAL -1)
+  message(SEND_ERROR "the first run into an empty cache says (cached)")
+endif()
+if(first_err MATCHES "not block RAM")
+  message(SEND_ERROR "synth-yosys.sh warned: ${first_err}")
+endif()
+check_memories("${first}")
+
+synth(second second_err ${config} --cache ${cache})
+string(FIND "${second}" "(cached)" cached_second)
+string(REPLACE " (cached)" "" second_figures "${second}")
+if(cached_second EQUAL -1 OR NOT second_figures STREQUAL first)
+  message(SEND_ERROR "the second run should say (cached) and print the first run's figures; got:\n${second}")
+endif()
+
+synth(kv kv_err ${config} --cache ${cache} --kv)
+if(NOT kv MATCHES "\nlut=${luts}\n" OR NOT kv MATCHES "\ncached=1\n$")
+  message(SEND_ERROR "--kv should give lut=${luts} and cached=1; got:\n${kv}")
+endif()
+
+# One record, no leftover temporary file or work directory.
+file(GLOB entries RELATIVE ${cache} ${cache}/* ${cache}/work/*)
+if(NOT entries MATCHES "^fps_census3_d16u16_[0-9a-f]+-default-default-[0-9a-f]+\\.kv;work$")
+  message(SEND_ERROR "unexpected cache contents: ${entries}")
+endif()
+
+function(expect_error expected)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(STRIP "${err}" err)
+  string(FIND "${err}" "\n" newline)
+  string(FIND "${err}" "${expected}" found)
+  if(NOT rc EQUAL 2 OR found EQUAL -1 OR NOT newline EQUAL -1)
+    message(SEND_ERROR "${ARGN}\n  expected exit 2 and one line with '${expected}'\n  got exit ${rc}: ${err}")
+  else()
+    message(STATUS "ok: ${err}")
+  endif()
+endfunction()
+
+expect_error("invalid config: uf = 5: must divide dmax (16)"
+             ${FPSTEREO} synth --width 32 --height 8 --dmax 16 --uf 5 --cache ${cache})
+expect_error("synth-yosys: unknown part 'xc9zz'" ${FPSTEREO} synth ${config} --part xc9zz --cache ${cache})
+expect_error("synth-yosys: part xczu9eg is xcup, not xc7"
+             ${FPSTEREO} synth ${config} --family xc7 --part xczu9eg --cache ${cache})
+# A PATH holding only bash: the script runs and finds no Yosys.
+find_program(BASH bash REQUIRED)
+file(MAKE_DIRECTORY ${WORK}/bash_only)
+file(CREATE_LINK ${BASH} ${WORK}/bash_only/bash SYMBOLIC)
+expect_error("synth-yosys: yosys not found" ${CMAKE_COMMAND} -E env PATH=${WORK}/bash_only
+             ${FPSTEREO} synth ${config} --cache ${cache} --no-cache)

@@ -1,0 +1,218 @@
+// `fpstereo synth` without Yosys: parsing the script's key=value report, the table printed from it,
+// and the cache key (tests/synth_smoke.cmake runs the command end to end).
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "synth_command.hpp"
+
+namespace fpstereo {
+namespace {
+
+// Verbatim output of `scripts/synth-yosys.sh --kv` (Yosys 0.23) on the Verilog of
+// `--width 32 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0`, part xczu9eg.
+const std::string kScriptKv = R"(top=fps_census3_d16u16_f57891_top
+family=xcup
+part=xczu9eg
+lut=1665
+lut_pct=0.6
+lut_by_inputs=62/209/529/228/436/201
+lut_min=933
+lut_min_pct=0.3
+lutram=130
+lutram_pct=0.1
+lutram_cells=RAM64M8x3 RAM32M16x13 SRL16Ex2
+lut_total=1795
+lut_total_pct=0.7
+ff=955
+ff_pct=0.2
+latches=0
+bram18=0
+bram18_pct=0.0
+bram36=1
+bram36_pct=0.1
+bram36_equiv=1
+bram36_equiv_pct=0.1
+dsp=0
+dsp_pct=0.0
+carry4=210
+carry8=0
+carry4_equiv=210
+carry_pct=0.3
+delay_ps=5950
+levels=7
+levels_with_carry=12
+abc9_runs=1
+part_lut=274080
+part_ff=548160
+part_bram36=912
+part_dsp=2520
+part_lutram=144000
+mem.core.aggregation.path0.minimum=4x7:lutram
+mem.core.aggregation.path0.state.mem=4x112:lutram
+mem.core.cost_ram.mem=128x64:bram
+mem.core.disp_ram.mem=160x5:lutram
+mem.core.left_window.line_buffer.mem=32x16:lutram
+mem.core.right_window.line_buffer.mem=32x16:lutram
+)";
+
+// Replaces the line "key=..." of a kv text (the key at a line start: "part_lut=" is not "lut=").
+std::string with_line(std::string text, const std::string& key, const std::string& value) {
+  const size_t found = text.find("\n" + key + "=");
+  REQUIRE(found != std::string::npos);
+  const size_t start = found + 1;
+  return text.replace(start, text.find('\n', start) - start, key + "=" + value);
+}
+
+StereoConfig tiny_config() {
+  StereoConfig cfg;
+  cfg.width = 32;
+  cfg.height = 8;
+  cfg.dmax = 16;
+  cfg.uf = 16;
+  cfg.window = 3;
+  cfg.median = 0;
+  cfg.paths = kPath0;
+  return cfg;
+}
+
+TEST_CASE("parse_kv reads every figure of a real synth-yosys.sh report", "[synth]") {
+  const SynthReport r = parse_kv(kScriptKv);
+  CHECK(r.top == "fps_census3_d16u16_f57891_top");
+  CHECK(r.family == "xcup");
+  CHECK(r.part == "xczu9eg");
+  CHECK(r.config.empty());
+  CHECK(r.lut == 1665);
+  CHECK(r.lut_min == 933);
+  CHECK(r.lut_by_inputs == "62/209/529/228/436/201");
+  CHECK(r.lutram == 130);
+  CHECK(r.lutram_cells == "RAM64M8x3 RAM32M16x13 SRL16Ex2");
+  CHECK(r.lut_total == 1795);
+  CHECK(r.ff == 955);
+  CHECK(r.latches == 0);
+  CHECK(r.bram18 == 0);
+  CHECK(r.bram36 == 1);
+  CHECK(r.bram36_equiv == 1.0);
+  CHECK(r.dsp == 0);
+  CHECK(r.carry4 == 210);
+  CHECK(r.carry8 == 0);
+  CHECK(r.carry4_equiv == 210);
+  CHECK(r.delay_ps == 5950);
+  CHECK(r.levels == 7);
+  CHECK(r.levels_with_carry == 12);
+  CHECK(r.part_lut == 274080);
+  CHECK(r.part_ff == 548160);
+  CHECK(r.part_bram36 == 912);
+  CHECK(r.part_dsp == 2520);
+  CHECK(r.part_lutram == 144000);
+  CHECK(r.lut_pct == Approx(0.6));
+  CHECK(r.lut_min_pct == Approx(0.3));
+  CHECK(r.lutram_pct == Approx(0.1));
+  CHECK(r.lut_total_pct == Approx(0.7));
+  CHECK(r.ff_pct == Approx(0.2));
+  CHECK(r.bram36_pct == Approx(0.1));
+  CHECK(r.bram36_equiv_pct == Approx(0.1));
+  CHECK(r.carry_pct == Approx(0.3));
+  CHECK_FALSE(r.synth_seconds.has_value());
+  CHECK(r.warnings.empty());
+
+  // In the script's order: memories before mapping, with the target each became.
+  REQUIRE(r.memories.size() == 6);
+  CHECK(r.memories[0].name == "core.aggregation.path0.minimum");
+  CHECK(r.memories[0].words == 4);
+  CHECK(r.memories[0].bits == 7);
+  CHECK(r.memories[0].target == "lutram");
+  CHECK(r.memories[2].name == "core.cost_ram.mem");
+  CHECK(r.memories[2].words == 128);
+  CHECK(r.memories[2].bits == 64);
+  CHECK(r.memories[2].target == "bram");
+  CHECK(r.memories[5].name == "core.right_window.line_buffer.mem");
+}
+
+TEST_CASE("parse_kv reads a cache record's own lines and the script's special values", "[synth]") {
+  std::string record = "config=fps_census3_d16u16_f57891\n" + kScriptKv +
+                       "mem.core.extra=?:removed\n"
+                       "synth_seconds=16.8\n"
+                       "warning=memory core.big (512 x 16 = 8192 bits) became LUTRAM, not block RAM\n"
+                       "some_future_key=ignored\n";
+  record = with_line(record, "bram18", "3");
+  record = with_line(record, "bram36_equiv", "2.5");
+  record = with_line(record, "delay_ps", "na");
+  record = with_line(record, "levels", "na");
+  record = with_line(record, "levels_with_carry", "na");
+  const SynthReport r = parse_kv(record);
+  CHECK(r.config == "fps_census3_d16u16_f57891");
+  CHECK(r.bram18 == 3);
+  CHECK(r.bram36_equiv == 2.5);
+  CHECK_FALSE(r.delay_ps.has_value());
+  CHECK_FALSE(r.levels.has_value());
+  CHECK_FALSE(r.levels_with_carry.has_value());
+  REQUIRE(r.synth_seconds.has_value());
+  CHECK(*r.synth_seconds == Approx(16.8));
+  REQUIRE(r.memories.size() == 7);
+  CHECK(r.memories[6].name == "core.extra");
+  CHECK(r.memories[6].words == 0);
+  CHECK(r.memories[6].target == "removed");
+  REQUIRE(r.warnings.size() == 1);
+  CHECK(r.warnings[0] == "memory core.big (512 x 16 = 8192 bits) became LUTRAM, not block RAM");
+}
+
+TEST_CASE("parse_kv names what is missing or malformed", "[synth]") {
+  CHECK_THROWS_WITH(parse_kv(with_line(kScriptKv, "lut", "many")), Catch::Contains("lut = 'many'"));
+  CHECK_THROWS_WITH(parse_kv(with_line(kScriptKv, "ff", "")), Catch::Contains("ff = ''"));
+  CHECK_THROWS_WITH(parse_kv(with_line(kScriptKv, "dsp_pct", "1.5%")), Catch::Contains("dsp_pct"));
+  CHECK_THROWS_WITH(parse_kv(with_line(kScriptKv, "part_dsp", "na")), Catch::Contains("part_dsp"));
+  CHECK_THROWS_WITH(parse_kv(kScriptKv + "mem.core.x=128:bram\n"), Catch::Contains("mem.core.x"));
+  CHECK_THROWS_WITH(parse_kv(kScriptKv + "no equals sign\n"), Catch::Contains("malformed line"));
+  CHECK_THROWS_WITH(parse_kv("yosys: command not found\n"), Catch::Contains("malformed"));
+  std::string without_delay = kScriptKv;
+  without_delay.erase(without_delay.find("\ndelay_ps="), std::string("\ndelay_ps=5950").size());
+  CHECK_THROWS_AS(parse_kv(without_delay), SynthError);
+  CHECK_THROWS_WITH(parse_kv(without_delay), Catch::Contains("lacks 'delay_ps'"));
+}
+
+TEST_CASE("format_report shows every figure with its share of the part", "[synth]") {
+  const SynthReport r = parse_kv(kScriptKv);
+  const std::string table = format_report(r, false);
+  INFO(table);
+  CHECK_THAT(table, Catch::StartsWith("fps_census3_d16u16_f57891_top on xczu9eg (xcup)"));
+  CHECK_THAT(table, Catch::Contains("LUT                1665   274080   0.6 %"));
+  CHECK_THAT(table, Catch::Contains("LUT min             933   274080   0.3 %"));
+  CHECK_THAT(table, Catch::Contains("LUTRAM              130   144000   0.1 %"));
+  CHECK_THAT(table, Catch::Contains("RAM64M8x3 RAM32M16x13 SRL16Ex2"));
+  CHECK_THAT(table, Catch::Contains("FF                  955   548160   0.2 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM18                0     1824   0.0 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM36                1      912   0.1 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM36 equiv          1      912   0.1 %"));
+  CHECK_THAT(table, Catch::Contains("DSP                   0     2520   0.0 %"));
+  CHECK_THAT(table, Catch::Contains("CARRY4 equiv        210    68520   0.3 %"));
+  CHECK_THAT(table, Catch::Contains("5950 ps   7 LUT levels, 12 with carry chains"));
+  CHECK_THAT(table, Catch::Contains("abc9 7-series model"));
+  CHECK_THAT(table, Catch::Contains("core.cost_ram.mem") && Catch::Contains("128x64 -> bram"));
+  CHECK_THAT(table, !Catch::Contains("(cached)"));
+  CHECK_THAT(format_report(r, true), Catch::Contains("-abc9 -flatten (cached)\n"));
+
+  const SynthReport no_abc9 = parse_kv(with_line(kScriptKv, "delay_ps", "na"));
+  CHECK_THAT(format_report(no_abc9, false), Catch::Contains("n/a"));
+}
+
+TEST_CASE("cache_key changes with everything that decides the result", "[synth]") {
+  const StereoConfig cfg = tiny_config();
+  const std::string verilog = "module top; endmodule\n", script = "#!/usr/bin/env bash\n";
+  const std::string key = cache_key(cfg, "", "", verilog, script);
+  CHECK(key == cache_key(cfg, "", "", verilog, script));
+  CHECK_THAT(key, Catch::StartsWith(config_tag(cfg) + "-default-default-"));
+  CHECK(cache_key(cfg, "xc7", "", verilog, script) != key);
+  CHECK(cache_key(cfg, "", "xck26", verilog, script) != key);
+  CHECK(cache_key(cfg, "xc7", "xc7z020", verilog, script) !=
+        cache_key(cfg, "xc7", "xc7a100t", verilog, script));
+  StereoConfig other = cfg;
+  other.p2 = 87;  // same tag prefix (cost, window, dmax, uf); only the full configuration tells them apart
+  CHECK(cache_key(other, "", "", verilog, script) != key);
+  CHECK(cache_key(cfg, "", "", verilog + " ", script) != key);
+  CHECK(cache_key(cfg, "", "", verilog, script + "# changed\n") != key);
+  // Keys are file names: a part name cannot reach outside the cache directory.
+  CHECK(cache_key(cfg, "", "../x/y", verilog, script).find('/') == std::string::npos);
+}
+
+}  // namespace
+}  // namespace fpstereo
