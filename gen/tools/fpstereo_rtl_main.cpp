@@ -1,6 +1,7 @@
 // fpstereo-rtl: emit the Verilog of a configuration.
 //   fpstereo-rtl --dmax 128 --uf 32 > top.v       one self-contained file
-//   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json
+//   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json and the
+//                                                  Vivado files (constraints/README.md)
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include "config_cli.hpp"
 #include "rtl_emitter.hpp"
+#include "vivado_emitter.hpp"
 
 namespace fpstereo {
 namespace {
@@ -19,16 +21,22 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& dir) {
+void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& dir, double clock_mhz) {
+  // Everything is emitted before anything is written: a bad clock leaves no directory behind.
+  const auto verilog = rtl::emit(design);
+  std::vector<std::string> names;
+  for (const auto& file : verilog) names.push_back(file.name);
+  const auto vivado = rtl::emit_vivado_files(design, names, clock_mhz);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
   std::string filelist;
-  for (const auto& file : rtl::emit(design)) {
+  for (const auto& file : verilog) {
     write_file(dir / file.name, file.text);
     filelist += file.name + "\n";
   }
   write_file(dir / "filelist.f", filelist);
+  for (const auto& file : vivado) write_file(dir / file.name, file.text);
   nlohmann::ordered_json config;
   for (const auto& spec : param_specs()) config[spec.name] = spec.get(design.cfg);
   write_file(dir / "config.json", config.dump(2) + "\n");
@@ -43,14 +51,18 @@ int main(int argc, char** argv) {
   ConfigFlags flags;
   flags.add_to(app);
   std::string out_dir;
-  app.add_option("-o,--output-dir", out_dir, "write one file per module, filelist.f and config.json here");
+  app.add_option("-o,--output-dir", out_dir,
+                 "write one file per module, filelist.f, config.json and the Vivado files here");
+  double clock_mhz = 300;
+  app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
     const rtl::RtlDesign design = rtl::plan(flags.resolve());
     if (out_dir.empty())
       std::cout << rtl::emit_single_file(design);
     else
-      write_directory(design, out_dir);
+      write_directory(design, out_dir, clock_mhz);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : kExitBadInput;
   } catch (const ConfigError& e) {
