@@ -181,34 +181,50 @@ module fpstereo_sgm_core #(
     end
   endgenerate
 
-  // Transform, match history and cost lanes of the chosen cost function. Each branch sets
-  // history_x / history_y: the centre whose costs the lanes compute in this slot.
+  // Transform stage, once per slot: the window centre's position and, for census, rank and SHD,
+  // the base and match codes (SAD and ZSAD keep their windows; their branch registers them).
+  reg  [X_W-1:0] transform_x;
+  reg  signed [YS_W-1:0] transform_y;
+  reg  [COST_K_W-1:0] transform_slot;
+  always @(posedge clk)
+    if (shift) begin
+      transform_x    <= window_x;
+      transform_y    <= window_y;
+      transform_slot <= window_slot;
+    end
+  /* verilator lint_off UNUSEDSIGNAL */  // SAD and ZSAD use no codes
+  reg  [CODE_W-1:0] code_base_t, code_match_t;
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (COST_KIND == 0 || COST_KIND == 1 || COST_KIND == 4) begin : codes
+      wire [CODE_W-1:0] code_left, code_right;
+      if (COST_KIND == 1) begin : rank
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
+      end else begin : census
+        fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
+        fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
+      end
+      always @(posedge clk)
+        if (shift) begin
+          code_base_t  <= code_left;
+          code_match_t <= code_right;
+        end
+    end
+  endgenerate
+
+  // Match history and cost lanes of the chosen cost function. Each branch sets history_x /
+  // history_y: the centre whose costs the lanes compute in this slot.
   reg  [X_W-1:0] history_x;
   reg  signed [YS_W-1:0] history_y;
   reg  [COST_K_W-1:0] history_slot;
   wire [UF*COST_W-1:0] costs;
   generate
     if (COST_KIND <= 1) begin : point_cost
-      // Census or rank: one code per pixel, registered once per slot.
-      wire [CODE_W-1:0] code_left, code_right;
-      if (COST_KIND == 0) begin : census
-        fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
-        fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
-      end else begin : rank
-        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
-        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
-      end
-      reg [CODE_W-1:0] code_base_t, code_match_t, code_base_h;
-      reg [X_W-1:0] transform_x;
-      reg signed [YS_W-1:0] transform_y;
-      reg [COST_K_W-1:0] transform_slot;
+      // Census or rank: one code per pixel.
+      reg [CODE_W-1:0] code_base_h;
       always @(posedge clk)
         if (shift) begin
-          code_base_t    <= code_left;
-          code_match_t   <= code_right;
-          transform_x    <= window_x;
-          transform_y    <= window_y;
-          transform_slot <= window_slot;
           code_base_h    <= code_base_t;
           history_x      <= transform_x;
           history_y      <= transform_y;
@@ -249,19 +265,13 @@ module fpstereo_sgm_core #(
       reg [N*8-1:0]      column_t;
       reg [COLSUM_W-1:0] column_sum_t;
       reg [7:0]          base_mean_t, base_mean_h;
-      reg [X_W-1:0]      transform_x;
-      reg signed [YS_W-1:0] transform_y;
-      reg [COST_K_W-1:0] transform_slot;
       always @(posedge clk)
         if (shift) begin
-          transform_slot <= window_slot;
           history_slot <= transform_slot;
           base_t       <= base_masked;
           column_t     <= newest_column;
           column_sum_t <= newest_sum;
           base_mean_t  <= base_mean;
-          transform_x  <= window_x;
-          transform_y  <= window_y;
           base_h       <= base_t;
           base_mean_h  <= base_mean_t;
           history_x    <= transform_x;
@@ -285,21 +295,6 @@ module fpstereo_sgm_core #(
       localparam RS = SHD_K / 2;
       localparam [X_W:0] RS_X = RS;
       localparam signed [YS_W-1:0] RS_Y = RS;
-      wire [CODE_W-1:0] code_left, code_right;
-      fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
-      fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
-      reg [CODE_W-1:0] code_base_t, code_match_t;
-      reg [X_W-1:0] transform_x;
-      reg signed [YS_W-1:0] transform_y;
-      reg [COST_K_W-1:0] transform_slot;
-      always @(posedge clk)
-        if (shift) begin
-          code_base_t    <= code_left;
-          code_match_t   <= code_right;
-          transform_x    <= window_x;
-          transform_y    <= window_y;
-          transform_slot <= window_slot;
-        end
       // The code windows take in code_base_t / code_match_t, at column transform_x.
       wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
       wire [SHD_K*SHD_K*CODE_W-1:0] codes_left, codes_right;
