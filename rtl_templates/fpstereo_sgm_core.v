@@ -95,7 +95,6 @@ module fpstereo_sgm_core #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  localparam [X_W:0]   R_X = R;
   localparam [X_W:0]   W_X = W;
   localparam YS_W = Y_W + 2;  // signed row coordinates: a window centre may lie above the image
   localparam signed [YS_W-1:0] R_Y = R;
@@ -137,14 +136,16 @@ module fpstereo_sgm_core #(
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
-  // Centre of the window that forms in this shift: r rows and r slots behind the input. Rows
-  // are signed, since the centre may lie above the image.
-  wire [X_W-1:0] centre_x = (si >= R_X[X_W-1:0]) ? si - R_X[X_W-1:0] : si + (ROW_SLOTS[X_W-1:0] - R_X[X_W-1:0]);
-  wire signed [YS_W-1:0] centre_y = $signed({2'b00, ti}) - R_Y - ((si >= R_X[X_W-1:0]) ? 0 : 1);
-  // The same row modulo COST_ROWS, from small numbers only (a wide modulo would be slow logic).
+  // Centre of the window that forms in this shift, and its row modulo COST_ROWS (from small
+  // numbers only: a wide modulo would be slow logic).
+  wire [X_W-1:0] centre_x;
+  wire signed [YS_W-1:0] centre_y;
+  wire centre_borrow;
+  fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) centre (
+    .x(si), .y($signed({2'b00, ti})), .centre_x(centre_x), .centre_y(centre_y), .borrow(centre_borrow));
   localparam integer SLOT_BIAS = COST_ROWS * ((R + COST_ROWS) / COST_ROWS);  // a multiple above R
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  wire [COST_K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - ((si >= R_X[X_W-1:0]) ? 1'b0 : 1'b1)) % COST_ROWS;
+  wire [COST_K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - centre_borrow) % COST_ROWS;
   /* verilator lint_on WIDTH */
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
@@ -162,24 +163,17 @@ module fpstereo_sgm_core #(
       newest_y <= $signed({2'b00, ti}) - R_Y;
     end
 
-  // Window positions inside the image (semantics section 1).
+  // Window positions inside the image (semantics section 1), for the window and for its newest
+  // column on its own row.
   wire [N-1:0] row_valid, col_valid;
-  /* verilator lint_off UNUSEDSIGNAL */  // only the window costs (SAD, ZSAD) use it
-  wire [N-1:0] newest_row_valid;
+  fpstereo_window_bounds #(.SIDE(N), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(window_x), .y(window_y), .row_valid(row_valid), .col_valid(col_valid));
+  /* verilator lint_off UNUSEDSIGNAL */  // only the window costs (SAD, ZSAD) use them
+  wire [N-1:0] newest_rows, newest_unused_columns;
+  wire [N-1:0] newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
   /* verilator lint_on UNUSEDSIGNAL */
-  genvar v;
-  generate
-    for (v = 0; v < N; v = v + 1) begin : bounds
-      localparam [X_W:0] V_X = v;
-      localparam signed [YS_W-1:0] V_Y = v;
-      wire [X_W:0] column = {1'b0, window_x} + V_X;  // image column + R
-      wire signed [YS_W-1:0] row = window_y + V_Y;   // image row + R
-      wire signed [YS_W-1:0] newest_row = newest_y + V_Y;  // image row + R
-      assign col_valid[v] = column >= R_X && column < W_X + R_X;
-      assign row_valid[v] = row >= R_Y && row < H_Y + R_Y;
-      assign newest_row_valid[v] = newest_in_row && newest_row >= R_Y && newest_row < H_Y + R_Y;
-    end
-  endgenerate
+  fpstereo_window_bounds #(.SIDE(N), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
+    .x(window_x), .y(newest_y), .row_valid(newest_rows), .col_valid(newest_unused_columns));
 
   // Transform stage, once per slot: the window centre's position and, for census, rank and SHD,
   // the base and match codes (SAD and ZSAD keep their windows; their branch registers them).
@@ -293,7 +287,6 @@ module fpstereo_sgm_core #(
       // SHD: census codes, then a SHD_K x SHD_K window of codes (zero outside the image) whose
       // newest match column enters the match ring.
       localparam RS = SHD_K / 2;
-      localparam [X_W:0] RS_X = RS;
       localparam signed [YS_W-1:0] RS_Y = RS;
       // The code windows take in code_base_t / code_match_t, at column transform_x.
       wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
@@ -304,10 +297,15 @@ module fpstereo_sgm_core #(
         .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match_t), .window(codes_right));
       // Centre of the code window: RS rows and RS slots behind the entering code; the newest
       // column is the entering code's own column (zero outside the image, as for SAD).
+      wire [X_W-1:0] codes_centre_x;
+      wire signed [YS_W-1:0] codes_centre_y;
+      wire codes_borrow;
+      fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) codes_centre (
+        .x(transform_x), .y(transform_y), .centre_x(codes_centre_x), .centre_y(codes_centre_y),
+        .borrow(codes_borrow));
       localparam integer CODE_SLOT_BIAS = COST_ROWS * ((RS + COST_ROWS) / COST_ROWS);
       /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-      wire [COST_K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS
-                                             - ((transform_x >= RS_X[X_W-1:0]) ? 1'b0 : 1'b1)) % COST_ROWS;
+      wire [COST_K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS - codes_borrow) % COST_ROWS;
       /* verilator lint_on WIDTH */
       reg [X_W-1:0] codes_x;
       reg signed [YS_W-1:0] codes_y;
@@ -318,23 +316,19 @@ module fpstereo_sgm_core #(
         if (shift) begin
           code_newest_in_row <= {1'b0, transform_x} < W_X;
           code_newest_y <= transform_y - RS_Y;
-          codes_x <= (transform_x >= RS_X[X_W-1:0]) ? transform_x - RS_X[X_W-1:0]
-                                                    : transform_x + (ROW_SLOTS[X_W-1:0] - RS_X[X_W-1:0]);
-          codes_y <= transform_y - RS_Y - ((transform_x >= RS_X[X_W-1:0]) ? 0 : 1);
+          codes_x <= codes_centre_x;
+          codes_y <= codes_centre_y;
           codes_slot <= codes_slot_next;
         end
-      wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_row_valid;
-      genvar cv;
-      for (cv = 0; cv < SHD_K; cv = cv + 1) begin : code_bounds
-        localparam [X_W:0] V_X = cv;
-        localparam signed [YS_W-1:0] V_Y = cv;
-        wire [X_W:0] column = {1'b0, codes_x} + V_X;  // image column + RS
-        wire signed [YS_W-1:0] row = codes_y + V_Y;   // image row + RS
-        wire signed [YS_W-1:0] newest_row = code_newest_y + V_Y;
-        assign code_col_valid[cv] = column >= RS_X && column < W_X + RS_X;
-        assign code_row_valid[cv] = row >= RS_Y && row < H_Y + RS_Y;
-        assign code_newest_row_valid[cv] = code_newest_in_row && newest_row >= RS_Y && newest_row < H_Y + RS_Y;
-      end
+      wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_rows;
+      /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is code_newest_in_row
+      wire [SHD_K-1:0] code_newest_unused_columns;
+      /* verilator lint_on UNUSEDSIGNAL */
+      fpstereo_window_bounds #(.SIDE(SHD_K), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) code_bounds (
+        .x(codes_x), .y(codes_y), .row_valid(code_row_valid), .col_valid(code_col_valid));
+      fpstereo_window_bounds #(.SIDE(SHD_K), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
+        .x(codes_x), .y(code_newest_y), .row_valid(code_newest_rows), .col_valid(code_newest_unused_columns));
+      wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
       wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;
       fpstereo_window_mask #(.N(SHD_K), .WORD_W(CODE_W)) base_mask (
         .window(codes_left), .row_valid(code_row_valid), .col_valid(code_col_valid), .masked(base_masked));
@@ -689,44 +683,42 @@ module fpstereo_sgm_core #(
       // The word read in the previous slot enters an M x M window; its centre is RM rows and
       // RM slots behind.
       localparam RM = MEDIAN / 2;
-      localparam [X_W:0] RM_X = RM;
-      localparam [Y_W:0] RM_Y = RM;
       wire median_shift = adv && checked_done;  // a slot's word (or the invalid word outside the image)
       wire [X_W-1:0] median_next_col = (checked_x == LAST_SLOT) ? {X_W{1'b0}} : checked_x + 1'b1;
       wire [MEDIAN*MEDIAN*(DISP_W+1)-1:0] window;
       fpstereo_window #(.N(MEDIAN), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
         .clk(clk), .shift(median_shift), .col(checked_x), .next_col(median_next_col), .word(checked_word),
         .window(window));
+      wire [X_W-1:0] centre_x_m;
+      wire signed [YS_W-1:0] centre_y_m;
+      /* verilator lint_off UNUSEDSIGNAL */  // the output RAM rows need no slot here
+      wire centre_borrow_m;
+      /* verilator lint_on UNUSEDSIGNAL */
+      fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) centre_m (
+        .x(checked_x), .y($signed({2'b00, checked_y})), .centre_x(centre_x_m), .centre_y(centre_y_m),
+        .borrow(centre_borrow_m));
       reg [X_W-1:0] median_x;
-      reg [Y_W:0]   median_y;  // row + RM, so that it stays non-negative
+      reg signed [YS_W-1:0] median_y;
       reg           fresh;     // high in the step after a shift: one result per slot
       always @(posedge clk)
         if (restart) fresh <= 1'b0;
         else if (adv) fresh <= checked_done;
       always @(posedge clk)
         if (median_shift) begin
-          median_x <= (checked_x >= RM_X[X_W-1:0]) ? checked_x - RM_X[X_W-1:0]
-                                                : checked_x + (ROW_SLOTS[X_W-1:0] - RM_X[X_W-1:0]);
-          median_y <= {1'b0, checked_y} - ((checked_x >= RM_X[X_W-1:0]) ? {(Y_W+1){1'b0}} : {{Y_W{1'b0}}, 1'b1});
+          median_x <= centre_x_m;
+          median_y <= centre_y_m;
         end
-      // Window positions inside the image: column median_x + v - RM, row median_y + v - 2 * RM.
       wire [MEDIAN-1:0] row_valid_m, col_valid_m;
-      genvar v2;
-      for (v2 = 0; v2 < MEDIAN; v2 = v2 + 1) begin : bounds
-        localparam [X_W:0] V_X = v2;
-        localparam [Y_W:0] V_Y = v2;
-        wire [X_W:0] column = {1'b0, median_x} + V_X;  // image column + RM
-        wire [Y_W:0] row = median_y + V_Y;             // image row + 2 * RM
-        assign col_valid_m[v2] = column >= RM_X && column < W_X + RM_X;
-        assign row_valid_m[v2] = row >= RM_Y + RM_Y && row < H + RM_Y + RM_Y;
-      end
+      fpstereo_window_bounds #(.SIDE(MEDIAN), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) bounds_m (
+        .x(median_x), .y(median_y), .row_valid(row_valid_m), .col_valid(col_valid_m));
       fpstereo_median_select #(.M(MEDIAN), .WORD_W(DISP_W + 1)) select (
         .clk(clk), .en(adv), .window(window), .row_valid(row_valid_m), .col_valid(col_valid_m),
         .median(final_word));
       // The centre's coordinates travel as long as the selection takes.
-      wire in_image = median_x < W && median_y >= RM_Y && median_y < EVENT_ROWS + RM_Y;
-      /* verilator lint_off UNUSEDSIGNAL */  // the top bit is 0 whenever in_image
-      wire [Y_W:0] median_row = median_y - RM_Y;
+      localparam signed [YS_W-1:0] EVENT_ROWS_Y = H + GAP;
+      wire in_image = {1'b0, median_x} < W_X && median_y >= 0 && median_y < EVENT_ROWS_Y;
+      /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
+      wire [YS_W-1:0] median_row = median_y;
       /* verilator lint_on UNUSEDSIGNAL */
       wire          done_m;
       wire [X_W-1:0] x_m;

@@ -46,7 +46,8 @@ CostKind cost_kind(const StereoConfig& cfg) {
 
 // Modules the top uses, in emission order after the top.
 std::vector<std::string> used_modules(const StereoConfig& cfg) {
-  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_window"};
+  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_window",
+                                      "fpstereo_window_centre", "fpstereo_window_bounds"};
   switch (cost_kind(cfg)) {
     case kCensus:
       modules.insert(modules.end(), {"fpstereo_census", "fpstereo_cost_lanes"});
