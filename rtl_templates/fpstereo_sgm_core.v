@@ -136,17 +136,14 @@ module fpstereo_sgm_core #(
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
-  // Centre of the window that forms in this shift, and its row modulo COST_ROWS (from small
-  // numbers only: a wide modulo would be slow logic).
+  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
   wire [X_W-1:0] centre_x;
   wire signed [YS_W-1:0] centre_y;
-  wire centre_borrow;
-  fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .centre_x(centre_x), .centre_y(centre_y), .borrow(centre_borrow));
-  localparam integer SLOT_BIAS = COST_ROWS * ((R + COST_ROWS) / COST_ROWS);  // a multiple above R
-  /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  wire [COST_K_W-1:0] centre_slot = (ti_slot + SLOT_BIAS - R - centre_borrow) % COST_ROWS;
-  /* verilator lint_on WIDTH */
+  wire [COST_K_W-1:0] centre_slot;
+  fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
+                           .SLOT_W(COST_K_W)) centre (
+    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
+    .centre_slot(centre_slot));
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
@@ -299,14 +296,11 @@ module fpstereo_sgm_core #(
       // column is the entering code's own column (zero outside the image, as for SAD).
       wire [X_W-1:0] codes_centre_x;
       wire signed [YS_W-1:0] codes_centre_y;
-      wire codes_borrow;
-      fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) codes_centre (
-        .x(transform_x), .y(transform_y), .centre_x(codes_centre_x), .centre_y(codes_centre_y),
-        .borrow(codes_borrow));
-      localparam integer CODE_SLOT_BIAS = COST_ROWS * ((RS + COST_ROWS) / COST_ROWS);
-      /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-      wire [COST_K_W-1:0] codes_slot_next = (transform_slot + CODE_SLOT_BIAS - RS - codes_borrow) % COST_ROWS;
-      /* verilator lint_on WIDTH */
+      wire [COST_K_W-1:0] codes_slot_next;
+      fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
+                               .SLOT_W(COST_K_W)) codes_centre (
+        .x(transform_x), .y(transform_y), .slot(transform_slot), .centre_x(codes_centre_x),
+        .centre_y(codes_centre_y), .centre_slot(codes_slot_next));
       reg [X_W-1:0] codes_x;
       reg signed [YS_W-1:0] codes_y;
       reg [COST_K_W-1:0] codes_slot;
@@ -691,12 +685,12 @@ module fpstereo_sgm_core #(
         .window(window));
       wire [X_W-1:0] centre_x_m;
       wire signed [YS_W-1:0] centre_y_m;
-      /* verilator lint_off UNUSEDSIGNAL */  // the output RAM rows need no slot here
-      wire centre_borrow_m;
+      /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
+      wire centre_slot_m;
       /* verilator lint_on UNUSEDSIGNAL */
-      fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W)) centre_m (
-        .x(checked_x), .y($signed({2'b00, checked_y})), .centre_x(centre_x_m), .centre_y(centre_y_m),
-        .borrow(centre_borrow_m));
+      fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre_m (
+        .x(checked_x), .y($signed({2'b00, checked_y})), .slot(1'b0), .centre_x(centre_x_m), .centre_y(centre_y_m),
+        .centre_slot(centre_slot_m));
       reg [X_W-1:0] median_x;
       reg signed [YS_W-1:0] median_y;
       reg           fresh;     // high in the step after a shift: one result per slot

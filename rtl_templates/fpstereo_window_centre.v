@@ -2,20 +2,25 @@
 `default_nettype none
 // The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
 // and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
-// Rows are signed: a centre may lie above the image.
+// Rows are signed: a centre may lie above the image. The centre's row modulo ROWS (its slot in
+// a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
+// would be slow logic).
 module fpstereo_window_centre #(
   parameter LAG = 2,
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8
+  parameter YS_W = 8,
+  // rows of the RAM the slots index, and the slot width
+  parameter ROWS = 2,
+  parameter SLOT_W = 1
 ) (
   input  wire [X_W-1:0]         x,
   input  wire signed [YS_W-1:0] y,
+  input  wire [SLOT_W-1:0]      slot,
   output wire [X_W-1:0]         centre_x,
   output wire signed [YS_W-1:0] centre_y,
-  // the centre went back a row-time
-  output wire                   borrow
+  output wire [SLOT_W-1:0]      centre_slot
 );
   localparam integer LAG_I = LAG;
   localparam integer BACK_I = ROW_SLOTS - LAG;
@@ -23,8 +28,13 @@ module fpstereo_window_centre #(
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
   localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
 
-  assign borrow = x < LAG_X;
+  localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
+
+  wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
   assign centre_y = y - LAG_Y - (borrow ? 1 : 0);
+  /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
+  assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
+  /* verilator lint_on WIDTH */
 endmodule
 `resetall
