@@ -6,8 +6,8 @@
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
 // x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2).
 module fpstereo_aggregator #(
+  // the largest image width (the path rows hold one row of it)
   parameter W = 64,
-  parameter H = 16,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
   parameter SLEN = 32,
@@ -17,8 +17,6 @@ module fpstereo_aggregator #(
   parameter COST_MAX = 24,
   parameter PATH_W = 7,
   parameter SUM_W = 9,
-  parameter P1 = 7,
-  parameter P2 = 86,
   // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
   parameter PATHS = 15,
   parameter MATCH_SIDE = 0,
@@ -39,6 +37,11 @@ module fpstereo_aggregator #(
   input  wire                 clk,
   input  wire                 restart,
   input  wire                 adv,
+  // the frame's size and penalties
+  input  wire [X_W-1:0]       width,
+  input  wire [Y_W-1:0]       height,
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
   output wire [COST_AW-1:0]   cost_raddr,
@@ -104,7 +107,7 @@ module fpstereo_aggregator #(
     end
   wire [X_W-1:0] x0 = ka * SLEN + ja;
   wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
-  wire           active0 = agg_on && !row0[Y_W] && row0 < H && x0 < W;
+  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, height} && x0 < width;
   wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
@@ -162,7 +165,7 @@ module fpstereo_aggregator #(
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > W - 1;
+      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > width - 1;
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate
@@ -189,8 +192,8 @@ module fpstereo_aggregator #(
       always @(posedge clk)
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
-      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
+      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+        .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
       fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
@@ -233,8 +236,8 @@ module fpstereo_aggregator #(
       reg [PATH_W-1:0] minimum [0:K-1];
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
-      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-        .clk(clk), .en(adv), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
+      fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+        .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
       fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
@@ -268,8 +271,8 @@ module fpstereo_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
-        fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W), .P1(P1), .P2(P2)) lanes (
-          .clk(clk), .en(adv), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < W), .prev(cur),
+        fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
         fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))

@@ -11,8 +11,8 @@
 //   by the run start stored with the word. Two rows of each (ping-pong by row parity).
 // Latency: the result for (x, y - 1) leaves 3 en-steps after the event of (x, y).
 module fpstereo_gap_fill #(
+  // the largest image width (the RAMs hold two rows of it)
   parameter W = 64,
-  parameter H = 16,
   // word: disparity bits with the invalid flag on top
   parameter WORD_W = 8,
   parameter X_W = 7,
@@ -21,6 +21,9 @@ module fpstereo_gap_fill #(
   input  wire              clk,
   input  wire              rst,
   input  wire              en,
+  // the frame's size
+  input  wire [X_W-1:0]    width,
+  input  wire [Y_W-1:0]    height,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
@@ -32,8 +35,7 @@ module fpstereo_gap_fill #(
 );
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  localparam [X_W-1:0] LAST_X = W - 1;
-  localparam [Y_W-1:0] ROWS = H;
+  wire [X_W-1:0] last_x = width - 1'b1;
 
   function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
     // verilator lint_off WIDTH
@@ -42,7 +44,7 @@ module fpstereo_gap_fill #(
   endfunction
 
   // ---- Writing row in_y.
-  wire writing = in_event && in_y < ROWS;
+  wire writing = in_event && in_y < height;
   wire word_invalid = in_word[WORD_W-1];
   reg  run_open;  // the previous word of the row was invalid
   reg  [X_W-1:0] run_start;
@@ -55,7 +57,7 @@ module fpstereo_gap_fill #(
       run_start <= start;
     end
   // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
-  wire side_we = en && writing && (word_invalid ? in_x == LAST_X : continues);
+  wire side_we = en && writing && (word_invalid ? in_x == last_x : continues);
   wire [ADDR_W-1:0] side_waddr = address(in_y[0], word_invalid ? start : run_start);
 
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).

@@ -8,12 +8,13 @@
 module fpstereo_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
-  parameter PATH_W = 8,
-  parameter P1 = 7,
-  parameter P2 = 86
+  parameter PATH_W = 8
 ) (
   input  wire                 clk,
   input  wire                 en,
+  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
   input  wire [UF*COST_W-1:0] cost,
   input  wire                 has_pred,
   input  wire [UF*PATH_W-1:0] prev,
@@ -25,7 +26,7 @@ module fpstereo_path_lanes #(
   // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
   localparam EXT_W = PATH_W + 1;
   wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
-  wire [EXT_W-1:0] jump = {1'b0, prev_min} + P2[EXT_W-1:0];
+  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
 
   genvar l;
   generate
@@ -33,7 +34,7 @@ module fpstereo_path_lanes #(
       wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + P1[EXT_W-1:0];
+      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
       wire [EXT_W-1:0] stay = same < jump ? same : jump;
       wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
       wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};

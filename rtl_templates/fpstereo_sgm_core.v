@@ -6,9 +6,8 @@
 // and output. Every register advances only in steps where adv is high, so the whole pipeline
 // stalls together; the stages find their pixel from step counters.
 module fpstereo_sgm_core #(
-  // image and time base: W x H pixels, ROW_SLOTS = K * SLEN slots per row-time, G steps per slot
+  // largest image width W and time base: ROW_SLOTS = K * SLEN slots per row-time, G steps per slot
   parameter W = 64,
-  parameter H = 16,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
   parameter SLEN = 32,
@@ -33,12 +32,9 @@ module fpstereo_sgm_core #(
   parameter PATH_W = 7,
   parameter SUM_W = 9,
   parameter DISP_W = 5,
-  parameter P1 = 7,
-  parameter P2 = 86,
-  // left-right check (0 = none, 1 = LR1) and its threshold; uniqueness ratio in percent (0 = off)
-  // and median filter window (0 = off, 3, 5 or 7)
+  // left-right check (0 = none, 1 = LR1, 2 = LR2); uniqueness check present (its ratio is a
+  // setting); median filter window (0 = off, 3, 5 or 7)
   parameter LR = 0,
-  parameter LR_THRESHOLD = 1,
   parameter UNIQUENESS = 0,
   parameter MEDIAN = 0,
   // gap interpolation (0 = off, 1 = on)
@@ -64,6 +60,18 @@ module fpstereo_sgm_core #(
 ) (
   input  wire              clk,
   input  wire              rst,
+  // Frames: while idle, start begins one. The settings are the frame's and must hold until the
+  // core is idle again (fpstereo_control latches them); the frame is at most W pixels wide.
+  input  wire              start,
+  output wire              idle,
+  input  wire [X_W-1:0]    frame_width,
+  input  wire [Y_W-1:0]    frame_height,
+  input  wire [PATH_W-1:0] p1,
+  input  wire [PATH_W-1:0] p2,
+  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the uniqueness or LR check
+  input  wire [6:0]        uniqueness,
+  input  wire [3:0]        lr_threshold,
+  /* verilator lint_on UNUSEDSIGNAL */
   // one pixel of each image, taken when in_take is high
   input  wire              in_valid,
   input  wire [7:0]        in_left,
@@ -74,7 +82,9 @@ module fpstereo_sgm_core #(
   output wire              out_push,
   output wire [DISP_W:0]   out_word,
   output wire              out_first,
-  output wire              out_last
+  output wire              out_last,
+  // high in the cycle that pushes the frame's last pixel
+  output wire              frame_end
 );
   localparam R = N / 2;
   // Rows of the cost reorder RAM: K, one more with LR2, whose match side reads a row longer.
@@ -95,15 +105,21 @@ module fpstereo_sgm_core #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  localparam [X_W:0]   W_X = W;
+  wire [X_W:0] width_x = {1'b0, frame_width};
   localparam YS_W = Y_W + 2;  // signed row coordinates: a window centre may lie above the image
   localparam signed [YS_W-1:0] R_Y = R;
-  localparam signed [YS_W-1:0] H_Y = H;
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
 
   // ------------------------------------------------------------------------------------------
   // Global advance and frame sequencing.
   wire in_due, out_due, frame_done;
-  wire adv = !(in_due && !in_valid) && !(out_due && !out_ready);
+  reg  in_frame;
+  always @(posedge clk)
+    if (rst) in_frame <= 1'b0;
+    else if (!in_frame) in_frame <= start;
+    else if (adv && frame_done) in_frame <= 1'b0;
+  assign idle = !in_frame;
+  wire adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   reg  [STEP_W-1:0] step;
   always @(posedge clk)
     if (rst) step <= 0;
@@ -121,9 +137,7 @@ module fpstereo_sgm_core #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(gi), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  localparam [X_W-1:0] W_S = W;
-  localparam [Y_W-1:0] H_T = H;
-  assign in_due  = slot_end && si < W_S && ti < H_T;
+  assign in_due  = slot_end && si < frame_width && ti < frame_height;
   assign in_take = adv && in_due;
   wire shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
@@ -156,21 +170,21 @@ module fpstereo_sgm_core #(
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      newest_in_row <= {1'b0, si} < W_X;
+      newest_in_row <= {1'b0, si} < width_x;
       newest_y <= $signed({2'b00, ti}) - R_Y;
     end
 
   // Window positions inside the image (semantics section 1), for the window and for its newest
   // column on its own row.
   wire [N-1:0] row_valid, col_valid;
-  fpstereo_window_bounds #(.SIDE(N), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(window_x), .y(window_y), .row_valid(row_valid), .col_valid(col_valid));
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   /* verilator lint_off UNUSEDSIGNAL */  // only the window costs (SAD, ZSAD) use them
   wire [N-1:0] newest_rows, newest_unused_columns;
   wire [N-1:0] newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_bounds #(.SIDE(N), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(window_x), .y(newest_y), .row_valid(newest_rows), .col_valid(newest_unused_columns));
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
+    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows), .col_valid(newest_unused_columns));
 
   // Transform stage, once per slot: the window centre's position and, for census, rank and SHD,
   // the base and match codes (SAD and ZSAD keep their windows; their branch registers them).
@@ -275,10 +289,10 @@ module fpstereo_sgm_core #(
       fpstereo_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
         .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
       fpstereo_window_cost_lanes #(.KIND(COST_KIND - 2), .ELEM_W(8), .SPAN(N), .UF(UF), .COST_W(COST_W),
-                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W), .COLSUM_W(COLSUM_W),
+                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .COLSUM_W(COLSUM_W),
                                    .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
         .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
-        .group(gi), .x(history_x), .costs(costs));
+        .group(gi), .x(history_x), .width(frame_width), .costs(costs));
 
     end else begin : code_window_cost
       // SHD: census codes, then a SHD_K x SHD_K window of codes (zero outside the image) whose
@@ -308,7 +322,7 @@ module fpstereo_sgm_core #(
       reg signed [YS_W-1:0] code_newest_y;
       always @(posedge clk)
         if (shift) begin
-          code_newest_in_row <= {1'b0, transform_x} < W_X;
+          code_newest_in_row <= {1'b0, transform_x} < width_x;
           code_newest_y <= transform_y - RS_Y;
           codes_x <= codes_centre_x;
           codes_y <= codes_centre_y;
@@ -318,10 +332,10 @@ module fpstereo_sgm_core #(
       /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is code_newest_in_row
       wire [SHD_K-1:0] code_newest_unused_columns;
       /* verilator lint_on UNUSEDSIGNAL */
-      fpstereo_window_bounds #(.SIDE(SHD_K), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) code_bounds (
-        .x(codes_x), .y(codes_y), .row_valid(code_row_valid), .col_valid(code_col_valid));
-      fpstereo_window_bounds #(.SIDE(SHD_K), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
-        .x(codes_x), .y(code_newest_y), .row_valid(code_newest_rows), .col_valid(code_newest_unused_columns));
+      fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_bounds (
+        .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid), .col_valid(code_col_valid));
+      fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
+        .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows), .col_valid(code_newest_unused_columns));
       wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
       wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;
       fpstereo_window_mask #(.N(SHD_K), .WORD_W(CODE_W)) base_mask (
@@ -344,12 +358,12 @@ module fpstereo_sgm_core #(
       fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
         .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
       fpstereo_window_cost_lanes #(.KIND(2), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF), .COST_W(COST_W),
-                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .W(W), .COLSUM_W(COLSUM_W)) lanes (
+                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .COLSUM_W(COLSUM_W)) lanes (
         .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
-        .group(gi), .x(history_x), .costs(costs));
+        .group(gi), .x(history_x), .width(frame_width), .costs(costs));
     end
   endgenerate
-  wire history_valid = {1'b0, history_x} < W_X && history_y >= 0 && history_y < H_Y;
+  wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
 
   // ------------------------------------------------------------------------------------------
   // From here on, RAM addresses are products of narrow unsigned counters and constants; they
@@ -385,12 +399,13 @@ module fpstereo_sgm_core #(
   wire [G_W-1:0]      group4;
   wire [K_W-1:0]      chain4;
   wire [OUT_K_W-1:0]  slot4;
-  fpstereo_aggregator #(.W(W), .H(H), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF), .COST_W(COST_W),
-                        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .P1(P1), .P2(P2), .PATHS(PATHS),
+  fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF), .COST_W(COST_W),
+                        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
                         .MATCH_SIDE(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
                         .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W), .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W),
                         .K_W(K_W), .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) aggregation (
-    .clk(clk), .restart(restart), .adv(adv), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q),
+    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1), .p2(p2),
+    .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q),
     .sum4(sum4), .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
   // What the stages after the sums need of a pixel's position.
   localparam TAG_W = 1 + X_W + G_W + K_W + OUT_K_W;
@@ -443,9 +458,10 @@ module fpstereo_sgm_core #(
       wire [SUM_W-1:0]  s1 = total[S_W-1 -: SUM_W];
       wire [SUM_W-1:0]  s2 = total[S_W-4*SUM_W-1 -: SUM_W];
       wire [DISP_W-1:0] winner = total[DISP_W+1:2];
-      // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division.
-      localparam [7:0] KEEP = 100 - UNIQUENESS;
-      wire [SUM_W+7:0] scaled_second = s2 * KEEP;
+      // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division (u = 0 never
+      // invalidates: S2 >= S1).
+      wire [7:0] keep = 8'd100 - {1'b0, uniqueness};
+      wire [SUM_W+7:0] scaled_second = s2 * keep;
       wire [SUM_W+7:0] scaled_best = s1 * 8'd100;
       assign word_w = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
     end
@@ -471,11 +487,10 @@ module fpstereo_sgm_core #(
   // One read per slot, in raster order; rows below the image (the median's last rows need
   // them) and bubble slots read as invalid words. Gap interpolation, one row behind, needs one
   // more row of events.
-  localparam [Y_W-1:0] H_R = H;
-  localparam [Y_W-1:0] EVENT_ROWS = H + GAP;
+  wire [Y_W-1:0] event_rows = frame_height + GAP;
   wire read_slot = out_on && out_slot_end;
-  wire read_event = read_slot && so < W && to < EVENT_ROWS;
-  wire read_valid = read_event && to < H_R;
+  wire read_event = read_slot && so < frame_width && to < event_rows;
+  wire read_valid = read_event && to < frame_height;
   wire [DISP_W:0] disparity_q;
   fpstereo_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(word_w),
@@ -553,7 +568,7 @@ module fpstereo_sgm_core #(
         assign completed_we = adv && active4 && group4 == LAST_GROUP && x4 >= DMAX - 1;
         assign completed_waddr = slot4 * ROW_SLOTS + (x4 - (DMAX - 1));
         assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
-        assign end_we = adv && active4 && x4 == W - 1;
+        assign end_we = adv && active4 && x4 == frame_width - 1;
         assign end_waddr = slot4 * G + group4;
       end else begin : lr2
         // A second cost volume and aggregation with the images' roles swapped. Every cost is
@@ -579,13 +594,14 @@ module fpstereo_sgm_core #(
         wire [K_W-1:0]      match_chain4;
         /* verilator lint_on UNUSEDSIGNAL */
         wire [OUT_K_W-1:0]  match_slot4;
-        fpstereo_aggregator #(.W(W), .H(H), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
-                              .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .P1(P1),
-                              .P2(P2), .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+        fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+                              .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
+                              .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
                               .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                               .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
-          .clk(clk), .restart(restart), .adv(adv), .agg_on(step >= MATCH_START), .cost_raddr(match_raddr),
+          .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1),
+          .p2(p2), .agg_on(step >= MATCH_START), .cost_raddr(match_raddr),
           .cost_q(match_costs), .sum4(match_sum4), .active4(match_active4), .x4(match_x4),
           .group4(match_group4), .chain4(match_chain4), .slot4(match_slot4));
         // Winner-take-all of the match side (no uniqueness).
@@ -622,8 +638,8 @@ module fpstereo_sgm_core #(
       wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
       wire outside = read_word[DISP_W] || read_x < d;
       wire [X_W-1:0] xm = read_x - d;
-      wire from_row_end = LR == 1 && xm > W - DMAX;
-      wire [DISP_W-1:0] from_end = W - 1 - xm;  // the row-end entry of x'
+      wire from_row_end = LR == 1 && xm > frame_width - DMAX;
+      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
       wire [DISP_W-1:0] match_q;
       wire [UF*DISP_W-1:0] end_q;
       fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) completed (
@@ -658,7 +674,7 @@ module fpstereo_sgm_core #(
       assign checked_event = event_c;
       assign checked_x = x_c;
       assign checked_y = y_c;
-      assign checked_word = (outside_c || difference > LR_THRESHOLD) ? INVALID_WORD : word_c;
+      assign checked_word = (outside_c || difference > lr_threshold) ? INVALID_WORD : word_c;
     end
   endgenerate
 
@@ -703,14 +719,14 @@ module fpstereo_sgm_core #(
           median_y <= centre_y_m;
         end
       wire [MEDIAN-1:0] row_valid_m, col_valid_m;
-      fpstereo_window_bounds #(.SIDE(MEDIAN), .W(W), .H(H), .X_W(X_W), .YS_W(YS_W)) bounds_m (
-        .x(median_x), .y(median_y), .row_valid(row_valid_m), .col_valid(col_valid_m));
+      fpstereo_window_bounds #(.SIDE(MEDIAN), .X_W(X_W), .YS_W(YS_W)) bounds_m (
+        .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid_m), .col_valid(col_valid_m));
       fpstereo_median_select #(.M(MEDIAN), .WORD_W(DISP_W + 1)) select (
         .clk(clk), .en(adv), .window(window), .row_valid(row_valid_m), .col_valid(col_valid_m),
         .median(final_word));
       // The centre's coordinates travel as long as the selection takes.
-      localparam signed [YS_W-1:0] EVENT_ROWS_Y = H + GAP;
-      wire in_image = {1'b0, median_x} < W_X && median_y >= 0 && median_y < EVENT_ROWS_Y;
+      wire signed [YS_W-1:0] event_rows_y = height_y + GAP;
+      wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
       /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
       wire [YS_W-1:0] median_row = median_y;
       /* verilator lint_on UNUSEDSIGNAL */
@@ -751,16 +767,17 @@ module fpstereo_sgm_core #(
       assign out_y = pre_y;
       assign out_word = pre_word;
     end else begin : gap
-      fpstereo_gap_fill #(.W(W), .H(H), .WORD_W(DISP_W + 1), .X_W(X_W), .Y_W(Y_W)) stage (
-        .clk(clk), .rst(restart), .en(adv), .in_event(pre_pending), .in_x(pre_x), .in_y(pre_y), .in_word(pre_word),
+      fpstereo_gap_fill #(.W(W), .WORD_W(DISP_W + 1), .X_W(X_W), .Y_W(Y_W)) stage (
+        .clk(clk), .rst(restart), .en(adv), .width(frame_width), .height(frame_height), .in_event(pre_pending), .in_x(pre_x), .in_y(pre_y), .in_word(pre_word),
         .out_event(out_pending), .out_x(out_x), .out_y(out_y), .out_word(out_word));
     end
   endgenerate
   assign out_due    = out_pending;
   assign out_push   = adv && out_pending;
   assign out_first  = out_x == 0 && out_y == 0;
-  assign out_last   = out_x == W - 1;
-  assign frame_done = out_pending && out_x == W - 1 && out_y == H - 1;
+  assign out_last   = out_x == frame_width - 1;
+  assign frame_done = out_pending && out_last && out_y == frame_height - 1;
+  assign frame_end  = adv && frame_done;
   // verilator lint_on WIDTH
 
   `undef FPS_TAG_ACTIVE

@@ -20,8 +20,6 @@ module fpstereo_window_cost_lanes #(
   parameter COST_MAX = 6375,
   parameter GROUP_W = 2,
   parameter X_W = 11,
-  // image width
-  parameter W = 64,
   // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
@@ -37,6 +35,7 @@ module fpstereo_window_cost_lanes #(
   input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
   input  wire [GROUP_W-1:0]                  group,
   input  wire [X_W-1:0]                      x,
+  input  wire [X_W-1:0]                      width,
   output reg  [UF*COST_W-1:0]                costs
 );
   localparam R = SPAN / 2;
@@ -54,11 +53,11 @@ module fpstereo_window_cost_lanes #(
       wire [D_W-1:0] d = group_base + l[D_W-1:0];
       wire outside = x_wide < d;
       // Window column j (left to right) is view column l + SPAN - 1 - j; it lies inside the
-      // image where 0 <= x - d + (j - R) < W.
+      // image where 0 <= x - d + (j - R) < width.
       wire [SPAN-1:0] column_valid;
       for (j = 0; j < SPAN; j = j + 1) begin : column
         wire [D_W-1:0] position = x_wide + j[D_W-1:0];  // x - d + (j - R) + d + R
-        assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + W[D_W-1:0];
+        assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + {{(D_W-X_W){1'b0}}, width};
       end
 
       // ZSAD: the match window's mean from its column sums.

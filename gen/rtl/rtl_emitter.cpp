@@ -45,9 +45,11 @@ CostKind cost_kind(const StereoConfig& cfg) {
 }
 
 // Modules the top uses, in emission order after the top.
-std::vector<std::string> used_modules(const StereoConfig& cfg) {
-  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_window",
-                                      "fpstereo_window_centre", "fpstereo_window_bounds"};
+std::vector<std::string> used_modules(const RtlDesign& d) {
+  const StereoConfig& cfg = d.cfg;
+  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_video_in"};
+  if (d.options.control) modules.push_back("fpstereo_control");
+  modules.insert(modules.end(), {"fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds"});
   switch (cost_kind(cfg)) {
     case kCensus:
       modules.insert(modules.end(), {"fpstereo_census", "fpstereo_cost_lanes"});
@@ -111,22 +113,46 @@ std::string with_prefix(const std::string& text, const std::string& prefix) {
   return std::regex_replace(text, module_name, prefix + "_$1");
 }
 
+// The ports of the AXI4-Lite control interface (s_axi_ctrl): name, direction, bits.
+struct LitePort {
+  const char* name;
+  bool input;
+  int bits;
+};
+const std::vector<LitePort> kLitePorts = {
+    {"awaddr", true, 8},  {"awvalid", true, 1}, {"awready", false, 1}, {"wdata", true, 32},
+    {"wstrb", true, 4},   {"wvalid", true, 1},  {"wready", false, 1},  {"bresp", false, 2},
+    {"bvalid", false, 1}, {"bready", true, 1},  {"araddr", true, 8},   {"arvalid", true, 1},
+    {"arready", false, 1}, {"rdata", false, 32}, {"rresp", false, 2},  {"rvalid", false, 1},
+    {"rready", true, 1}};
+
+std::string port_line(bool input, int bits, const std::string& name) {
+  const std::string range = bits > 1 ? fmt::format("[{}:0]", bits - 1) : "";
+  return fmt::format("  {} {:<7} {},\n", input ? "input  wire" : "output wire", range, name);
+}
+
 std::string top_module(const RtlDesign& d) {
   const Widths& w = d.widths;
+  const StereoConfig& c = d.cfg;
   std::ostringstream os;
   os << "`resetall\n`default_nettype none\n"
      << "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
      << "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
-     << "// with the invalid flag in bit " << w.disparity << ". Frames are " << d.cfg.width << " x "
-     << d.cfg.height << " pixels; input tuser and tlast are not interpreted yet.\n"
+     << "// with the invalid flag in bit " << w.disparity << ". Frames are at most " << c.width << " x "
+     << c.height << " pixels; fpstereo_video_in checks the input's\n"
+     << "// framing and resynchronises on the next start of frame after an error.\n"
+     << (d.options.control ? "// Settings and status: AXI4-Lite s_axi_ctrl (register map in " + d.prefix + "_regs.h).\n"
+                           : "// The settings are the generated ones (no control interface).\n")
      << "module " << d.prefix << "_top (\n"
      << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:clock:1.0 aclk CLK\" *)\n"
-     << "  (* X_INTERFACE_PARAMETER = \"ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp, "
-        "ASSOCIATED_RESET aresetn\" *)\n"
+     << "  (* X_INTERFACE_PARAMETER = \"ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp"
+     << (d.options.control ? ":s_axi_ctrl" : "") << ", ASSOCIATED_RESET aresetn\" *)\n"
      << "  input  wire        aclk,\n"
      << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:reset:1.0 aresetn RST\" *)\n"
      << "  (* X_INTERFACE_PARAMETER = \"POLARITY ACTIVE_LOW\" *)\n"
      << "  input  wire        aresetn,\n";
+  if (d.options.control)
+    for (const auto& port : kLitePorts) os << port_line(port.input, port.bits, std::string("s_axi_ctrl_") + port.name);
   for (const char* side : {"left", "right"})
     os << fmt::format(
         "  input  wire [7:0]  s_axis_{0}_tdata,\n  input  wire        s_axis_{0}_tvalid,\n"
@@ -139,43 +165,90 @@ std::string top_module(const RtlDesign& d) {
       "  output wire        m_axis_disp_tlast\n);\n",
       d.output_bits - 1);
   os << "  wire rst = !aresetn;\n\n"
-     << "  // Input register slices; the core takes a left and a right pixel together.\n"
-     << "  wire [7:0] left_data, right_data;\n  wire left_valid, right_valid, take;\n";
+     << "  // Input register slices: {tuser, tlast, tdata}.\n";
   for (const char* side : {"left", "right"})
     os << fmt::format(
-        "  wire [1:0] {0}_unused_flags;\n"
+        "  wire [9:0] {0}_beat;\n  wire {0}_valid, {0}_ready;\n"
         "  {1}_axis_skid #(.DATA_W(10)) {0}_slice (\n"
         "    .clk(aclk), .rst(rst),\n"
         "    .s_data({{s_axis_{0}_tuser, s_axis_{0}_tlast, s_axis_{0}_tdata}}), .s_valid(s_axis_{0}_tvalid), "
         ".s_ready(s_axis_{0}_tready),\n"
-        "    .m_data({{{0}_unused_flags, {0}_data}}), .m_valid({0}_valid), .m_ready(take));\n",
+        "    .m_data({0}_beat), .m_valid({0}_valid), .m_ready({0}_ready));\n",
         side, d.prefix);
+  os << fmt::format(
+      "\n  // The frame's settings, fixed while the core runs it.\n"
+      "  wire enable, core_idle, core_start, frame_done;\n"
+      "  wire frame_dropped, frame_truncated, protocol_error;\n"
+      "  wire [{}:0] frame_width;\n  wire [{}:0] frame_height;\n  wire [{}:0] p1, p2;\n"
+      "  wire [6:0] uniqueness;\n  wire [3:0] lr_threshold;\n",
+      d.x_bits - 1, d.y_bits - 1, w.path_cost - 1);
+  if (d.options.control) {
+    // INFO holds 16 words, word 0 in the low bits; the unused ones read 0.
+    auto words = info_words(d);
+    words.resize(16);
+    std::string info;
+    for (size_t i = words.size(); i-- > 0;) info += fmt::format("32'd{}{}", words[i].second, i ? ", " : "");
+    os << fmt::format(
+        "  {}_control #(\n"
+        "    .X_W({}), .Y_W({}), .PATH_W({}), .MIN_WIDTH({}), .MAX_WIDTH({}), .MIN_HEIGHT({}), .MAX_HEIGHT({}),\n"
+        "    .P1_INIT({}), .P2_INIT({}), .P2_MAX({}), .UNIQUENESS_SETTABLE({}), .UNIQUENESS_INIT({}),\n"
+        "    .LR_SETTABLE({}), .LR_THRESHOLD_INIT({}), .VERSION(32'h{:08x}), .CONFIG_ID(32'h{:08x}),\n"
+        "    .INFO({{{}}})\n"
+        "  ) control (\n"
+        "    .clk(aclk), .rst(rst),\n",
+        d.prefix, d.x_bits, d.y_bits, w.path_cost, d.min_width, c.width, d.min_height, c.height, c.p1, c.p2,
+        c.p2, c.uniqueness != 0 ? 1 : 0, c.uniqueness, c.lr != LrCheck::None ? 1 : 0, c.lr_threshold,
+        version_word(), config_id(d), info);
+    for (const auto& port : kLitePorts) os << fmt::format("    .s_axi_{0}(s_axi_ctrl_{0}),\n", port.name);
+    os << "    .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),\n"
+       << "    .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),\n"
+       << "    .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),\n"
+       << "    .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n";
+  } else {
+    os << fmt::format(
+        "  assign enable = 1'b1;\n  assign frame_width = {}'d{};\n  assign frame_height = {}'d{};\n"
+        "  assign p1 = {}'d{};\n  assign p2 = {}'d{};\n  assign uniqueness = 7'd{};\n  assign lr_threshold = 4'd{};\n"
+        "  // Without a control interface there is nothing to count into.\n"
+        "  wire unused_events = &{{1'b0, frame_done, frame_dropped, frame_truncated, protocol_error}};\n",
+        d.x_bits, c.width, d.y_bits, c.height, w.path_cost, c.p1, w.path_cost, c.p2, c.uniqueness,
+        c.lr_threshold);
+  }
+  os << fmt::format(
+      "\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n"
+      "  wire core_valid, take;\n  wire [7:0] core_left, core_right;\n"
+      "  {}_video_in #(.X_W({}), .Y_W({})) framing (\n"
+      "    .clk(aclk), .rst(rst), .enable(enable),\n"
+      "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
+      "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
+      "    .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),\n"
+      "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
+      "    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n",
+      d.prefix, d.x_bits, d.y_bits);
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
      << fmt::format("  wire [{}:0] out_word;\n", w.disparity);
   os << fmt::format(
       "  {}_sgm_core #(\n"
-      "    .W({}), .H({}), .ROW_SLOTS({}), .K({}), .SLEN({}), .G({}), .UF({}), .DMAX({}),\n"
+      "    .W({}), .ROW_SLOTS({}), .K({}), .SLEN({}), .G({}), .UF({}), .DMAX({}),\n"
       "    .COST_KIND({}), .N({}), .CODE_W({}), .SHD_K({}), .COST_W({}), .COST_MAX({}), .COST_LAT({}),\n"
       "    .COLSUM_W({}), .MEAN_MUL({}), .MEAN_SHIFT({}),\n"
-      "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .P1({}), .P2({}), .LR({}), .LR_THRESHOLD({}),\n"
-      "    .UNIQUENESS({}), .MEDIAN({}), .GAP({}),\n"
+      "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .LR({}), .UNIQUENESS({}), .MEDIAN({}), .GAP({}),\n"
       "    .PATHS({}),\n"
       "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .MATCH_START({}), "
       ".OUT_START({}),\n"
       "    .X_W({}), .Y_W({}), .G_W({}), .K_W({}), .LANE_W({}), .STEP_W({})\n"
       "  ) core (\n"
-      "    .clk(aclk), .rst(rst),\n"
-      "    .in_valid(left_valid && right_valid), .in_left(left_data), .in_right(right_data), "
-      ".in_take(take),\n"
+      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle),\n"
+      "    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),\n"
+      "    .lr_threshold(lr_threshold),\n"
+      "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
       "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
-      "    .out_last(out_last));\n",
-      d.prefix, d.cfg.width, d.cfg.height, d.row_slots, d.chains, d.segment, d.groups, d.cfg.uf, d.cfg.dmax,
-      int(cost_kind(d.cfg)), d.cfg.window, std::max(1, w.code), d.cfg.shd_window, w.cost, w.cost_max,
-      d.cost_latency, d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost, w.aggregated, w.disparity,
-      d.cfg.p1, d.cfg.p2, int(d.cfg.lr), d.cfg.lr_threshold, d.cfg.uniqueness, d.cfg.median,
-      d.cfg.gap_interpolation ? 1 : 0, d.cfg.paths, d.levels_per_stage, d.path_tree_latency,
-      d.wta_tree_latency, d.agg_start, d.match_start, d.out_start, d.x_bits, d.y_bits, d.group_bits,
-      d.chain_bits, d.lane_bits, d.step_bits);
+      "    .out_last(out_last), .frame_end(frame_done));\n",
+      d.prefix, c.width, d.row_slots, d.chains, d.segment, d.groups, c.uf, c.dmax,
+      int(cost_kind(c)), c.window, std::max(1, w.code), c.shd_window, w.cost, w.cost_max, d.cost_latency,
+      d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost, w.aggregated, w.disparity, int(c.lr),
+      c.uniqueness != 0 ? 1 : 0, c.median, c.gap_interpolation ? 1 : 0, c.paths, d.levels_per_stage,
+      d.path_tree_latency, d.wta_tree_latency, d.agg_start, d.match_start, d.out_start, d.x_bits, d.y_bits,
+      d.group_bits, d.chain_bits, d.lane_bits, d.step_bits);
   const int pad = d.output_bits - w.output_word;
   os << "\n  // Output register slice.\n"
      << fmt::format("  {}_axis_skid #(.DATA_W({})) disp_slice (\n", d.prefix, d.output_bits + 2)
@@ -191,10 +264,14 @@ std::string top_module(const RtlDesign& d) {
 
 }  // namespace
 
-RtlDesign plan(const StereoConfig& cfg) {
+RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
   RtlDesign d;
   d.cfg = cfg;
+  d.options = options;
+  // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate).
+  d.min_width = std::max(8, cfg.dmax);
+  d.min_height = 4;
   d.widths = derive_widths(cfg);
   d.prefix = config_tag(cfg);
   d.window_radius = cfg.window / 2;
@@ -235,7 +312,8 @@ RtlDesign plan(const StereoConfig& cfg) {
     return d.out_start + ((y + rm) * R + x + rm) * G + G + (lr != 0 ? 1 : 0) +
            (cfg.median ? 2 + d.widths.output_word : 0) + (cfg.gap_interpolation ? R * G + 3 : 0);
   };
-  d.cycles_per_frame = push_step(cfg.width - 1, cfg.height - 1) + 1;
+  // One more cycle: the core is idle for a cycle between frames, while the next one starts.
+  d.cycles_per_frame = push_step(cfg.width - 1, cfg.height - 1) + 2;
   d.first_output_latency = push_step(0, 0) - (G - 1);  // the first input is taken in step G - 1
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
@@ -251,7 +329,7 @@ RtlDesign plan(const StereoConfig& cfg) {
 std::vector<EmittedFile> emit(const RtlDesign& design) {
   const std::string head = banner(design);
   std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + top_module(design)}};
-  for (const auto& module : used_modules(design.cfg)) {
+  for (const auto& module : used_modules(design)) {
     const std::string renamed = with_prefix(module, design.prefix);
     files.push_back({renamed + ".v", head + with_prefix(templates().at(module), design.prefix)});
   }

@@ -11,9 +11,15 @@
 
 namespace fpstereo::rtl {
 
+// Choices of the generated design that are not part of the stereo configuration.
+struct RtlOptions {
+  bool control = true;  // AXI4-Lite control and status (otherwise the settings are fixed)
+};
+
 // Everything the emitted Verilog is parameterised with (docs/architecture.md).
 struct RtlDesign {
   StereoConfig cfg;
+  RtlOptions options;
   Widths widths;
   std::string prefix;       // module name prefix, unique per configuration
   int window_radius = 0;    // r
@@ -32,15 +38,34 @@ struct RtlDesign {
   int64_t agg_start = 0;
   int64_t match_start = 0;
   int64_t out_start = 0;
-  int64_t cycles_per_frame = 0;      // steps from a frame's first step to its last output, plus one
+  int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls
   int64_t latency_cycles = 0;        // cycles_per_frame - W * H * G
   int64_t first_output_latency = 0;  // cycles from the first input pixel to the first output pixel
   int output_bits = 0;               // tdata width of m_axis_disp (8 or 16)
+  // the range of the run-time image size (the configured size is the largest)
+  int min_width = 0, min_height = 0;
   int x_bits = 0, y_bits = 0, group_bits = 0, chain_bits = 0, lane_bits = 0, step_bits = 0;
 };
 
 // Throws ConfigError if the configuration is invalid.
-RtlDesign plan(const StereoConfig& cfg);
+RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options = {});
+
+// The AXI4-Lite registers (fpstereo_control): byte offset, name, access and meaning, in address
+// order. The generated C header and the README's register map are printed from it.
+struct Register {
+  uint32_t offset;
+  std::string name;
+  bool writable;
+  std::string meaning;
+};
+std::vector<Register> register_map(const RtlDesign& design);
+// The read-only words at 0x40 (INFO) with their names, as the design reports them.
+std::vector<std::pair<std::string, uint32_t>> info_words(const RtlDesign& design);
+// VERSION and CONFIG_ID as the design reports them.
+uint32_t version_word();
+uint32_t config_id(const RtlDesign& design);
+// <prefix>_regs.h: the register map as C constants for the software that drives the core.
+std::string emit_register_header(const RtlDesign& design);
 
 struct EmittedFile {
   std::string name;  // file name, e.g. "<prefix>_top.v"

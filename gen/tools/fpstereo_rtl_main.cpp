@@ -1,7 +1,8 @@
 // fpstereo-rtl: emit the Verilog of a configuration.
 //   fpstereo-rtl --dmax 128 --uf 32 > top.v       one self-contained file
-//   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json and the
-//                                                  Vivado files (constraints/README.md)
+//   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json, the
+//                                                  register map <prefix>_regs.h and the Vivado files
+//                                                  (constraints/README.md)
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +38,7 @@ void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& 
   }
   write_file(dir / "filelist.f", filelist);
   for (const auto& file : vivado) write_file(dir / file.name, file.text);
+  if (design.options.control) write_file(dir / (design.prefix + "_regs.h"), rtl::emit_register_header(design));
   nlohmann::ordered_json config;
   for (const auto& spec : param_specs()) config[spec.name] = spec.get(design.cfg);
   write_file(dir / "config.json", config.dump(2) + "\n");
@@ -53,12 +55,17 @@ int main(int argc, char** argv) {
   std::string out_dir;
   app.add_option("-o,--output-dir", out_dir,
                  "write one file per module, filelist.f, config.json and the Vivado files here");
+  rtl::RtlOptions options;
+  bool no_axi_lite = false;
+  app.add_flag("--no-axi-lite", no_axi_lite,
+               "no AXI4-Lite control interface: the settings are the generated ones, nothing is counted");
   double clock_mhz = 300;
   app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
       ->capture_default_str();
   try {
     app.parse(argc, argv);
-    const rtl::RtlDesign design = rtl::plan(flags.resolve());
+    options.control = !no_axi_lite;
+    const rtl::RtlDesign design = rtl::plan(flags.resolve(), options);
     if (out_dir.empty())
       std::cout << rtl::emit_single_file(design);
     else

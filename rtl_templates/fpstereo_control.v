@@ -1,0 +1,193 @@
+`resetall
+`default_nettype none
+// AXI4-Lite control and status (register map: the generated <prefix>_regs.h and the README).
+// Settings are written any time and take effect when the next frame starts: frame_start copies
+// them to the frame_* outputs, which hold for the whole frame. A write of a value out of range, of
+// a read-only register or with partial byte strobes changes nothing, answers SLVERR and is
+// counted. One transaction of each kind at a time; unmapped addresses read 0.
+module fpstereo_control #(
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter PATH_W = 8,
+  // ranges and reset values of the settings
+  parameter MIN_WIDTH = 16,
+  parameter MAX_WIDTH = 64,
+  parameter MIN_HEIGHT = 4,
+  parameter MAX_HEIGHT = 16,
+  parameter P1_INIT = 7,
+  parameter P2_INIT = 86,
+  parameter P2_MAX = 86,
+  // uniqueness and the LR threshold are settings only where the design has them
+  parameter UNIQUENESS_SETTABLE = 0,
+  parameter UNIQUENESS_INIT = 0,
+  parameter LR_SETTABLE = 0,
+  parameter LR_THRESHOLD_INIT = 1,
+  // read-only words: version, configuration id, and 16 words of generated parameters at 0x40
+  parameter [31:0] VERSION = 32'h0,
+  parameter [31:0] CONFIG_ID = 32'h0,
+  parameter [16*32-1:0] INFO = {16*32{1'b0}}
+) (
+  input  wire              clk,
+  input  wire              rst,
+  input  wire [7:0]        s_axi_awaddr,
+  input  wire              s_axi_awvalid,
+  output wire              s_axi_awready,
+  input  wire [31:0]       s_axi_wdata,
+  input  wire [3:0]        s_axi_wstrb,
+  input  wire              s_axi_wvalid,
+  output wire              s_axi_wready,
+  output reg  [1:0]        s_axi_bresp,
+  output reg               s_axi_bvalid,
+  input  wire              s_axi_bready,
+  input  wire [7:0]        s_axi_araddr,
+  input  wire              s_axi_arvalid,
+  output wire              s_axi_arready,
+  output reg  [31:0]       s_axi_rdata,
+  output wire [1:0]        s_axi_rresp,
+  output reg               s_axi_rvalid,
+  input  wire              s_axi_rready,
+  // the core's side
+  output wire              enable,
+  input  wire              busy,
+  input  wire              frame_start,
+  output reg  [X_W-1:0]    frame_width,
+  output reg  [Y_W-1:0]    frame_height,
+  output reg  [PATH_W-1:0] frame_p1,
+  output reg  [PATH_W-1:0] frame_p2,
+  output reg  [6:0]        frame_uniqueness,
+  output reg  [3:0]        frame_lr_threshold,
+  // event pulses
+  input  wire              frame_done,
+  input  wire              frame_dropped,
+  input  wire              frame_truncated,
+  input  wire              protocol_error
+);
+  localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
+                   A_P1 = 8'h10, A_P2 = 8'h14, A_UNIQUENESS = 8'h18, A_LR_THRESHOLD = 8'h1C,
+                   A_WIDTH = 8'h20, A_HEIGHT = 8'h24, A_REJECTED = 8'h28, A_FRAMES_DONE = 8'h30,
+                   A_FRAMES_DROPPED = 8'h34, A_FRAMES_TRUNCATED = 8'h38, A_PROTOCOL_ERRORS = 8'h3C,
+                   A_INFO = 8'h40;
+  localparam [31:0] MIN_WIDTH_V = MIN_WIDTH, MAX_WIDTH_V = MAX_WIDTH, MIN_HEIGHT_V = MIN_HEIGHT,
+                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX;
+
+  reg             enable_q;
+  reg [X_W-1:0]   width_q;
+  reg [Y_W-1:0]   height_q;
+  reg [PATH_W-1:0] p1_q, p2_q;
+  reg [6:0]       uniqueness_q;
+  reg [3:0]       lr_threshold_q;
+  reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
+  assign enable = enable_q;
+
+  // ---- Writes: address and data together, one response at a time.
+  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid;
+  assign s_axi_awready = write;
+  assign s_axi_wready = write;
+  wire [31:0] v = s_axi_wdata;
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  reg accepted;
+  always @* begin
+    case (s_axi_awaddr)
+      A_CONTROL:      accepted = 1'b1;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
+      A_P2:           accepted = v <= P2_MAX_V && v >= p1_now;
+      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && v <= 32'd99;
+      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && v <= 32'd15;
+      A_WIDTH:        accepted = v >= MIN_WIDTH_V && v <= MAX_WIDTH_V;
+      A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
+      default:        accepted = 1'b0;
+    endcase
+    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+  end
+
+  always @(posedge clk)
+    if (rst) begin
+      s_axi_bvalid <= 1'b0;
+      enable_q <= 1'b1;
+      width_q <= MAX_WIDTH[X_W-1:0];
+      height_q <= MAX_HEIGHT[Y_W-1:0];
+      p1_q <= P1_INIT[PATH_W-1:0];
+      p2_q <= P2_INIT[PATH_W-1:0];
+      uniqueness_q <= UNIQUENESS_INIT[6:0];
+      lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
+    end else if (write) begin
+      s_axi_bvalid <= 1'b1;
+      s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
+      if (accepted)
+        case (s_axi_awaddr)
+          A_CONTROL:      enable_q <= v[0];
+          A_P1:           p1_q <= v[PATH_W-1:0];
+          A_P2:           p2_q <= v[PATH_W-1:0];
+          A_UNIQUENESS:   uniqueness_q <= v[6:0];
+          A_LR_THRESHOLD: lr_threshold_q <= v[3:0];
+          A_WIDTH:        width_q <= v[X_W-1:0];
+          A_HEIGHT:       height_q <= v[Y_W-1:0];
+          default:        ;
+        endcase
+    end else if (s_axi_bready) s_axi_bvalid <= 1'b0;
+
+  // ---- The frame's settings.
+  always @(posedge clk)
+    if (rst || frame_start) begin
+      frame_width <= rst ? MAX_WIDTH[X_W-1:0] : width_q;
+      frame_height <= rst ? MAX_HEIGHT[Y_W-1:0] : height_q;
+      frame_p1 <= rst ? P1_INIT[PATH_W-1:0] : p1_q;
+      frame_p2 <= rst ? P2_INIT[PATH_W-1:0] : p2_q;
+      frame_uniqueness <= rst ? UNIQUENESS_INIT[6:0] : uniqueness_q;
+      frame_lr_threshold <= rst ? LR_THRESHOLD_INIT[3:0] : lr_threshold_q;
+    end
+
+  // ---- Counters (wrap at 2^32).
+  always @(posedge clk)
+    if (rst) begin
+      rejected <= 0;
+      frames_done <= 0;
+      frames_dropped <= 0;
+      frames_truncated <= 0;
+      protocol_errors <= 0;
+    end else begin
+      if (write && !accepted) rejected <= rejected + 1'b1;
+      if (frame_done) frames_done <= frames_done + 1'b1;
+      if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
+      if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;
+      if (protocol_error) protocol_errors <= protocol_errors + 1'b1;
+    end
+
+  // ---- Reads: one at a time, always OKAY.
+  wire read = s_axi_arvalid && !s_axi_rvalid;
+  assign s_axi_arready = read;
+  assign s_axi_rresp = 2'b00;
+  reg [31:0] read_word;
+  always @* begin
+    read_word = 32'd0;
+    case (s_axi_araddr)
+      A_CONTROL:          read_word = {31'd0, enable_q};
+      A_STATUS:           read_word = {31'd0, busy};
+      A_VERSION:          read_word = VERSION;
+      A_CONFIG_ID:        read_word = CONFIG_ID;
+      A_P1:               read_word = p1_now;
+      A_P2:               read_word = p2_now;
+      A_UNIQUENESS:       read_word = {25'd0, uniqueness_q};
+      A_LR_THRESHOLD:     read_word = {28'd0, lr_threshold_q};
+      A_WIDTH:            read_word = {{(32-X_W){1'b0}}, width_q};
+      A_HEIGHT:           read_word = {{(32-Y_W){1'b0}}, height_q};
+      A_REJECTED:         read_word = rejected;
+      A_FRAMES_DONE:      read_word = frames_done;
+      A_FRAMES_DROPPED:   read_word = frames_dropped;
+      A_FRAMES_TRUNCATED: read_word = frames_truncated;
+      A_PROTOCOL_ERRORS:  read_word = protocol_errors;
+      default:
+        if (s_axi_araddr[7:6] == A_INFO[7:6] && s_axi_araddr[1:0] == 2'b00)
+          read_word = INFO[s_axi_araddr[5:2]*32 +: 32];
+    endcase
+  end
+  always @(posedge clk)
+    if (rst) s_axi_rvalid <= 1'b0;
+    else if (read) begin
+      s_axi_rvalid <= 1'b1;
+      s_axi_rdata <= read_word;
+    end else if (s_axi_rready) s_axi_rvalid <= 1'b0;
+endmodule
+`resetall

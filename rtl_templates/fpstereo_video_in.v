@@ -1,0 +1,109 @@
+`resetall
+`default_nettype none
+// Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
+// the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
+// tlast on each row's last.
+//   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
+//         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
+//   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
+//         not ends the frame early: it is left for SEEK (it may start the next frame).
+//   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
+//         frame is complete and well-formed and nothing waits for input that will not come.
+// Every event is a one-cycle pulse for the status counters. Skipped data counts as one
+// protocol error per stretch, unless it follows an error already counted or a dropped frame.
+module fpstereo_video_in #(
+  parameter X_W = 7,
+  parameter Y_W = 6
+) (
+  input  wire           clk,
+  input  wire           rst,
+  // new frames are taken while high, skipped (and counted as dropped) while low
+  input  wire           enable,
+  // the streams after their register slices: {tuser, tlast, tdata}
+  input  wire [9:0]     left,
+  input  wire           left_valid,
+  output wire           left_ready,
+  input  wire [9:0]     right,
+  input  wire           right_valid,
+  output wire           right_ready,
+  // the core: a frame begins with core_start while the core is idle; its size holds from the
+  // next cycle until the frame is done
+  input  wire           core_idle,
+  output wire           core_start,
+  input  wire [X_W-1:0] frame_width,
+  input  wire [Y_W-1:0] frame_height,
+  output wire           in_valid,
+  output wire [7:0]     in_left,
+  output wire [7:0]     in_right,
+  input  wire           in_take,
+  // events
+  output wire           frame_dropped,
+  output wire           frame_truncated,
+  output wire           protocol_error
+);
+  localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
+  reg [1:0]     state;
+  reg           quiet;  // skipped data is already accounted for
+  reg [X_W-1:0] x;
+  reg [Y_W-1:0] y;
+
+  wire left_user = left[9], left_last = left[8];
+  wire right_user = right[9], right_last = right[8];
+  wire both = left_valid && right_valid;
+  wire row_end = x == frame_width - 1'b1;
+  wire frame_end = row_end && y == frame_height - 1'b1;
+  wire first = x == 0 && y == 0;
+  wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
+
+  // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
+  wire starts = both && left_user && right_user;
+  wire skip_left = state == SEEK && left_valid && !left_user;
+  wire skip_right = state == SEEK && right_valid && !right_user;
+  assign core_start = state == SEEK && starts && core_idle && enable;
+  wire drop = state == SEEK && starts && core_idle && !enable;
+
+  // RUN and PAD: the core's pixel stream.
+  wire fault = state == RUN && both && !flags_match;
+  wire passing = state == RUN && both && flags_match;
+  assign in_valid = passing || state == PAD;
+  assign in_left = passing ? left[7:0] : 8'd0;
+  assign in_right = passing ? right[7:0] : 8'd0;
+  wire pass_take = passing && in_take;
+  assign left_ready = skip_left || drop || pass_take;
+  assign right_ready = skip_right || drop || pass_take;
+
+  assign frame_dropped = drop;
+  assign frame_truncated = fault;
+  assign protocol_error = ((skip_left || skip_right) && !quiet) || fault;
+
+  always @(posedge clk)
+    if (rst) begin
+      state <= SEEK;
+      quiet <= 1'b0;
+    end else begin
+      case (state)
+        SEEK:
+          if (core_start) begin
+            state <= RUN;
+            quiet <= 1'b0;
+          end else if (drop || skip_left || skip_right) quiet <= 1'b1;
+        RUN:
+          if (fault) begin
+            state <= PAD;
+            quiet <= 1'b1;
+          end else if (in_take && frame_end) state <= SEEK;
+        default:  // PAD
+          if (in_take && frame_end) state <= SEEK;
+      endcase
+    end
+
+  always @(posedge clk)
+    if (rst || core_start) begin
+      x <= 0;
+      y <= 0;
+    end else if (in_take) begin
+      x <= row_end ? {X_W{1'b0}} : x + 1'b1;
+      if (row_end) y <= y + 1'b1;
+    end
+endmodule
+`resetall
