@@ -5,6 +5,9 @@
 // tlast on each row's last.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
+//         If one stream skipped at least half a frame's rows more than the other, the other's
+//         frame is the counterpart of what was skipped (a start of frame missing or repeated on
+//         one stream only) and is skipped as well, so that the streams pair up again.
 //   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
 //         not ends the frame early: it is left for SEEK (it may start the next frame).
 //   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
@@ -56,11 +59,17 @@ module fpstereo_video_in #(
   wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
 
   // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
-  wire starts = both && left_user && right_user;
+  wire starts = state == SEEK && both && left_user && right_user;
   wire skip_left = state == SEEK && left_valid && !left_user;
   wire skip_right = state == SEEK && right_valid && !right_user;
-  assign core_start = state == SEEK && starts && core_idle && enable;
-  wire drop = state == SEEK && starts && core_idle && !enable;
+  // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
+  wire left_stale = left_rows + half <= right_rows;
+  wire right_stale = right_rows + half <= left_rows;
+  wire aligned = !left_stale && !right_stale;
+  assign core_start = starts && aligned && core_idle && enable;
+  wire drop = starts && aligned && core_idle && !enable;
 
   // RUN and PAD: the core's pixel stream.
   wire fault = state == RUN && both && !flags_match;
@@ -69,8 +78,8 @@ module fpstereo_video_in #(
   assign in_left = passing ? left[7:0] : 8'd0;
   assign in_right = passing ? right[7:0] : 8'd0;
   wire pass_take = passing && in_take;
-  assign left_ready = skip_left || drop || pass_take;
-  assign right_ready = skip_right || drop || pass_take;
+  assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
+  assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
 
   assign frame_dropped = drop;
   assign frame_truncated = fault;
@@ -95,6 +104,16 @@ module fpstereo_video_in #(
         default:  // PAD
           if (in_take && frame_end) state <= SEEK;
       endcase
+    end
+
+  localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
+  always @(posedge clk)
+    if (rst || core_start || drop) begin
+      left_rows <= 0;
+      right_rows <= 0;
+    end else begin
+      if (skip_left && left_last && left_rows != ROWS_MAX) left_rows <= left_rows + 1'b1;
+      if (skip_right && right_last && right_rows != ROWS_MAX) right_rows <= right_rows + 1'b1;
     end
 
   always @(posedge clk)

@@ -16,42 +16,39 @@ namespace {
 constexpr int kResetCycles = 16;
 constexpr size_t kKeptProtocolErrors = 10;
 
-// One input stream: the frames' pixels back to back in raster order. Once it offers a pixel it
-// holds it until the design takes it (AXI4-Stream: no tvalid withdrawn, no data changed).
-// While tvalid is low the data lines carry the inverse of the next pixel, so that a design
-// sampling them without a handshake shows up as mismatches.
+// One input stream: a list of beats. Once it offers a beat it holds it until the design takes it
+// (AXI4-Stream: no tvalid withdrawn, no data changed). While tvalid is low the data lines carry
+// the inverse of the next pixel, so that a design sampling them without a handshake shows up as
+// mismatches.
 class AxisSource {
  public:
-  AxisSource(std::vector<const GrayImage*> frames, int width, int height)
-      : frames_(std::move(frames)), width_(width), frame_pixels_(size_t(width) * size_t(height)) {}
+  explicit AxisSource(const std::vector<Beat>& beats) : beats_(beats) {}
 
   void drive(CData& tdata, CData& tvalid, CData& tuser, CData& tlast) const {
     tvalid = valid_;
-    if (next_ >= total()) return;
-    const size_t p = next_ % frame_pixels_;
-    const uint8_t pixel = frames_[next_ / frame_pixels_]->pixels[p];
-    tdata = valid_ ? pixel : uint8_t(~pixel);
-    tuser = p == 0;
-    tlast = p % size_t(width_) == size_t(width_ - 1);
+    if (next_ >= beats_.size()) return;
+    const Beat& b = beats_[next_];
+    tdata = valid_ ? b.data : uint8_t(~b.data);
+    tuser = b.user;
+    tlast = b.last;
   }
 
-  // After a rising edge: moves past a taken pixel; a pending pixel stays offered, otherwise the
-  // next one is offered unless the source withholds it this cycle.
-  void advance(bool taken, bool withhold) {
+  // After a rising edge: moves past a taken beat; a pending beat stays offered, otherwise the
+  // next one is offered unless the source withholds it this cycle or it lies at or beyond
+  // `hold_from`.
+  void advance(bool taken, bool withhold, size_t hold_from) {
     if (taken) ++next_;
     if (valid_ && !taken) return;
-    valid_ = next_ < total() && !withhold;
+    valid_ = next_ < beats_.size() && !withhold && next_ < hold_from;
   }
 
   bool valid() const { return valid_; }
-  bool withholding() const { return !valid_ && next_ < total(); }
+  bool withholding() const { return !valid_ && next_ < beats_.size(); }
   size_t taken() const { return next_; }
-  size_t total() const { return frames_.size() * frame_pixels_; }
+  size_t total() const { return beats_.size(); }
 
  private:
-  std::vector<const GrayImage*> frames_;
-  int width_;
-  size_t frame_pixels_;
+  const std::vector<Beat>& beats_;
   size_t next_ = 0;
   bool valid_ = false;
 };
@@ -62,17 +59,14 @@ struct OutputBeat {
   bool operator==(const OutputBeat& o) const { return data == o.data && user == o.user && last == o.last; }
 };
 
-// Watches m_axis_disp at every rising edge: collects the pixels into frames and checks the
-// stream rules (stable while stalled, tuser on each frame's first pixel, tlast at each row end,
-// nothing beyond the expected pixel count).
+// Watches m_axis_disp at every rising edge: collects the pixels into frames of the expected
+// sizes and checks the stream rules (stable while stalled, tuser on each frame's first pixel,
+// tlast at each row end, nothing beyond the expected frames).
 class OutputMonitor {
  public:
-  OutputMonitor(int width, int height, size_t frames, StreamRun& run)
-      : width_(width),
-        height_(height),
-        total_(frames * size_t(width) * size_t(height)),
-        run_(run),
-        frame_(width, height) {}
+  OutputMonitor(const std::vector<std::pair<int, int>>& sizes, StreamRun& run) : sizes_(sizes), run_(run) {
+    start_frame();
+  }
 
   void observe(uint64_t cycle, bool valid, bool ready, const OutputBeat& beat) {
     check_stall(cycle, valid, beat);
@@ -80,10 +74,26 @@ class OutputMonitor {
     if (valid && ready) take(cycle, beat);
   }
 
-  bool done() const { return received_ >= total_; }
+  // The design was reset: a frame in progress will not be completed.
+  void reset() {
+    stalled_.reset();
+    received_ -= in_frame_;
+    in_frame_ = 0;
+  }
+
+  bool done() const { return run_.outputs.size() >= sizes_.size(); }
   size_t received() const { return received_; }
+  size_t expected() const {
+    size_t total = 0;
+    for (const auto& [w, h] : sizes_) total += size_t(w) * size_t(h);
+    return total;
+  }
 
  private:
+  void start_frame() {
+    if (!done()) frame_ = DisparityImage(sizes_[run_.outputs.size()].first, sizes_[run_.outputs.size()].second);
+  }
+
   void check_stall(uint64_t cycle, bool valid, const OutputBeat& beat) {
     if (!stalled_ || (valid && beat == *stalled_)) return;
     if (!valid) {
@@ -99,16 +109,15 @@ class OutputMonitor {
 
   void take(uint64_t cycle, const OutputBeat& beat) {
     if (done()) {
-      run_.protocol.add(
-          fmt::format("cycle {}: output beyond the expected {} pixels (tdata {})", cycle, total_, beat.data));
+      run_.protocol.add(fmt::format("cycle {}: output beyond the expected {} frames (tdata {})", cycle,
+                                    sizes_.size(), beat.data));
       return;
     }
-    const size_t frame_pixels = size_t(width_) * size_t(height_);
-    const size_t frame = received_ / frame_pixels;
-    const int x = int(received_ % frame_pixels % size_t(width_));
-    const int y = int(received_ % frame_pixels / size_t(width_));
+    const size_t frame = run_.outputs.size();
+    const int x = int(in_frame_ % size_t(frame_.width));
+    const int y = int(in_frame_ / size_t(frame_.width));
     const bool first = x == 0 && y == 0;
-    const bool row_end = x == width_ - 1;
+    const bool row_end = x == frame_.width - 1;
     if (beat.user != first)
       run_.protocol.add(fmt::format("cycle {}: frame {} ({}, {}): tuser {}, expected {}", cycle, frame, x, y,
                                     int(beat.user), int(first)));
@@ -116,16 +125,19 @@ class OutputMonitor {
       run_.protocol.add(fmt::format("cycle {}: frame {} ({}, {}): tlast {}, expected {}", cycle, frame, x, y,
                                     int(beat.last), int(row_end)));
     frame_.at(x, y) = beat.data;
-    if (++received_ % frame_pixels == 0) {
+    ++received_;
+    if (++in_frame_ == frame_.pixels.size()) {
       run_.outputs.push_back(frame_);
       run_.frame_end_cycle.push_back(cycle);
+      in_frame_ = 0;
+      start_frame();
     }
   }
 
-  int width_, height_;
-  size_t total_;
+  const std::vector<std::pair<int, int>>& sizes_;
   StreamRun& run_;
-  DisparityImage frame_;
+  DisparityImage frame_{1, 1};
+  size_t in_frame_ = 0;  // pixels of the current frame received
   size_t received_ = 0;
   std::optional<OutputBeat> stalled_;  // the beat offered without tready at the previous edge
 };
@@ -147,23 +159,101 @@ void ProtocolErrors::add(const std::string& message) {
 
 int output_port_bits() { return int(8 * sizeof(std::declval<Vdut&>().m_axis_disp_tdata)); }
 
-StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoPair*>& frames,
-                        const StreamSettings& settings) {
+#ifdef FPSTEREO_TB_CONTROL
+bool has_control() { return true; }
+#else
+bool has_control() { return false; }
+#endif
+
+namespace {
+
+// AXI4-Lite master: one access at a time, from a queue; address and data of a write are offered
+// together, each held until its ready.
+class LiteMaster {
+ public:
+  void queue(const RegisterAccess& access) { pending_.push_back(access); }
+  bool idle() const { return pending_.empty() && !active_; }
+
+  void drive(Vdut& dut) {
+    if (!active_ && !pending_.empty()) {
+      current_ = pending_.front();
+      pending_.erase(pending_.begin());
+      active_ = true;
+      address_sent_ = data_sent_ = false;
+    }
+#ifdef FPSTEREO_TB_CONTROL
+    const bool write = active_ && current_.write, read = active_ && !current_.write;
+    dut.s_axi_ctrl_awvalid = write && !address_sent_;
+    dut.s_axi_ctrl_awaddr = current_.offset;
+    dut.s_axi_ctrl_wvalid = write && !data_sent_;
+    dut.s_axi_ctrl_wdata = current_.value;
+    dut.s_axi_ctrl_wstrb = 0xF;
+    dut.s_axi_ctrl_bready = 1;
+    dut.s_axi_ctrl_arvalid = read && !address_sent_;
+    dut.s_axi_ctrl_araddr = current_.offset;
+    dut.s_axi_ctrl_rready = 1;
+#else
+    (void)dut;
+#endif
+  }
+
+  // Before the rising edge: the handshakes that happen at it.
+  void sample(const Vdut& dut, std::vector<RegisterAccess>& log) {
+#ifdef FPSTEREO_TB_CONTROL
+    if (!active_) return;
+    if (current_.write) {
+      address_sent_ |= dut.s_axi_ctrl_awvalid && dut.s_axi_ctrl_awready;
+      data_sent_ |= dut.s_axi_ctrl_wvalid && dut.s_axi_ctrl_wready;
+      if (dut.s_axi_ctrl_bvalid) finish(dut.s_axi_ctrl_bresp, current_.value, log);
+    } else {
+      address_sent_ |= dut.s_axi_ctrl_arvalid && dut.s_axi_ctrl_arready;
+      if (dut.s_axi_ctrl_rvalid) finish(dut.s_axi_ctrl_rresp, dut.s_axi_ctrl_rdata, log);
+    }
+#else
+    (void)dut;
+    (void)log;
+#endif
+  }
+
+  void reset() {
+    active_ = false;
+    pending_.clear();
+  }
+
+ private:
+  void finish(uint8_t response, uint32_t value, std::vector<RegisterAccess>& log) {
+    current_.response = response;
+    current_.value = value;
+    log.push_back(current_);
+    active_ = false;
+  }
+
+  std::vector<RegisterAccess> pending_;
+  RegisterAccess current_;
+  bool active_ = false, address_sent_ = false, data_sent_ = false;
+};
+
+}  // namespace
+
+std::vector<Beat> frame_beats(const GrayImage& image) {
+  std::vector<Beat> beats;
+  beats.reserve(image.pixels.size());
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      beats.push_back({image.at(x, y), x == 0 && y == 0, x == image.width - 1});
+  return beats;
+}
+
+StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSettings& settings) {
   auto context = std::make_unique<VerilatedContext>();
   context->randReset(settings.random_init ? 2 : 0);
   context->randSeed(int(settings.seed));
   auto dut = std::make_unique<Vdut>(context.get(), "dut");
 
-  std::vector<const GrayImage*> lefts, rights;
-  for (const StereoPair* pair : frames) {
-    lefts.push_back(&pair->left);
-    rights.push_back(&pair->right);
-  }
-  AxisSource left(lefts, cfg.width, cfg.height);
-  AxisSource right(rights, cfg.width, cfg.height);
+  AxisSource left(plan.left), right(plan.right);
   StreamRun run;
-  OutputMonitor monitor(cfg.width, cfg.height, frames.size(), run);
-  const size_t expected_pixels = left.total();
+  OutputMonitor monitor(plan.output_sizes, run);
+  LiteMaster lite;
 
   std::mt19937 rng(settings.seed);
   std::uniform_real_distribution<double> chance(0.0, 1.0);
@@ -176,30 +266,62 @@ StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoP
     dut->eval();
     context->timeInc(1);
   };
+  auto reset = [&] {
+    dut->aresetn = 0;
+    lite.reset();
+    lite.drive(*dut);
+    for (int i = 0; i < kResetCycles; ++i) {
+      half_cycle(false);
+      half_cycle(true);
+    }
+    dut->aresetn = 1;
+  };
 
-  dut->aresetn = 0;
   dut->s_axis_left_tvalid = dut->s_axis_right_tvalid = 0;
   dut->m_axis_disp_tready = 0;
-  for (int i = 0; i < kResetCycles; ++i) {
-    half_cycle(false);
-    half_cycle(true);
-  }
-  dut->aresetn = 1;
-  left.advance(false, withhold());
-  right.advance(false, withhold());
+  reset();
+  constexpr size_t kNoHold = std::numeric_limits<size_t>::max();
+  size_t hold_from = kNoHold;
+  bool releasing = false;
+  left.advance(false, withhold(), hold_from);
+  right.advance(false, withhold(), hold_from);
   bool ready = sink_ready();
 
   // Once every pixel is out, keep watching long enough for a spurious extra row to show.
   const uint64_t drain_cycles = 2 * uint64_t(cfg.width) * uint64_t(cfg.dmax / cfg.uf) + 100;
+  size_t next_action = 0;
+  bool reads_queued = false;
   bool seen_input = false;
   uint64_t last_progress = 0;  // cycle of the last output handshake (or reset)
   uint64_t cycle = 0;
   for (;; ++cycle) {
+    // Actions due: the left stream has had enough beats taken.
+    while (next_action < plan.actions.size() && left.taken() >= plan.actions[next_action].after_taken) {
+      const Action& action = plan.actions[next_action++];
+      if (action.reset) {
+        reset();
+        monitor.reset();
+        last_progress = cycle;
+      }
+      for (const auto& access : action.writes) lite.queue(access);
+      if (action.hold_from != kNoHold) hold_from = action.hold_from;
+      releasing |= action.release;
+    }
+    if (releasing && lite.idle()) {
+      hold_from = kNoHold;
+      releasing = false;
+    }
+    if (monitor.done() && !reads_queued) {
+      for (uint32_t offset : plan.reads_at_end) lite.queue({offset, 0, false});
+      reads_queued = true;
+    }
+
     left.drive(dut->s_axis_left_tdata, dut->s_axis_left_tvalid, dut->s_axis_left_tuser,
                dut->s_axis_left_tlast);
     right.drive(dut->s_axis_right_tdata, dut->s_axis_right_tvalid, dut->s_axis_right_tuser,
                 dut->s_axis_right_tlast);
     dut->m_axis_disp_tready = ready;
+    lite.drive(*dut);
     half_cycle(false);
 
     const bool left_taken = left.valid() && dut->s_axis_left_tready;
@@ -215,16 +337,18 @@ StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoP
     monitor.observe(
         cycle, output_valid, ready,
         {uint16_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
+    lite.sample(*dut, run.accesses);
     half_cycle(true);
 
     if (output_valid && ready) last_progress = cycle;
-    if (monitor.done() && cycle >= run.frame_end_cycle.back() + drain_cycles) break;
-    if (!monitor.done() && cycle - last_progress >= settings.timeout) {
-      run.timeout = timeout_message(cycle - last_progress, monitor, expected_pixels, left, right);
+    const bool finished = monitor.done() && lite.idle() && next_action == plan.actions.size();
+    if (finished && cycle >= (run.frame_end_cycle.empty() ? 0 : run.frame_end_cycle.back()) + drain_cycles) break;
+    if (!finished && cycle - last_progress >= settings.timeout) {
+      run.timeout = timeout_message(cycle - last_progress, monitor, monitor.expected(), left, right);
       break;
     }
-    left.advance(left_taken, withhold());
-    right.advance(right_taken, withhold());
+    left.advance(left_taken, withhold(), hold_from);
+    right.advance(right_taken, withhold(), hold_from);
     ready = sink_ready();
   }
   run.cycles = cycle + 1;

@@ -1,9 +1,10 @@
 // Streams stereo frames through the Verilated design over its AXI4-Stream ports, with random
-// idle cycles on the sources and backpressure on the sink, and records what comes out and every
-// violation of the output protocol.
+// idle cycles on the sources and backpressure on the sink, drives its AXI4-Lite registers, and
+// records what comes out and every violation of the output protocol.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,43 @@ struct StreamSettings {
   uint64_t timeout = 0;     // cycles without an output handshake before giving up
   uint32_t seed = 1;        // idle and backpressure patterns, the design's initial state
   bool random_init = true;  // registers and memories start random rather than 0
+};
+
+// One input beat: tdata, tuser (start of frame), tlast (end of row).
+struct Beat {
+  uint8_t data = 0;
+  bool user = false, last = false;
+};
+
+// The beats of frames in the Xilinx video convention, back to back, one stream of a pair.
+std::vector<Beat> frame_beats(const GrayImage& image);
+
+struct RegisterAccess {
+  uint32_t offset = 0;
+  uint32_t value = 0;  // written, or read
+  bool write = true;
+  uint8_t response = 0;  // BRESP / RRESP
+};
+
+// What happens once the left stream has had `after_taken` beats taken: a reset (aresetn low for
+// a few cycles) and register writes. An action can make the sources hold back every beat from
+// index `hold_from` on, until an action with `release` has completed its writes.
+struct Action {
+  size_t after_taken = 0;
+  std::vector<RegisterAccess> writes;
+  bool reset = false;
+  size_t hold_from = std::numeric_limits<size_t>::max();
+  bool release = false;
+};
+
+struct StreamPlan {
+  std::vector<Beat> left, right;
+  // The output frames expected, in order: their sizes. An output frame cut short by a reset
+  // is dropped and not counted.
+  std::vector<std::pair<int, int>> output_sizes;
+  std::vector<Action> actions;
+  // Registers read once every output has arrived (needs the AXI4-Lite interface).
+  std::vector<uint32_t> reads_at_end;
 };
 
 struct ProtocolErrors {
@@ -37,17 +75,18 @@ struct StreamRun {
   uint64_t left_idle_while_ready = 0;
   uint64_t right_idle_while_ready = 0;
   uint64_t output_held = 0;
+  std::vector<RegisterAccess> accesses;  // every register access, in order, with its result
   ProtocolErrors protocol;
   std::string timeout;  // empty unless the design stopped producing output
 };
 
 // Width of the design's m_axis_disp_tdata as Verilator stores it: 8 or 16 (or more) bits.
 int output_port_bits();
+// Whether the design has the AXI4-Lite control interface.
+bool has_control();
 
-// Resets the design, then streams `frames` back to back on both inputs (cfg.width x
-// cfg.height each, tuser on a frame's first pixel, tlast at each row end) until every output
-// pixel has arrived and a drain period has shown no extra output, or until the timeout.
-StreamRun stream_frames(const StereoConfig& cfg, const std::vector<const StereoPair*>& frames,
-                        const StreamSettings& settings);
+// Resets the design, then runs the plan until every expected output pixel has arrived, the
+// reads at the end are done and a drain period has shown no extra output, or until the timeout.
+StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSettings& settings);
 
 }  // namespace fpstereo::tb

@@ -1,14 +1,18 @@
 // fpstereo-tb: streams stereo pairs through the Verilated pipeline and checks every output pixel
-// against the golden model, the output stream's protocol, and the throughput.
+// against the golden model, the output stream's protocol, the throughput and the status registers.
 //
-// Two runs, each from reset: a throughput run (2 frames, no idle cycles, no backpressure) that
-// measures latency and cycles per frame, then the checked run with the requested idle and
-// backpressure probabilities. Every frame of both runs is compared pixel for pixel.
+// Runs, each from reset: a throughput run (2 frames, no idle cycles, no backpressure) that
+// measures latency and cycles per frame and tries writes the control interface must refuse;
+// the checked run with the requested idle and backpressure probabilities and run-time settings
+// (--set, written during frame 0, in effect from frame 1); then one run per framing fault
+// (--fault). Every frame a fault does not truncate is compared pixel for pixel.
 // Exit status: 0 pass, 1 mismatch or protocol error, 2 bad input, 3 timeout.
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <map>
+#include <optional>
 #include <random>
 
 #include "compare.hpp"
@@ -22,6 +26,13 @@
 #ifndef FPSTEREO_TB_CONFIG_FILE
 #error "FPSTEREO_TB_CONFIG_FILE must name the config.json the RTL was generated with"
 #endif
+#ifdef FPSTEREO_TB_CONTROL
+// The register map as the generator emitted it: <prefix>_regs.h, names <PREFIX>_<REGISTER>.
+#include FPSTEREO_TB_REGS_HEADER
+#define FPS_JOIN2(a, b) a##_##b
+#define FPS_JOIN(a, b) FPS_JOIN2(a, b)
+#define FPS_REG(name) FPS_JOIN(FPSTEREO_TB_REG_PREFIX, name)
+#endif
 
 namespace fpstereo::tb {
 namespace {
@@ -29,6 +40,11 @@ namespace {
 constexpr const char* kTool = "fpstereo-tb";
 constexpr int kExitFail = 1;
 constexpr int kExitTimeout = 3;
+
+// The framing faults --fault injects into the second of four frames (docs/architecture.md,
+// "Robust video input", says how the design answers each).
+const std::vector<std::string> kFaults = {"early-eol", "late-eol",   "missing-sof", "repeated-sof",
+                                          "short-frame", "long-frame", "reset",      "disable"};
 
 struct Options {
   std::string left, right;
@@ -42,6 +58,9 @@ struct Options {
   double backpressure = 0.5;
   uint64_t timeout = 0;  // 0: derived from the configuration
   bool zero_init = false;
+  std::vector<std::string> settings;  // --set name=value
+  std::vector<std::string> faults;
+  std::string fault_stream = "both";
 };
 
 StereoConfig load_tb_config() {
@@ -51,29 +70,106 @@ StereoConfig load_tb_config() {
   return cfg;
 }
 
-// The design takes frames of exactly the configured size: an image file must have it, or be
-// at least that large with --crop (which takes the top-left region).
-GrayImage load_input(const std::string& path, const std::string& role, const StereoConfig& cfg, bool crop) {
+// ---- Run-time settings (--set): each is a register and the configuration field it stands for.
+struct Setting {
+  const char* name;
+  uint32_t offset;
+  int StereoConfig::*field;
+};
+
+std::vector<Setting> settings_table() {
+#ifdef FPSTEREO_TB_CONTROL
+  return {{"p1", FPS_REG(P1), &StereoConfig::p1},
+          {"p2", FPS_REG(P2), &StereoConfig::p2},
+          {"uniqueness", FPS_REG(UNIQUENESS), &StereoConfig::uniqueness},
+          {"lr-threshold", FPS_REG(LR_THRESHOLD), &StereoConfig::lr_threshold},
+          {"width", FPS_REG(WIDTH), &StereoConfig::width},
+          {"height", FPS_REG(HEIGHT), &StereoConfig::height}};
+#else
+  return {};
+#endif
+}
+
+// The register writes of --set, in an order that keeps P1 <= P2 throughout, and the
+// configuration the golden model runs with after them. Throws InputError for what the design
+// cannot take.
+std::pair<std::vector<RegisterAccess>, StereoConfig> parse_settings(const std::vector<std::string>& items,
+                                                                    const StereoConfig& cfg) {
+  if (!items.empty() && !has_control())
+    throw InputError("--set needs the AXI4-Lite control interface (the design was generated with --no-axi-lite)");
+  StereoConfig after = cfg;
+  std::map<std::string, uint32_t> values;
+  const auto table = settings_table();
+  for (const auto& item : items) {
+    const auto eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    const auto it = std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
+    if (eq == std::string::npos || it == table.end())
+      throw InputError(fmt::format("--set '{}': expected NAME=VALUE with NAME one of p1, p2, uniqueness, "
+                                   "lr-threshold, width, height",
+                                   item));
+    int value = 0;
+    try {
+      size_t used = 0;
+      value = std::stoi(item.substr(eq + 1), &used);
+      if (used != item.size() - eq - 1) throw std::invalid_argument("trailing text");
+    } catch (const std::exception&) {
+      throw InputError(fmt::format("--set '{}': the value is not an integer", item));
+    }
+    after.*(it->field) = value;
+    values[name] = uint32_t(value);
+  }
+  try {
+    validate(after);
+  } catch (const ConfigError& e) {
+    throw InputError(fmt::format("--set: the settings are not a valid configuration: {}", e.what()));
+  }
+  if (after.width > cfg.width || after.height > cfg.height)
+    throw InputError(fmt::format("--set: the design takes frames up to {}x{}", cfg.width, cfg.height));
+  if (after.p2 > cfg.p2) throw InputError(fmt::format("--set: p2 is at most {} in this design", cfg.p2));
+  if (values.count("uniqueness") && cfg.uniqueness == 0)
+    throw InputError("--set uniqueness: the design was generated without the uniqueness check");
+  if (values.count("lr-threshold") && cfg.lr == LrCheck::None)
+    throw InputError("--set lr-threshold: the design was generated without a left-right check");
+  // Lowering P2 below the current P1 needs P1 first; otherwise P2 goes first.
+  std::vector<std::string> order = {"width", "height", "uniqueness", "lr-threshold"};
+  if (after.p2 < cfg.p1)
+    order.insert(order.begin(), {"p1", "p2"});
+  else
+    order.insert(order.begin(), {"p2", "p1"});
+  std::vector<RegisterAccess> writes;
+  for (const auto& name : order)
+    if (values.count(name)) {
+      const auto it = std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
+      writes.push_back({it->offset, values[name], true});
+    }
+  return {writes, after};
+}
+
+// The design takes frames of at most the configured size: an image file must have the frame's
+// size, or be at least that large with --crop (which takes the top-left region).
+GrayImage load_input(const std::string& path, const std::string& role, int width, int height, bool crop) {
   GrayImage img = load_gray(path, role);
-  const bool exact = img.width == cfg.width && img.height == cfg.height;
-  const bool croppable = img.width >= cfg.width && img.height >= cfg.height;
-  if (exact || (crop && croppable)) return crop_top_left(img, cfg.width, cfg.height);
-  throw InputError(fmt::format("{} '{}' is {}x{}, the design takes {}x{} frames{}", role, path, img.width,
-                               img.height, cfg.width, cfg.height,
+  const bool exact = img.width == width && img.height == height;
+  const bool croppable = img.width >= width && img.height >= height;
+  if (exact || (crop && croppable)) return crop_top_left(img, width, height);
+  throw InputError(fmt::format("{} '{}' is {}x{}, the frames are {}x{}{}", role, path, img.width, img.height,
+                               width, height,
                                crop ? "" : " (--crop takes the top-left region of a larger image)"));
 }
 
-// The distinct pairs to stream; frame i uses pair i % size. Generated inputs give every frame
-// its own pair (at least two, so that the throughput run streams two different ones).
-std::vector<StereoPair> make_pairs(const Options& opt, const StereoConfig& cfg) {
+// The distinct pairs of a frame size; frame i uses pair i % size. Generated inputs give every
+// frame its own pair (at least four, so that the throughput run and a fault run stream
+// different ones).
+std::vector<StereoPair> make_pairs(const Options& opt, int width, int height, uint32_t seed) {
   if (!opt.left.empty())
-    return {{load_input(opt.left, "left image", cfg, opt.crop),
-             load_input(opt.right, "right image", cfg, opt.crop)}};
-  std::mt19937 rng(opt.seed);
+    return {{load_input(opt.left, "left image", width, height, opt.crop),
+             load_input(opt.right, "right image", width, height, opt.crop)}};
+  std::mt19937 rng(seed);
   std::vector<StereoPair> pairs;
-  for (int i = 0; i < std::max(opt.frames, 2); ++i)
-    pairs.push_back(opt.shift >= 0 ? shifted_pair(cfg.width, cfg.height, opt.shift, opt.levels, rng)
-                                   : random_pair(cfg.width, cfg.height, opt.levels, rng));
+  for (int i = 0; i < std::max(opt.frames, 4); ++i)
+    pairs.push_back(opt.shift >= 0 ? shifted_pair(width, height, opt.shift, opt.levels, rng)
+                                   : random_pair(width, height, opt.levels, rng));
   return pairs;
 }
 
@@ -85,37 +181,244 @@ std::string describe_input(const Options& opt) {
   return fmt::format("{}, {} gray levels, seed {}", kind, opt.levels, opt.seed);
 }
 
+// ---- A run: what goes in, and what must come out.
+struct Run {
+  std::string title;
+  StreamPlan plan;
+  std::vector<std::optional<DisparityImage>> expected;  // per output frame; none: not compared
+  std::vector<std::pair<uint32_t, uint32_t>> registers;  // (offset, value) expected at the end
+  std::vector<std::string> register_names;
+};
+
+void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
+  const auto left = frame_beats(pair.left), right = frame_beats(pair.right);
+  run.plan.left.insert(run.plan.left.end(), left.begin(), left.end());
+  run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
+  run.plan.output_sizes.push_back({cfg.width, cfg.height});
+  run.expected.push_back(run_golden(cfg, pair.left, pair.right));
+}
+
+void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_t value) {
+  run.plan.reads_at_end.push_back(offset);
+  run.registers.push_back({offset, value});
+  run.register_names.push_back(name);
+}
+
+// The status counters a run must end with (a reset in the run clears them).
+void expect_counters(Run& run, uint32_t done, uint32_t dropped, uint32_t truncated, uint32_t errors,
+                     uint32_t rejected) {
+#ifdef FPSTEREO_TB_CONTROL
+  expect_register(run, "FRAMES_DONE", FPS_REG(FRAMES_DONE), done);
+  expect_register(run, "FRAMES_DROPPED", FPS_REG(FRAMES_DROPPED), dropped);
+  expect_register(run, "FRAMES_TRUNCATED", FPS_REG(FRAMES_TRUNCATED), truncated);
+  expect_register(run, "PROTOCOL_ERRORS", FPS_REG(PROTOCOL_ERRORS), errors);
+  expect_register(run, "REJECTED_WRITES", FPS_REG(REJECTED_WRITES), rejected);
+#else
+  (void)run, (void)done, (void)dropped, (void)truncated, (void)errors, (void)rejected;
+#endif
+}
+
+// Two clean frames. With the control interface, also writes the design must refuse (out of
+// range, breaking P1 <= P2, read-only), and reads of what the design says it is.
+Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs) {
+  Run run{"throughput run, no idle, no backpressure"};
+  add_frame(run, pairs[0], cfg);
+  add_frame(run, pairs[1 % pairs.size()], cfg);
+  uint32_t refused = 0;
+#ifdef FPSTEREO_TB_CONTROL
+  const std::vector<RegisterAccess> bad = {{FPS_REG(WIDTH), uint32_t(cfg.width) + 1},
+                                           {FPS_REG(HEIGHT), 0},
+                                           {FPS_REG(P1), uint32_t(cfg.p2) + 1},
+                                           {FPS_REG(P2), uint32_t(cfg.p2) + 1},
+                                           {FPS_REG(STATUS), 1},
+                                           {FPS_REG(FRAMES_DONE), 0}};
+  run.plan.actions.push_back({0, bad});
+  refused = uint32_t(bad.size());
+  expect_register(run, "VERSION", FPS_REG(VERSION), FPS_REG(VERSION_VALUE));
+  expect_register(run, "CONFIG_ID", FPS_REG(CONFIG_ID), FPS_REG(CONFIG_ID_VALUE));
+  expect_register(run, "MAX_WIDTH", FPS_REG(MAX_WIDTH), FPS_REG(MAX_WIDTH_VALUE));
+  expect_register(run, "MAX_HEIGHT", FPS_REG(MAX_HEIGHT), FPS_REG(MAX_HEIGHT_VALUE));
+  expect_register(run, "DMAX", FPS_REG(DMAX), uint32_t(cfg.dmax));
+  expect_register(run, "UF", FPS_REG(UF), uint32_t(cfg.uf));
+  expect_register(run, "CYCLES_PER_FRAME", FPS_REG(CYCLES_PER_FRAME), FPS_REG(CYCLES_PER_FRAME_VALUE));
+  expect_register(run, "WIDTH", FPS_REG(WIDTH), uint32_t(cfg.width));
+  expect_register(run, "P2", FPS_REG(P2), uint32_t(cfg.p2));
+#endif
+  expect_counters(run, 2, 0, 0, 0, refused);
+  return run;
+}
+
+// `frames` frames; settings written during frame 0 hold from frame 1 on.
+Run checked_run(const Options& opt, const StereoConfig& cfg, const std::vector<StereoPair>& pairs,
+                const std::vector<RegisterAccess>& writes, const StereoConfig& after,
+                const std::vector<StereoPair>& pairs_after) {
+  Run run{fmt::format("checked run, idle {}, backpressure {}", opt.idle, opt.backpressure)};
+  for (int i = 0; i < opt.frames; ++i) {
+    const bool changed = i > 0 && !writes.empty();
+    const auto& source = changed ? pairs_after : pairs;
+    add_frame(run, source[size_t(i) % source.size()], changed ? after : cfg);
+  }
+  if (!writes.empty()) {
+    run.title += ", settings from frame 1:";
+    for (const auto& item : opt.settings) run.title += " " + item;
+    run.plan.actions.push_back({1, writes});
+  }
+  expect_counters(run, uint32_t(opt.frames), 0, 0, 0, 0);
+  return run;
+}
+
+// Four frames A F B C, the fault in F (on one or both streams).
+Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& cfg,
+              const std::vector<StereoPair>& pairs) {
+  const bool in_beats = fault != "reset" && fault != "disable";
+  Run run{fmt::format("fault run: {}{}, idle {}, backpressure {}", fault,
+                      in_beats ? " on " + opt.fault_stream + (opt.fault_stream == "both" ? " streams" : " stream") : "",
+                      opt.idle, opt.backpressure)};
+  const int w = cfg.width, h = cfg.height;
+  const size_t frame = size_t(w) * size_t(h);
+  const auto& pa = pairs[0 % pairs.size()];
+  const auto& pf = pairs[1 % pairs.size()];
+  const auto& pb = pairs[2 % pairs.size()];
+  const auto& pc = pairs[3 % pairs.size()];
+  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right);
+
+  add_frame(run, pa, cfg);
+  // F, and what the design makes of it: output frames (checked or not) and counter deltas.
+  auto inject = [&](std::vector<Beat> beats) {
+    const size_t middle_row = size_t(h / 2) * size_t(w);
+    if (fault == "early-eol") {  // row h/2 ends 3 pixels early
+      beats.erase(beats.begin() + long(middle_row + w - 3), beats.begin() + long(middle_row + w));
+      beats[middle_row + w - 4].last = true;
+    } else if (fault == "late-eol") {  // row h/2 runs 3 pixels long
+      beats[middle_row + w - 1].last = false;
+      std::vector<Beat> extra(3, Beat{0x5a, false, false});
+      extra.back().last = true;
+      beats.insert(beats.begin() + long(middle_row + w), extra.begin(), extra.end());
+    } else if (fault == "missing-sof") {
+      beats[0].user = false;
+    } else if (fault == "repeated-sof") {  // a second start of frame at row h/2
+      beats[middle_row].user = true;
+    } else if (fault == "short-frame") {  // two rows missing
+      beats.resize(frame - 2 * size_t(w));
+    } else if (fault == "long-frame") {  // two rows too many
+      for (size_t i = 0; i < 2 * size_t(w); ++i) beats.push_back(beats[frame - 2 * size_t(w) + i]);
+    }
+    return beats;
+  };
+  auto left_f = frame_beats(pf.left), right_f = frame_beats(pf.right);
+  if (opt.fault_stream != "right") left_f = inject(left_f);
+  if (opt.fault_stream != "left") right_f = inject(right_f);
+  const size_t a_beats = run.plan.left.size();
+  run.plan.left.insert(run.plan.left.end(), left_f.begin(), left_f.end());
+  run.plan.right.insert(run.plan.right.end(), right_f.begin(), right_f.end());
+  const size_t f_beats = left_f.size();
+
+  // Output frames from F, and the counters at the end (docs/architecture.md).
+  uint32_t done = 4, dropped = 0, truncated = 0, errors = 0;
+  auto unchecked = [&](int count) {
+    for (int i = 0; i < count; ++i) {
+      run.plan.output_sizes.push_back({w, h});
+      run.expected.push_back(std::nullopt);
+    }
+  };
+  if (fault == "early-eol" || fault == "late-eol" || fault == "short-frame") {
+    unchecked(1);
+    truncated = errors = 1;
+  } else if (fault == "repeated-sof" && opt.fault_stream == "both") {
+    unchecked(2);  // F up to the second start, then from it to B's start
+    done = 5;
+    truncated = errors = 2;
+  } else if (fault == "repeated-sof") {
+    // On one stream: F is truncated there; the other stream skips the rest of F, half a frame,
+    // so the second start's frame is skipped as its counterpart.
+    unchecked(1);
+    truncated = errors = 1;
+  } else if (fault == "missing-sof") {
+    done = 3;
+    errors = 1;
+  } else if (fault == "long-frame") {
+    run.plan.output_sizes.push_back({w, h});
+    run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
+    errors = 1;
+  } else if (fault == "reset") {
+    // aresetn in the middle of F: its output is cut short, the counters start again, the rest
+    // of F is skipped (one error), B and C follow.
+    run.plan.actions.push_back({a_beats + f_beats / 2, {}, true});
+    done = 2;
+    errors = 1;
+  } else if (fault == "disable") {
+    // CONTROL.enable = 0 during A; F is skipped; enable = 1 before B is offered.
+#ifdef FPSTEREO_TB_CONTROL
+    run.plan.actions.push_back({1, {{FPS_REG(CONTROL), 0}}, false, a_beats + f_beats});
+    run.plan.actions.push_back({a_beats + f_beats, {{FPS_REG(CONTROL), 1}}, false, a_beats + f_beats, true});
+#endif
+    done = 3;
+    dropped = 1;
+  }
+  add_frame(run, pb, cfg);
+  add_frame(run, pc, cfg);
+  expect_counters(run, done, dropped, truncated, errors, 0);
+  return run;
+}
+
 struct Totals {
   size_t frames = 0;
   size_t mismatches = 0;
   size_t protocol_errors = 0;
+  size_t register_errors = 0;
 };
 
-// Streams the frames, compares each output frame with the golden words of its pair and prints
-// the result per frame and the protocol errors. Returns the run for its cycle counts.
-StreamRun check_run(const std::string& title, const StereoConfig& cfg, const std::vector<StereoPair>& pairs,
-                    const std::vector<DisparityImage>& expected, int frames, const StreamSettings& settings,
-                    Totals& totals) {
-  std::vector<const StereoPair*> stream;
-  for (int i = 0; i < frames; ++i) stream.push_back(&pairs[size_t(i) % pairs.size()]);
+// Streams the run, compares each output frame with its golden words, the register accesses with
+// what they must return, and prints the result per frame and the protocol errors.
+StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSettings& settings, Totals& totals) {
   const auto start = std::chrono::steady_clock::now();
-  const StreamRun run = stream_frames(cfg, stream, settings);
+  const StreamRun run = stream(cfg, run_spec.plan, settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string span = run.frame_end_cycle.size() == size_t(frames)
+  const size_t frames = run_spec.plan.output_sizes.size();
+  const std::string span = run.frame_end_cycle.size() == frames && frames > 0
                                ? fmt::format("{} cycles from the first input to the last output handshake",
                                              run.frame_end_cycle.back() - run.first_input_cycle + 1)
                                : "incomplete";
-  fmt::print("{} ({} frames): {} ({} cycles simulated in {:.2f} s, {:.0f} kcycles/s)\n", title, frames, span,
-             run.cycles, seconds, run.cycles / seconds / 1e3);
+  fmt::print("{} ({} output frames): {} ({} cycles simulated in {:.2f} s, {:.0f} kcycles/s)\n", run_spec.title,
+             frames, span, run.cycles, seconds, run.cycles / seconds / 1e3);
   for (size_t i = 0; i < run.outputs.size(); ++i) {
-    const Comparison c = compare_words(expected[i % pairs.size()], run.outputs[i]);
+    if (!run_spec.expected[i]) {
+      fmt::print("frame {}: truncated by the fault, framing checked only\n", i);
+      continue;
+    }
+    const Comparison c = compare_words(*run_spec.expected[i], run.outputs[i]);
     fmt::print("frame {}: {}\n", i, c.report());
-    totals.mismatches += c.mismatches;
+    totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
     ++totals.frames;
   }
   if (settings.idle > 0 || settings.backpressure > 0)
     fmt::print("stalls: left idle while tready {} cycles, right {}; output held by backpressure {} cycles\n",
                run.left_idle_while_ready, run.right_idle_while_ready, run.output_held);
+  // Writes answer OKAY unless the run meant them to be refused (the reads at the end follow
+  // every write); reads return what the run expects.
+  size_t reads = 0;
+  std::string register_report;
+  for (const auto& access : run.accesses) {
+    if (access.write) continue;
+    if (reads < run_spec.registers.size()) {
+      const auto& [offset, value] = run_spec.registers[reads];
+      if (access.offset != offset || access.value != value || access.response != 0) {
+        register_report += fmt::format(" {}={} (expected {})", run_spec.register_names[reads], access.value, value);
+        ++totals.register_errors;
+      } else {
+        register_report += fmt::format(" {}={}", run_spec.register_names[reads], access.value);
+      }
+    }
+    ++reads;
+  }
+  if (reads != run_spec.registers.size()) {
+    register_report += fmt::format(" ({} of {} reads done)", reads, run_spec.registers.size());
+    ++totals.register_errors;
+  }
+  if (!run_spec.registers.empty()) fmt::print("registers:{}\n", register_report);
+  size_t refused = 0;
+  for (const auto& access : run.accesses) refused += access.write && access.response != 0;
+  if (refused) fmt::print("writes refused (SLVERR): {}\n", refused);
   fmt::print("protocol errors: {}\n", run.protocol.count);
   for (const auto& e : run.protocol.first) fmt::print("  {}\n", e);
   if (run.protocol.count > run.protocol.first.size()) fmt::print("  ...\n");
@@ -141,21 +444,28 @@ void print_throughput(const StreamRun& run, const StereoConfig& cfg) {
 
 int run_bench(const Options& opt) {
   const StereoConfig cfg = load_tb_config();
-  const std::vector<StereoPair> pairs = make_pairs(opt, cfg);
   const Widths widths = derive_widths(cfg);
   const int port_bits = widths.output_word <= 8 ? 8 : 16;
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
-  fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits\n", cfg.width, cfg.height,
-             to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf, paths_to_string(cfg.paths),
-             widths.output_word);
+  fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,
+             cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf, paths_to_string(cfg.paths),
+             widths.output_word, has_control() ? "AXI4-Lite" : "none");
   if (output_port_bits() != port_bits) {
     fmt::print("FAIL: m_axis_disp_tdata is held in {} bits, the contract asks for {} (output word {} bits)\n",
                output_port_bits(), port_bits, widths.output_word);
     return kExitFail;
   }
-
-  std::vector<DisparityImage> expected;
-  for (const auto& pair : pairs) expected.push_back(run_golden(cfg, pair.left, pair.right));
+  std::vector<std::string> faults = opt.faults;
+  if (std::find(faults.begin(), faults.end(), "all") != faults.end()) {
+    faults = kFaults;
+    if (!has_control()) faults.pop_back();  // "disable" needs the control interface
+  }
+  if (std::find(faults.begin(), faults.end(), "disable") != faults.end() && !has_control())
+    throw InputError("--fault disable needs the AXI4-Lite control interface");
+  const auto [writes, after] = parse_settings(opt.settings, cfg);
+  const std::vector<StereoPair> pairs = make_pairs(opt, cfg.width, cfg.height, opt.seed);
+  const std::vector<StereoPair> pairs_after =
+      writes.empty() ? pairs : make_pairs(opt, after.width, after.height, opt.seed + 7);
   fmt::print("input: {}\n", describe_input(opt));
 
   StreamSettings settings;
@@ -164,31 +474,33 @@ int run_bench(const Options& opt) {
   settings.random_init = !opt.zero_init;
 
   Totals totals;
-  const StreamRun measured =
-      check_run("throughput run, no idle, no backpressure", cfg, pairs, expected, 2, settings, totals);
+  const StreamRun measured = check_run(throughput_run(cfg, pairs), cfg, settings, totals);
   if (!measured.timeout.empty()) {
     fmt::print("{}\n", measured.timeout);
     return kExitTimeout;
   }
   print_throughput(measured, cfg);
 
-  // With neither idle cycles nor backpressure, up to two frames repeat the throughput run.
-  if (opt.idle > 0 || opt.backpressure > 0 || opt.frames > 2) {
-    settings.idle = opt.idle;
-    settings.backpressure = opt.backpressure;
-    settings.seed = opt.seed + 1;
-    const std::string title =
-        fmt::format("checked run, idle {}, backpressure {}", opt.idle, opt.backpressure);
-    const StreamRun checked = check_run(title, cfg, pairs, expected, opt.frames, settings, totals);
+  // With neither idle cycles nor backpressure, up to two plain frames repeat the throughput run.
+  std::vector<Run> runs;
+  if (opt.idle > 0 || opt.backpressure > 0 || opt.frames > 2 || !writes.empty())
+    runs.push_back(checked_run(opt, cfg, pairs, writes, after, pairs_after));
+  for (const auto& fault : faults) runs.push_back(fault_run(fault, opt, cfg, pairs));
+  settings.idle = opt.idle;
+  settings.backpressure = opt.backpressure;
+  for (const auto& run : runs) {
+    ++settings.seed;
+    const StreamRun checked = check_run(run, cfg, settings, totals);
     if (!checked.timeout.empty()) {
       fmt::print("{}\n", checked.timeout);
       return kExitTimeout;
     }
   }
 
-  const bool pass = totals.mismatches == 0 && totals.protocol_errors == 0;
-  fmt::print("{}: {} frames, {} mismatching pixels, {} protocol errors\n", pass ? "PASS" : "FAIL",
-             totals.frames, totals.mismatches, totals.protocol_errors);
+  const bool pass = totals.mismatches == 0 && totals.protocol_errors == 0 && totals.register_errors == 0;
+  fmt::print("{}: {} frames compared, {} mismatching pixels, {} protocol errors, {} register errors\n",
+             pass ? "PASS" : "FAIL", totals.frames, totals.mismatches, totals.protocol_errors,
+             totals.register_errors);
   return pass ? 0 : kExitFail;
 }
 
@@ -227,6 +539,25 @@ int main(int argc, char** argv) {
                  "cycles without an output handshake before giving up [20 * W*H*dmax/uf + 100000]")
       ->check(CLI::Range(uint64_t(1), uint64_t(1) << 48));
   app.add_flag("--zero-init", opt.zero_init, "start registers and memories at 0 instead of random values");
+  app.add_option("--set", opt.settings,
+                 "run-time setting NAME=VALUE written over AXI4-Lite during frame 0 of the checked run, in effect "
+                 "from frame 1 (p1, p2, uniqueness, lr-threshold, width, height; repeatable)")
+      ->delimiter(',');
+  std::vector<std::string> fault_names = kFaults;
+  fault_names.push_back("all");
+  auto* fault = app.add_option("--fault", opt.faults,
+                               "a run of four frames with a framing fault in the second, per fault given: " +
+                                   [&] {
+                                     std::string all;
+                                     for (const auto& f : fault_names) all += (all.empty() ? "" : ", ") + f;
+                                     return all;
+                                   }())
+                    ->delimiter(',')
+                    ->check(CLI::IsMember(fault_names));
+  app.add_option("--fault-stream", opt.fault_stream, "the stream(s) the fault is injected into")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"both", "left", "right"}))
+      ->needs(fault);
   left->needs(right);
   right->needs(left);
   crop->needs(left);
