@@ -64,7 +64,7 @@ module fpstereo_control #(
 );
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
                    A_P1 = 8'h10, A_P2 = 8'h14, A_UNIQUENESS = 8'h18, A_LR_THRESHOLD = 8'h1C,
-                   A_WIDTH = 8'h20, A_HEIGHT = 8'h24, A_REJECTED = 8'h28, A_FRAMES_DONE = 8'h30,
+                   A_WIDTH = 8'h20, A_HEIGHT = 8'h24, A_REJECTED_WRITES = 8'h28, A_FRAMES_DONE = 8'h30,
                    A_FRAMES_DROPPED = 8'h34, A_FRAMES_TRUNCATED = 8'h38, A_PROTOCOL_ERRORS = 8'h3C,
                    A_INFO = 8'h40;
   localparam [31:0] MIN_WIDTH_V = MIN_WIDTH, MAX_WIDTH_V = MAX_WIDTH, MIN_HEIGHT_V = MIN_HEIGHT,
@@ -173,7 +173,7 @@ module fpstereo_control #(
       A_LR_THRESHOLD:     read_word = {28'd0, lr_threshold_q};
       A_WIDTH:            read_word = {{(32-X_W){1'b0}}, width_q};
       A_HEIGHT:           read_word = {{(32-Y_W){1'b0}}, height_q};
-      A_REJECTED:         read_word = rejected;
+      A_REJECTED_WRITES:  read_word = rejected;
       A_FRAMES_DONE:      read_word = frames_done;
       A_FRAMES_DROPPED:   read_word = frames_dropped;
       A_FRAMES_TRUNCATED: read_word = frames_truncated;

@@ -1,6 +1,6 @@
 // The Vivado integration files (gen/rtl/vivado_emitter): each names the generated top, the stream
-// ports listed in the XDC and the packaging script are exactly the ones the top declares (with the
-// directions it declares), every Verilog file is packaged, the clock period and the part are the
+// and control ports listed in the XDC and the packaging script are exactly the ones the top
+// declares (with the directions it declares), every Verilog file is packaged, the clock period and the part are the
 // requested ones, and nothing belongs to another configuration. Tcl syntax is checked separately
 // with tclsh (tcl_syntax.cmake); nothing here runs Vivado.
 #include <fmt/core.h>
@@ -39,8 +39,10 @@ struct Generated {
   std::string xdc, package_ip, block_design;
 };
 
-Generated generate(const StereoConfig& cfg, double clock_mhz = 300) {
-  Generated g{rtl::plan(cfg), {}, {}, "", "", ""};
+Generated generate(const StereoConfig& cfg, double clock_mhz = 300, bool control = true) {
+  rtl::RtlOptions options;
+  options.control = control;
+  Generated g{rtl::plan(cfg, options), {}, {}, "", "", ""};
   g.verilog = rtl::emit(g.design);
   for (const auto& file : g.verilog) g.verilog_names.push_back(file.name);
   const auto files = rtl::emit_vivado_files(g.design, g.verilog_names, clock_mhz);
@@ -58,17 +60,18 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// "input" or "output" for every s_axis_* / m_axis_* port the top module declares.
-std::map<std::string, std::string> top_stream_ports(const std::string& top_text) {
-  static const std::regex declaration(R"((input|output)\s+wire\s+(?:\[\d+:0\]\s+)?([sm]_axis_\w+))");
+// "input" or "output" for every stream (s_axis_*, m_axis_*) and control (s_axi_ctrl_*) port the
+// top module declares.
+std::map<std::string, std::string> top_interface_ports(const std::string& top_text) {
+  static const std::regex declaration(R"((input|output)\s+wire\s+(?:\[\d+:0\]\s+)?([sm]_axis_\w+|s_axi_ctrl_\w+))");
   std::map<std::string, std::string> ports;
   for (std::sregex_iterator it(top_text.begin(), top_text.end(), declaration), end; it != end; ++it)
     ports[(*it)[2]] = (*it)[1];
   return ports;
 }
 
-std::set<std::string> stream_ports_named_in(const std::string& text) {
-  static const std::regex port(R"(\b[sm]_axis_[a-z]+_t[a-z]+\b)");
+std::set<std::string> interface_ports_named_in(const std::string& text) {
+  static const std::regex port(R"(\b(?:[sm]_axis_[a-z]+_t[a-z]+|s_axi_ctrl_[a-z]+)\b)");
   std::set<std::string> ports;
   for (std::sregex_iterator it(text.begin(), text.end(), port), end; it != end; ++it) ports.insert(it->str());
   return ports;
@@ -85,8 +88,10 @@ void check_files_of(const Generated& g) {
   INFO("configuration " << g.design.prefix);
   REQUIRE(g.verilog.front().name == top + ".v");
   REQUIRE(contains(g.verilog.front().text, "module " + top + " ("));
-  const auto ports = top_stream_ports(g.verilog.front().text);
-  REQUIRE(ports.size() == 15);  // tdata, tvalid, tready, tuser, tlast of three streams
+  const auto ports = top_interface_ports(g.verilog.front().text);
+  // tdata, tvalid, tready, tuser, tlast of three streams; the 17 signals of AXI4-Lite
+  const bool control = g.design.options.control;
+  REQUIRE(ports.size() == (control ? 15 + 17 : 15));
 
   for (const std::string* text : {&g.xdc, &g.package_ip, &g.block_design}) {
     CHECK(contains(*text, top));
@@ -95,11 +100,11 @@ void check_files_of(const Generated& g) {
 
   // XDC: the clock, then every stream port timed in its own direction.
   CHECK(contains(g.xdc, "create_clock -name aclk -period 3.333 [get_ports aclk]\n"));
-  CHECK(stream_ports_named_in(g.xdc) == keys(ports));
+  CHECK(interface_ports_named_in(g.xdc) == keys(ports));
   std::istringstream lines(g.xdc);
   for (std::string line; std::getline(lines, line);) {
     const bool input = line.rfind("set_input_delay", 0) == 0, output = line.rfind("set_output_delay", 0) == 0;
-    for (const auto& port : stream_ports_named_in(line)) {
+    for (const auto& port : interface_ports_named_in(line)) {
       INFO(line);
       CHECK((input || output));
       CHECK(ports.at(port) == (input ? "input" : "output"));
@@ -112,13 +117,16 @@ void check_files_of(const Generated& g) {
   for (const auto& name : g.verilog_names) CHECK(contains(g.package_ip, "\n  " + name + "\n"));
   CHECK(contains(g.package_ip, "set xdc " + g.design.prefix + ".xdc\n"));
   CHECK(contains(g.package_ip, "set top " + top + "\n"));
-  CHECK(stream_ports_named_in(g.package_ip) == keys(ports));
+  CHECK(interface_ports_named_in(g.package_ip) == keys(ports));
   CHECK(contains(g.package_ip, "set default_part xczu9eg-ffvb1156-2-e\n"));
   CHECK(contains(g.package_ip, "3.333 ns"));
   CHECK(contains(g.package_ip, "ipx::infer_bus_interfaces xilinx.com:interface:axis_rtl:1.0 $core"));
   CHECK(contains(g.package_ip, "ACTIVE_LOW"));
   CHECK(contains(g.package_ip, fmt::format("M_AXIS_DISP_TDATA_WIDTH \"m_axis_disp tdata width\" {} long",
                                            g.design.output_bits)));
+  CHECK(contains(g.package_ip, control ? "set control {\n  s_axi_ctrl {s_axi_ctrl_awaddr" : "set control {}\n"));
+  CHECK(contains(g.package_ip, "ipx::infer_bus_interfaces xilinx.com:interface:aximm_rtl:1.0 $core"));
+  CHECK(contains(g.package_ip, "set_property slave_memory_map_ref $name $busif"));
 
   // block_design.tcl: the packaged IP, its three stream interfaces and the DMA widths.
   CHECK(contains(g.block_design, "set ip_vlnv fpstereo:fpstereo:" + g.design.prefix + ":"));
@@ -127,6 +135,11 @@ void check_files_of(const Generated& g) {
     CHECK(contains(g.block_design, busif));
   CHECK(contains(g.block_design, "set pixel_bits 8\n"));
   CHECK(contains(g.block_design, fmt::format("set disparity_bits {}\n", g.design.output_bits)));
+  CHECK(contains(g.block_design, control ? "set control s_axi_ctrl\n" : "set control {}\n"));
+  CHECK(contains(g.block_design, "Slave /stereo/$control"));
+  // The VDMA gives the core the tuser and per-row tlast it checks (a plain AXI DMA would not).
+  CHECK(contains(g.block_design, "xilinx.com:ip:axi_vdma"));
+  CHECK_FALSE(contains(g.block_design, "xilinx.com:ip:axi_dma "));
 }
 
 }  // namespace
@@ -138,6 +151,9 @@ TEST_CASE("Vivado files reference the generated top, its ports, its files, the p
   const Generated wide = generate(wide_output_config());
   CHECK(wide.design.output_bits == 16);
   check_files_of(wide);
+  const Generated fixed = generate(preset("C2"), 300, false);
+  check_files_of(fixed);
+  CHECK_FALSE(contains(fixed.xdc, "s_axi_ctrl"));
 }
 
 TEST_CASE("Vivado files of different configurations name different modules") {

@@ -21,6 +21,16 @@ uint32_t config_id(const RtlDesign& d) {
   return uint32_t(std::stoul(d.prefix.substr(d.prefix.rfind('_') + 1), nullptr, 16));
 }
 
+const std::vector<ControlPort>& control_ports() {
+  static const std::vector<ControlPort> ports = {
+      {"awaddr", true, 8},   {"awvalid", true, 1}, {"awready", false, 1}, {"wdata", true, 32},
+      {"wstrb", true, 4},    {"wvalid", true, 1},  {"wready", false, 1},  {"bresp", false, 2},
+      {"bvalid", false, 1},  {"bready", true, 1},  {"araddr", true, 8},   {"arvalid", true, 1},
+      {"arready", false, 1}, {"rdata", false, 32}, {"rresp", false, 2},   {"rvalid", false, 1},
+      {"rready", true, 1}};
+  return ports;
+}
+
 std::vector<Register> register_map(const RtlDesign& d) {
   const StereoConfig& c = d.cfg;
   const bool unique = c.uniqueness != 0, lr = c.lr != LrCheck::None;

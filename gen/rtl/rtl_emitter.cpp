@@ -113,19 +113,6 @@ std::string with_prefix(const std::string& text, const std::string& prefix) {
   return std::regex_replace(text, module_name, prefix + "_$1");
 }
 
-// The ports of the AXI4-Lite control interface (s_axi_ctrl): name, direction, bits.
-struct LitePort {
-  const char* name;
-  bool input;
-  int bits;
-};
-const std::vector<LitePort> kLitePorts = {
-    {"awaddr", true, 8},  {"awvalid", true, 1}, {"awready", false, 1}, {"wdata", true, 32},
-    {"wstrb", true, 4},   {"wvalid", true, 1},  {"wready", false, 1},  {"bresp", false, 2},
-    {"bvalid", false, 1}, {"bready", true, 1},  {"araddr", true, 8},   {"arvalid", true, 1},
-    {"arready", false, 1}, {"rdata", false, 32}, {"rresp", false, 2},  {"rvalid", false, 1},
-    {"rready", true, 1}};
-
 std::string port_line(bool input, int bits, const std::string& name) {
   const std::string range = bits > 1 ? fmt::format("[{}:0]", bits - 1) : "";
   return fmt::format("  {} {:<7} {},\n", input ? "input  wire" : "output wire", range, name);
@@ -152,7 +139,7 @@ std::string top_module(const RtlDesign& d) {
      << "  (* X_INTERFACE_PARAMETER = \"POLARITY ACTIVE_LOW\" *)\n"
      << "  input  wire        aresetn,\n";
   if (d.options.control)
-    for (const auto& port : kLitePorts) os << port_line(port.input, port.bits, std::string("s_axi_ctrl_") + port.name);
+    for (const auto& port : control_ports()) os << port_line(port.input, port.bits, "s_axi_ctrl_" + port.name);
   for (const char* side : {"left", "right"})
     os << fmt::format(
         "  input  wire [7:0]  s_axis_{0}_tdata,\n  input  wire        s_axis_{0}_tvalid,\n"
@@ -199,7 +186,7 @@ std::string top_module(const RtlDesign& d) {
         d.prefix, d.x_bits, d.y_bits, w.path_cost, d.min_width, c.width, d.min_height, c.height, c.p1, c.p2,
         c.p2, c.uniqueness != 0 ? 1 : 0, c.uniqueness, c.lr != LrCheck::None ? 1 : 0, c.lr_threshold,
         version_word(), config_id(d), info);
-    for (const auto& port : kLitePorts) os << fmt::format("    .s_axi_{0}(s_axi_ctrl_{0}),\n", port.name);
+    for (const auto& port : control_ports()) os << fmt::format("    .s_axi_{0}(s_axi_ctrl_{0}),\n", port.name);
     os << "    .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),\n"
        << "    .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),\n"
        << "    .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),\n"

@@ -50,6 +50,14 @@ struct RtlDesign {
 // Throws ConfigError if the configuration is invalid.
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options = {});
 
+// The signals of the AXI4-Lite control interface; the top's ports are s_axi_ctrl_<name>.
+struct ControlPort {
+  std::string name;
+  bool input;  // into the core
+  int bits;
+};
+const std::vector<ControlPort>& control_ports();
+
 // The AXI4-Lite registers (fpstereo_control): byte offset, name, access and meaning, in address
 // order. The generated C header and the README's register map are printed from it.
 struct Register {

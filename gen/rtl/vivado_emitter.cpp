@@ -112,12 +112,22 @@ std::string port_delay(const char* command, const std::vector<std::string>& port
   return fmt::format("{} -clock [get_clocks aclk] 0.000 [get_ports {}]\n", command, list);
 }
 
-std::string port_delays() {
+// The control interface's ports: s_axi_ctrl_<signal>, buses with [*].
+constexpr const char* kControlInterface = "s_axi_ctrl";
+std::string control_port(const ControlPort& port) { return std::string(kControlInterface) + "_" + port.name; }
+
+std::string port_delays(const RtlDesign& d) {
   std::string text = port_delay("set_input_delay", {"aresetn"});
   for (const auto& stream : kStreams) {
     std::vector<std::string> inputs, outputs;
     for (const auto& signal : kStreamSignals)
       (is_core_input(stream, signal) ? inputs : outputs).push_back(xdc_port(stream, signal));
+    text += port_delay("set_input_delay", inputs) + port_delay("set_output_delay", outputs);
+  }
+  if (d.options.control) {
+    std::vector<std::string> inputs, outputs;
+    for (const auto& port : control_ports())
+      (port.input ? inputs : outputs).push_back(control_port(port) + (port.bits > 1 ? "[*]" : ""));
     text += port_delay("set_input_delay", inputs) + port_delay("set_output_delay", outputs);
   }
   return text;
@@ -172,6 +182,13 @@ std::string configuration_line(const StereoConfig& cfg) {
   return join(items, ", ");
 }
 
+std::string control_entry(const RtlDesign& d) {
+  if (!d.options.control) return "{}";
+  std::vector<std::string> ports;
+  for (const auto& port : control_ports()) ports.push_back(control_port(port));
+  return tcl_block({std::string(kControlInterface) + " {" + join(ports, " ") + "}"});
+}
+
 std::string package_settings(const RtlDesign& d, const std::vector<std::string>& files, double clock_mhz) {
   std::vector<std::string> sources, stream_entries, parameter_entries;
   for (const auto& file : files) sources.push_back(tcl_word(file));
@@ -199,6 +216,9 @@ std::string package_settings(const RtlDesign& d, const std::vector<std::string>&
      << "set description " << tcl_word(description) << "\n"
      << "# The stream interfaces and their ports, as the top declares them.\n"
      << "set streams " << tcl_block(stream_entries) << "\n"
+     << "# The AXI4-Lite control interface and its ports (none: generated without it); its\n"
+     << "# registers are in " << d.prefix << "_regs.h.\n"
+     << "set control " << control_entry(d) << "\n"
      << "# GUI parameters: name, display name, value, format, tooltip.\n"
      << "set gui_parameters " << tcl_block(parameter_entries) << "\n\n";
   return os.str();
@@ -238,10 +258,10 @@ foreach {port abstraction} {aclk xilinx.com:signal:clock_rtl:1.0 aresetn xilinx.
     ipx::infer_bus_interface $port $abstraction $core
   }
 }
-foreach {name ports} $streams {
+proc check_interface {core kind name ports} {
   set busif [ipx::get_bus_interfaces $name -of_objects $core]
   if {[llength $busif] == 0} {
-    error "package_ip: no AXI4-Stream interface $name was inferred"
+    error "package_ip: no $kind interface $name was inferred"
   }
   set mapped {}
   foreach map [ipx::get_port_maps -of_objects $busif] {
@@ -253,6 +273,21 @@ foreach {name ports} $streams {
     }
   }
   ipx::associate_bus_interfaces -busif $name -clock aclk $core
+  return $busif
+}
+foreach {name ports} $streams {
+  check_interface $core AXI4-Stream $name $ports
+}
+# The control interface: an AXI4-Lite slave with 256 bytes of registers.
+foreach {name ports} $control {
+  ipx::infer_bus_interfaces xilinx.com:interface:aximm_rtl:1.0 $core
+  set busif [check_interface $core AXI4-Lite $name $ports]
+  set memory_map [ipx::add_memory_map $name $core]
+  set_property slave_memory_map_ref $name $busif
+  set block [ipx::add_address_block registers $memory_map]
+  set_property range 256 $block
+  set_property width 32 $block
+  set_property usage register $block
 }
 ipx::associate_bus_interfaces -clock aclk -reset aresetn $core
 set reset [ipx::get_bus_interfaces aresetn -of_objects $core]
@@ -300,25 +335,25 @@ puts "package_ip: $ip_vendor:$ip_library:$ip_name:$ip_version for $part in [file
 
 // ---- block_design.tcl -------------------------------------------------------------------------
 
-// The AXI DMA's length register holds 8 to 26 bits; a frame of disparities is the largest buffer.
-constexpr int kDmaMinLengthBits = 8, kDmaMaxLengthBits = 26;
-int64_t frame_pixels(const RtlDesign& d) { return int64_t(d.cfg.width) * d.cfg.height; }
 int disparity_bytes(const RtlDesign& d) { return d.output_bits / 8; }
-int dma_length_bits(const RtlDesign& d) {
-  return std::clamp(bits_for(uint64_t(frame_pixels(d) * disparity_bytes(d))), kDmaMinLengthBits,
-                    kDmaMaxLengthBits);
+// The VDMA line buffers (in stream words): the smallest power of two the IP offers that holds a row.
+int line_buffer_depth(const RtlDesign& d) {
+  int depth = 128;
+  while (depth < d.cfg.width && depth < 32768) depth *= 2;
+  return depth;
 }
 
 std::string block_design_settings(const RtlDesign& d) {
   std::ostringstream os;
   os << kConfigurationSection << "set default_part " << kDefaultPart << "\n"
      << "set ip_vlnv " << ip_vlnv(d) << "\n"
-     << "# tdata bits of the DMA streams: 8-bit pixels in, the core's output words out.\n"
+     << "# tdata bits of the VDMA streams: 8-bit pixels in, the core's output words out.\n"
      << "set pixel_bits 8\n"
      << "set disparity_bits " << d.output_bits << "\n"
-     << fmt::format("# DMA length register bits: a frame of disparities is {} bytes.\n",
-                    frame_pixels(d) * disparity_bytes(d))
-     << "set length_bits " << dma_length_bits(d) << "\n\n";
+     << "# VDMA line buffer depth (words): holds a row of " << d.cfg.width << " pixels.\n"
+     << "set line_buffer " << line_buffer_depth(d) << "\n"
+     << "# The core's AXI4-Lite control interface (none: generated without it).\n"
+     << "set control " << (d.options.control ? kControlInterface : "{}") << "\n\n";
   return os.str();
 }
 
@@ -354,8 +389,8 @@ set ps [create_bd_cell -type ip -vlnv xilinx.com:ip:zynq_ultra_ps_e zynq_ultra_p
 if {$board ne ""} {
   apply_bd_automation -rule xilinx.com:bd_rule:zynq_ultra_ps_e -config {apply_board_preset "1"} $ps
 }
-# M_AXI_HPM0_FPD for the DMA registers (the other master ports off, so none is left without a
-# clock), S_AXI_HP0/1/2_FPD for the three DMAs' memory traffic, and the fabric clock pl_clk0.
+# M_AXI_HPM0_FPD for the registers (the other master ports off, so none is left without a
+# clock), S_AXI_HP0/1/2_FPD for the three VDMAs' memory traffic, and the fabric clock pl_clk0.
 set_property -dict [list \
   CONFIG.PSU__USE__M_AXI_GP0 1 \
   CONFIG.PSU__USE__M_AXI_GP1 0 \
@@ -367,57 +402,73 @@ set_property -dict [list \
   CONFIG.PSU__CRL_APB__PL0_REF_CTRL__FREQMHZ $pl_clk_mhz \
 ] $ps
 
-# ---- DMAs: one single-channel AXI DMA per stream, in direct register mode ----------------
-proc add_dma {name channel tdata_bits length_bits} {
+# ---- VDMAs: one single-channel AXI VDMA per stream -----------------------------------------
+# The VDMA speaks the video convention the core checks: tuser on a frame's first pixel, tlast
+# at every row's end (a plain AXI DMA marks only the end of a transfer).
+proc add_vdma {name channel tdata_bits line_buffer} {
   set mm2s [expr {$channel eq "mm2s"}]
-  set dma [create_bd_cell -type ip -vlnv xilinx.com:ip:axi_dma $name]
+  set vdma [create_bd_cell -type ip -vlnv xilinx.com:ip:axi_vdma $name]
   set_property -dict [list \
-    CONFIG.c_include_sg 0 \
-    CONFIG.c_sg_include_stscntrl_strm 0 \
-    CONFIG.c_sg_length_width $length_bits \
+    CONFIG.c_num_fstores 1 \
     CONFIG.c_include_mm2s $mm2s \
     CONFIG.c_include_s2mm [expr {!$mm2s}] \
-  ] $dma
+    CONFIG.c_mm2s_genlock_mode 0 \
+    CONFIG.c_s2mm_genlock_mode 0 \
+  ] $vdma
   if {$mm2s} {
-    set_property CONFIG.c_m_axis_mm2s_tdata_width $tdata_bits $dma
+    set_property -dict [list CONFIG.c_m_axis_mm2s_tdata_width $tdata_bits \
+      CONFIG.c_mm2s_linebuffer_depth $line_buffer] $vdma
   } else {
-    set_property CONFIG.c_s_axis_s2mm_tdata_width $tdata_bits $dma
+    set_property -dict [list CONFIG.c_s_axis_s2mm_tdata_width $tdata_bits \
+      CONFIG.c_s2mm_linebuffer_depth $line_buffer] $vdma
   }
 }
-add_dma dma_left mm2s $pixel_bits $length_bits
-add_dma dma_right mm2s $pixel_bits $length_bits
-add_dma dma_disp s2mm $disparity_bits $length_bits
+add_vdma vdma_left mm2s $pixel_bits $line_buffer
+add_vdma vdma_right mm2s $pixel_bits $line_buffer
+add_vdma vdma_disp s2mm $disparity_bits $line_buffer
 
 # ---- The core and its streams ------------------------------------------------------------
 create_bd_cell -type ip -vlnv $ip_vlnv stereo
-connect_bd_intf_net [get_bd_intf_pins dma_left/M_AXIS_MM2S] [get_bd_intf_pins stereo/s_axis_left]
-connect_bd_intf_net [get_bd_intf_pins dma_right/M_AXIS_MM2S] [get_bd_intf_pins stereo/s_axis_right]
-connect_bd_intf_net [get_bd_intf_pins stereo/m_axis_disp] [get_bd_intf_pins dma_disp/S_AXIS_S2MM]
+connect_bd_intf_net [get_bd_intf_pins vdma_left/M_AXIS_MM2S] [get_bd_intf_pins stereo/s_axis_left]
+connect_bd_intf_net [get_bd_intf_pins vdma_right/M_AXIS_MM2S] [get_bd_intf_pins stereo/s_axis_right]
+connect_bd_intf_net [get_bd_intf_pins stereo/m_axis_disp] [get_bd_intf_pins vdma_disp/S_AXIS_S2MM]
+# The streams run on pl_clk0 with the core (the automation below clocks the memory-mapped side).
+connect_bd_net [get_bd_pins zynq_ultra_ps_e_0/pl_clk0] [get_bd_pins stereo/aclk] \
+  [get_bd_pins vdma_left/m_axis_mm2s_aclk] [get_bd_pins vdma_right/m_axis_mm2s_aclk] \
+  [get_bd_pins vdma_disp/s_axis_s2mm_aclk]
 
 # ---- Memory and register paths -----------------------------------------------------------
 # Connection automation adds the interconnects, clocks everything from pl_clk0 (the only fabric
 # clock) and adds a processor system reset for that clock.
-foreach {dma master slave} {
-  dma_left M_AXI_MM2S S_AXI_HP0_FPD
-  dma_right M_AXI_MM2S S_AXI_HP1_FPD
-  dma_disp M_AXI_S2MM S_AXI_HP2_FPD
+foreach {vdma master slave} {
+  vdma_left M_AXI_MM2S S_AXI_HP0_FPD
+  vdma_right M_AXI_MM2S S_AXI_HP1_FPD
+  vdma_disp M_AXI_S2MM S_AXI_HP2_FPD
 } {
   apply_bd_automation -rule xilinx.com:bd_rule:axi4 -config [list Clk_master Auto Clk_slave Auto \
-    Clk_xbar Auto Master /$dma/$master Slave /zynq_ultra_ps_e_0/$slave ddr_seg Auto intc_ip Auto \
+    Clk_xbar Auto Master /$vdma/$master Slave /zynq_ultra_ps_e_0/$slave ddr_seg Auto intc_ip Auto \
     master_apm 0] [get_bd_intf_pins zynq_ultra_ps_e_0/$slave]
   apply_bd_automation -rule xilinx.com:bd_rule:axi4 -config [list Clk_master Auto Clk_slave Auto \
-    Clk_xbar Auto Master /zynq_ultra_ps_e_0/M_AXI_HPM0_FPD Slave /$dma/S_AXI_LITE ddr_seg Auto \
-    intc_ip Auto master_apm 0] [get_bd_intf_pins $dma/S_AXI_LITE]
+    Clk_xbar Auto Master /zynq_ultra_ps_e_0/M_AXI_HPM0_FPD Slave /$vdma/S_AXI_LITE ddr_seg Auto \
+    intc_ip Auto master_apm 0] [get_bd_intf_pins $vdma/S_AXI_LITE]
+}
+# The core's settings and status registers, next to the VDMAs' on M_AXI_HPM0_FPD.
+if {$control ne ""} {
+  apply_bd_automation -rule xilinx.com:bd_rule:axi4 -config [list Clk_master Auto Clk_slave Auto \
+    Clk_xbar Auto Master /zynq_ultra_ps_e_0/M_AXI_HPM0_FPD Slave /stereo/$control ddr_seg Auto \
+    intc_ip Auto master_apm 0] [get_bd_intf_pins stereo/$control]
 }
 
-# ---- Clock and reset of the core ---------------------------------------------------------
-connect_bd_net [get_bd_pins zynq_ultra_ps_e_0/pl_clk0] [get_bd_pins stereo/aclk]
+# ---- Reset of the core -------------------------------------------------------------------
 # The automation names its reset block after the clock frequency: find it by type.
 set resets [get_bd_cells -filter {VLNV =~ "xilinx.com:ip:proc_sys_reset:*"}]
 if {[llength $resets] == 0} {
   error "block_design: the connection automation added no processor system reset"
 }
-connect_bd_net [get_bd_pins [lindex $resets 0]/peripheral_aresetn] [get_bd_pins stereo/aresetn]
+set core_reset [get_bd_pins stereo/aresetn]
+if {[llength [get_bd_nets -of_objects $core_reset]] == 0} {
+  connect_bd_net [get_bd_pins [lindex $resets 0]/peripheral_aresetn] $core_reset
+}
 
 # ---- Finish ------------------------------------------------------------------------------
 assign_bd_address
@@ -456,7 +507,7 @@ std::string emit_xdc(const RtlDesign& d, double clock_mhz) {
                  "(above all the reset's fan-out) is timed instead of left unconstrained; in a system",
                  "the real neighbours take their place.",
              }) +
-         fmt::format("create_clock -name aclk -period {} [get_ports aclk]\n", period) + port_delays();
+         fmt::format("create_clock -name aclk -period {} [get_ports aclk]\n", period) + port_delays(d);
 }
 
 std::string emit_package_ip_tcl(const RtlDesign& d, const std::vector<std::string>& files, double clock_mhz) {
@@ -481,48 +532,41 @@ std::string emit_package_ip_tcl(const RtlDesign& d, const std::vector<std::strin
 
 std::string emit_block_design_tcl(const RtlDesign& d) {
   const int64_t row_bytes = int64_t(d.cfg.width) * disparity_bytes(d);
-  return banner(
-             d, "example block design (Zynq UltraScale+ MPSoC, AXI DMA)",
-             {
-                 "A block design \"system\" around " + top_module_name(d) + ", packaged as",
-                 ip_vlnv(d) + ":",
-                 "  DDR -> dma_left (MM2S)  -> s_axis_left  -+",
-                 "                                           +- stereo -> m_axis_disp -> dma_disp (S2MM) -> "
-                 "DDR",
-                 "  DDR -> dma_right (MM2S) -> s_axis_right -+",
-                 "The DMA registers sit behind M_AXI_HPM0_FPD, each DMA's memory port on its own HP port;",
-                 "everything runs on pl_clk0 with the processor system reset the automation adds.",
-                 "",
-                 "Run it after package_ip.tcl, in the same directory; it creates bd_project/:",
-                 "  vivado -mode batch -source block_design.tcl -tclargs PART BOARD_PART",
-                 "  e.g. -tclargs xczu9eg-ffvb1156-2-e xilinx.com:zcu102:part0:3.4 (get_board_parts lists",
-                 "  the installed boards); with no arguments: " + std::string(kDefaultPart) + ", no board.",
-                 "Or set part, board and pl_clk_mhz in a Vivado Tcl shell before sourcing it.",
-                 "",
-                 "What to adjust:",
-                 "  board       with a board part the PS takes the board's preset (DDR, MIO); without one",
-                 "              it keeps its defaults: enough for synthesis and timing, not for a board.",
-                 "  pl_clk_mhz  the fabric clock, 100 MHz by default: raise it towards the clock the core",
-                 "              met timing at out of context (" + xdc_file_name(d) + ").",
-                 fmt::format(
-                     "  frames      fixed at generation: {} x {} pixels. Per frame, give each MM2S one",
-                     d.cfg.width, d.cfg.height),
-                 fmt::format("              transfer of {} bytes. The core ends every row with tlast, which",
-                             frame_pixels(d)),
-                 fmt::format(
-                     "              ends an S2MM transfer: queue one S2MM transfer of {} bytes per row",
-                     row_bytes),
-                 "              (or use scatter-gather to queue them all).",
-                 fmt::format(
-                     "  lengths     length_bits below ({}) fits a whole frame; the AXI DMA allows up to {}.",
-                     dma_length_bits(d), kDmaMaxLengthBits),
-                 "  memory      32-bit DMA addresses: buffers in the low 4 GiB.",
-                 "  interrupts  mm2s_introut and s2mm_introut are not connected: poll the DMA status",
-                 "              registers, or wire them to pl_ps_irq0.",
-                 "The DMA streams have no tuser (the core ignores input tuser, and the output's frame-start",
-                 "tuser is dropped) and the core has no tkeep: Vivado may warn about both when connecting.",
-             }) +
-         block_design_settings(d) + kBlockDesignBody;
+  std::vector<std::string> usage = {
+      "A block design \"system\" around " + top_module_name(d) + ", packaged as",
+      ip_vlnv(d) + ":",
+      "  DDR -> vdma_left (MM2S)  -> s_axis_left  -+",
+      "                                            +- stereo -> m_axis_disp -> vdma_disp (S2MM) -> DDR",
+      "  DDR -> vdma_right (MM2S) -> s_axis_right -+",
+      "The VDMA registers" + std::string(d.options.control ? " and the core's (s_axi_ctrl)" : "") +
+          " sit behind M_AXI_HPM0_FPD, each VDMA's memory",
+      "port on its own HP port; everything runs on pl_clk0 with the processor system reset the",
+      "automation adds.",
+      "",
+      "Run it after package_ip.tcl, in the same directory; it creates bd_project/:",
+      "  vivado -mode batch -source block_design.tcl -tclargs PART BOARD_PART",
+      "  e.g. -tclargs xczu9eg-ffvb1156-2-e xilinx.com:zcu102:part0:3.4 (get_board_parts lists",
+      "  the installed boards); with no arguments: " + std::string(kDefaultPart) + ", no board.",
+      "Or set part, board and pl_clk_mhz in a Vivado Tcl shell before sourcing it.",
+      "",
+      "What to adjust:",
+      "  board       with a board part the PS takes the board's preset (DDR, MIO); without one",
+      "              it keeps its defaults: enough for synthesis and timing, not for a board.",
+      "  pl_clk_mhz  the fabric clock, 100 MHz by default: raise it towards the clock the core",
+      "              met timing at out of context (" + xdc_file_name(d) + ").",
+      fmt::format("  frames      up to {} x {} pixels. Program each MM2S with HSIZE = width bytes and", d.cfg.width,
+                  d.cfg.height),
+      fmt::format("              VSIZE = height, the S2MM with HSIZE = {} x width bytes (at most {}) and", 
+                  disparity_bytes(d), row_bytes),
+      d.options.control ? "              the same VSIZE; write the core's WIDTH and HEIGHT registers to match."
+                        : "              the same VSIZE; without the control interface the size is fixed.",
+      "  memory      32-bit VDMA addresses: frame buffers in the low 4 GiB.",
+      "  interrupts  mm2s_introut and s2mm_introut are not connected: poll the VDMA status",
+      "              registers, or wire them to pl_ps_irq0.",
+      "The core has no tkeep: Vivado may warn about it when connecting the VDMAs.",
+  };
+  return banner(d, "example block design (Zynq UltraScale+ MPSoC, AXI VDMA)", usage) + block_design_settings(d) +
+         kBlockDesignBody;
 }
 
 std::vector<EmittedFile> emit_vivado_files(const RtlDesign& d, const std::vector<std::string>& files,
