@@ -114,12 +114,12 @@ module fpstereo_sgm_core #(
   // Global advance and frame sequencing.
   wire in_due, out_due, frame_done;
   reg  in_frame;
+  wire adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   always @(posedge clk)
     if (rst) in_frame <= 1'b0;
     else if (!in_frame) in_frame <= start;
     else if (adv && frame_done) in_frame <= 1'b0;
   assign idle = !in_frame;
-  wire adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   reg  [STEP_W-1:0] step;
   always @(posedge clk)
     if (rst) step <= 0;
