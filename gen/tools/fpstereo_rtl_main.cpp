@@ -2,6 +2,7 @@
 //   fpstereo-rtl --dmax 128 --uf 32 > top.v       one self-contained file
 //   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json and the
 //                                                  Vivado files (constraints/README.md)
+//   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, README "HLS path")
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config_cli.hpp"
+#include "hls_emitter.hpp"
 #include "rtl_emitter.hpp"
 #include "vivado_emitter.hpp"
 
@@ -42,6 +44,14 @@ void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& 
   write_file(dir / "config.json", config.dump(2) + "\n");
 }
 
+void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options, const std::filesystem::path& dir) {
+  const auto files = hls::emit(cfg, options);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
+  for (const auto& file : files) write_file(dir / file.name, file.text);
+}
+
 }  // namespace
 }  // namespace fpstereo
 
@@ -56,8 +66,20 @@ int main(int argc, char** argv) {
   double clock_mhz = 300;
   app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
       ->capture_default_str();
+  std::string emit = "verilog";
+  app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")->capture_default_str();
+  hls::HlsOptions hls_options;
+  app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")->capture_default_str();
   try {
     app.parse(argc, argv);
+    if (emit != "verilog" && emit != "hls")
+      return report_error("fpstereo-rtl", "--emit '" + emit + "': expected verilog or hls");
+    if (emit == "hls") {
+      if (out_dir.empty()) return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
+      hls_options.clock_mhz = clock_mhz;
+      write_hls_directory(flags.resolve(), hls_options, out_dir);
+      return 0;
+    }
     const rtl::RtlDesign design = rtl::plan(flags.resolve());
     if (out_dir.empty())
       std::cout << rtl::emit_single_file(design);
