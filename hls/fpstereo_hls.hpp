@@ -65,10 +65,10 @@ using CensusCode = typename CensusCodeOf<C::kWindow>::type;
 // What the cost window slides over: census codes (census, SHD), rank values, pixels (SAD) or
 // pixels with their means (ZSAD).
 template <class C>
-using Feature = std::conditional_t<
-    C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
-    std::conditional_t<C::kCost == Cost::Rank, ap_uint<C::kCodeBits>,
-                       std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>>;
+using Feature =
+    std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
+                       std::conditional_t<C::kCost == Cost::Rank, ap_uint<C::kCodeBits>,
+                                          std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>>;
 // Side of the window the cost sums over: 1 for census and rank (point costs of transformed
 // pixels), N for SAD and ZSAD, the SHD window for SHD.
 template <class C>
@@ -303,8 +303,7 @@ cost_groups:
 // x mod dmax, so every lane of match word (x', g) is one read in its own bank. Match pixel x' is
 // complete once base pixel x' + dmax - 1 has arrived: the row takes W + dmax - 1 pixel times.
 template <class C>
-void match_costs(hls::stream<CostWord<C>>& base_costs, hls::stream<CostWord<C>>& out, int width,
-                 int height) {
+void match_costs(hls::stream<CostWord<C>>& base_costs, hls::stream<CostWord<C>>& out, int width, int height) {
   constexpr int G = C::kGroups, D = C::kDmax;
   ap_uint<C::kCostBits> banks[C::kUf][D][G];
 #pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
@@ -358,6 +357,31 @@ int lane_of(const PathWord<C>& w, int lane) {
   return int(w.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits));
 }
 
+// One word of a path: L for the uf disparities of group g, from the predecessor's words of groups
+// g - 1, g and g + 1 (the d +- 1 neighbours across the group borders) and its minimum; L = C at a
+// path start. Adds L to the sums and returns the word's minimum in word_min.
+template <class C>
+PathWord<C> path_word(const CostWord<C>& costs, int g, bool has_pred, const PathWord<C>& lower_word,
+                      const PathWord<C>& centre, const PathWord<C>& upper_word, int pred_min, int p1, int p2,
+                      int sum[C::kUf], int& word_min) {
+  constexpr int U = C::kUf;
+  PathWord<C> word = 0;
+  for (int lane = 0; lane < U; ++lane) {
+    const int d = g * U + lane;
+    const int cost = int(costs.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits));
+    int l = cost;
+    if (has_pred) {
+      const int lower = lane > 0 ? lane_of<C>(centre, lane - 1) : lane_of<C>(lower_word, U - 1);
+      const int upper = lane < U - 1 ? lane_of<C>(centre, lane + 1) : lane_of<C>(upper_word, 0);
+      l = path_step(cost, lane_of<C>(centre, lane), d > 0, lower, d < C::kDmax - 1, upper, pred_min, p1, p2);
+    }
+    word.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits) = l;
+    sum[lane] += l;
+    if (lane == 0 || l < word_min) word_min = l;
+  }
+  return word;
+}
+
 // The paths from the row above (45, 90, 135 degrees: dx = -1, 0, +1) keep one packed row per path
 // in block RAM (W * G words of uf path costs) and the per-pixel minima beside it. Each iteration
 // reads ahead (word i + a) into a shift register before it overwrites word i, so the d +- 1
@@ -401,23 +425,9 @@ aggregate_groups:
     for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
 
     if (kPath0) {
-      const bool has_pred = x > 0;
-      const PathWord<C>& centre = left_words[G - 1];
-      PathWord<C> word = 0;
       int word_min = 0;
-      for (int lane = 0; lane < U; ++lane) {
-        const int d = g * U + lane;
-        const int cost = int(cost_word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits));
-        int l = cost;
-        if (has_pred) {
-          const int lower = lane > 0 ? lane_of<C>(centre, lane - 1) : lane_of<C>(left_words[G], U - 1);
-          const int upper = lane < U - 1 ? lane_of<C>(centre, lane + 1) : lane_of<C>(left_words[G >= 2 ? G - 2 : 0], 0);
-          l = path_step(cost, lane_of<C>(centre, lane), d > 0, lower, d < C::kDmax - 1, upper, left_min, p1, p2);
-        }
-        word.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits) = l;
-        sum[lane] += l;
-        if (lane == 0 || l < word_min) word_min = l;
-      }
+      const PathWord<C> word = path_word<C>(cost_word, g, x > 0, left_words[G], left_words[G - 1],
+                                            left_words[G >= 2 ? G - 2 : 0], left_min, p1, p2, sum, word_min);
       left_running_min = g == 0 ? word_min : (word_min < left_running_min ? word_min : left_running_min);
       for (int k = G; k > 0; --k) left_words[k] = left_words[k - 1];
       left_words[0] = word;
@@ -432,25 +442,13 @@ aggregate_groups:
       if (read_at >= row_words) read_at -= row_words;  // the next row's first words: this row's
       for (int k = G + 2; k > 0; --k) ahead[p][k] = ahead[p][k - 1];
       ahead[p][0] = rows[p][read_at];
-      const int k_centre = a - dx * G;
-      const PathWord<C>& centre = ahead[p][k_centre];
+      const int k_centre = a - dx * G;  // ahead[p][k_centre] is the predecessor's word of group g
       const int pred_min = ahead_min[p][dx < 0 ? 1 : 0];
       const bool has_pred = y > 0 && x + dx >= 0 && x + dx < width;
-      PathWord<C> word = 0;
       int word_min = 0;
-      for (int lane = 0; lane < U; ++lane) {
-        const int d = g * U + lane;
-        const int cost = int(cost_word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits));
-        int l = cost;
-        if (has_pred) {
-          const int lower = lane > 0 ? lane_of<C>(centre, lane - 1) : lane_of<C>(ahead[p][k_centre + 1], U - 1);
-          const int upper = lane < U - 1 ? lane_of<C>(centre, lane + 1) : lane_of<C>(ahead[p][k_centre - 1], 0);
-          l = path_step(cost, lane_of<C>(centre, lane), d > 0, lower, d < C::kDmax - 1, upper, pred_min, p1, p2);
-        }
-        word.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits) = l;
-        sum[lane] += l;
-        if (lane == 0 || l < word_min) word_min = l;
-      }
+      const PathWord<C> word =
+          path_word<C>(cost_word, g, has_pred, ahead[p][k_centre + 1], ahead[p][k_centre],
+                       ahead[p][k_centre - 1], pred_min, p1, p2, sum, word_min);
       rows[p][i_row] = word;
       running_min[p] = g == 0 ? word_min : (word_min < running_min[p] ? word_min : running_min[p]);
       if (g == G - 1) {
@@ -533,8 +531,8 @@ struct Winner {
 // minimising S(x' + d, d), built up in a row RAM as the sums pass and sent out as soon as final
 // (x' + dmax - 1 seen), the rest at the row's end.
 template <class C>
-void select_base(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& disparity, hls::stream<Word<C>>& match_disparity,
-                 int width, int height, int uniqueness) {
+void select_base(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& disparity,
+                 hls::stream<Word<C>>& match_disparity, int width, int height, int uniqueness) {
   constexpr int G = C::kGroups, U = C::kUf;
   uniqueness = clamp_int(uniqueness, 0, 99);
   int dm_sum[C::kMaxWidth];
@@ -584,7 +582,8 @@ select_rows:
 
 // LR2's match side: winner-take-all without uniqueness.
 template <class C>
-void select_match(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& match_disparity, int width, int height) {
+void select_match(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& match_disparity, int width,
+                  int height) {
   constexpr int G = C::kGroups, U = C::kUf;
   Winner<C> winner;
   int g = 0;
@@ -606,8 +605,8 @@ select_match_groups:
 // Section 5: the check. Dm(x') for x' <= x has arrived when D(x) is checked, since both come in
 // raster order; Dm is kept for the row.
 template <class C>
-void lr_check(hls::stream<Word<C>>& disparity, hls::stream<Word<C>>& match_disparity, hls::stream<Word<C>>& out,
-              int width, int height, int threshold) {
+void lr_check(hls::stream<Word<C>>& disparity, hls::stream<Word<C>>& match_disparity,
+              hls::stream<Word<C>>& out, int width, int height, int threshold) {
   threshold = clamp_int(threshold, 0, 15);
   ap_uint<C::kDisparityBits> dm_row[C::kMaxWidth];
   int x = 0;
@@ -657,7 +656,8 @@ Word<C> median_of(const Window<Word<C>, C::kMedian>& w) {
 }
 
 template <class C>
-void median_stage(hls::stream<Window<Word<C>, C::kMedian>>& in, hls::stream<Word<C>>& out, int width, int height) {
+void median_stage(hls::stream<Window<Word<C>, C::kMedian>>& in, hls::stream<Word<C>>& out, int width,
+                  int height) {
 median_pixels:
   for (int i = 0; i < width * height; ++i) {
 #pragma HLS PIPELINE II = 1
@@ -783,11 +783,12 @@ store_pixels:
 // The whole pipeline. Called from the generated top function, whose DATAFLOW region it becomes
 // (inlined); only the stages the configuration needs are instantiated.
 template <class C>
-void sgm_pipeline(hls::stream<VideoIn>& left_in, hls::stream<VideoIn>& right_in, hls::stream<VideoOut<C>>& out,
-                  int width_reg, int height_reg, int p1, int p2, int uniqueness, int lr_threshold) {
+void sgm_pipeline(hls::stream<VideoIn>& left_in, hls::stream<VideoIn>& right_in,
+                  hls::stream<VideoOut<C>>& out, int width_reg, int height_reg, int p1, int p2,
+                  int uniqueness, int lr_threshold) {
 #pragma HLS INLINE
   constexpr int kDepth = 2 * C::kGroups + 2;  // a pixel's words plus slack
-  (void)kDepth;  // used by the STREAM pragmas only
+  (void)kDepth;                               // used by the STREAM pragmas only
   constexpr int K = cost_window<C>();
   const Frame f = clamp_frame<C>(width_reg, height_reg);
   const int W = f.width, H = f.height;

@@ -3,6 +3,8 @@
 // little-endian floats, rows bottom to top, +inf where invalid) in and out.
 #pragma once
 
+#include <pthread.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -11,7 +13,6 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
-#include <pthread.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -108,10 +109,9 @@ inline Words load_pfm_words(const std::string& path, const std::string& role, un
     for (int x = 0; x < out.width; ++x) {
       unsigned char b[4];
       std::memcpy(b, bytes.data() + start + 4 * (size_t(row) * size_t(out.width) + size_t(x)), 4);
-      const uint32_t bits = little_endian ? uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 |
-                                                uint32_t(b[3]) << 24
-                                          : uint32_t(b[3]) | uint32_t(b[2]) << 8 | uint32_t(b[1]) << 16 |
-                                                uint32_t(b[0]) << 24;
+      const uint32_t bits =
+          little_endian ? uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24
+                        : uint32_t(b[3]) | uint32_t(b[2]) << 8 | uint32_t(b[1]) << 16 | uint32_t(b[0]) << 24;
       float v;
       std::memcpy(&v, &bits, 4);
       const int y = out.height - 1 - row;  // PFM rows run bottom to top
@@ -154,8 +154,10 @@ inline void run_with_large_stack(const std::function<void()>& body) {
     (*static_cast<const std::function<void()>*>(arg))();
     return nullptr;
   };
-  if (pthread_create(&thread, &attr, trampoline, const_cast<std::function<void()>*>(&body)) != 0) body();
-  else pthread_join(thread, nullptr);
+  if (pthread_create(&thread, &attr, trampoline, const_cast<std::function<void()>*>(&body)) != 0)
+    body();
+  else
+    pthread_join(thread, nullptr);
   pthread_attr_destroy(&attr);
 }
 

@@ -44,7 +44,8 @@ void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& 
   write_file(dir / "config.json", config.dump(2) + "\n");
 }
 
-void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options, const std::filesystem::path& dir) {
+void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options,
+                         const std::filesystem::path& dir) {
   const auto files = hls::emit(cfg, options);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -67,9 +68,11 @@ int main(int argc, char** argv) {
   app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
       ->capture_default_str();
   std::string emit = "verilog";
-  app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")->capture_default_str();
+  app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")
+      ->capture_default_str();
   hls::HlsOptions hls_options;
-  app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")->capture_default_str();
+  app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
     if (emit != "verilog" && emit != "hls")

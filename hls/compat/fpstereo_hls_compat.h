@@ -120,8 +120,8 @@ class ap_bits {
   void wrap() { words_[kWords - 1] &= kTopMask; }
   static void check_range(int hi, int lo) {
     if (lo < 0 || hi >= W || hi < lo || hi - lo >= 64) {
-      std::fprintf(stderr, "ap_int compat: range(%d, %d) outside a %d-bit value or wider than 64 bits\n", hi, lo,
-                   W);
+      std::fprintf(stderr, "ap_int compat: range(%d, %d) outside a %d-bit value or wider than 64 bits\n", hi,
+                   lo, W);
       std::abort();
     }
   }
