@@ -46,7 +46,13 @@ class ap_bits {
   ap_bits(const R& r) : ap_bits((unsigned long long)r) {}
   template <int W2, bool S2>
   ap_bits(const ap_bits<W2, S2>& o) {
-    for (int i = 0; i < kWords; ++i) words_[i] = i < o.kWordCount ? o.word(i) : (o.negative() ? ~0ull : 0);
+    // Sign-extend a negative source above its width, then cut to this width.
+    const uint64_t fill = o.negative() ? ~0ull : 0;
+    for (int i = 0; i < kWords; ++i) {
+      uint64_t v = i < o.kWordCount ? o.word(i) : fill;
+      if (i == (W2 - 1) / 64 && W2 % 64 != 0) v |= fill << (W2 % 64);
+      words_[i] = v;
+    }
     wrap();
   }
 
