@@ -382,101 +382,179 @@ PathWord<C> path_word(const CostWord<C>& costs, int g, bool has_pred, const Path
   return word;
 }
 
-// The paths from the row above (45, 90, 135 degrees: dx = -1, 0, +1) keep one packed row per path
-// in block RAM (W * G words of uf path costs) and the per-pixel minima beside it. Each iteration
-// reads ahead (word i + a) into a shift register before it overwrites word i, so the d +- 1
-// neighbours across group borders and the 45-degree predecessor are still the previous row's:
-// the row RAMs never carry a read-after-write between iterations (DEPENDENCE inter false).
-// The 0-degree path's predecessor is the previous pixel: its last G words stay in registers.
+// The 0-degree loop: pixel x needs all of L(x-1, .) and their minimum, so in raster order the
+// minimum tree of one pixel would feed the next pixel's first group in the next cycle. As in the
+// paper (interleaving and reordering) and the RTL (docs/architecture.md, with K = 2 here), each
+// row is cut into two halves of h = ceil(W / 2) pixels processed by two interleaved chains: in
+// row-time t, slot j, chain k = j mod 2 processes pixel x = k * h + j / 2 of row t - k. Consecutive
+// slots belong to different chains, so a chain's next pixel starts G + 1 iterations after its
+// previous pixel's last group. Every predecessor is finished in time: (x-1, row) is the chain's
+// previous pixel, or for the second half's first pixel the first chain's last one, a row-time
+// earlier; the row above was finished a row-time earlier, or at the halves' border by the other
+// chain earlier in the same row-time.
+template <class C>
+struct Chains {
+  int half, slots;  // h, and the slots of a row-time (2h: the last is a bubble when W is odd)
+  explicit Chains(int width) : half((width + 1) / 2), slots(2 * ((width + 1) / 2)) {}
+  int chain(int slot) const { return slot & 1; }
+  int x(int slot) const { return chain(slot) * half + slot / 2; }
+};
+
+// Costs from raster order to chain order, one row-time behind: row t's pixels are kept (bank
+// t mod 2) for the first chain now and the second chain in the next row-time.
+template <class C>
+void to_chain_order(hls::stream<CostWord<C>>& in, hls::stream<CostWord<C>>& out, int width, int height) {
+  constexpr int G = C::kGroups;
+  const Chains<C> chains(width);
+  CostWord<C> banks[2][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
+#pragma HLS DEPENDENCE variable = banks inter false
+  int t = 0, slot = 0, g = 0;
+to_chain_groups:
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    if (t < height && slot < width) banks[t & 1][slot * G + g] = in.read();
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) out.write(banks[row & 1][x * G + g]);
+    if (++g == G) {
+      g = 0;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// Sums from chain order back to raster order: row t - 1 leaves during row-time t, its first half
+// from the bank written a row-time earlier, its second half just after the second chain wrote it.
+template <class C>
+void from_chain_order(hls::stream<SumWord<C>>& in, hls::stream<SumWord<C>>& out, int width, int height) {
+  constexpr int G = C::kGroups;
+  const Chains<C> chains(width);
+  SumWord<C> banks[2][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
+#pragma HLS DEPENDENCE variable = banks inter false
+  int t = 0, slot = 0, g = 0;
+from_chain_groups:
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) banks[row & 1][x * G + g] = in.read();
+    if (t >= 1 && slot < width) out.write(banks[(t - 1) & 1][slot * G + g]);
+    if (++g == G) {
+      g = 0;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// The path costs in chain order. The rows above (45, 90, 135 degrees: dx = -1, 0, +1) are packed
+// rows in block RAM, W * G words of uf path costs per path, ping-pong by row parity (the two chains
+// work on two rows), with the per-pixel minima beside them; a read never meets a write of the same
+// word closer than half a row (DEPENDENCE inter false). The 0-degree state (the previous pixel's
+// last G + 1 words and its minimum) belongs to the row, so it is kept per row parity: the second
+// chain takes over the row where the first one stopped a row-time earlier.
 template <class C, int kInstance>
-void aggregate(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height, int p1,
-               int p2) {
+void aggregate_chains(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height,
+                      int p1, int p2) {
   constexpr int G = C::kGroups, U = C::kUf;
   constexpr int kUpperDx[3] = {-1, 0, 1};
   constexpr unsigned kUpperMask[3] = {2u, 4u, 8u};  // 45, 90, 135 (config.hpp's PathMask)
   constexpr bool kPath0 = C::kPaths & 1u;
   p2 = clamp_int(p2, 0, C::kP2);
   p1 = clamp_int(p1, 0, p2);
+  const Chains<C> chains(width);
 
-  PathWord<C> rows[3][C::kMaxWidth * G];
+  PathWord<C> rows[3][2][C::kMaxWidth * G];
 #pragma HLS ARRAY_PARTITION variable = rows complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = rows complete dim = 2
+#pragma HLS ARRAY_PARTITION variable = rows cyclic factor = 3 dim = 3
 #pragma HLS BIND_STORAGE variable = rows type = ram_2p impl = bram
 #pragma HLS DEPENDENCE variable = rows inter false
-  ap_uint<C::kPathCostBits> minima[3][C::kMaxWidth];
+  ap_uint<C::kPathCostBits> minima[3][2][C::kMaxWidth];
 #pragma HLS ARRAY_PARTITION variable = minima complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = minima complete dim = 2
 #pragma HLS DEPENDENCE variable = minima inter false
-  PathWord<C> ahead[3][G + 3];  // ahead[p][k]: the row word read k iterations ago
-#pragma HLS ARRAY_PARTITION variable = ahead complete dim = 0
-  int ahead_min[3][2] = {};  // the minima read at the end of the last two pixels
-#pragma HLS ARRAY_PARTITION variable = ahead_min complete dim = 0
-  int running_min[3] = {};
-  PathWord<C> left_words[G + 1];  // the 0-degree path's last G + 1 words, newest first
-#pragma HLS ARRAY_PARTITION variable = left_words complete
-  int left_min = 0, left_running_min = 0;
+  PathWord<C> left_words[2][G + 1];  // per row parity: the 0-degree path's last G + 1 words, newest first
+  int left_min[2] = {};
+#pragma HLS ARRAY_PARTITION variable = left_words complete dim = 0
+#pragma HLS ARRAY_PARTITION variable = left_min complete
+  // The two chains alternate pixel by pixel: a chain's 0-degree state is read again at least
+  // G + 1 iterations after it was written.
+#pragma HLS DEPENDENCE variable = left_words inter true distance = G + 1
+#pragma HLS DEPENDENCE variable = left_min inter true distance = G + 1
+  int running_min[4] = {};  // over the groups of the current pixel: 0 degrees, then 45, 90, 135
 
-  int x = 0, y = 0, g = 0, i_row = 0;  // i_row = x * G + g
-  const int row_words = width * G;
+  int t = 0, slot = 0, g = 0;
 aggregate_groups:
-  for (int i = 0; i < width * height * G; ++i) {
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
 #pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
-    const CostWord<C> cost_word = costs.read();
-    int sum[U];
-    for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) {
+      const int parity = row & 1;
+      const CostWord<C> cost_word = costs.read();
+      int sum[U];
+      for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
 
-    if (kPath0) {
-      int word_min = 0;
-      const PathWord<C> word = path_word<C>(cost_word, g, x > 0, left_words[G], left_words[G - 1],
-                                            left_words[G >= 2 ? G - 2 : 0], left_min, p1, p2, sum, word_min);
-      left_running_min = g == 0 ? word_min : (word_min < left_running_min ? word_min : left_running_min);
-      for (int k = G; k > 0; --k) left_words[k] = left_words[k - 1];
-      left_words[0] = word;
-      if (g == G - 1) left_min = left_running_min;
-    }
-
-    for (int p = 0; p < 3; ++p) {
-      if (!(C::kPaths & kUpperMask[p])) continue;
-      const int dx = kUpperDx[p];
-      const int a = dx > 0 ? G + 1 : 1;  // read-ahead distance in words
-      int read_at = i_row + a;
-      if (read_at >= row_words) read_at -= row_words;  // the next row's first words: this row's
-      for (int k = G + 2; k > 0; --k) ahead[p][k] = ahead[p][k - 1];
-      ahead[p][0] = rows[p][read_at];
-      const int k_centre = a - dx * G;  // ahead[p][k_centre] is the predecessor's word of group g
-      const int pred_min = ahead_min[p][dx < 0 ? 1 : 0];
-      const bool has_pred = y > 0 && x + dx >= 0 && x + dx < width;
-      int word_min = 0;
-      const PathWord<C> word =
-          path_word<C>(cost_word, g, has_pred, ahead[p][k_centre + 1], ahead[p][k_centre],
-                       ahead[p][k_centre - 1], pred_min, p1, p2, sum, word_min);
-      rows[p][i_row] = word;
-      running_min[p] = g == 0 ? word_min : (word_min < running_min[p] ? word_min : running_min[p]);
-      if (g == G - 1) {
-        minima[p][x] = running_min[p];
-        // The minimum the next pixel needs: pixel x + 1 + (dx > 0) of the row above, or of this
-        // row when it wraps into the next row.
-        int min_at = x + 1 + (dx > 0 ? 1 : 0);
-        if (min_at >= width) min_at -= width;
-        ahead_min[p][1] = ahead_min[p][0];
-        ahead_min[p][0] = minima[p][min_at];
+      if (kPath0) {
+        PathWord<C>* own = left_words[parity];
+        int word_min = 0;
+        const PathWord<C> word =
+            path_word<C>(cost_word, g, x > 0, own[G], own[G - 1], own[G >= 2 ? G - 2 : 0], left_min[parity],
+                         p1, p2, sum, word_min);
+        running_min[0] = g == 0 || word_min < running_min[0] ? word_min : running_min[0];
+        for (int k = G; k > 0; --k) own[k] = own[k - 1];
+        own[0] = word;
+        if (g == G - 1) left_min[parity] = running_min[0];
       }
+
+      for (int p = 0; p < 3; ++p) {
+        if (!(C::kPaths & kUpperMask[p])) continue;
+        const int px = x + kUpperDx[p];
+        const bool has_pred = row > 0 && px >= 0 && px < width;
+        const PathWord<C>* above = rows[p][1 - parity];
+        const int at = (has_pred ? px : 0) * G + g;
+        int word_min = 0;
+        const PathWord<C> word = path_word<C>(
+            cost_word, g, has_pred, above[g > 0 ? at - 1 : at], above[at], above[g < G - 1 ? at + 1 : at],
+            int(minima[p][1 - parity][has_pred ? px : 0]), p1, p2, sum, word_min);
+        rows[p][parity][x * G + g] = word;
+        running_min[p + 1] = g == 0 || word_min < running_min[p + 1] ? word_min : running_min[p + 1];
+        if (g == G - 1) minima[p][parity][x] = running_min[p + 1];
+      }
+
+      SumWord<C> sum_word = 0;
+      for (int lane = 0; lane < U; ++lane)
+        sum_word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits) = sum[lane];
+      sums.write(sum_word);
     }
-
-    SumWord<C> sum_word = 0;
-    for (int lane = 0; lane < U; ++lane)
-      sum_word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits) = sum[lane];
-    sums.write(sum_word);
-
-    ++i_row;
     if (++g == G) {
       g = 0;
-      if (++x == width) {
-        x = 0;
-        i_row = 0;
-        ++y;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
       }
     }
   }
+}
+
+// Section 3 as one block for the pipeline: raster costs in, raster sums out.
+template <class C, int kInstance>
+void aggregate(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height, int p1,
+               int p2) {
+#pragma HLS INLINE
+  hls::stream<CostWord<C>> chain_costs("chain_costs");
+  hls::stream<SumWord<C>> chain_sums("chain_sums");
+  to_chain_order<C>(costs, chain_costs, width, height);
+  aggregate_chains<C, kInstance>(chain_costs, chain_sums, width, height, p1, p2);
+  from_chain_order<C>(chain_sums, sums, width, height);
 }
 
 // ---------------------------------------------------------------------------------------------
