@@ -61,7 +61,8 @@ std::string lr_enum(LrCheck l) { return l == LrCheck::None ? "None" : l == LrChe
 // time, each loop at II = 1.
 struct Schedule {
   int64_t groups = 0;
-  int64_t aggregation = 0;  // W * H * dmax / uf
+  int64_t paper = 0;        // H * W * dmax / uf (the paper's Eq. 1 at II = 1, without IL)
+  int64_t aggregation = 0;  // (H + 1) * 2 * ceil(W / 2) * dmax / uf: two interleaved chains
   int64_t windows = 0;      // (W + r) * (H + r), the widest window
   int64_t match_side = 0;   // LR2: H * (W + dmax - 1) * dmax / uf
   int64_t bound = 0;
@@ -72,7 +73,8 @@ Schedule schedule(const StereoConfig& cfg) {
   Schedule s;
   const int64_t W = cfg.width, H = cfg.height;
   s.groups = cfg.dmax / cfg.uf;
-  s.aggregation = W * H * s.groups;
+  s.paper = W * H * s.groups;
+  s.aggregation = (H + 1) * 2 * ((W + 1) / 2) * s.groups;
   int r = cfg.window / 2;
   r = std::max(r, cost_window_side(cfg) / 2);
   if (cfg.median != 0) r = std::max(r, cfg.median / 2);
@@ -80,7 +82,8 @@ Schedule schedule(const StereoConfig& cfg) {
   if (cfg.lr == LrCheck::Lr2) s.match_side = H * (W + cfg.dmax - 1) * s.groups;
   s.bound = std::max({s.aggregation, s.windows, s.match_side});
   s.fill_rows = (cfg.cost == CostFunction::Sad ? 0 : cfg.window / 2) + cost_window_side(cfg) / 2 +
-                (cfg.median != 0 ? cfg.median / 2 : 0) + (cfg.gap_interpolation ? 1 : 0);
+                (cfg.median != 0 ? cfg.median / 2 : 0) + (cfg.gap_interpolation ? 1 : 0) +
+                1;  // the aggregation's reorder: a row-time
   return s;
 }
 
@@ -100,10 +103,10 @@ std::string banner(const StereoConfig& cfg, const std::string& comment) {
      << "Top functions: " << top_name(cfg) << " (AXI4-Stream video, AXI4-Lite control), " << top_name(cfg)
      << "_mm (m_axi frames, for XRT)\n\n"
      << "Expected throughput (the paper's Eq. 1, II = 1): cycles = IL + II x (H x W x dmax/uf - 1)\n"
-     << "  = IL + " << s.aggregation - 1 << " at " << cfg.width << "x" << cfg.height << ", " << s.groups
+     << "  = IL + " << s.paper - 1 << " at " << cfg.width << "x" << cfg.height << ", " << s.groups
      << " loop iterations (disparity groups of " << cfg.uf << ") per pixel.\n"
-     << "This kernel's loops per frame: aggregation W*H*dmax/uf = " << s.aggregation
-     << ", windows (W+r)*(H+r) = " << s.windows;
+     << "This kernel's loops per frame: aggregation (two interleaved chains) (H+1)*2*ceil(W/2)*dmax/uf = "
+     << s.aggregation << ", windows (W+r)*(H+r) = " << s.windows;
   if (cfg.lr == LrCheck::Lr2) os << ", LR2 match side H*(W+dmax-1)*dmax/uf = " << s.match_side;
   os << "; the largest, " << s.bound << ", bounds the cycles per frame under DATAFLOW,\n"
      << "plus the fill latency IL of about " << s.fill_rows << " rows (" << s.fill_rows
