@@ -136,3 +136,79 @@ if(tb_at EQUAL -1)
   message(SEND_ERROR "run_hls.tcl adds no test bench (add_files -tb)")
 endif()
 message(STATUS "run_hls.tcl calls:\n${log}")
+
+# The real Vitis headers win when present: with stand-ins that stop the compiler on the include
+# path, the generated top must pick them up, and compiles without them.
+set(fake ${WORK}/fake_vitis)
+foreach(header ap_int.h hls_stream.h ap_axi_sdata.h)
+  file(WRITE ${fake}/${header} "#error \"fpstereo test: the installed ${header} was chosen\"\n")
+endforeach()
+execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -I${fake} -I${WORK}/part ${part_top}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+string(FIND "${err}" "the installed ap_axi_sdata.h was chosen" chosen)
+if(rc EQUAL 0 OR chosen EQUAL -1)
+  message(SEND_ERROR "with ap_int.h, hls_stream.h and ap_axi_sdata.h on the include path the compatibility "
+                     "header was still used (exit ${rc}): ${err}")
+endif()
+execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -Wno-unknown-pragmas -I${WORK}/part ${part_top}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(SEND_ERROR "the generated top does not compile with the compatibility header: ${err}")
+endif()
+
+# The host program's XRT branch compiles against declarations of the XRT native API calls it
+# makes (xrt::device, xrt::kernel, xrt::bo, xrt::run as documented); XRT itself is not here.
+set(xrt ${WORK}/xrt_declarations)
+file(WRITE ${xrt}/xrt/xrt_device.h [=[
+#pragma once
+#include <string>
+namespace xrt {
+struct uuid {};
+class device {
+ public:
+  explicit device(unsigned int index);
+  uuid load_xclbin(const std::string& path);
+};
+}  // namespace xrt
+]=])
+file(WRITE ${xrt}/xrt/xrt_bo.h [=[
+#pragma once
+#include <cstddef>
+#include "xrt/xrt_device.h"
+enum xclBOSyncDirection { XCL_BO_SYNC_BO_TO_DEVICE, XCL_BO_SYNC_BO_FROM_DEVICE };
+namespace xrt {
+using memory_group = unsigned int;
+class bo {
+ public:
+  bo(const device& d, size_t size, memory_group group);
+  void write(const void* src);
+  void read(void* dst);
+  void sync(xclBOSyncDirection direction);
+};
+}  // namespace xrt
+]=])
+file(WRITE ${xrt}/xrt/xrt_kernel.h [=[
+#pragma once
+#include <string>
+#include "xrt/xrt_bo.h"
+#include "xrt/xrt_device.h"
+namespace xrt {
+class run {
+ public:
+  void wait();
+};
+class kernel {
+ public:
+  kernel(const device& d, const uuid& id, const std::string& name);
+  memory_group group_id(int argument);
+  template <class... Args>
+  run operator()(Args&&... args);
+};
+}  // namespace xrt
+]=])
+file(GLOB host ${WORK}/part/*_host.cpp)
+execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -Wno-unknown-pragmas -I${xrt} -I${WORK}/part ${host}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(SEND_ERROR "the host program's XRT branch does not compile: ${err}")
+endif()
