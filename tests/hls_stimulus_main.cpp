@@ -2,7 +2,8 @@
 // bench and `fpstereo run` both read: generated textures (the Verilator bench's stimulus) or a
 // region of an image pair.
 //   hls_stimulus --width W --height H [--seed S] [--levels L] [--shifted D] LEFT.pgm RIGHT.pgm
-//   hls_stimulus --width W --height H --from L.png R.png [--at X Y] LEFT.pgm RIGHT.pgm
+//   hls_stimulus [--width W --height H] --from L.png R.png [--at X Y] LEFT.pgm RIGHT.pgm
+//     (without --width/--height: the whole images)
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
@@ -41,8 +42,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> from;
   std::vector<int> at{0, 0};
   std::string left_path, right_path;
-  app.add_option("--width", width)->required();
-  app.add_option("--height", height)->required();
+  app.add_option("--width", width);
+  app.add_option("--height", height);
   app.add_option("--seed", seed);
   app.add_option("--levels", levels);
   app.add_option("--shifted", shift);
@@ -54,9 +55,15 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     tb::StereoPair pair;
     if (!from.empty()) {
-      pair.left = region(load_gray(from[0], "left image"), at[0], at[1], width, height);
-      pair.right = region(load_gray(from[1], "right image"), at[0], at[1], width, height);
+      const GrayImage left = load_gray(from[0], "left image"), right = load_gray(from[1], "right image");
+      if (width == 0 || height == 0) {
+        width = left.width;
+        height = left.height;
+      }
+      pair.left = region(left, at[0], at[1], width, height);
+      pair.right = region(right, at[0], at[1], width, height);
     } else {
+      if (width <= 0 || height <= 0) throw InputError("--width and --height are required for generated pairs");
       std::mt19937 rng(seed);
       pair = shift >= 0 ? tb::shifted_pair(width, height, shift, levels, rng)
                         : tb::random_pair(width, height, levels, rng);
