@@ -1,10 +1,12 @@
 // fpstereo HLS kernels: the semi-global matching pipeline as Vitis HLS streaming stages, bit-exact
 // with the golden model (docs/semantics.md). Every stage is a function template on a configuration
 // struct C (the generated <prefix>_config.hpp: constants from StereoConfig and derive_widths), reads
-// hls::streams and writes hls::streams in raster order, and is meant to run under DATAFLOW with its
-// main loop pipelined at II = 1. Stages, in data-flow order:
+// hls::streams and writes hls::streams in raster order (the aggregation works in chain order
+// inside), and is meant to run under DATAFLOW with its main loop pipelined at II = 1. Stages, in
+// data-flow order:
 //
-//   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost ─ aggregate ─ select
+//   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost
+//     ─ aggregate (to_chain_order ─ aggregate_chains ─ from_chain_order) ─ select
 //     ─ [LR check] ─ [window (median) ─ median] ─ [gap fill] ─ write_disparity
 //   LR1: select also finds the match-side disparities from the base side's sums.
 //   LR2: match_costs (the base costs regrouped per match pixel) ─ aggregate ─ select_match.
@@ -392,7 +394,6 @@ PathWord<C> path_word(const CostWord<C>& costs, int g, bool has_pred, const Path
 // previous pixel, or for the second half's first pixel the first chain's last one, a row-time
 // earlier; the row above was finished a row-time earlier, or at the halves' border by the other
 // chain earlier in the same row-time.
-template <class C>
 struct Chains {
   int half, slots;  // h, and the slots of a row-time (2h: the last is a bubble when W is odd)
   explicit Chains(int width) : half((width + 1) / 2), slots(2 * ((width + 1) / 2)) {}
@@ -405,7 +406,7 @@ struct Chains {
 template <class C>
 void to_chain_order(hls::stream<CostWord<C>>& in, hls::stream<CostWord<C>>& out, int width, int height) {
   constexpr int G = C::kGroups;
-  const Chains<C> chains(width);
+  const Chains chains(width);
   CostWord<C> banks[2][C::kMaxWidth * G];
 #pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
 #pragma HLS DEPENDENCE variable = banks inter false
@@ -432,7 +433,7 @@ to_chain_groups:
 template <class C>
 void from_chain_order(hls::stream<SumWord<C>>& in, hls::stream<SumWord<C>>& out, int width, int height) {
   constexpr int G = C::kGroups;
-  const Chains<C> chains(width);
+  const Chains chains(width);
   SumWord<C> banks[2][C::kMaxWidth * G];
 #pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
 #pragma HLS DEPENDENCE variable = banks inter false
@@ -469,7 +470,7 @@ void aggregate_chains(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& 
   constexpr bool kPath0 = C::kPaths & 1u;
   p2 = clamp_int(p2, 0, C::kP2);
   p1 = clamp_int(p1, 0, p2);
-  const Chains<C> chains(width);
+  const Chains chains(width);
 
   PathWord<C> rows[3][2][C::kMaxWidth * G];
 #pragma HLS ARRAY_PARTITION variable = rows complete dim = 1

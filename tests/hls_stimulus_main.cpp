@@ -63,7 +63,8 @@ int main(int argc, char** argv) {
       pair.left = region(left, at[0], at[1], width, height);
       pair.right = region(right, at[0], at[1], width, height);
     } else {
-      if (width <= 0 || height <= 0) throw InputError("--width and --height are required for generated pairs");
+      if (width <= 0 || height <= 0)
+        throw InputError("--width and --height are required for generated pairs");
       std::mt19937 rng(seed);
       pair = shift >= 0 ? tb::shifted_pair(width, height, shift, levels, rng)
                         : tb::random_pair(width, height, levels, rng);
