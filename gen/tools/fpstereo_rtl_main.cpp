@@ -65,7 +65,9 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output-dir", out_dir,
                  "write one file per module, filelist.f, config.json and the Vivado files here");
   double clock_mhz = 300;
-  app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
+  app.add_option(
+         "--clock-mhz", clock_mhz,
+         "with -o: target clock of the out-of-context XDC (or of run_hls.tcl with --emit hls), in MHz")
       ->capture_default_str();
   std::string emit = "verilog";
   app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")
