@@ -33,3 +33,10 @@ expect_error("--width" run --dmax 64 --uf 16 --width 200 --height 100 ${L} ${R})
 expect_error("expected an integer" run --dmax many ${L} ${R})
 expect_error("no such directory" eval ${WORK}/nowhere)
 expect_error("pairs.csv" eval ${WORK}/pairs)
+
+# fpstereo-rtl --emit (expect_error runs ${FPSTEREO}).
+set(FPSTEREO ${FPSTEREO_RTL})
+expect_error("--emit hls writes a directory: give -o DIR" --emit hls)
+expect_error("--emit 'vhdl': expected verilog or hls" --emit vhdl -o ${WORK}/vhdl)
+expect_error("--part 'zcu 102'" --emit hls --part "zcu 102" -o ${WORK}/bad_part)
+expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad_uf)

@@ -3,6 +3,7 @@
 //   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json, the
 //                                                  register map <prefix>_regs.h and the Vivado files
 //                                                  (constraints/README.md)
+//   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, README "HLS path")
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config_cli.hpp"
+#include "hls_emitter.hpp"
 #include "rtl_emitter.hpp"
 #include "vivado_emitter.hpp"
 
@@ -44,6 +46,15 @@ void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& 
   write_file(dir / "config.json", config.dump(2) + "\n");
 }
 
+void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options,
+                         const std::filesystem::path& dir) {
+  const auto files = hls::emit(cfg, options);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
+  for (const auto& file : files) write_file(dir / file.name, file.text);
+}
+
 }  // namespace
 }  // namespace fpstereo
 
@@ -60,10 +71,26 @@ int main(int argc, char** argv) {
   app.add_flag("--no-axi-lite", no_axi_lite,
                "no AXI4-Lite control interface: the settings are the generated ones, nothing is counted");
   double clock_mhz = 300;
-  app.add_option("--clock-mhz", clock_mhz, "with -o: target clock of the out-of-context XDC, in MHz")
+  app.add_option(
+         "--clock-mhz", clock_mhz,
+         "with -o: target clock of the out-of-context XDC (or of run_hls.tcl with --emit hls), in MHz")
+      ->capture_default_str();
+  std::string emit = "verilog";
+  app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")
+      ->capture_default_str();
+  hls::HlsOptions hls_options;
+  app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")
       ->capture_default_str();
   try {
     app.parse(argc, argv);
+    if (emit != "verilog" && emit != "hls")
+      return report_error("fpstereo-rtl", "--emit '" + emit + "': expected verilog or hls");
+    if (emit == "hls") {
+      if (out_dir.empty()) return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
+      hls_options.clock_mhz = clock_mhz;
+      write_hls_directory(flags.resolve(), hls_options, out_dir);
+      return 0;
+    }
     options.control = !no_axi_lite;
     const rtl::RtlDesign design = rtl::plan(flags.resolve(), options);
     if (out_dir.empty())

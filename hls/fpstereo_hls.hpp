@@ -1,0 +1,935 @@
+// fpstereo HLS kernels: the semi-global matching pipeline as Vitis HLS streaming stages, bit-exact
+// with the golden model (docs/semantics.md). Every stage is a function template on a configuration
+// struct C (the generated <prefix>_config.hpp: constants from StereoConfig and derive_widths), reads
+// hls::streams and writes hls::streams in raster order (the aggregation works in chain order
+// inside), and is meant to run under DATAFLOW with its main loop pipelined at II = 1. Stages, in
+// data-flow order:
+//
+//   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost
+//     ─ aggregate (to_chain_order ─ aggregate_chains ─ from_chain_order) ─ select
+//     ─ [LR check] ─ [window (median) ─ median] ─ [gap fill] ─ write_disparity
+//   LR1: select also finds the match-side disparities from the base side's sums.
+//   LR2: match_costs (the base costs regrouped per match pixel) ─ aggregate ─ select_match.
+//
+// Time base: one pixel takes G = dmax / uf loop iterations ("groups"), each handling uf disparities
+// packed into one word, so a frame takes about W * H * dmax / uf cycles plus the fill latency.
+#pragma once
+
+#include <type_traits>
+
+#if __has_include(<ap_int.h>) && __has_include(<hls_stream.h>) && __has_include(<ap_axi_sdata.h>)
+#ifndef AP_INT_MAX_W
+#define AP_INT_MAX_W 8192  // packed words of uf path costs or sums can exceed the default 1024 bits
+#endif
+#include <ap_axi_sdata.h>
+#include <ap_int.h>
+#include <hls_stream.h>
+#else
+#include "fpstereo_hls_compat.h"
+#endif
+
+namespace fpstereo_hls {
+
+enum class Cost { Census, Rank, Sad, Zsad, Shd };
+enum class Lr { None, Lr1, Lr2 };
+
+using Pixel = ap_uint<8>;
+using VideoIn = ap_axiu<8, 1, 1, 1>;
+
+// Runtime sizes and parameters (AXI4-Lite registers), clamped to what the hardware was built for:
+// the path-cost widths hold P2 up to the configured value, the line buffers the configured width.
+struct Frame {
+  int width, height;
+};
+template <class C>
+Frame clamp_frame(int width, int height) {
+  const int w = width < C::kMinWidth ? C::kMinWidth : width > C::kMaxWidth ? C::kMaxWidth : width;
+  const int h = height < 1 ? 1 : height > C::kMaxHeight ? C::kMaxHeight : height;
+  return Frame{w, h};
+}
+inline int clamp_int(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
+
+// ---------------------------------------------------------------------------------------------
+// Feature and word types of a configuration.
+
+template <int N>
+struct CensusCodeOf {
+  using type = ap_uint<N * N - 1>;
+};
+// ZSAD compares pixels after subtracting their window means, so each pixel carries its mean.
+struct ZsadPixel {
+  Pixel pixel;
+  Pixel mean;
+};
+
+template <class C>
+using CensusCode = typename CensusCodeOf<C::kWindow>::type;
+// What the cost window slides over: census codes (census, SHD), rank values, pixels (SAD) or
+// pixels with their means (ZSAD).
+template <class C>
+using Feature =
+    std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
+                       std::conditional_t<C::kCost == Cost::Rank, ap_uint<C::kCodeBits>,
+                                          std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>>;
+// Side of the window the cost sums over: 1 for census and rank (point costs of transformed
+// pixels), N for SAD and ZSAD, the SHD window for SHD.
+template <class C>
+constexpr int cost_window() {
+  return C::kCost == Cost::Census || C::kCost == Cost::Rank ? 1
+         : C::kCost == Cost::Shd                            ? C::kShdWindow
+                                                            : C::kWindow;
+}
+
+template <class C>
+using CostWord = ap_uint<C::kUf * C::kCostBits>;  // uf costs, disparity g * uf + lane
+template <class C>
+using PathWord = ap_uint<C::kUf * C::kPathCostBits>;
+template <class C>
+using SumWord = ap_uint<C::kUf * C::kSumBits>;
+template <class C>
+using Word = ap_uint<C::kWordBits>;  // the output word: disparity, invalid flag on top
+template <class C>
+using VideoOut = ap_axiu<C::kOutBits, 1, 1, 1>;
+
+template <class T, int N>
+struct Window {
+  T v[N][N];  // v[row][column], row 0 on top
+};
+
+// The value of a window position outside the image (section 1: zero extension).
+template <class T>
+T zero_value() {
+  return T(0);
+}
+template <>
+inline ZsadPixel zero_value<ZsadPixel>() {
+  ZsadPixel p;
+  p.pixel = 0;
+  p.mean = 0;
+  return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input: the left and right AXI4-Stream pixels, one of each per pixel (tuser/tlast not
+// interpreted: the frame size comes from the registers).
+template <class C>
+void read_pair(hls::stream<VideoIn>& left_in, hls::stream<VideoIn>& right_in, hls::stream<Pixel>& left,
+               hls::stream<Pixel>& right, int width, int height) {
+  const Frame f = clamp_frame<C>(width, height);
+read_pair_pixels:
+  for (int i = 0; i < f.width * f.height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    left.write(left_in.read().data);
+    right.write(right_in.read().data);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 1: an N x N window around every pixel, in raster order, positions outside the image
+// replaced by `fill` (0 for the cost stages, the invalid word for the median). N - 1 line buffers
+// and a register window shifted by one column per pixel; the centre lags the input by r rows and
+// r pixels, so the loop runs r extra rows and columns with fill as input. Positions outside the
+// image are masked by comparing with the centre, so stale line-buffer contents never matter.
+template <class T, int N, int kMaxWidth>
+void window_stage(hls::stream<T>& in, hls::stream<Window<T, N>>& out, int width, int height, T fill) {
+  constexpr int r = N / 2;
+  constexpr int kLines = N > 1 ? N - 1 : 1;
+  T lines[kLines][kMaxWidth];
+#pragma HLS ARRAY_PARTITION variable = lines complete dim = 1
+#pragma HLS DEPENDENCE variable = lines inter false
+  Window<T, N> win;
+#pragma HLS ARRAY_PARTITION variable = win.v complete dim = 0
+  int x = 0, y = 0;
+window_pixels:
+  for (int i = 0; i < (width + r) * (height + r); ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (kMaxWidth + r) * (1 + r)
+    T column[N];
+#pragma HLS ARRAY_PARTITION variable = column complete
+    const T pixel = (x < width && y < height) ? in.read() : fill;
+    if (x < width) {
+      for (int k = 0; k < N - 1; ++k) column[k] = lines[k][x];
+      column[N - 1] = pixel;
+      for (int k = 0; k + 1 < N - 1; ++k) lines[k][x] = column[k + 1];
+      if (N > 1) lines[kLines - 1][x] = pixel;
+    } else {
+      for (int k = 0; k < N; ++k) column[k] = fill;
+    }
+    for (int row = 0; row < N; ++row) {
+      for (int col = 0; col + 1 < N; ++col) win.v[row][col] = win.v[row][col + 1];
+      win.v[row][N - 1] = column[row];
+    }
+    if (x >= r && y >= r) {
+      const int xc = x - r, yc = y - r;
+      Window<T, N> masked;
+      for (int row = 0; row < N; ++row)
+        for (int col = 0; col < N; ++col) {
+          const int xi = xc + col - r, yi = yc + row - r;
+          const bool inside = xi >= 0 && xi < width && yi >= 0 && yi < height;
+          masked.v[row][col] = inside ? win.v[row][col] : fill;
+        }
+      out.write(masked);
+    }
+    if (++x == width + r) {
+      x = 0;
+      ++y;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 2: transforms. Census: one bit per neighbour, 1 iff centre > neighbour, the first window
+// position in the most significant bit. Rank: neighbours below the centre. ZSAD: the pixel and
+// floor(window sum / N^2).
+template <class C>
+Feature<C> transform_window(const Window<Pixel, C::kWindow>& w) {
+  constexpr int N = C::kWindow, r = N / 2;
+  const int centre = w.v[r][r];
+  if constexpr (C::kCost == Cost::Census || C::kCost == Cost::Shd) {
+    CensusCode<C> code = 0;
+    int bit = N * N - 2;
+    for (int row = 0; row < N; ++row)
+      for (int col = 0; col < N; ++col) {
+        if (row == r && col == r) continue;
+        code.range(bit, bit) = centre > int(w.v[row][col]) ? 1 : 0;
+        --bit;
+      }
+    return code;
+  } else if constexpr (C::kCost == Cost::Rank) {
+    int rank = 0;
+    for (int row = 0; row < N; ++row)
+      for (int col = 0; col < N; ++col)
+        if (!(row == r && col == r)) rank += int(w.v[row][col]) < centre;
+    return Feature<C>(rank);
+  } else {
+    int sum = 0;
+    for (int row = 0; row < N; ++row)
+      for (int col = 0; col < N; ++col) sum += int(w.v[row][col]);
+    ZsadPixel p;
+    p.pixel = centre;
+    p.mean = sum / (N * N);
+    return p;
+  }
+}
+
+template <class C>
+void transform_stage(hls::stream<Window<Pixel, C::kWindow>>& in, hls::stream<Feature<C>>& out, int width,
+                     int height) {
+transform_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    out.write(transform_window<C>(in.read()));
+  }
+}
+
+// Point costs between a base and a match feature.
+template <int W>
+int hamming(const ap_uint<W>& a, const ap_uint<W>& b) {
+  int distance = 0;
+  for (int i = 0; i < W; ++i) distance += bool(a[i]) != bool(b[i]);
+  return distance;
+}
+inline int abs_diff(int a, int b) { return a > b ? a - b : b - a; }
+
+// The cost of disparity d at the current pixel. history[j] is the match column x + r - j of the
+// cost window (r its radius), so the match window of x - d spans history[d .. d + 2r].
+template <class C>
+int window_cost(const Window<Feature<C>, cost_window<C>()>& base,
+                const Feature<C> history[][cost_window<C>()], int d) {
+  constexpr int K = cost_window<C>(), r = K / 2;
+  int sum = 0;
+  for (int row = 0; row < K; ++row)
+    for (int col = 0; col < K; ++col) {
+      const Feature<C>& b = base.v[row][col];
+      const Feature<C>& m = history[d + 2 * r - col][row];
+      if constexpr (C::kCost == Cost::Census || C::kCost == Cost::Shd) {
+        sum += hamming(b, m);
+      } else if constexpr (C::kCost == Cost::Zsad) {
+        const int base_mean = base.v[r][r].mean, match_mean = history[d + r][r].mean;
+        sum += abs_diff(int(b.pixel) - base_mean, int(m.pixel) - match_mean);
+      } else {
+        sum += abs_diff(int(b), int(m));
+      }
+    }
+  return sum;
+}
+
+// C(x, y, d) for every pixel, G words of uf costs each; Cmax where x - d < 0. The match columns of
+// the last dmax + K - 1 positions live in a register history shifted once per pixel; at a row's
+// start it is refilled from the first window (columns left of the image are zero). With LR2 the
+// costs also go to the match side.
+template <class C>
+void cost_stage(hls::stream<Window<Feature<C>, cost_window<C>()>>& base_in,
+                hls::stream<Window<Feature<C>, cost_window<C>()>>& match_in, hls::stream<CostWord<C>>& out,
+                hls::stream<CostWord<C>>& match_side_out, int width, int height) {
+  constexpr int K = cost_window<C>(), G = C::kGroups, kHistory = C::kDmax + K - 1;
+  Feature<C> history[kHistory][K];
+#pragma HLS ARRAY_PARTITION variable = history complete dim = 0
+  Window<Feature<C>, K> base;
+  int x = 0, g = 0;
+cost_groups:
+  for (int i = 0; i < width * height * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
+    if (g == 0) {
+      base = base_in.read();
+      const Window<Feature<C>, K> match = match_in.read();
+      for (int j = kHistory - 1; j >= 0; --j)
+        for (int row = 0; row < K; ++row) {
+          if (x == 0)
+            history[j][row] = j < K ? match.v[row][K - 1 - j] : zero_value<Feature<C>>();
+          else
+            history[j][row] = j == 0 ? match.v[row][K - 1] : history[j - 1][row];
+        }
+    }
+    CostWord<C> word = 0;
+    for (int lane = 0; lane < C::kUf; ++lane) {
+#pragma HLS UNROLL
+      const int d = g * C::kUf + lane;
+      const int cost = d > x ? C::kCostMax : window_cost<C>(base, history, d);
+      word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
+    }
+    out.write(word);
+    if (C::kLr == Lr::Lr2) match_side_out.write(word);
+    if (++g == G) {
+      g = 0;
+      if (++x == width) x = 0;
+    }
+  }
+}
+
+// Section 5, LR2: the match side's cost of match pixel x' at disparity d is the base cost
+// C(x' + d, d) (Cmax beyond the right border). Lane l of base word (x, g) goes to bank l at slot
+// x mod dmax, so every lane of match word (x', g) is one read in its own bank. Match pixel x' is
+// complete once base pixel x' + dmax - 1 has arrived: the row takes W + dmax - 1 pixel times.
+template <class C>
+void match_costs(hls::stream<CostWord<C>>& base_costs, hls::stream<CostWord<C>>& out, int width, int height) {
+  constexpr int G = C::kGroups, D = C::kDmax;
+  ap_uint<C::kCostBits> banks[C::kUf][D][G];
+#pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
+#pragma HLS DEPENDENCE variable = banks inter false
+match_cost_rows:
+  for (int y = 0; y < height; ++y) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight
+    int t = 0, g = 0;
+  match_cost_groups:
+    for (int i = 0; i < (width + D - 1) * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxWidth + C::kDmax - 1) * C::kGroups
+      if (t < width) {
+        const CostWord<C> word = base_costs.read();
+        for (int lane = 0; lane < C::kUf; ++lane)
+          banks[lane][t % D][g] = word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits);
+      }
+      if (t >= D - 1) {
+        const int xm = t - (D - 1);
+        CostWord<C> word = 0;
+        for (int lane = 0; lane < C::kUf; ++lane) {
+          const int xb = xm + g * C::kUf + lane;
+          const int cost = xb < width ? int(banks[lane][xb % D][g]) : C::kCostMax;
+          word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
+        }
+        out.write(word);
+      }
+      if (++g == G) {
+        g = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 3: path costs and their sum.
+//
+// L(p, d) = C(p, d) + min(L(p-r, d), L(p-r, d-1) + P1, L(p-r, d+1) + P1, m + P2) - m, written as
+// C + (t - m) so no intermediate exceeds the path-cost width.
+inline int path_step(int cost, int pred, bool has_lower, int lower, bool has_upper, int upper, int pred_min,
+                     int p1, int p2) {
+  int t = pred < pred_min + p2 ? pred : pred_min + p2;
+  if (has_lower && lower + p1 < t) t = lower + p1;
+  if (has_upper && upper + p1 < t) t = upper + p1;
+  return cost + (t - pred_min);
+}
+
+template <class C>
+int lane_of(const PathWord<C>& w, int lane) {
+  return int(w.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits));
+}
+
+// One word of a path: L for the uf disparities of group g, from the predecessor's words of groups
+// g - 1, g and g + 1 (the d +- 1 neighbours across the group borders) and its minimum; L = C at a
+// path start. Adds L to the sums and returns the word's minimum in word_min.
+template <class C>
+PathWord<C> path_word(const CostWord<C>& costs, int g, bool has_pred, const PathWord<C>& lower_word,
+                      const PathWord<C>& centre, const PathWord<C>& upper_word, int pred_min, int p1, int p2,
+                      int sum[C::kUf], int& word_min) {
+  constexpr int U = C::kUf;
+  PathWord<C> word = 0;
+  for (int lane = 0; lane < U; ++lane) {
+    const int d = g * U + lane;
+    const int cost = int(costs.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits));
+    int l = cost;
+    if (has_pred) {
+      const int lower = lane > 0 ? lane_of<C>(centre, lane - 1) : lane_of<C>(lower_word, U - 1);
+      const int upper = lane < U - 1 ? lane_of<C>(centre, lane + 1) : lane_of<C>(upper_word, 0);
+      l = path_step(cost, lane_of<C>(centre, lane), d > 0, lower, d < C::kDmax - 1, upper, pred_min, p1, p2);
+    }
+    word.range((lane + 1) * C::kPathCostBits - 1, lane * C::kPathCostBits) = l;
+    sum[lane] += l;
+    if (lane == 0 || l < word_min) word_min = l;
+  }
+  return word;
+}
+
+// The 0-degree loop: pixel x needs all of L(x-1, .) and their minimum, so in raster order the
+// minimum tree of one pixel would feed the next pixel's first group in the next cycle. As in the
+// paper (interleaving and reordering) and the RTL (docs/architecture.md, with K = 2 here), each
+// row is cut into two halves of h = ceil(W / 2) pixels processed by two interleaved chains: in
+// row-time t, slot j, chain k = j mod 2 processes pixel x = k * h + j / 2 of row t - k. Consecutive
+// slots belong to different chains, so a chain's next pixel starts G + 1 iterations after its
+// previous pixel's last group. Every predecessor is finished in time: (x-1, row) is the chain's
+// previous pixel, or for the second half's first pixel the first chain's last one, a row-time
+// earlier; the row above was finished a row-time earlier, or at the halves' border by the other
+// chain earlier in the same row-time.
+struct Chains {
+  int half, slots;  // h, and the slots of a row-time (2h: the last is a bubble when W is odd)
+  explicit Chains(int width) : half((width + 1) / 2), slots(2 * ((width + 1) / 2)) {}
+  int chain(int slot) const { return slot & 1; }
+  int x(int slot) const { return chain(slot) * half + slot / 2; }
+};
+
+// Costs from raster order to chain order, one row-time behind: row t's pixels are kept (bank
+// t mod 2) for the first chain now and the second chain in the next row-time.
+template <class C>
+void to_chain_order(hls::stream<CostWord<C>>& in, hls::stream<CostWord<C>>& out, int width, int height) {
+  constexpr int G = C::kGroups;
+  const Chains chains(width);
+  CostWord<C> banks[2][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
+#pragma HLS DEPENDENCE variable = banks inter false
+  int t = 0, slot = 0, g = 0;
+to_chain_groups:
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    if (t < height && slot < width) banks[t & 1][slot * G + g] = in.read();
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) out.write(banks[row & 1][x * G + g]);
+    if (++g == G) {
+      g = 0;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// Sums from chain order back to raster order: row t - 1 leaves during row-time t, its first half
+// from the bank written a row-time earlier, its second half just after the second chain wrote it.
+template <class C>
+void from_chain_order(hls::stream<SumWord<C>>& in, hls::stream<SumWord<C>>& out, int width, int height) {
+  constexpr int G = C::kGroups;
+  const Chains chains(width);
+  SumWord<C> banks[2][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
+#pragma HLS DEPENDENCE variable = banks inter false
+  int t = 0, slot = 0, g = 0;
+from_chain_groups:
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) banks[row & 1][x * G + g] = in.read();
+    if (t >= 1 && slot < width) out.write(banks[(t - 1) & 1][slot * G + g]);
+    if (++g == G) {
+      g = 0;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// The path costs in chain order. The rows above (45, 90, 135 degrees: dx = -1, 0, +1) are packed
+// rows in block RAM, W * G words of uf path costs per path, ping-pong by row parity (the two chains
+// work on two rows), with the per-pixel minima beside them; a read never meets a write of the same
+// word closer than half a row (DEPENDENCE inter false). The 0-degree state (the previous pixel's
+// last G + 1 words and its minimum) belongs to the row, so it is kept per row parity: the second
+// chain takes over the row where the first one stopped a row-time earlier.
+template <class C, int kInstance>
+void aggregate_chains(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height,
+                      int p1, int p2) {
+  constexpr int G = C::kGroups, U = C::kUf;
+  constexpr int kUpperDx[3] = {-1, 0, 1};
+  constexpr unsigned kUpperMask[3] = {2u, 4u, 8u};  // 45, 90, 135 (config.hpp's PathMask)
+  constexpr bool kPath0 = C::kPaths & 1u;
+  p2 = clamp_int(p2, 0, C::kP2);
+  p1 = clamp_int(p1, 0, p2);
+  const Chains chains(width);
+
+  PathWord<C> rows[3][2][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = rows complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = rows complete dim = 2
+#pragma HLS ARRAY_PARTITION variable = rows cyclic factor = 3 dim = 3
+#pragma HLS BIND_STORAGE variable = rows type = ram_2p impl = bram
+#pragma HLS DEPENDENCE variable = rows inter false
+  ap_uint<C::kPathCostBits> minima[3][2][C::kMaxWidth];
+#pragma HLS ARRAY_PARTITION variable = minima complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = minima complete dim = 2
+#pragma HLS DEPENDENCE variable = minima inter false
+  PathWord<C> left_words[2][G + 1];  // per row parity: the 0-degree path's last G + 1 words, newest first
+  int left_min[2] = {};
+#pragma HLS ARRAY_PARTITION variable = left_words complete dim = 0
+#pragma HLS ARRAY_PARTITION variable = left_min complete
+  // The two chains alternate pixel by pixel: a chain's 0-degree state is read again at least
+  // G + 1 iterations after it was written.
+#pragma HLS DEPENDENCE variable = left_words inter true distance = G + 1
+#pragma HLS DEPENDENCE variable = left_min inter true distance = G + 1
+  int running_min[4] = {};  // over the groups of the current pixel: 0 degrees, then 45, 90, 135
+
+  int t = 0, slot = 0, g = 0;
+aggregate_groups:
+  for (int i = 0; i < (height + 1) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 1) * (C::kMaxWidth + 1) * C::kGroups
+    const int x = chains.x(slot), row = t - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) {
+      const int parity = row & 1;
+      const CostWord<C> cost_word = costs.read();
+      int sum[U];
+      for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
+
+      if (kPath0) {
+        PathWord<C>* own = left_words[parity];
+        int word_min = 0;
+        const PathWord<C> word =
+            path_word<C>(cost_word, g, x > 0, own[G], own[G - 1], own[G >= 2 ? G - 2 : 0], left_min[parity],
+                         p1, p2, sum, word_min);
+        running_min[0] = g == 0 || word_min < running_min[0] ? word_min : running_min[0];
+        for (int k = G; k > 0; --k) own[k] = own[k - 1];
+        own[0] = word;
+        if (g == G - 1) left_min[parity] = running_min[0];
+      }
+
+      for (int p = 0; p < 3; ++p) {
+        if (!(C::kPaths & kUpperMask[p])) continue;
+        const int px = x + kUpperDx[p];
+        const bool has_pred = row > 0 && px >= 0 && px < width;
+        const PathWord<C>* above = rows[p][1 - parity];
+        const int at = (has_pred ? px : 0) * G + g;
+        int word_min = 0;
+        const PathWord<C> word = path_word<C>(
+            cost_word, g, has_pred, above[g > 0 ? at - 1 : at], above[at], above[g < G - 1 ? at + 1 : at],
+            int(minima[p][1 - parity][has_pred ? px : 0]), p1, p2, sum, word_min);
+        rows[p][parity][x * G + g] = word;
+        running_min[p + 1] = g == 0 || word_min < running_min[p + 1] ? word_min : running_min[p + 1];
+        if (g == G - 1) minima[p][parity][x] = running_min[p + 1];
+      }
+
+      SumWord<C> sum_word = 0;
+      for (int lane = 0; lane < U; ++lane)
+        sum_word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits) = sum[lane];
+      sums.write(sum_word);
+    }
+    if (++g == G) {
+      g = 0;
+      if (++slot == chains.slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
+}
+
+// Section 3 as one block for the pipeline: raster costs in, raster sums out.
+template <class C, int kInstance>
+void aggregate(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height, int p1,
+               int p2) {
+#pragma HLS INLINE
+  hls::stream<CostWord<C>> chain_costs("chain_costs");
+  hls::stream<SumWord<C>> chain_sums("chain_sums");
+  to_chain_order<C>(costs, chain_costs, width, height);
+  aggregate_chains<C, kInstance>(chain_costs, chain_sums, width, height, p1, p2);
+  from_chain_order<C>(chain_sums, sums, width, height);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 4: winner-take-all (smallest d among equal sums) and uniqueness. For uniqueness the
+// four smallest (sum, d) pairs seen so far are kept in order: at most three of them (D-1, D, D+1)
+// are excluded, so S2 is always among them.
+template <class C>
+struct Winner {
+  int best_sum = 0, best_d = 0;
+  int top_sum[4], top_d[4];
+  int count = 0;
+
+  void offer(int s, int d) {
+    if (count == 0 || s < best_sum) {
+      best_sum = s;
+      best_d = d;
+    }
+    if (C::kUniqueness == 0) {
+      ++count;
+      return;
+    }
+    // Insert after every entry with a smaller or equal sum (they have smaller d).
+    int at = count < 4 ? count : 4;
+    for (int k = 3; k >= 0; --k)
+      if (k < count && s < top_sum[k]) at = k;
+    for (int k = 3; k > 0; --k)
+      if (k > at) {
+        top_sum[k] = top_sum[k - 1];
+        top_d[k] = top_d[k - 1];
+      }
+    if (at < 4) {
+      top_sum[at] = s;
+      top_d[at] = d;
+    }
+    ++count;
+  }
+  // S2 * (100 - u) < S1 * 100 makes the pixel invalid.
+  bool unique(int ratio) const {
+    for (int k = 0; k < 4 && k < count; ++k) {
+      const int distance = top_d[k] > best_d ? top_d[k] - best_d : best_d - top_d[k];
+      if (distance >= 2) {
+        const ap_uint<C::kUniquenessBits> second = ap_uint<C::kUniquenessBits>(top_sum[k]) * (100 - ratio);
+        const ap_uint<C::kUniquenessBits> first = ap_uint<C::kUniquenessBits>(best_sum) * 100;
+        return !(second < first);
+      }
+    }
+    return true;
+  }
+};
+
+// The base side: disparity words after uniqueness. With LR1 also Dm(x') = the smallest d
+// minimising S(x' + d, d), built up in a row RAM as the sums pass and sent out as soon as final
+// (x' + dmax - 1 seen), the rest at the row's end.
+template <class C>
+void select_base(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& disparity,
+                 hls::stream<Word<C>>& match_disparity, int width, int height, int uniqueness) {
+  constexpr int G = C::kGroups, U = C::kUf;
+  uniqueness = clamp_int(uniqueness, 0, 99);
+  int dm_sum[C::kMaxWidth];
+  int dm_d[C::kMaxWidth];
+#pragma HLS ARRAY_PARTITION variable = dm_sum cyclic factor = U
+#pragma HLS ARRAY_PARTITION variable = dm_d cyclic factor = U
+#pragma HLS DEPENDENCE variable = dm_sum inter true distance = G
+#pragma HLS DEPENDENCE variable = dm_d inter true distance = G
+select_rows:
+  for (int y = 0; y < height; ++y) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight
+    Winner<C> winner;
+    int x = 0, g = 0;
+  select_groups:
+    for (int i = 0; i < width * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kGroups
+      const SumWord<C> word = sums.read();
+      if (g == 0) winner = Winner<C>();
+      for (int lane = 0; lane < U; ++lane) {
+        const int d = g * U + lane;
+        const int s = int(word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits));
+        winner.offer(s, d);
+        if (C::kLr == Lr::Lr1 && x - d >= 0 && (d == 0 || s < dm_sum[x - d])) {
+          dm_sum[x - d] = s;
+          dm_d[x - d] = d;
+        }
+      }
+      if (++g == G) {
+        const bool valid = C::kUniqueness == 0 || uniqueness == 0 || winner.unique(uniqueness);
+        disparity.write(valid ? Word<C>(winner.best_d) : Word<C>(C::kInvalidWord));
+        if (C::kLr == Lr::Lr1 && x - (C::kDmax - 1) >= 0) match_disparity.write(dm_d[x - (C::kDmax - 1)]);
+        g = 0;
+        ++x;
+      }
+    }
+    if (C::kLr == Lr::Lr1) {
+    select_lr1_row_end:
+      for (int xm = width - (C::kDmax - 1) < 0 ? 0 : width - (C::kDmax - 1); xm < width; ++xm) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kDmax
+        match_disparity.write(dm_d[xm]);
+      }
+    }
+  }
+}
+
+// LR2's match side: winner-take-all without uniqueness.
+template <class C>
+void select_match(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& match_disparity, int width,
+                  int height) {
+  constexpr int G = C::kGroups, U = C::kUf;
+  Winner<C> winner;
+  int g = 0;
+select_match_groups:
+  for (int i = 0; i < width * height * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
+    const SumWord<C> word = sums.read();
+    if (g == 0) winner = Winner<C>();
+    for (int lane = 0; lane < U; ++lane)
+      winner.offer(int(word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits)), g * U + lane);
+    if (++g == G) {
+      match_disparity.write(winner.best_d);
+      g = 0;
+    }
+  }
+}
+
+// Section 5: the check. Dm(x') for x' <= x has arrived when D(x) is checked, since both come in
+// raster order; Dm is kept for the row.
+template <class C>
+void lr_check(hls::stream<Word<C>>& disparity, hls::stream<Word<C>>& match_disparity,
+              hls::stream<Word<C>>& out, int width, int height, int threshold) {
+  threshold = clamp_int(threshold, 0, 15);
+  ap_uint<C::kDisparityBits> dm_row[C::kMaxWidth];
+  int x = 0;
+lr_check_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    Word<C> w = disparity.read();
+    dm_row[x] = match_disparity.read();
+    if (int(w) != C::kInvalidWord) {
+      const int d = int(w), xm = x - d;
+      if (xm < 0 || abs_diff(d, int(dm_row[xm < 0 ? 0 : xm])) > threshold) w = C::kInvalidWord;
+    }
+    out.write(w);
+    if (++x == width) x = 0;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 6: the lower median of the valid values in the window (positions outside the image
+// arrive as invalid); an invalid centre stays invalid. Each valid value is the median iff the
+// number of valid values below it is at most the rank sought and those at or below exceed it.
+template <class C>
+Word<C> median_of(const Window<Word<C>, C::kMedian>& w) {
+  constexpr int M = C::kMedian, n = M * M;
+  const Word<C> centre = w.v[M / 2][M / 2];
+  if (int(centre) == C::kInvalidWord) return centre;
+  int values[n];
+  bool valid[n];
+  int count = 0;
+  for (int k = 0; k < n; ++k) {
+    values[k] = int(w.v[k / M][k % M]);
+    valid[k] = values[k] != C::kInvalidWord;
+    count += valid[k];
+  }
+  const int target = (count - 1) / 2;
+  int median = int(centre);
+  for (int k = 0; k < n; ++k) {
+    int below = 0, at_or_below = 0;
+    for (int j = 0; j < n; ++j) {
+      below += valid[j] && values[j] < values[k];
+      at_or_below += valid[j] && values[j] <= values[k];
+    }
+    if (valid[k] && below <= target && target < at_or_below) median = values[k];
+  }
+  return median;
+}
+
+template <class C>
+void median_stage(hls::stream<Window<Word<C>, C::kMedian>>& in, hls::stream<Word<C>>& out, int width,
+                  int height) {
+median_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    out.write(median_of<C>(in.read()));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Section 7: gap interpolation, one row behind. While row y arrives, each invalid run's start
+// records the value that ends it (the invalid word at the row's end); meanwhile row y - 1 is
+// sent, runs filled from the last valid value on the left and the recorded right neighbour.
+// Two row RAMs each, ping-pong by row parity.
+template <class C>
+void gap_fill(hls::stream<Word<C>>& in, hls::stream<Word<C>>& out, int width, int height) {
+  constexpr int kInvalid = C::kInvalidWord;
+  Word<C> rows[2][C::kMaxWidth];
+  Word<C> run_end[2][C::kMaxWidth];  // at a run's start: the valid value right of the run
+#pragma HLS ARRAY_PARTITION variable = rows complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = run_end complete dim = 1
+gap_rows:
+  for (int y = 0; y <= height; ++y) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight + 1
+    const int in_bank = y & 1, out_bank = 1 - in_bank;
+    bool in_run = false;
+    int in_run_start = 0;
+    int left = kInvalid, right = kInvalid;
+  gap_pixels:
+    for (int x = 0; x < width; ++x) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth
+      if (y < height) {
+        const Word<C> v = in.read();
+        rows[in_bank][x] = v;
+        if (int(v) == kInvalid && !in_run) {
+          in_run = true;
+          in_run_start = x;
+        } else if (int(v) != kInvalid && in_run) {
+          run_end[in_bank][in_run_start] = v;
+          in_run = false;
+        }
+        if (x == width - 1 && in_run) run_end[in_bank][in_run_start] = kInvalid;
+      }
+      if (y > 0) {
+        const int v = int(rows[out_bank][x]);
+        if (v != kInvalid) {
+          left = v;
+          right = kInvalid;
+          out.write(v);
+        } else {
+          if (x == 0 || int(rows[out_bank][x - 1]) != kInvalid) right = int(run_end[out_bank][x]);
+          int fill = kInvalid;
+          if (left != kInvalid && right != kInvalid)
+            fill = left < right ? left : right;
+          else if (left != kInvalid)
+            fill = left;
+          else if (right != kInvalid)
+            fill = right;
+          out.write(fill);
+        }
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output: words zero-extended to the byte-aligned tdata; tuser on a frame's first pixel, tlast on
+// a row's last.
+template <class C>
+void write_disparity(hls::stream<Word<C>>& in, hls::stream<VideoOut<C>>& out, int width, int height) {
+  int x = 0;
+write_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    VideoOut<C> beat;
+    beat.data = ap_uint<C::kOutBits>(in.read());
+    beat.keep = -1;
+    beat.strb = -1;
+    beat.user = i == 0 ? 1 : 0;
+    beat.last = x == width - 1 ? 1 : 0;
+    beat.id = 0;
+    beat.dest = 0;
+    out.write(beat);
+    if (++x == width) x = 0;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Memory-mapped frames for the Vitis kernel flow (XRT): a frame in memory becomes a video stream
+// and the disparity stream becomes 16-bit words in memory.
+template <class C>
+void load_frame(const unsigned char* frame, hls::stream<VideoIn>& out, int width, int height) {
+  const Frame f = clamp_frame<C>(width, height);
+load_pixels:
+  for (int i = 0; i < f.width * f.height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    VideoIn beat;
+    beat.data = frame[i];
+    beat.keep = -1;
+    beat.strb = -1;
+    beat.user = i == 0 ? 1 : 0;
+    beat.last = (i + 1) % f.width == 0 ? 1 : 0;
+    beat.id = 0;
+    beat.dest = 0;
+    out.write(beat);
+  }
+}
+
+template <class C>
+void store_frame(hls::stream<VideoOut<C>>& in, unsigned short* words, int width, int height) {
+  const Frame f = clamp_frame<C>(width, height);
+store_pixels:
+  for (int i = 0; i < f.width * f.height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    words[i] = (unsigned short)(in.read().data);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The whole pipeline. Called from the generated top function, whose DATAFLOW region it becomes
+// (inlined); only the stages the configuration needs are instantiated.
+template <class C>
+void sgm_pipeline(hls::stream<VideoIn>& left_in, hls::stream<VideoIn>& right_in,
+                  hls::stream<VideoOut<C>>& out, int width_reg, int height_reg, int p1, int p2,
+                  int uniqueness, int lr_threshold) {
+#pragma HLS INLINE
+  constexpr int kDepth = 2 * C::kGroups + 2;  // a pixel's words plus slack
+  (void)kDepth;                               // used by the STREAM pragmas only
+  constexpr int K = cost_window<C>();
+  const Frame f = clamp_frame<C>(width_reg, height_reg);
+  const int W = f.width, H = f.height;
+
+  hls::stream<Pixel> left("left"), right("right");
+  read_pair<C>(left_in, right_in, left, right, W, H);
+
+  hls::stream<Window<Feature<C>, K>> base_windows("base_windows"), match_windows("match_windows");
+  if constexpr (C::kCost == Cost::Sad) {
+    window_stage<Pixel, K, C::kMaxWidth>(left, base_windows, W, H, Pixel(0));
+    window_stage<Pixel, K, C::kMaxWidth>(right, match_windows, W, H, Pixel(0));
+  } else {
+    hls::stream<Window<Pixel, C::kWindow>> left_pixels("left_pixels"), right_pixels("right_pixels");
+    hls::stream<Feature<C>> left_features("left_features"), right_features("right_features");
+    window_stage<Pixel, C::kWindow, C::kMaxWidth>(left, left_pixels, W, H, Pixel(0));
+    window_stage<Pixel, C::kWindow, C::kMaxWidth>(right, right_pixels, W, H, Pixel(0));
+    transform_stage<C>(left_pixels, left_features, W, H);
+    transform_stage<C>(right_pixels, right_features, W, H);
+    window_stage<Feature<C>, K, C::kMaxWidth>(left_features, base_windows, W, H, zero_value<Feature<C>>());
+    window_stage<Feature<C>, K, C::kMaxWidth>(right_features, match_windows, W, H, zero_value<Feature<C>>());
+  }
+
+  hls::stream<CostWord<C>> costs("costs"), match_side_base_costs("match_side_base_costs");
+#pragma HLS STREAM variable = costs depth = kDepth
+#pragma HLS STREAM variable = match_side_base_costs depth = kDepth
+  cost_stage<C>(base_windows, match_windows, costs, match_side_base_costs, W, H);
+
+  hls::stream<SumWord<C>> sums("sums");
+#pragma HLS STREAM variable = sums depth = kDepth
+  aggregate<C, 0>(costs, sums, W, H, p1, p2);
+
+  // D waits for Dm: up to dmax pixels with LR1, the match side's extra latency with LR2.
+  hls::stream<Word<C>> disparity("disparity"), match_disparity("match_disparity");
+#pragma HLS STREAM variable = disparity depth = 2 * C::kDmax + 4
+  select_base<C>(sums, disparity, match_disparity, W, H, uniqueness);
+
+  hls::stream<Word<C>> checked("checked");
+  if constexpr (C::kLr == Lr::Lr2) {
+    hls::stream<CostWord<C>> match_side_costs("match_side_costs");
+    hls::stream<SumWord<C>> match_side_sums("match_side_sums");
+    match_costs<C>(match_side_base_costs, match_side_costs, W, H);
+    aggregate<C, 1>(match_side_costs, match_side_sums, W, H, p1, p2);
+    select_match<C>(match_side_sums, match_disparity, W, H);
+  }
+  if constexpr (C::kLr != Lr::None) {
+    lr_check<C>(disparity, match_disparity, checked, W, H, lr_threshold);
+  }
+  hls::stream<Word<C>>& after_lr = C::kLr != Lr::None ? checked : disparity;
+
+  hls::stream<Word<C>> filtered("filtered");
+  if constexpr (C::kMedian != 0) {
+    hls::stream<Window<Word<C>, C::kMedian>> median_windows("median_windows");
+    window_stage<Word<C>, C::kMedian, C::kMaxWidth>(after_lr, median_windows, W, H, Word<C>(C::kInvalidWord));
+    median_stage<C>(median_windows, filtered, W, H);
+  }
+  hls::stream<Word<C>>& after_median = C::kMedian != 0 ? filtered : after_lr;
+
+  hls::stream<Word<C>> filled("filled");
+  if constexpr (C::kGapInterpolation) {
+    gap_fill<C>(after_median, filled, W, H);
+  }
+  write_disparity<C>(C::kGapInterpolation ? filled : after_median, out, W, H);
+}
+
+}  // namespace fpstereo_hls
