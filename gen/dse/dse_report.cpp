@@ -151,7 +151,7 @@ Axis axis_over(const std::vector<double>& values, bool log) {
 // A scatter plot of y against resource use; front points ringed, the front joined as a staircase.
 std::string scatter(const std::vector<Row>& rows, const std::string& title, const std::string& y_label,
                     double (*y_of)(const Row&), bool y_log, bool lower_is_better) {
-  const double w = 640, h = 420, left = 64, right = 16, top = 34, bottom = 48;
+  const double w = 700, h = 420, left = 64, right = 110, top = 34, bottom = 48;  // legend on the right
   std::vector<double> xs, ys;
   for (const auto& r : rows)
     if (std::isfinite(y_of(r))) {
@@ -220,13 +220,13 @@ std::string scatter(const std::vector<Row>& rows, const std::string& title, cons
     if (std::find(seen.begin(), seen.end(), r.cfg.cost) == seen.end()) seen.push_back(r.cfg.cost);
   for (CostFunction c : seen) {
     svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"4\" fill=\"{}\"/><text x=\"{}\" y=\"{}\">{}</text>\n",
-                       w - right - 80, ly, cost_colour(c), w - right - 72, ly + 4, to_string(c));
+                       w - right + 14, ly, cost_colour(c), w - right + 22, ly + 4, to_string(c));
     ly += 15;
   }
   svg += fmt::format(
       "<circle cx=\"{}\" cy=\"{}\" r=\"4.5\" fill=\"#fff\" stroke=\"#000\"/><text x=\"{}\" y=\"{}\">Pareto "
       "front</text>\n</svg>\n",
-      w - right - 80, ly, w - right - 72, ly + 4);
+      w - right + 14, ly, w - right + 22, ly + 4);
   return svg;
 }
 

@@ -143,8 +143,8 @@ std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& d) {
   add(out, "core.right_window.line_buffer.mem", slots, int64_t(c.window - 1) * w.pixel);
   if (c.cost == CostFunction::Shd && c.shd_window > 1) {
     const int64_t stored = int64_t(c.shd_window - 1) * std::max(1, w.code);
-    add(out, "core.code_window_cost.base_codes.line_buffer.mem", slots, stored);
-    add(out, "core.code_window_cost.match_codes.line_buffer.mem", slots, stored);
+    add(out, "core.genblk2.code_window_cost.base_codes.line_buffer.mem", slots, stored);
+    add(out, "core.genblk2.code_window_cost.match_codes.line_buffer.mem", slots, stored);
   }
   const int lr = c.lr == LrCheck::None ? 0 : c.lr == LrCheck::Lr1 ? 1 : 2;
   const int64_t cost_depth = int64_t(d.chains + (lr == 2 ? 1 : 0)) * slots * d.groups;
@@ -193,7 +193,7 @@ void map_memory(MemoryEstimate& m) {
 
 const std::vector<std::string>& feature_names() {
   static const std::vector<std::string> names = {
-      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes",
+      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes", "window-cost regs",
       "windows",     "median",     "LR1",          "LR2 banks"};
   return names;
 }
@@ -204,19 +204,23 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const Widths& w = d.widths;
   const double uf = c.uf;
   const double sides = c.lr == LrCheck::Lr2 ? 2 : 1;  // LR2 aggregates the match side too
-  const double n = c.window;
-  double code_lanes = 0, pixel_lanes = 0;
+  const double n = c.window, k = c.shd_window;
+  double code_lanes = 0, pixel_lanes = 0, window_regs = 0;
   switch (c.cost) {
     case CostFunction::Census:
     case CostFunction::Rank:
       code_lanes = uf * w.code;
       break;
+    // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window, keeps its
+    // row sums in registers, and the match ring holds uf + side - 1 columns.
     case CostFunction::Shd:
-      code_lanes = uf * c.shd_window * w.code;
+      code_lanes = uf * k * k * w.code;
+      window_regs = (uf + k - 1) * k * w.code + uf * k * w.cost;
       break;
     case CostFunction::Sad:
     case CostFunction::Zsad:
-      pixel_lanes = uf * n * w.pixel;
+      pixel_lanes = uf * n * n * w.pixel;
+      window_regs = (uf + n - 1) * n * w.pixel + uf * n * w.cost;
       break;
   }
   return {1.0,
@@ -224,6 +228,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           uf * w.aggregated * sides,
           code_lanes,
           pixel_lanes,
+          window_regs,
           2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
