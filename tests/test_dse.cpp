@@ -80,7 +80,7 @@ TEST_CASE("block RAM of single memories as Yosys 0.23 maps them", "[dse]") {
   CHECK(mapped(901, 7).bram36 == 0);
   // 14416 x 28 (a path row, uf 4, G 16): 16K x 2 per RAMB36 -> 14 of them.
   CHECK(mapped(14416, 28).bram36 == 14);
-  // 28800 x 20 (cost reorder RAM): 32K deep, 1 bit per RAMB36 -> 20 (as 10 cascaded pairs).
+  // 28800 x 20 (cost reorder RAM): 32K x 1 per RAMB36 -> 20.
   CHECK(mapped(28800, 20).bram36 == 20);
   // 2700 x 7: 4K x 9 in one RAMB36.
   CHECK(mapped(2700, 7).bram36 == 1);

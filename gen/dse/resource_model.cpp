@@ -64,12 +64,13 @@ struct RamOption {
 
 constexpr double kMuxFactor = 0.5, kDemuxFactor = 0.5, kEmulation = 2.0;
 
-// Block RAM options in library order: TDP half/full/cascade, then SDP half/full.
+// Block RAM options in library order: TDP half/full/cascade, then SDP half/full. The cascade mode's
+// ports are one bit wide ("width mix 1"), so it only ever holds 64K x 1.
 const std::vector<RamOption>& block_options() {
   static const std::vector<RamOption> options = {
       {14, {1, 2, 4, 9, 18}, 129, 1, 0},
       {15, {1, 2, 4, 9, 18, 36}, 257, 0, 1},
-      {16, {1, 2, 4, 9}, 513, 0, 2},
+      {16, {1}, 513, 0, 2},
       {14, {1, 2, 4, 9, 18, 36}, 129, 1, 0},
       {15, {1, 2, 4, 9, 18, 36, 72}, 257, 0, 1},
   };
@@ -193,8 +194,8 @@ void map_memory(MemoryEstimate& m) {
 
 const std::vector<std::string>& feature_names() {
   static const std::vector<std::string> names = {
-      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes", "window-cost regs",
-      "windows",     "median",     "LR1",          "LR2 banks"};
+      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes",
+      "match ring",  "windows",    "median",       "LR1",             "LR2 banks"};
   return names;
 }
 
@@ -202,25 +203,29 @@ const std::vector<std::string>& feature_names() {
 std::vector<double> features(const rtl::RtlDesign& d) {
   const StereoConfig& c = d.cfg;
   const Widths& w = d.widths;
-  const double uf = c.uf;
+  const double uf = c.uf, dmax = c.dmax;
   const double sides = c.lr == LrCheck::Lr2 ? 2 : 1;  // LR2 aggregates the match side too
   const double n = c.window, k = c.shd_window;
-  double code_lanes = 0, pixel_lanes = 0, window_regs = 0;
+  // The match ring (fpstereo_match_ring.v) keeps dmax + span - 1 match columns in registers.
+  double code_lanes = 0, pixel_lanes = 0, ring = 0;
   switch (c.cost) {
     case CostFunction::Census:
     case CostFunction::Rank:
       code_lanes = uf * w.code;
+      ring = dmax * w.code;
       break;
-    // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window, keeps its
-    // row sums in registers, and the match ring holds uf + side - 1 columns.
+    // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window.
     case CostFunction::Shd:
       code_lanes = uf * k * k * w.code;
-      window_regs = (uf + k - 1) * k * w.code + uf * k * w.cost;
+      ring = (dmax + k - 1) * k * w.code;
       break;
     case CostFunction::Sad:
-    case CostFunction::Zsad:
       pixel_lanes = uf * n * n * w.pixel;
-      window_regs = (uf + n - 1) * n * w.pixel + uf * n * w.cost;
+      ring = (dmax + n - 1) * n * w.pixel;
+      break;
+    case CostFunction::Zsad:  // plus the ring of column sums for the means
+      pixel_lanes = uf * n * n * w.pixel;
+      ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
       break;
   }
   return {1.0,
@@ -228,7 +233,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           uf * w.aggregated * sides,
           code_lanes,
           pixel_lanes,
-          window_regs,
+          ring,
           2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
