@@ -68,11 +68,8 @@ constexpr double kMuxFactor = 0.5, kDemuxFactor = 0.5, kEmulation = 2.0;
 // ports are one bit wide ("width mix 1"), so it only ever holds 64K x 1.
 const std::vector<RamOption>& block_options() {
   static const std::vector<RamOption> options = {
-      {14, {1, 2, 4, 9, 18}, 129, 1, 0},
-      {15, {1, 2, 4, 9, 18, 36}, 257, 0, 1},
-      {16, {1}, 513, 0, 2},
-      {14, {1, 2, 4, 9, 18, 36}, 129, 1, 0},
-      {15, {1, 2, 4, 9, 18, 36, 72}, 257, 0, 1},
+      {14, {1, 2, 4, 9, 18}, 129, 1, 0},     {15, {1, 2, 4, 9, 18, 36}, 257, 0, 1},     {16, {1}, 513, 0, 2},
+      {14, {1, 2, 4, 9, 18, 36}, 129, 1, 0}, {15, {1, 2, 4, 9, 18, 36, 72}, 257, 0, 1},
   };
   return options;
 }
@@ -194,8 +191,8 @@ void map_memory(MemoryEstimate& m) {
 
 const std::vector<std::string>& feature_names() {
   static const std::vector<std::string> names = {
-      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes",
-      "match ring",  "windows",    "median",       "LR1",             "LR2 banks"};
+      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes", "match ring",
+      "transform",   "median",     "LR1",          "LR2 banks"};
   return names;
 }
 
@@ -234,21 +231,22 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           code_lanes,
           pixel_lanes,
           ring,
-          2 * n * n * w.pixel,
+          c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
           c.lr == LrCheck::Lr2 ? uf * w.cost : 0.0};
 }
 
 const std::vector<std::string>& dsp_feature_names() {
-  static const std::vector<std::string> names = {"base", "LR1", "LR2", "ZSAD"};
+  static const std::vector<std::string> names = {"base", "LR1", "LR2", "ZSAD means"};
   return names;
 }
 
-// DSPs are the few multiplies of RAM address arithmetic and ZSAD's mean.
+// DSPs are the few multiplies of RAM address arithmetic and ZSAD's means (the base window's and
+// one per lane).
 std::vector<double> dsp_features(const rtl::RtlDesign& d) {
   return {1.0, d.cfg.lr == LrCheck::Lr1 ? 1.0 : 0.0, d.cfg.lr == LrCheck::Lr2 ? 1.0 : 0.0,
-          d.cfg.cost == CostFunction::Zsad ? 1.0 : 0.0};
+          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0};
 }
 
 const Coefficients& fitted_coefficients() {
