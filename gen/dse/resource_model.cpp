@@ -190,9 +190,17 @@ void map_memory(MemoryEstimate& m) {
 // ---- LUT, FF, DSP ----------------------------------------------------------------------------------
 
 const std::vector<std::string>& feature_names() {
-  static const std::vector<std::string> names = {
-      "top/control", "path lanes", "path sum+WTA", "code cost lanes", "pixel cost lanes", "match ring",
-      "transform",   "median",     "LR1",          "LR2 banks"};
+  static const std::vector<std::string> names = {"top/control",
+                                                 "path lanes",
+                                                 "path sum+WTA",
+                                                 "code cost lanes",
+                                                 "pixel cost lanes",
+                                                 "match ring",
+                                                 "transform",
+                                                 "median",
+                                                 "LR1",
+                                                 "LR2",
+                                                 "ZSAD lanes"};
   return names;
 }
 
@@ -204,7 +212,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double sides = c.lr == LrCheck::Lr2 ? 2 : 1;  // LR2 aggregates the match side too
   const double n = c.window, k = c.shd_window;
   // The match ring (fpstereo_match_ring.v) keeps dmax + span - 1 match columns in registers.
-  double code_lanes = 0, pixel_lanes = 0, ring = 0;
+  double code_lanes = 0, pixel_lanes = 0, ring = 0, zero_mean = 0;
   switch (c.cost) {
     case CostFunction::Census:
     case CostFunction::Rank:
@@ -220,21 +228,18 @@ std::vector<double> features(const rtl::RtlDesign& d) {
       pixel_lanes = uf * n * n * w.pixel;
       ring = (dmax + n - 1) * n * w.pixel;
       break;
-    case CostFunction::Zsad:  // plus the ring of column sums for the means
+    case CostFunction::Zsad:  // plus the ring of column sums, the means and their subtraction
       pixel_lanes = uf * n * n * w.pixel;
+      zero_mean = pixel_lanes;
       ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
       break;
   }
-  return {1.0,
-          uf * c.path_count() * w.path_cost * sides,
-          uf * w.aggregated * sides,
-          code_lanes,
-          pixel_lanes,
-          ring,
-          c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
+  return {1.0, uf * c.path_count() * w.path_cost * sides, uf * w.aggregated * sides, code_lanes, pixel_lanes,
+          ring, c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
-          c.lr == LrCheck::Lr2 ? uf * w.cost : 0.0};
+          // LR2's uf-wide part is the second aggregation (sides); the rest is per design.
+          c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean};
 }
 
 const std::vector<std::string>& dsp_feature_names() {
