@@ -25,9 +25,10 @@ dse::MemoryEstimate mapped(int64_t words, int64_t bits) {
   return m;
 }
 
-// A small dataset from crops of the bundled Cones pair: two pairs, ground truth included.
-fs::path tiny_dataset() {
-  const fs::path dir = fs::temp_directory_path() / "fpstereo_test_dse_data";
+// A small dataset from crops of the bundled Cones pair: two pairs, ground truth included. Each test
+// writes its own (ctest runs the test cases in parallel processes).
+fs::path tiny_dataset(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
   fs::create_directories(dir);
   const std::string ex = FPSTEREO_EXAMPLES_DIR "/cones/";
   const cv::Mat left = cv::imread(ex + "left.png", cv::IMREAD_GRAYSCALE);
@@ -46,7 +47,7 @@ fs::path tiny_dataset() {
   return dir;
 }
 
-dse::SweepOptions tiny_sweep(const fs::path& cache) {
+dse::SweepOptions tiny_sweep(const fs::path& cache, const std::string& data) {
   dse::SpaceText t;
   t.cost = {"census", "sad"};
   t.window = {"3", "5"};
@@ -57,7 +58,7 @@ dse::SweepOptions tiny_sweep(const fs::path& cache) {
   t.median = {"off", "3"};
   dse::SweepOptions o;
   o.space = dse::parse_space(t);
-  o.datasets = {tiny_dataset().string()};
+  o.datasets = {tiny_dataset(data).string()};
   o.cache_dir = cache.string();
   o.progress = false;
   return o;
@@ -189,7 +190,7 @@ TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
 TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, resume from the cache",
           "[dse]") {
   const fs::path cache = fresh_dir("fpstereo_test_dse_cache");
-  dse::SweepOptions o = tiny_sweep(cache);
+  dse::SweepOptions o = tiny_sweep(cache, "fpstereo_test_dse_data");
   const dse::SweepResult first = dse::sweep(o);
   // 2 costs x 2 windows x 2 dmax x 2 refine x 2 median = 32 accuracy keys; uf 32 is skipped for
   // dmax 16 (x 16 configurations), so 32 * 3 - 16 = 80 rows.
@@ -253,7 +254,7 @@ TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, 
 
 TEST_CASE("a corrupt cache record is an error, not a silent recomputation", "[dse]") {
   const fs::path cache = fresh_dir("fpstereo_test_dse_corrupt");
-  dse::SweepOptions o = tiny_sweep(cache);
+  dse::SweepOptions o = tiny_sweep(cache, "fpstereo_test_dse_corrupt_data");
   o.space.cost = {CostFunction::Census};
   o.space.window = {3};
   o.space.dmax = {16};
