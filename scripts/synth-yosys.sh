@@ -75,6 +75,13 @@ for f in "${files[@]}"; do
 done
 [ ${#sources[@]} -gt 0 ] || die "no sources in ${files[*]}"
 
+# Deferred reading (below) leaves Yosys no elaborated modules to pick a top from: without --top
+# the top is the first module of the first source (fpstereo-rtl's filelist lists the top first).
+if [ -z "$top" ]; then
+  top=$(sed -n 's/^[[:space:]]*module[[:space:]]\{1,\}\([A-Za-z_][A-Za-z0-9_$]*\).*/\1/p' "${sources[0]}" | head -n 1)
+  [ -n "$top" ] || die "no module in ${sources[0]}; pass --top"
+fi
+
 tmp=$(mktemp -d /tmp/synth-yosys.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 if [ -z "$log" ]; then
@@ -88,9 +95,12 @@ fi
 # depth) while they are still memory objects. Any command between the halves may move ABC's
 # LUT count by a few tenths of a percent (Yosys' internal ordering shifts); nothing else changes.
 synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
+# -defer: modules are elaborated only with the parameters they are instantiated with; elaborating
+# a generic module with its defaults would reach generate branches whose submodules a
+# configuration does not emit (e.g. the census lanes of a SAD design).
 {
   for s in "${sources[@]}"; do
-    if [[ "$s" == *.sv ]]; then echo "read_verilog -sv \"$s\""; else echo "read_verilog \"$s\""; fi
+    if [[ "$s" == *.sv ]]; then echo "read_verilog -defer -sv \"$s\""; else echo "read_verilog -defer \"$s\""; fi
   done
   echo "$synth -run :coarse"
   echo "tee -q -o $tmp/mems.txt dump m:*"

@@ -34,6 +34,22 @@ expect_error("expected an integer" run --dmax many ${L} ${R})
 expect_error("no such directory" eval ${WORK}/nowhere)
 expect_error("pairs.csv" eval ${WORK}/pairs)
 
+# fpstereo dse: bad axes, shards, constraints, datasets, caches and CSVs (outputs kept in WORK).
+set(DSE_OUT -o ${WORK}/dse.csv --html ${WORK}/dse.html --cache ${WORK}/dse_cache)
+expect_error("--cost 'ncc'" dse ${EXAMPLES}/cones --cost census,ncc ${DSE_OUT})
+expect_error("--window '4'" dse ${EXAMPLES}/cones --window 4 ${DSE_OUT})
+expect_error("--resolution '640*480'" dse ${EXAMPLES}/cones --resolution 640*480 ${DSE_OUT})
+expect_error("--shard '3/2'" dse ${EXAMPLES}/cones --shard 3/2 ${DSE_OUT})
+expect_error("--max-lut 'lots'" dse ${EXAMPLES}/cones --max-lut lots ${DSE_OUT})
+expect_error("--part 'xc9000'" dse ${EXAMPLES}/cones --part xc9000 ${DSE_OUT})
+expect_error("not a directory" dse ${WORK}/nowhere ${DSE_OUT})
+file(MAKE_DIRECTORY ${WORK}/empty)
+expect_error("no pairs.csv" dse ${WORK}/empty ${DSE_OUT})
+expect_error("not a writable directory" dse ${EXAMPLES}/cones --cost census --window 5 --dmax 64 --uf 16
+             --refine none --median off -o ${WORK}/dse.csv --html ${WORK}/dse.html --cache ${WORK}/corrupt.png)
+expect_error("not a dse CSV" dse merge ${WORK}/corrupt.png -o ${WORK}/merged.csv)
+expect_error("cannot read" dse merge ${WORK}/none.csv -o ${WORK}/merged.csv)
+
 # fpstereo-rtl --emit (expect_error runs ${FPSTEREO}).
 set(FPSTEREO ${FPSTEREO_RTL})
 expect_error("--emit hls writes a directory: give -o DIR" --emit hls)

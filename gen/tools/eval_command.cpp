@@ -18,6 +18,7 @@
 #include "golden_model.hpp"
 #include "image_io.hpp"
 #include "metrics.hpp"
+#include "pair_eval.hpp"
 #include "sgbm_baseline.hpp"
 
 namespace fpstereo {
@@ -33,24 +34,6 @@ struct EvalOptions {
   SgbmOptions sgbm;
   std::string json_path, csv_path;
   std::vector<std::string> pair_names;
-};
-
-// Ground truth over one set of pixels: all pixels with GT (occ) or the non-occluded ones (noc).
-struct Region {
-  cv::Mat1f gt;
-  cv::Mat1b mask;  // empty: every pixel with ground truth
-};
-
-// Everything a pair needs, loaded and checked before any model runs, so bad input fails fast.
-struct PairInputs {
-  DatasetPair pair;
-  GrayImage left, right;
-  StereoConfig cfg;  // the run's configuration: the pair's own image size
-  std::optional<Region> occ, noc;
-};
-
-struct Scores {
-  std::optional<ErrorCounts> occ, noc;
 };
 
 struct MethodResult {
@@ -83,57 +66,10 @@ std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::v
   return chosen;
 }
 
-cv::Mat1f read_gt(const std::string& path, const PairInputs& in) {
-  cv::Mat1f gt = read_disparity(path, in.pair.gt_scale, in.pair.gt_invalid);
-  if (gt.cols != in.left.width || gt.rows != in.left.height)
-    throw InputError(fmt::format("ground truth '{}' is {}x{} but the images are {}x{}", path, gt.cols,
-                                 gt.rows, in.left.width, in.left.height));
-  return gt;
-}
-
-cv::Mat1b read_mask(const std::string& path, const PairInputs& in) {
-  const GrayImage mask = load_gray(path, "noc mask");
-  if (mask.width != in.left.width || mask.height != in.left.height)
-    throw InputError(fmt::format("noc mask '{}' is {}x{} but the images are {}x{}", path, mask.width,
-                                 mask.height, in.left.width, in.left.height));
-  return cv::Mat1b(mask.height, mask.width, const_cast<uint8_t*>(mask.pixels.data())).clone();
-}
-
-// The configured width/height are the hardware's maximum; accuracy does not depend on them, so
-// every pair runs at its own size.
-StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in) {
-  StereoConfig run = cfg;
-  run.width = in.left.width;
-  run.height = in.left.height;
-  try {
-    check_pair(in.left, in.right, run);
-    validate(run);
-  } catch (const std::runtime_error& e) {
-    throw InputError(fmt::format("pair '{}': {}", in.pair.name, e.what()));
-  }
-  return run;
-}
-
 void warn_if_out_of_range(const PairInputs& in) {
   if (in.pair.max_disp_px && *in.pair.max_disp_px > in.cfg.dmax - 1)
     std::cerr << fmt::format("{}: warning: pair '{}' has disparities up to {} px, beyond dmax - 1 = {}\n",
                              kTool, in.pair.name, *in.pair.max_disp_px, in.cfg.dmax - 1);
-}
-
-PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg) {
-  PairInputs in;
-  in.pair = pair;
-  in.left = load_gray(pair.left, "left image");
-  in.right = load_gray(pair.right, "right image");
-  in.cfg = config_for_pair(cfg, in);
-  if (!pair.gt_occ.empty()) in.occ = Region{read_gt(pair.gt_occ, in), {}};
-  const cv::Mat1b mask = pair.noc_mask.empty() ? cv::Mat1b() : read_mask(pair.noc_mask, in);
-  if (!pair.gt_noc.empty())
-    in.noc = Region{read_gt(pair.gt_noc, in), mask};
-  else if (in.occ && !mask.empty())
-    in.noc = Region{in.occ->gt, mask};
-  warn_if_out_of_range(in);
-  return in;
 }
 
 // ---- running ---------------------------------------------------------------------------------
@@ -151,15 +87,6 @@ auto timed(F&& run, double& seconds) {
   auto result = run();
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
-}
-
-std::optional<ErrorCounts> score_region(const cv::Mat1f& est, const std::optional<Region>& region) {
-  if (!region) return std::nullopt;
-  return count_errors(est, region->gt, region->mask.empty() ? nullptr : &region->mask);
-}
-
-Scores score(const cv::Mat1f& est, const PairInputs& in) {
-  return {score_region(est, in.occ), score_region(est, in.noc)};
 }
 
 MethodResult evaluate(const std::string& method, double seconds, const cv::Mat1f& est, const PairInputs& in) {
@@ -183,15 +110,6 @@ PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::strin
   }
   std::cerr << "\n";
   return result;
-}
-
-// Pooled counts of a region exist only if every pair has that region: a pool over a subset of
-// the pairs would not be comparable with the others.
-void pool(std::optional<ErrorCounts>& total, const std::optional<ErrorCounts>& part) {
-  if (total && part)
-    *total += *part;
-  else
-    total.reset();
 }
 
 std::vector<MethodResult> overall(const std::vector<PairResult>& results) {
@@ -379,7 +297,10 @@ void run(const EvalOptions& o) {
 
   const std::vector<DatasetPair> pairs = select_pairs(read_pairs_csv(o.dataset_dir), o.pair_names);
   std::vector<PairInputs> inputs;
-  for (const auto& p : pairs) inputs.push_back(load_pair(p, cfg));
+  for (const auto& p : pairs) {
+    inputs.push_back(load_pair(p, cfg));
+    warn_if_out_of_range(inputs.back());
+  }
 
   const std::string label = config_tag(cfg);
   std::vector<PairResult> results;

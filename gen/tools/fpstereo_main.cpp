@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "config_cli.hpp"
+#include "dse_command.hpp"
 #include "eval_command.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
 
   register_eval_command(app, exit_code);
   register_synth_command(app, exit_code);
+  register_dse_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

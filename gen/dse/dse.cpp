@@ -1,0 +1,503 @@
+#include "dse.hpp"
+
+#include <fcntl.h>
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "golden_model.hpp"
+#include "image_io.hpp"
+#include "metrics.hpp"
+#include "rtl_emitter.hpp"
+
+namespace fs = std::filesystem;
+
+namespace fpstereo::dse {
+namespace {
+
+// ---- axes ------------------------------------------------------------------------------------------
+
+// Validates a value on its own: the other parameters are set to what suits any legal value
+// (uf 1 divides every dmax; dmax a multiple of uf; the smallest dmax fits any image), so only a value
+// that no combination could use is an error; the rest are skipped per combination.
+void check_alone(StereoConfig probe, const std::string& param) {
+  if (param == "uf") {
+    probe.dmax = probe.uf * ((16 + probe.uf - 1) / probe.uf);
+  } else if (param == "width" || param == "height") {
+    probe.dmax = 16;
+    probe.uf = 1;
+  } else {
+    probe.uf = 1;
+  }
+  validate(probe);
+}
+
+// One axis value through the configuration's own parser and validation, so the DSE accepts
+// exactly what the other commands accept.
+template <class T>
+T axis_value(const std::string& flag, const std::string& param, const std::string& value,
+             T (*get)(const StereoConfig&)) {
+  StereoConfig probe;
+  try {
+    set_param(probe, param, value);
+    check_alone(probe, param);
+  } catch (const ConfigError& e) {
+    throw InputError(fmt::format("--{} '{}': {}", flag, value, e.what()));
+  }
+  return get(probe);
+}
+
+std::pair<int, int> parse_resolution(const std::string& value) {
+  const auto x = value.find('x');
+  const auto bad = [&] {
+    return InputError(fmt::format("--resolution '{}': expected WIDTHxHEIGHT, e.g. 1242x374", value));
+  };
+  if (x == std::string::npos) throw bad();
+  StereoConfig probe;
+  try {
+    set_param(probe, "width", value.substr(0, x));
+    set_param(probe, "height", value.substr(x + 1));
+    check_alone(probe, "width");
+  } catch (const ConfigError& e) {
+    throw InputError(fmt::format("--resolution '{}': {}", value, e.what()));
+  }
+  return {probe.width, probe.height};
+}
+
+template <class T>
+void require_values(const std::string& flag, const std::vector<T>& values) {
+  if (values.empty()) throw InputError(fmt::format("--{}: no values", flag));
+}
+
+// ---- hashing and the cache -------------------------------------------------------------------------
+
+uint64_t fnv1a(const std::string& text, uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path default_cache_dir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg) return fs::path(xdg) / "fpstereo" / "dse";
+  const char* home = std::getenv("HOME");
+  if (home && *home) return fs::path(home) / ".cache" / "fpstereo" / "dse";
+  throw InputError("no cache directory: HOME is not set; pass --cache DIR");
+}
+
+nlohmann::json accuracy_json(const Accuracy& a) {
+  const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  return {{"d1_all", num(a.d1_all)},
+          {"d1_noc", num(a.d1_noc)},
+          {"d1_valid", num(a.d1_valid)},
+          {"density", num(a.density)},
+          {"pairs", a.pairs}};
+}
+
+Accuracy accuracy_from_json(const nlohmann::json& j) {
+  const auto num = [&](const char* k) { return j.at(k).is_null() ? NAN : j.at(k).get<double>(); };
+  return {num("d1_all"), num("d1_noc"), num("d1_valid"), num("density"), j.at("pairs").get<int>()};
+}
+
+class AccuracyCache {
+ public:
+  explicit AccuracyCache(fs::path dir) : dir_(std::move(dir)) {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec || ::access(dir_.c_str(), R_OK | W_OK | X_OK) != 0)
+      throw InputError(fmt::format("cache '{}': not a writable directory", dir_.string()));
+  }
+  fs::path path(const std::string& key, const std::string& dataset_id) const {
+    const std::string text = key + '\0' + dataset_id + '\0' + FPSTEREO_VERSION;
+    return dir_ / fmt::format("{:016x}.json", fnv1a(text));
+  }
+  // A record that exists but does not parse is an error, not a miss: the user should know.
+  std::optional<Accuracy> load(const fs::path& p) const {
+    if (!fs::exists(p)) return std::nullopt;
+    std::ifstream in(p);
+    if (!in) throw InputError(fmt::format("cache '{}': cannot read", p.string()));
+    try {
+      return accuracy_from_json(nlohmann::json::parse(in).at("accuracy"));
+    } catch (const std::exception&) {
+      throw InputError(fmt::format("cache '{}': corrupt record (delete it to recompute)", p.string()));
+    }
+  }
+  // Written to a temporary and renamed: an interrupted sweep never leaves half a record.
+  void store(const fs::path& p, const std::string& key, const Accuracy& a) const {
+    const nlohmann::json j = {{"key", key}, {"accuracy", accuracy_json(a)}};
+    const fs::path tmp = p.string() + fmt::format(".{}.tmp", ::getpid());
+    {
+      std::ofstream out(tmp);
+      out << j.dump(1) << "\n";
+      if (!out) throw InputError(fmt::format("cache '{}': cannot write", tmp.string()));
+    }
+    fs::rename(tmp, p);
+  }
+
+ private:
+  fs::path dir_;
+};
+
+// ---- progress ----------------------------------------------------------------------------------------
+
+class Progress {
+ public:
+  Progress(int total, bool on)
+      : total_(total), on_(on && total > 0), start_(std::chrono::steady_clock::now()) {}
+  void step(int done) {
+    if (!on_) return;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const int width = 30, filled = int(double(width) * done / total_);
+    const double eta = done > 0 ? s / done * (total_ - done) : 0;
+    std::cerr << fmt::format("\rfpstereo dse: [{}{}] {}/{} accuracy configurations, {:.0f} s, ETA {}  ",
+                             std::string(filled, '#'), std::string(width - filled, '.'), done, total_, s,
+                             done > 0 ? fmt::format("{:.0f} s", eta) : std::string("?"))
+              << std::flush;
+    if (done == total_) std::cerr << "\n";
+  }
+
+ private:
+  int total_;
+  bool on_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+double pct(double used, int64_t available) { return available > 0 ? 100.0 * used / double(available) : 0; }
+
+}  // namespace
+
+Space parse_space(const SpaceText& t) {
+  Space s;
+  for (const auto& v : t.cost)
+    s.cost.push_back(
+        axis_value<CostFunction>("cost", "cost", v, [](const StereoConfig& c) { return c.cost; }));
+  for (const auto& v : t.window)
+    s.window.push_back(
+        axis_value<int>("window", "window", v, [](const StereoConfig& c) { return c.window; }));
+  for (const auto& v : t.dmax)
+    s.dmax.push_back(axis_value<int>("dmax", "dmax", v, [](const StereoConfig& c) { return c.dmax; }));
+  for (const auto& v : t.uf)
+    s.uf.push_back(axis_value<int>("uf", "uf", v, [](const StereoConfig& c) { return c.uf; }));
+  for (const auto& v : t.resolution) s.resolution.push_back(parse_resolution(v));
+  for (const auto& v : t.refine)
+    s.refine.push_back(axis_value<LrCheck>("refine", "lr", v, [](const StereoConfig& c) { return c.lr; }));
+  for (const auto& v : t.median)
+    s.median.push_back(v == "off" ? 0 : axis_value<int>("median", "median", v, [](const StereoConfig& c) {
+      return c.median;
+    }));
+  require_values("cost", s.cost);
+  require_values("window", s.window);
+  require_values("dmax", s.dmax);
+  require_values("uf", s.uf);
+  require_values("resolution", s.resolution);
+  require_values("refine", s.refine);
+  require_values("median", s.median);
+  return s;
+}
+
+std::vector<StereoConfig> enumerate(const Space& s, const StereoConfig& base, std::vector<Skipped>& skipped) {
+  std::vector<StereoConfig> out;
+  for (CostFunction cost : s.cost)
+    for (int window : s.window)
+      for (int dmax : s.dmax)
+        for (LrCheck lr : s.refine)
+          for (int median : s.median)
+            for (const auto& [w, h] : s.resolution)
+              for (int uf : s.uf) {
+                StereoConfig c = base;
+                c.cost = cost;
+                c.window = window;
+                c.dmax = dmax;
+                c.lr = lr;
+                c.median = median;
+                c.width = w;
+                c.height = h;
+                c.uf = uf;
+                try {
+                  validate(c);
+                  out.push_back(c);
+                } catch (const ConfigError& e) {
+                  skipped.push_back({c, e.what()});
+                }
+              }
+  return out;
+}
+
+std::string accuracy_key(const StereoConfig& cfg) {
+  StereoConfig c = cfg;
+  c.width = c.height = 0;
+  c.uf = 0;
+  return describe(c);
+}
+
+Dataset load_dataset(const std::vector<std::string>& dirs) {
+  if (dirs.empty()) throw InputError("no dataset given");
+  Dataset ds;
+  std::string identity;
+  // Small enough for every pair at dmax 16; each evaluation applies its own configuration.
+  StereoConfig probe;
+  probe.dmax = 16;
+  probe.uf = 16;
+  probe.width = probe.height = 8192;
+  for (const auto& dir : dirs) {
+    if (!fs::is_directory(dir)) throw InputError(fmt::format("dataset '{}': not a directory", dir));
+    std::vector<fs::path> sets;
+    if (fs::exists(fs::path(dir) / "pairs.csv")) {
+      sets.push_back(dir);
+    } else {
+      for (const auto& e : fs::directory_iterator(dir))
+        if (e.is_directory() && fs::exists(e.path() / "pairs.csv")) sets.push_back(e.path());
+      std::sort(sets.begin(), sets.end());
+      if (sets.empty())
+        throw InputError(fmt::format("dataset '{}': no pairs.csv in it or in its subfolders", dir));
+    }
+    for (const auto& set : sets) {
+      identity += read_file(set / "pairs.csv");
+      for (const DatasetPair& p : read_pairs_csv(set.string())) {
+        ds.pairs.push_back(load_pair(p, probe));
+        for (const std::string& f : {p.left, p.right, p.gt_occ, p.gt_noc, p.noc_mask}) {
+          if (f.empty()) continue;
+          std::error_code ec;
+          const auto size = fs::file_size(f, ec);
+          const auto time = fs::last_write_time(f, ec).time_since_epoch().count();
+          identity += fmt::format("\n{} {} {}", f, size, time);
+        }
+      }
+      ds.description += (ds.description.empty() ? "" : ", ") + set.string();
+    }
+  }
+  ds.id = fmt::format("{:016x}", fnv1a(identity));
+  return ds;
+}
+
+Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& ds) {
+  std::optional<ErrorCounts> occ_filled, noc_filled, occ_valid;
+  bool first = true;
+  for (const PairInputs& in : ds.pairs) {
+    const StereoConfig run = config_for_pair(cfg, in);
+    const cv::Mat1f est = to_float_disparity(run_golden(run, in.left, in.right), run);
+    const Scores valid = score(est, in), filled = score(kitti_fill(est), in);
+    if (first) {
+      occ_filled = filled.occ;
+      noc_filled = filled.noc;
+      occ_valid = valid.occ;
+      first = false;
+    } else {
+      pool(occ_filled, filled.occ);
+      pool(noc_filled, filled.noc);
+      pool(occ_valid, valid.occ);
+    }
+  }
+  Accuracy a;
+  a.pairs = int(ds.pairs.size());
+  a.d1_all = occ_filled ? occ_filled->d1_percent() : NAN;
+  a.d1_noc = noc_filled ? noc_filled->d1_percent() : NAN;
+  a.d1_valid = occ_valid ? occ_valid->d1_percent() : NAN;
+  a.density = occ_valid ? occ_valid->density_percent() : NAN;
+  return a;
+}
+
+void fill_hardware(Row& row, const Part& part, double clock_mhz) {
+  const rtl::RtlDesign d = rtl::plan(row.cfg);
+  row.model = estimate(d);
+  row.part = part.name;
+  row.lut_pct = pct(row.model.lut, part.lut);
+  row.ff_pct = pct(row.model.ff, part.ff);
+  row.bram_pct = pct(row.model.bram36_equiv(), part.bram36);
+  row.dsp_pct = pct(row.model.dsp, part.dsp);
+  row.resource_pct = std::max({row.lut_pct, row.ff_pct, row.bram_pct, row.dsp_pct});
+  row.cycles_per_frame = d.cycles_per_frame;
+  row.clock_mhz = clock_mhz;
+  row.fps = frames_per_second(d, clock_mhz);
+}
+
+void mark_pareto(std::vector<Row>& rows) {
+  // D1 NaN (no ground truth) never dominates and is never on the front.
+  for (auto& r : rows) {
+    r.pareto = std::isfinite(r.acc.d1_all);
+    if (!r.pareto) continue;
+    for (const auto& o : rows) {
+      if (&o == &r || !std::isfinite(o.acc.d1_all)) continue;
+      const bool no_worse =
+          o.acc.d1_all <= r.acc.d1_all && o.resource_pct <= r.resource_pct && o.fps >= r.fps;
+      const bool better = o.acc.d1_all < r.acc.d1_all || o.resource_pct < r.resource_pct || o.fps > r.fps;
+      if (no_worse && better) {
+        r.pareto = false;
+        break;
+      }
+    }
+  }
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  const auto bad = [&] {
+    return InputError(fmt::format("--shard '{}': expected i/N with 1 <= i <= N, e.g. 2/8", text));
+  };
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw bad();
+  try {
+    size_t a = 0, b = 0;
+    const int i = std::stoi(text.substr(0, slash), &a);
+    const int n = std::stoi(text.substr(slash + 1), &b);
+    if (a != slash || b != text.size() - slash - 1 || n < 1 || i < 1 || i > n) throw bad();
+    return {i, n};
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+}
+
+SweepResult sweep(const SweepOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  SweepResult result;
+  const Part part = find_part(o.part);
+  const std::vector<StereoConfig> configs = enumerate(o.space, o.base, result.skipped);
+
+  // Accuracy groups in first-seen order; a shard takes every N-th group, so the shards of one
+  // sweep partition it and each evaluates a disjoint set of golden runs.
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<StereoConfig>> members;
+  for (const auto& c : configs) {
+    const std::string key = accuracy_key(c);
+    if (!members.count(key)) keys.push_back(key);
+    members[key].push_back(c);
+  }
+  std::vector<std::string> mine;
+  for (size_t i = 0; i < keys.size(); ++i)
+    if (int(i % size_t(o.shard_count)) == o.shard_index - 1) mine.push_back(keys[i]);
+  result.accuracy_configs = int(mine.size());
+
+  const Dataset ds = load_dataset(o.datasets);
+  result.dataset = ds.description;
+  const AccuracyCache cache(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
+
+  // Cache hits first (cheap, and a corrupt record fails before any work), then the misses on
+  // o.jobs threads.
+  std::map<std::string, Accuracy> accuracy;
+  std::vector<std::string> todo;
+  for (const auto& key : mine) {
+    if (auto hit = cache.load(cache.path(key, ds.id))) {
+      accuracy[key] = *hit;
+      result.cached++;
+    } else {
+      todo.push_back(key);
+    }
+  }
+  // Costs differ tenfold between configurations (ZSAD, LR2 and dmax 128 are slow) and the axes
+  // enumerate them in blocks: a fixed shuffle makes the average rate, and so the ETA, honest.
+  std::shuffle(todo.begin(), todo.end(), std::mt19937(12345));
+  Progress progress(int(mine.size()), o.progress);
+  std::atomic<size_t> next{0};
+  std::atomic<int> done{result.cached};
+  std::mutex lock;
+  std::string error;
+  progress.step(done);
+  const auto worker = [&] {
+    for (size_t i; (i = next++) < todo.size();) {
+      try {
+        const std::string& key = todo[i];
+        const Accuracy a = evaluate_accuracy(members[key].front(), ds);
+        cache.store(cache.path(key, ds.id), key, a);
+        std::lock_guard<std::mutex> g(lock);
+        accuracy[key] = a;
+        result.evaluated++;
+        progress.step(++done);
+      } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> g(lock);
+        if (error.empty()) error = e.what();
+        next = todo.size();
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 1; t < std::max(1, o.jobs); ++t) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (!error.empty()) throw InputError(error);
+
+  for (const auto& key : mine)
+    for (const auto& c : members[key]) {
+      Row r;
+      r.cfg = c;
+      r.acc = accuracy[key];
+      fill_hardware(r, part, o.clock_mhz);
+      result.rows.push_back(std::move(r));
+    }
+  mark_pareto(result.rows);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+double parse_percent(const std::string& flag, const std::string& text) {
+  std::string t = text;
+  if (!t.empty() && t.back() == '%') t.pop_back();
+  try {
+    size_t used = 0;
+    const double v = std::stod(t, &used);
+    if (used == t.size() && v >= 0) return v;
+  } catch (const std::logic_error&) {
+  }
+  throw InputError(fmt::format("{} '{}': expected a percentage such as 30% or 30", flag, text));
+}
+
+std::vector<Row> recommend(const std::vector<Row>& rows, const Constraints& c) {
+  std::vector<Row> ok;
+  for (const auto& r : rows) {
+    if (!std::isfinite(r.acc.d1_all)) continue;
+    if (c.max_lut && r.lut_pct > *c.max_lut) continue;
+    if (c.max_ff && r.ff_pct > *c.max_ff) continue;
+    if (c.max_bram && r.bram_pct > *c.max_bram) continue;
+    if (c.max_dsp && r.dsp_pct > *c.max_dsp) continue;
+    if (c.min_fps && r.fps < *c.min_fps) continue;
+    ok.push_back(r);
+  }
+  std::stable_sort(ok.begin(), ok.end(), [](const Row& a, const Row& b) {
+    if (a.acc.d1_all != b.acc.d1_all) return a.acc.d1_all < b.acc.d1_all;
+    if (a.resource_pct != b.resource_pct) return a.resource_pct < b.resource_pct;
+    return a.fps > b.fps;
+  });
+  if (int(ok.size()) > c.top) ok.resize(size_t(std::max(0, c.top)));
+  return ok;
+}
+
+std::string config_flags(const StereoConfig& cfg) {
+  const StereoConfig defaults;
+  std::string out;
+  for (const auto& spec : param_specs()) {
+    const std::string v = spec.get(cfg);
+    // width, height and the swept axes always appear, so the command reads on its own.
+    static const std::vector<std::string> always = {"width", "height", "cost", "window",
+                                                    "dmax",  "uf",     "lr",   "median"};
+    const bool shown = std::find(always.begin(), always.end(), spec.name) != always.end();
+    if (shown || v != spec.get(defaults))
+      out += fmt::format("{}--{} {}", out.empty() ? "" : " ", spec.name, v);
+  }
+  return out;
+}
+
+std::string rtl_command(const StereoConfig& cfg) {
+  return fmt::format("fpstereo-rtl {} -o {}", config_flags(cfg), config_tag(cfg));
+}
+
+}  // namespace fpstereo::dse

@@ -1,0 +1,151 @@
+// `fpstereo dse`: sweeps a design space, measuring accuracy with the golden model on a dataset
+// (once per accuracy-distinct configuration, cached on disk) and resources and throughput with the
+// fast model; finds the Pareto front and the best configurations under constraints.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config.hpp"
+#include "pair_eval.hpp"
+#include "resource_model.hpp"
+
+namespace fpstereo::dse {
+
+// The axes as the user wrote them (comma-separated values of --cost, --window, ...).
+struct SpaceText {
+  std::vector<std::string> cost{"census", "rank", "sad", "zsad"};
+  std::vector<std::string> window{"5", "7"};
+  std::vector<std::string> dmax{"64", "128"};
+  std::vector<std::string> uf{"4", "8", "16", "32"};
+  std::vector<std::string> resolution{"1242x374", "900x260"};
+  std::vector<std::string> refine{"none", "lr1", "lr2"};
+  std::vector<std::string> median{"off", "5"};
+};
+
+struct Space {
+  std::vector<CostFunction> cost;
+  std::vector<int> window, dmax, uf;
+  std::vector<std::pair<int, int>> resolution;
+  std::vector<LrCheck> refine;
+  std::vector<int> median;
+};
+
+// Throws InputError naming the axis and value (e.g. "--window '4': ...").
+Space parse_space(const SpaceText& text);
+
+struct Skipped {
+  StereoConfig cfg;
+  std::string reason;
+};
+
+// Every combination of the axes on top of `base`, in a fixed order; invalid ones (by validate())
+// go to `skipped` with the reason.
+std::vector<StereoConfig> enumerate(const Space& space, const StereoConfig& base,
+                                    std::vector<Skipped>& skipped);
+
+// What the golden model's output depends on: the configuration without width, height and uf.
+std::string accuracy_key(const StereoConfig& cfg);
+
+// Pooled over every pair (pixel counts summed): D1 in % (|err| > 3 px and > 5 %), on all pixels
+// with ground truth after KITTI background filling, on the non-occluded ones where every pair has
+// them (NaN otherwise), and on valid pixels only with the density.
+struct Accuracy {
+  double d1_all = 0, d1_noc = 0, d1_valid = 0, density = 0;
+  int pairs = 0;
+};
+
+// A dataset: one folder with pairs.csv, or a folder whose subfolders have one each.
+struct Dataset {
+  std::vector<PairInputs> pairs;
+  std::string id;  // hash of the pairs.csv files and the sizes and times of every file they name
+  std::string description;
+};
+// Throws InputError (missing folder, no pairs.csv, unreadable images, ...).
+Dataset load_dataset(const std::vector<std::string>& dirs);
+
+Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& dataset);
+
+// One full configuration of the sweep.
+struct Row {
+  StereoConfig cfg;
+  Accuracy acc;
+  ResourceEstimate model;
+  std::string part;
+  double lut_pct = 0, ff_pct = 0, bram_pct = 0, dsp_pct = 0;
+  double resource_pct = 0;  // the largest of the four: what limits how many fit
+  int64_t cycles_per_frame = 0;
+  double clock_mhz = 0, fps = 0;
+  bool pareto = false;
+  // Yosys' figures when it was run (--yosys-front); NaN otherwise.
+  double yosys_lut = NAN, yosys_ff = NAN, yosys_bram36 = NAN, yosys_dsp = NAN;
+};
+
+// Fills resources, percentages and throughput of a row from its configuration.
+void fill_hardware(Row& row, const Part& part, double clock_mhz);
+
+// Marks the rows no other row beats on D1, resource use and FPS at once (lower, lower, higher).
+void mark_pareto(std::vector<Row>& rows);
+
+struct SweepOptions {
+  Space space;
+  StereoConfig base;
+  std::vector<std::string> datasets;
+  std::string cache_dir;  // empty: $XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse
+  int shard_index = 1, shard_count = 1;
+  int jobs = 2;
+  double clock_mhz = 200;
+  std::string part = "xczu9eg";
+  bool progress = true;
+};
+
+struct SweepResult {
+  std::vector<Row> rows;
+  std::vector<Skipped> skipped;
+  int accuracy_configs = 0, evaluated = 0, cached = 0;
+  double seconds = 0;
+  std::string dataset;
+};
+
+// Throws InputError (bad dataset, unreadable or corrupt cache) or ConfigError.
+SweepResult sweep(const SweepOptions& options);
+
+// "i/N" with 1 <= i <= N. Throws InputError.
+std::pair<int, int> parse_shard(const std::string& text);
+
+struct Constraints {
+  std::optional<double> max_lut, max_ff, max_bram, max_dsp, min_fps;  // percent of the part; fps
+  int top = 5;
+};
+// "30%" or "30". Throws InputError.
+double parse_percent(const std::string& flag, const std::string& text);
+
+// The rows meeting the constraints, lowest D1 first (ties: lower resource use, then higher FPS).
+std::vector<Row> recommend(const std::vector<Row>& rows, const Constraints& c);
+
+// The configuration as flags (only the parameters that differ from the defaults; exact).
+std::string config_flags(const StereoConfig& cfg);
+// The fpstereo-rtl command that emits the configuration's design.
+std::string rtl_command(const StereoConfig& cfg);
+
+// CSV with one row per configuration; read back by read_csv (merge). Throws InputError.
+std::string to_csv(const std::vector<Row>& rows);
+std::vector<Row> read_csv(const std::string& path);
+
+struct ReportInfo {
+  std::string dataset, part, command;
+  double clock_mhz = 200;
+  double sweep_seconds = 0;
+  Constraints constraints;
+  int skipped = 0;
+};
+// Self-contained HTML (inline SVG, no scripts): D1 and FPS against resource use, the Pareto front,
+// the recommendations.
+std::string to_html(const std::vector<Row>& rows, const ReportInfo& info);
+
+}  // namespace fpstereo::dse

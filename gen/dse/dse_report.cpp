@@ -1,0 +1,412 @@
+// The sweep's outputs: the CSV (written by a sweep or a shard, read back by merge) and the HTML
+// report with its SVG plots.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "dse.hpp"
+#include "image_io.hpp"
+
+namespace fpstereo::dse {
+namespace {
+
+// ---- CSV ------------------------------------------------------------------------------------------
+
+const std::vector<std::string>& csv_columns() {
+  static const std::vector<std::string> columns = {
+      "cost",         "window",           "dmax",      "uf",       "width",   "height",   "refine",
+      "median",       "d1_all",           "d1_noc",    "d1_valid", "density", "pairs",    "lut",
+      "ff",           "bram36",           "dsp",       "lut_pct",  "ff_pct",  "bram_pct", "dsp_pct",
+      "resource_pct", "cycles_per_frame", "clock_mhz", "fps",      "part",    "pareto",   "yosys_lut",
+      "yosys_ff",     "yosys_bram36",     "yosys_dsp", "flags",    "command"};
+  return columns;
+}
+
+std::string number(double v, int digits = 4) {
+  return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : std::string();
+}
+
+std::string quoted(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool in_quotes = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        in_quotes = false;
+      } else {
+        cells.back() += c;
+      }
+    } else if (c == '"') {
+      in_quotes = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else if (c != '\r') {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+double cell_number(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
+
+StereoConfig parse_flags(const std::string& flags) {
+  std::istringstream in(flags);
+  std::string key, value;
+  StereoConfig cfg;
+  while (in >> key >> value) {
+    if (key.rfind("--", 0) != 0) throw ConfigError("malformed flags '" + flags + "'");
+    set_param(cfg, key.substr(2), value);
+  }
+  validate(cfg);
+  return cfg;
+}
+
+// ---- SVG ------------------------------------------------------------------------------------------
+
+const char* cost_colour(CostFunction c) {
+  switch (c) {
+    case CostFunction::Census:
+      return "#1f77b4";
+    case CostFunction::Rank:
+      return "#ff7f0e";
+    case CostFunction::Sad:
+      return "#2ca02c";
+    case CostFunction::Zsad:
+      return "#d62728";
+    case CostFunction::Shd:
+      return "#9467bd";
+  }
+  return "#000";
+}
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+struct Axis {
+  double lo, hi;
+  bool log;
+  double map(double v, double from, double to) const {
+    const double t =
+        log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+    return from + t * (to - from);
+  }
+  std::vector<double> ticks() const {
+    std::vector<double> t;
+    if (log) {
+      for (double p = std::pow(10, std::floor(std::log10(lo))); p <= hi * 1.0001; p *= 10)
+        for (double m : {1.0, 2.0, 5.0})
+          if (p * m >= lo * 0.9999 && p * m <= hi * 1.0001) t.push_back(p * m);
+      return t;
+    }
+    const double raw = (hi - lo) / 6, mag = std::pow(10, std::floor(std::log10(raw)));
+    const double step = raw / mag < 2 ? 2 * mag : raw / mag < 5 ? 5 * mag : 10 * mag;
+    for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9; v += step) t.push_back(v);
+    return t;
+  }
+};
+
+Axis axis_over(const std::vector<double>& values, bool log) {
+  double lo = *std::min_element(values.begin(), values.end());
+  double hi = *std::max_element(values.begin(), values.end());
+  if (log) {
+    lo = std::max(lo, 1e-3) / 1.2;
+    hi = hi * 1.2;
+  } else {
+    const double pad = std::max((hi - lo) * 0.05, 0.5);
+    lo = std::max(0.0, lo - pad);
+    hi += pad;
+  }
+  return {lo, hi, log};
+}
+
+// A scatter plot of y against resource use; front points ringed, the front joined as a staircase.
+std::string scatter(const std::vector<Row>& rows, const std::string& title, const std::string& y_label,
+                    double (*y_of)(const Row&), bool y_log, bool lower_is_better) {
+  const double w = 700, h = 420, left = 64, right = 110, top = 34, bottom = 48;  // legend on the right
+  std::vector<double> xs, ys;
+  for (const auto& r : rows)
+    if (std::isfinite(y_of(r))) {
+      xs.push_back(r.resource_pct);
+      ys.push_back(y_of(r));
+    }
+  std::string svg = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+      "font-family=\"sans-serif\" font-size=\"11\">\n<text x=\"{2}\" y=\"20\" font-size=\"14\" "
+      "font-weight=\"bold\">{3}</text>\n",
+      w, h, left, escape(title));
+  if (xs.empty()) return svg + "<text x=\"80\" y=\"200\">no data</text></svg>\n";
+  const Axis ax = axis_over(xs, false), ay = axis_over(ys, y_log);
+  const auto X = [&](double v) { return ax.map(v, left, w - right); };
+  const auto Y = [&](double v) { return ay.map(v, h - bottom, top); };
+  svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#888\"/>\n",
+                     left, top, w - left - right, h - top - bottom);
+  for (double t : ax.ticks())
+    svg += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" stroke=\"#eee\"/><text x=\"{0:.1f}\" "
+        "y=\"{3}\" "
+        "text-anchor=\"middle\">{4:g}</text>\n",
+        X(t), top, h - bottom, h - bottom + 14, t);
+  for (double t : ay.ticks())
+    svg += fmt::format(
+        "<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" stroke=\"#eee\"/><text x=\"{3}\" "
+        "y=\"{4:.1f}\" "
+        "text-anchor=\"end\">{5:g}</text>\n",
+        left, Y(t), w - right, left - 4, Y(t) + 4, t);
+  svg += fmt::format(
+      "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">resource use, % of the part (largest of LUT, FF, BRAM, "
+      "DSP)</text>\n<text transform=\"translate(14 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>\n",
+      (left + w - right) / 2, h - 10, (top + h - bottom) / 2, escape(y_label));
+  // Points: non-front first, so the front is drawn on top.
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& r : rows) {
+      if (r.pareto != (pass == 1) || !std::isfinite(y_of(r))) continue;
+      svg += fmt::format(
+          "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" fill-opacity=\"{}\"{}><title>{}: D1 "
+          "{:.2f} %, "
+          "{:.1f} fps, LUT {:.1f} %, BRAM {:.1f} %{}</title></circle>\n",
+          X(r.resource_pct), Y(y_of(r)), r.pareto ? 4.5 : 3, cost_colour(r.cfg.cost), r.pareto ? 0.95 : 0.45,
+          r.pareto ? " stroke=\"#000\" stroke-width=\"1.2\"" : "", escape(config_tag(r.cfg)), r.acc.d1_all,
+          r.fps, r.lut_pct, r.bram_pct, r.pareto ? ", Pareto front" : "");
+    }
+  // The 2-D front of this plot: best y so far as resource use grows.
+  std::vector<const Row*> sorted;
+  for (const auto& r : rows)
+    if (std::isfinite(y_of(r))) sorted.push_back(&r);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const Row* a, const Row* b) { return a->resource_pct < b->resource_pct; });
+  std::string path;
+  double best = NAN;
+  for (const Row* r : sorted) {
+    const double y = y_of(*r);
+    if (std::isfinite(best) && !(lower_is_better ? y < best : y > best)) continue;
+    path += path.empty() ? fmt::format("M{:.1f},{:.1f}", X(r->resource_pct), Y(y))
+                         : fmt::format(" H{:.1f} V{:.1f}", X(r->resource_pct), Y(y));
+    best = y;
+  }
+  svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#000\" stroke-dasharray=\"4 3\"/>\n", path);
+  // Legend.
+  double ly = top + 12;
+  std::vector<CostFunction> seen;
+  for (const auto& r : rows)
+    if (std::find(seen.begin(), seen.end(), r.cfg.cost) == seen.end()) seen.push_back(r.cfg.cost);
+  for (CostFunction c : seen) {
+    svg += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"4\" fill=\"{}\"/><text x=\"{}\" y=\"{}\">{}</text>\n",
+                       w - right + 14, ly, cost_colour(c), w - right + 22, ly + 4, to_string(c));
+    ly += 15;
+  }
+  svg += fmt::format(
+      "<circle cx=\"{}\" cy=\"{}\" r=\"4.5\" fill=\"#fff\" stroke=\"#000\"/><text x=\"{}\" y=\"{}\">Pareto "
+      "front</text>\n</svg>\n",
+      w - right + 14, ly, w - right + 22, ly + 4);
+  return svg;
+}
+
+std::string table(const std::vector<Row>& rows, bool with_command) {
+  std::string out =
+      "<table>\n<tr><th>#</th><th>cost</th><th>win</th><th>dmax</th><th>uf</th><th>resolution</"
+      "th><th>refine</th>"
+      "<th>median</th><th>D1 all %</th><th>D1 valid %</th><th>density %</th><th>LUT %</th><th>FF %</th>"
+      "<th>BRAM36 %</th><th>DSP</th><th>fps</th><th>Yosys LUT / BRAM36</th>" +
+      std::string(with_command ? "<th>command</th>" : "") + "</tr>\n";
+  int i = 0;
+  for (const auto& r : rows) {
+    const std::string yosys = std::isfinite(r.yosys_lut)
+                                  ? fmt::format("{:.0f} / {:g}", r.yosys_lut, r.yosys_bram36)
+                                  : std::string("-");
+    out += fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}x{}</td><td>{}</td><td>{}</td>"
+        "<td>{:.2f}</td><td>{:.2f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</"
+        "td><td>{:.0f}</td>"
+        "<td>{:.1f}</td><td>{}</td>{}</tr>\n",
+        ++i, to_string(r.cfg.cost), r.cfg.window, r.cfg.dmax, r.cfg.uf, r.cfg.width, r.cfg.height,
+        to_string(r.cfg.lr), r.cfg.median ? std::to_string(r.cfg.median) : std::string("off"), r.acc.d1_all,
+        r.acc.d1_valid, r.acc.density, r.lut_pct, r.ff_pct, r.bram_pct, r.model.dsp, r.fps, yosys,
+        with_command ? "<td><code>" + escape(rtl_command(r.cfg)) + "</code></td>" : "");
+  }
+  return out + "</table>\n";
+}
+
+double d1_of(const Row& r) { return r.acc.d1_all; }
+double fps_of(const Row& r) { return r.fps; }
+
+}  // namespace
+
+std::string to_csv(const std::vector<Row>& rows) {
+  std::string out;
+  for (const auto& c : csv_columns()) out += (out.empty() ? "" : ",") + c;
+  out += "\n";
+  for (const auto& r : rows) {
+    const StereoConfig& c = r.cfg;
+    const std::vector<std::string> cells = {to_string(c.cost),
+                                            std::to_string(c.window),
+                                            std::to_string(c.dmax),
+                                            std::to_string(c.uf),
+                                            std::to_string(c.width),
+                                            std::to_string(c.height),
+                                            to_string(c.lr),
+                                            std::to_string(c.median),
+                                            number(r.acc.d1_all),
+                                            number(r.acc.d1_noc),
+                                            number(r.acc.d1_valid),
+                                            number(r.acc.density),
+                                            std::to_string(r.acc.pairs),
+                                            number(r.model.lut, 0),
+                                            number(r.model.ff, 0),
+                                            number(r.model.bram36_equiv(), 1),
+                                            number(r.model.dsp, 0),
+                                            number(r.lut_pct, 3),
+                                            number(r.ff_pct, 3),
+                                            number(r.bram_pct, 3),
+                                            number(r.dsp_pct, 3),
+                                            number(r.resource_pct, 3),
+                                            std::to_string(r.cycles_per_frame),
+                                            number(r.clock_mhz, 3),
+                                            number(r.fps, 3),
+                                            r.part,
+                                            r.pareto ? "1" : "0",
+                                            number(r.yosys_lut, 0),
+                                            number(r.yosys_ff, 0),
+                                            number(r.yosys_bram36, 1),
+                                            number(r.yosys_dsp, 0),
+                                            config_flags(c),
+                                            rtl_command(c)};
+    std::string line;
+    for (const auto& cell : cells) line += (line.empty() ? "" : ",") + quoted(cell);
+    out += line + "\n";
+  }
+  return out;
+}
+
+std::vector<Row> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("cannot read '{}'", path));
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty, expected a dse CSV", path));
+  const std::vector<std::string> header = split_csv_line(line);
+  std::map<std::string, size_t> col;
+  for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  for (const auto& c : csv_columns())
+    if (!col.count(c)) throw InputError(fmt::format("'{}': not a dse CSV (no column '{}')", path, c));
+  std::vector<Row> rows;
+  int line_no = 1;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty()) continue;
+    const std::vector<std::string> f = split_csv_line(line);
+    try {
+      if (f.size() != header.size()) throw std::invalid_argument("wrong number of cells");
+      const auto get = [&](const char* name) { return f[col.at(name)]; };
+      Row r;
+      r.cfg = parse_flags(get("flags"));
+      r.acc = {cell_number(get("d1_all")), cell_number(get("d1_noc")), cell_number(get("d1_valid")),
+               cell_number(get("density")), std::stoi(get("pairs"))};
+      r.model.lut = cell_number(get("lut"));
+      r.model.ff = cell_number(get("ff"));
+      // BRAM36 equivalents: the RAMB18/RAMB36 split is not in the CSV, halves go to bram18.
+      const double bram = cell_number(get("bram36"));
+      r.model.bram36 = int(std::floor(bram));
+      r.model.bram18 = int(std::lround((bram - std::floor(bram)) * 2));
+      r.model.dsp = cell_number(get("dsp"));
+      r.lut_pct = cell_number(get("lut_pct"));
+      r.ff_pct = cell_number(get("ff_pct"));
+      r.bram_pct = cell_number(get("bram_pct"));
+      r.dsp_pct = cell_number(get("dsp_pct"));
+      r.resource_pct = cell_number(get("resource_pct"));
+      r.cycles_per_frame = std::stoll(get("cycles_per_frame"));
+      r.clock_mhz = cell_number(get("clock_mhz"));
+      r.fps = cell_number(get("fps"));
+      r.part = get("part");
+      r.pareto = get("pareto") == "1";
+      r.yosys_lut = cell_number(get("yosys_lut"));
+      r.yosys_ff = cell_number(get("yosys_ff"));
+      r.yosys_bram36 = cell_number(get("yosys_bram36"));
+      r.yosys_dsp = cell_number(get("yosys_dsp"));
+      rows.push_back(std::move(r));
+    } catch (const std::exception& e) {
+      throw InputError(fmt::format("'{}' line {}: malformed row ({})", path, line_no, e.what()));
+    }
+  }
+  return rows;
+}
+
+std::string to_html(const std::vector<Row>& rows, const ReportInfo& info) {
+  std::vector<Row> front;
+  for (const auto& r : rows)
+    if (r.pareto) front.push_back(r);
+  std::sort(front.begin(), front.end(),
+            [](const Row& a, const Row& b) { return a.resource_pct < b.resource_pct; });
+  const std::vector<Row> best = recommend(rows, info.constraints);
+  const Constraints& c = info.constraints;
+  std::string limits;
+  const auto add = [&](const char* name, const std::optional<double>& v, const char* unit) {
+    if (v) limits += fmt::format("{}{} {:g}{}", limits.empty() ? "" : ", ", name, *v, unit);
+  };
+  add("LUT ≤", c.max_lut, " %");
+  add("FF ≤", c.max_ff, " %");
+  add("BRAM ≤", c.max_bram, " %");
+  add("DSP ≤", c.max_dsp, " %");
+  add("fps ≥", c.min_fps, "");
+  std::string html = fmt::format(
+      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>fpstereo "
+      "dse</title>\n<style>body{{font-family:"
+      "sans-serif;margin:24px;max-width:1400px}} table{{border-collapse:collapse;font-size:12px}} "
+      "td,th{{border:1px "
+      "solid #ccc;padding:2px 6px;text-align:right}} code{{font-size:11px;white-space:nowrap}} "
+      ".plots{{display:flex;flex-wrap:wrap;gap:16px}}</style></head><body>\n<h1>fpstereo design-space "
+      "exploration</h1>\n<p>{} configurations on part {} at {:g} MHz; dataset {}.{}</p>\n"
+      "<p>Accuracy: the golden model (bit-exact with the hardware) on every pair at its own size; D1 = % of "
+      "pixels "
+      "with ground truth whose error is &gt; 3 px and &gt; 5 %, after KITTI background filling of invalid "
+      "pixels, "
+      "pixel counts pooled over the pairs. uf and resolution do not change the output (each "
+      "accuracy-distinct "
+      "configuration is evaluated once): they drive resources and frame rate only. Resources: the fast model "
+      "(block RAM exactly as Yosys maps it, LUT/FF/DSP fitted against Yosys); fps = clock / cycles per frame "
+      "of "
+      "the generated design.</p>\n<p>Command: <code>{}</code></p>\n<div class=\"plots\">\n{}{}</div>\n",
+      rows.size(), escape(info.part), info.clock_mhz, escape(info.dataset),
+      info.skipped ? fmt::format(" {} invalid combinations skipped.", info.skipped) : std::string(),
+      escape(info.command),
+      scatter(rows, "D1 against resource use (colour: cost function)", "D1 all, % (filled)", d1_of, false,
+              true),
+      scatter(rows, "Frame rate against resource use", "frames per second (log)", fps_of, true, false));
+  html += fmt::format("<h2>Best configurations{}</h2>\n", limits.empty() ? "" : " with " + escape(limits));
+  html += best.empty() ? "<p>No configuration meets the constraints.</p>\n" : table(best, true);
+  html += fmt::format(
+      "<h2>Pareto front ({} configurations: no other is better in D1, resource use and fps at "
+      "once)</h2>\n",
+      front.size());
+  html += table(front, true);
+  return html + "</body></html>\n";
+}
+
+}  // namespace fpstereo::dse

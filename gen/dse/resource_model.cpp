@@ -1,0 +1,400 @@
+#include "resource_model.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "widths.hpp"
+
+namespace fpstereo::dse {
+namespace {
+
+// ---- memories ----------------------------------------------------------------------------------
+
+// The memories rtl_templates/ instantiate (fpstereo_sgm_core.v, fpstereo_aggregator.v,
+// fpstereo_window.v, fpstereo_gap_fill.v), with the names Yosys gives them after flattening.
+void add(std::vector<MemoryEstimate>& out, const std::string& name, int64_t words, int64_t bits,
+         bool sync_read = true) {
+  MemoryEstimate m;
+  m.name = name;
+  m.words = words;
+  m.bits = bits;
+  m.sync_read = sync_read;
+  out.push_back(m);
+}
+
+void add_aggregator(std::vector<MemoryEstimate>& out, const rtl::RtlDesign& d, const std::string& scope) {
+  const StereoConfig& c = d.cfg;
+  const int64_t lanes_w = int64_t(c.uf) * d.widths.path_cost;
+  const int64_t row_depth = int64_t(c.width + 1) * d.groups;
+  const int64_t state_depth = int64_t(d.chains) * d.groups;
+  if (c.paths & kPath0) add(out, scope + ".path0.state.mem", state_depth, lanes_w, false);
+  if (c.paths & kPath45) {
+    add(out, scope + ".path45.row.mem", row_depth, lanes_w);
+    add(out, scope + ".path45.row_min.mem", c.width + 1, d.widths.path_cost);
+    add(out, scope + ".path45.state.mem", state_depth, lanes_w, false);
+  }
+  for (int v = 0; v < 2; ++v) {
+    if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
+    const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
+    add(out, p + ".row.mem", row_depth, lanes_w);
+    add(out, p + ".row_min.mem", c.width + 1, d.widths.path_cost);
+  }
+}
+
+// ---- Yosys 0.23 memory_libmap for xcup ------------------------------------------------------------
+// brams_xc4v.txt with HAS_SIZE_36, HAS_CASCADE and HAS_MIXWIDTH_SDP, lutrams_xcu.txt, and the
+// cost rules of passes/memory/memory_libmap.cc (handle_geom): per option and base width, the
+// cells needed (repl), plus 0.5 per read-mux input bit and write-demux output when the depth is
+// split, plus 2 per emulation point (one: the read port is not shared with the write port).
+// Ties keep the option listed first. A memory becomes FFs unless some option costs less than its
+// bit count.
+
+struct RamOption {
+  int abits;
+  std::vector<int> dbits;
+  int cost;
+  int bram18_cells, bram36_cells;  // per replicated cell
+};
+
+constexpr double kMuxFactor = 0.5, kDemuxFactor = 0.5, kEmulation = 2.0;
+
+// Block RAM options in library order: TDP half/full/cascade, then SDP half/full. The cascade mode's
+// ports are one bit wide ("width mix 1"), so it only ever holds 64K x 1.
+const std::vector<RamOption>& block_options() {
+  static const std::vector<RamOption> options = {
+      {14, {1, 2, 4, 9, 18}, 129, 1, 0},     {15, {1, 2, 4, 9, 18, 36}, 257, 0, 1},     {16, {1}, 513, 0, 2},
+      {14, {1, 2, 4, 9, 18, 36}, 129, 1, 0}, {15, {1, 2, 4, 9, 18, 36, 72}, 257, 0, 1},
+  };
+  return options;
+}
+
+struct Choice {
+  double cost = std::numeric_limits<double>::infinity();
+  int64_t cells = 0;
+  const RamOption* option = nullptr;
+};
+
+int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+
+// Split cost terms shared by block and distributed RAM.
+double split_cost(int64_t mult_a, int64_t bits) {
+  if (mult_a == 1) return 0;
+  return kMuxFactor * double((mult_a - 1) * bits) + kDemuxFactor * double(mult_a);
+}
+
+Choice best_block(int64_t words, int64_t bits) {
+  Choice best;
+  for (const RamOption& o : block_options())
+    for (size_t b = 0; b < o.dbits.size(); ++b) {
+      const int64_t unit = o.dbits[b];
+      const int64_t byte = std::min<int64_t>(9, unit);  // "byte 9", or the unit when narrower
+      const int64_t swizzle = ceil_div(bits, byte) * byte;
+      const int64_t mult_a = ceil_div(words, int64_t(1) << (o.abits - int(b)));
+      const int64_t repl = ceil_div(mult_a * swizzle, unit);
+      const double cost = double(o.cost) * double(repl) + split_cost(mult_a, bits) + kEmulation;
+      if (cost < best.cost) best = {cost, repl, &o};
+    }
+  return best;
+}
+
+// Distributed RAM with a widthscale cost: 16 per LUT-width of data (integer division, as Yosys).
+double best_distributed(int64_t words, int64_t bits) {
+  struct Lutram {
+    int abits, width;
+  };
+  // SDP (one write, one read port) 32 x 14 and 64 x 7; DP 32 x 8 .. 256 x 1.
+  static const Lutram options[] = {{5, 14}, {6, 7}, {5, 8}, {6, 4}, {7, 2}, {8, 1}};
+  double best = std::numeric_limits<double>::infinity();
+  for (const Lutram& o : options) {
+    const int64_t mult_a = ceil_div(words, int64_t(1) << o.abits);
+    const double cost = double(16 * mult_a * bits / o.width) + split_cost(mult_a, bits) + kEmulation;
+    best = std::min(best, cost);
+  }
+  return best;
+}
+
+// ---- the part table --------------------------------------------------------------------------------
+
+std::string read_script() {
+  const std::string path = std::string(FPSTEREO_SOURCE_DIR) + "/scripts/synth-yosys.sh";
+  std::ifstream in(path);
+  if (!in) throw ConfigError("cannot read the part table in " + path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& d) {
+  const StereoConfig& c = d.cfg;
+  const Widths& w = d.widths;
+  std::vector<MemoryEstimate> out;
+  const int64_t slots = d.row_slots;
+  add(out, "core.left_window.line_buffer.mem", slots, int64_t(c.window - 1) * w.pixel);
+  add(out, "core.right_window.line_buffer.mem", slots, int64_t(c.window - 1) * w.pixel);
+  if (c.cost == CostFunction::Shd && c.shd_window > 1) {
+    const int64_t stored = int64_t(c.shd_window - 1) * std::max(1, w.code);
+    add(out, "core.genblk2.code_window_cost.base_codes.line_buffer.mem", slots, stored);
+    add(out, "core.genblk2.code_window_cost.match_codes.line_buffer.mem", slots, stored);
+  }
+  const int lr = c.lr == LrCheck::None ? 0 : c.lr == LrCheck::Lr1 ? 1 : 2;
+  const int64_t cost_depth = int64_t(d.chains + (lr == 2 ? 1 : 0)) * slots * d.groups;
+  add(out, "core.cost_ram.mem", cost_depth, int64_t(c.uf) * w.cost);
+  add_aggregator(out, d, "core.aggregation");
+  const int64_t out_rows = d.chains + 1 + lr;
+  add(out, "core.disp_ram.mem", out_rows * slots, w.disparity + 1);
+  if (lr == 1) {
+    add(out, "core.lr.completed.mem", out_rows * slots, w.disparity);
+    add(out, "core.lr.row_end.mem", out_rows * d.groups, int64_t(c.uf) * w.disparity);
+    add(out, "core.lr.lr1.entries.mem", int64_t(d.chains) * d.groups,
+        int64_t(c.uf) * (w.aggregated + w.disparity), false);
+  } else if (lr == 2) {
+    add(out, "core.lr.completed.mem", out_rows * slots, w.disparity);
+    for (int l = 0; l < c.uf; ++l)
+      add(out, fmt::format("core.lr.lr2.bank[{}].costs_of_lane.mem", l), cost_depth, w.cost);
+    add_aggregator(out, d, "core.lr.lr2.match_aggregation");
+  }
+  if (c.median > 0)
+    add(out, "core.median.line_window.line_buffer.mem", slots, int64_t(c.median - 1) * (w.disparity + 1));
+  if (c.gap_interpolation) {
+    add(out, "core.gap.stage.words.mem", 2 * int64_t(c.width), w.disparity + 1 + d.x_bits);
+    add(out, "core.gap.stage.right_neighbours.mem", 2 * int64_t(c.width), w.disparity + 1);
+  }
+  for (auto& m : out) map_memory(m);
+  return out;
+}
+
+void map_memory(MemoryEstimate& m) {
+  const double logic = double(m.words * m.bits);
+  const double lutram = best_distributed(m.words, m.bits);
+  const Choice block = m.sync_read ? best_block(m.words, m.bits) : Choice{};
+  m.bram18 = m.bram36 = 0;
+  if (block.cost < lutram && block.cost < logic) {
+    m.target = "bram";
+    m.bram18 = int(block.cells * block.option->bram18_cells);
+    m.bram36 = int(block.cells * block.option->bram36_cells);
+  } else if (lutram < logic) {
+    m.target = "lutram";
+  } else {
+    m.target = "ff";
+  }
+}
+
+// ---- LUT, FF, DSP ----------------------------------------------------------------------------------
+
+const std::vector<std::string>& feature_names() {
+  static const std::vector<std::string> names = {"top/control",
+                                                 "path lanes",
+                                                 "path sum+WTA",
+                                                 "code cost lanes",
+                                                 "pixel cost lanes",
+                                                 "match ring",
+                                                 "transform",
+                                                 "median",
+                                                 "LR1",
+                                                 "LR2",
+                                                 "ZSAD lanes"};
+  return names;
+}
+
+// Each term is the bit count of one stage's datapath; its coefficient is LUTs (or FFs) per bit.
+std::vector<double> features(const rtl::RtlDesign& d) {
+  const StereoConfig& c = d.cfg;
+  const Widths& w = d.widths;
+  const double uf = c.uf, dmax = c.dmax;
+  const double sides = c.lr == LrCheck::Lr2 ? 2 : 1;  // LR2 aggregates the match side too
+  const double n = c.window, k = c.shd_window;
+  // The match ring (fpstereo_match_ring.v) keeps dmax + span - 1 match columns in registers.
+  double code_lanes = 0, pixel_lanes = 0, ring = 0, zero_mean = 0;
+  switch (c.cost) {
+    case CostFunction::Census:
+    case CostFunction::Rank:
+      code_lanes = uf * w.code;
+      ring = dmax * w.code;
+      break;
+    // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window.
+    case CostFunction::Shd:
+      code_lanes = uf * k * k * w.code;
+      ring = (dmax + k - 1) * k * w.code;
+      break;
+    case CostFunction::Sad:
+      pixel_lanes = uf * n * n * w.pixel;
+      ring = (dmax + n - 1) * n * w.pixel;
+      break;
+    case CostFunction::Zsad:  // plus the ring of column sums, the means and their subtraction
+      pixel_lanes = uf * n * n * w.pixel;
+      zero_mean = pixel_lanes;
+      ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
+      break;
+  }
+  return {1.0, uf * c.path_count() * w.path_cost * sides, uf * w.aggregated * sides, code_lanes, pixel_lanes,
+          ring, c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
+          c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
+          c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
+          // LR2's uf-wide part is the second aggregation (sides); the rest is per design.
+          c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean};
+}
+
+const std::vector<std::string>& dsp_feature_names() {
+  static const std::vector<std::string> names = {"base", "LR1", "LR2", "ZSAD means"};
+  return names;
+}
+
+// DSPs are the few multiplies of RAM address arithmetic and ZSAD's means (the base window's and
+// one per lane).
+std::vector<double> dsp_features(const rtl::RtlDesign& d) {
+  return {1.0, d.cfg.lr == LrCheck::Lr1 ? 1.0 : 0.0, d.cfg.lr == LrCheck::Lr2 ? 1.0 : 0.0,
+          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0};
+}
+
+const Coefficients& fitted_coefficients() {
+#include "resource_coefficients.inc"
+  static const Coefficients c = {std::vector<double>(std::begin(kLut), std::end(kLut)),
+                                 std::vector<double>(std::begin(kFf), std::end(kFf)),
+                                 std::vector<double>(std::begin(kDsp), std::end(kDsp))};
+  return c;
+}
+
+namespace {
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) s += a[i] * b[i];
+  return s;
+}
+}  // namespace
+
+ResourceEstimate estimate(const rtl::RtlDesign& d, const Coefficients& c) {
+  ResourceEstimate e;
+  e.memories = design_memories(d);
+  for (const auto& m : e.memories) {
+    e.bram18 += m.bram18;
+    e.bram36 += m.bram36;
+  }
+  const std::vector<double> f = features(d);
+  e.lut = dot(f, c.lut);
+  e.ff = dot(f, c.ff);
+  e.dsp = std::round(dot(dsp_features(d), c.dsp));
+  return e;
+}
+
+ResourceEstimate estimate(const StereoConfig& cfg) { return estimate(rtl::plan(cfg)); }
+
+double frames_per_second(const rtl::RtlDesign& d, double clock_mhz) {
+  return clock_mhz * 1e6 / double(d.cycles_per_frame);
+}
+
+// ---- parts ------------------------------------------------------------------------------------------
+
+std::vector<Part> parts() {
+  static const std::vector<Part> table = [] {
+    // Lines like:    xczu9eg)  echo "xcup 274080 548160 912 2520 144000" ;;  # ZCU102
+    const std::regex row(R"re(^\s*([a-z0-9]+)\)\s+echo\s+"(\w+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)")re");
+    std::vector<Part> out;
+    std::istringstream in(read_script());
+    std::string line;
+    std::smatch m;
+    while (std::getline(in, line))
+      if (std::regex_search(line, m, row))
+        out.push_back({m[1], m[2], std::stoll(m[3]), std::stoll(m[4]), std::stoll(m[5]), std::stoll(m[6]),
+                       std::stoll(m[7])});
+    if (out.empty()) throw ConfigError("no part table in scripts/synth-yosys.sh");
+    return out;
+  }();
+  return table;
+}
+
+Part find_part(const std::string& name) {
+  std::string known;
+  for (const Part& p : parts()) {
+    if (p.name == name) return p;
+    known += (known.empty() ? "" : ", ") + p.name;
+  }
+  throw ConfigError(fmt::format("--part '{}': unknown part (known: {})", name, known));
+}
+
+// ---- fitting ------------------------------------------------------------------------------------------
+
+namespace {
+// Solves the unconstrained weighted least squares over the columns in `passive` (normal equations,
+// Gaussian elimination with partial pivoting; the systems are tiny).
+std::vector<double> solve_subset(const std::vector<std::vector<double>>& a, const std::vector<double>& b,
+                                 const std::vector<double>& wt, const std::vector<size_t>& passive,
+                                 size_t n) {
+  const size_t k = passive.size();
+  std::vector<std::vector<double>> m(k, std::vector<double>(k + 1, 0));
+  for (size_t r = 0; r < a.size(); ++r)
+    for (size_t i = 0; i < k; ++i) {
+      for (size_t j = 0; j < k; ++j) m[i][j] += wt[r] * a[r][passive[i]] * a[r][passive[j]];
+      m[i][k] += wt[r] * a[r][passive[i]] * b[r];
+    }
+  for (size_t i = 0; i < k; ++i) m[i][i] += 1e-9 * (1 + m[i][i]);  // keeps a rank-deficient system solvable
+  for (size_t col = 0; col < k; ++col) {
+    size_t piv = col;
+    for (size_t r = col + 1; r < k; ++r)
+      if (std::abs(m[r][col]) > std::abs(m[piv][col])) piv = r;
+    std::swap(m[col], m[piv]);
+    for (size_t r = 0; r < k; ++r) {
+      if (r == col || m[col][col] == 0) continue;
+      const double f = m[r][col] / m[col][col];
+      for (size_t j = col; j <= k; ++j) m[r][j] -= f * m[col][j];
+    }
+  }
+  std::vector<double> x(n, 0);
+  for (size_t i = 0; i < k; ++i) x[passive[i]] = m[i][i] == 0 ? 0 : m[i][k] / m[i][i];
+  return x;
+}
+}  // namespace
+
+std::vector<double> fit_nonnegative(const std::vector<std::vector<double>>& a, const std::vector<double>& b,
+                                    const std::vector<double>& wt) {
+  const size_t n = a.empty() ? 0 : a.front().size();
+  std::vector<double> x(n, 0);
+  std::vector<bool> in_passive(n, false);
+  const double tol = 1e-10;
+  for (int outer = 0; outer < 100; ++outer) {
+    // Gradient of the weighted residual: the most promising column to free.
+    std::vector<double> g(n, 0);
+    for (size_t r = 0; r < a.size(); ++r) {
+      double res = b[r];
+      for (size_t j = 0; j < n; ++j) res -= a[r][j] * x[j];
+      for (size_t j = 0; j < n; ++j) g[j] += wt[r] * a[r][j] * res;
+    }
+    size_t best = n;
+    for (size_t j = 0; j < n; ++j)
+      if (!in_passive[j] && g[j] > tol && (best == n || g[j] > g[best])) best = j;
+    if (best == n) break;
+    in_passive[best] = true;
+    for (int inner = 0; inner < 100; ++inner) {
+      std::vector<size_t> passive;
+      for (size_t j = 0; j < n; ++j)
+        if (in_passive[j]) passive.push_back(j);
+      const std::vector<double> z = solve_subset(a, b, wt, passive, n);
+      bool feasible = true;
+      for (size_t j : passive) feasible = feasible && z[j] > tol;
+      if (feasible) {
+        x = z;
+        break;
+      }
+      // Step towards z until a coefficient reaches zero; it leaves the passive set.
+      double alpha = 1;
+      for (size_t j : passive)
+        if (z[j] <= tol) alpha = std::min(alpha, x[j] / (x[j] - z[j]));
+      for (size_t j = 0; j < n; ++j) x[j] += alpha * (z[j] - x[j]);
+      for (size_t j : passive)
+        if (x[j] <= tol) {
+          x[j] = 0;
+          in_passive[j] = false;
+        }
+    }
+  }
+  return x;
+}
+
+}  // namespace fpstereo::dse

@@ -1,0 +1,348 @@
+#include "dse_command.hpp"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "config_cli.hpp"
+#include "dse.hpp"
+#include "image_io.hpp"
+#include "synth_command.hpp"
+
+namespace fpstereo {
+namespace {
+
+constexpr const char* kTool = "fpstereo";
+
+// The parameters the axes set; every other one is a fixed flag of the base configuration.
+bool is_axis_param(const std::string& name) {
+  static const std::vector<std::string> axes = {"cost",  "window", "dmax", "uf",
+                                                "width", "height", "lr",   "median"};
+  return std::find(axes.begin(), axes.end(), name) != axes.end();
+}
+
+struct OutputOptions {
+  std::string csv = "dse.csv", html = "dse.html", part = "xczu9eg";
+  std::string max_lut, max_ff, max_bram, max_dsp;
+  double min_fps = -1;
+  int top = 5;
+  bool yosys_front = false;
+  int yosys_limit = 8;
+};
+
+struct DseOptions {
+  dse::SpaceText space;
+  std::vector<std::string> datasets;
+  std::string preset, config_file, cache, shard;
+  std::map<std::string, std::string> fixed;
+  int jobs = 2;
+  double clock_mhz = 200;
+  bool progress = false;
+  OutputOptions out;
+};
+
+struct MergeOptions {
+  std::vector<std::string> inputs;
+  OutputOptions out;
+};
+
+dse::Constraints constraints(const OutputOptions& o) {
+  dse::Constraints c;
+  if (!o.max_lut.empty()) c.max_lut = dse::parse_percent("--max-lut", o.max_lut);
+  if (!o.max_ff.empty()) c.max_ff = dse::parse_percent("--max-ff", o.max_ff);
+  if (!o.max_bram.empty()) c.max_bram = dse::parse_percent("--max-bram", o.max_bram);
+  if (!o.max_dsp.empty()) c.max_dsp = dse::parse_percent("--max-dsp", o.max_dsp);
+  if (o.min_fps >= 0) c.min_fps = o.min_fps;
+  if (o.top < 1) throw InputError(fmt::format("--top {}: expected at least 1", o.top));
+  c.top = o.top;
+  return c;
+}
+
+// Opened before any work so that a bad path fails before minutes of computation.
+std::unique_ptr<std::ofstream> open_output(const std::string& path) {
+  auto f = std::make_unique<std::ofstream>(path, std::ios::trunc);
+  if (!*f) throw InputError(fmt::format("cannot write '{}'", path));
+  return f;
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+  return s;
+}
+
+// The sweep as a command (for the report): datasets, axes and fixed parameters.
+std::string sweep_command(const DseOptions& o) {
+  std::string s = "fpstereo dse " + join(o.datasets, " ");
+  const dse::SpaceText& t = o.space;
+  for (const auto& [flag, values] :
+       std::vector<std::pair<const char*, const std::vector<std::string>*>>{{"cost", &t.cost},
+                                                                            {"window", &t.window},
+                                                                            {"dmax", &t.dmax},
+                                                                            {"uf", &t.uf},
+                                                                            {"resolution", &t.resolution},
+                                                                            {"refine", &t.refine},
+                                                                            {"median", &t.median}})
+    s += fmt::format(" --{} {}", flag, join(*values, ","));
+  if (!o.preset.empty()) s += " --preset " + o.preset;
+  if (!o.config_file.empty()) s += " --config " + o.config_file;
+  for (const auto& [name, value] : o.fixed) s += fmt::format(" --{} {}", name, value);
+  return s + fmt::format(" --part {} --clock-mhz {:g}", o.out.part, o.clock_mhz);
+}
+
+// Real Yosys figures for the front (fpstereo synth, cached by design), the lowest resource use first.
+void run_yosys_front(std::vector<dse::Row>& rows, const OutputOptions& o) {
+  std::vector<dse::Row*> front;
+  for (auto& r : rows)
+    if (r.pareto) front.push_back(&r);
+  std::sort(front.begin(), front.end(),
+            [](const dse::Row* a, const dse::Row* b) { return a->resource_pct < b->resource_pct; });
+  if (int(front.size()) > o.yosys_limit) front.resize(size_t(o.yosys_limit));
+  char self[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) throw InputError("cannot find the fpstereo binary for --yosys-front");
+  self[n] = 0;
+  int i = 0;
+  for (dse::Row* r : front) {
+    const std::string cmd =
+        fmt::format("nice -n 10 '{}' synth {} --part {} --kv 2>&1", self, dse::config_flags(r->cfg), o.part);
+    std::cerr << fmt::format("fpstereo dse: Yosys {}/{}: {}\n", ++i, front.size(), config_tag(r->cfg));
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p) throw InputError("cannot run " + cmd);
+    std::string text;
+    char buf[4096];
+    size_t got;
+    while ((got = fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, got);
+    if (::pclose(p) != 0) throw InputError(fmt::format("--yosys-front: fpstereo synth failed: {}", text));
+    const SynthReport rep = parse_kv(text);
+    r->yosys_lut = double(rep.lut);
+    r->yosys_ff = double(rep.ff);
+    r->yosys_bram36 = rep.bram36_equiv;
+    r->yosys_dsp = double(rep.dsp);
+  }
+}
+
+void print_recommendations(const std::vector<dse::Row>& rows, const dse::Constraints& c) {
+  const std::vector<dse::Row> best = dse::recommend(rows, c);
+  std::string limits;
+  const auto add = [&](const char* name, const std::optional<double>& v, const char* unit) {
+    if (v) limits += fmt::format("{}{} {:g}{}", limits.empty() ? "" : ", ", name, *v, unit);
+  };
+  add("LUT <=", c.max_lut, " %");
+  add("FF <=", c.max_ff, " %");
+  add("BRAM <=", c.max_bram, " %");
+  add("DSP <=", c.max_dsp, " %");
+  add("fps >=", c.min_fps, "");
+  fmt::print("best configurations{} (lowest D1 first):\n", limits.empty() ? "" : " with " + limits);
+  if (best.empty()) fmt::print("  none meets the constraints\n");
+  int i = 0;
+  for (const auto& r : best) {
+    fmt::print(
+        "{:2}. {:<28} D1 {:6.2f} % (valid only {:.2f} %, density {:.1f} %)  LUT {:.1f} %  FF {:.1f} %  "
+        "BRAM36 {:g} ({:.1f} %)  DSP {:g}  {:.1f} fps{}\n",
+        ++i, config_tag(r.cfg), r.acc.d1_all, r.acc.d1_valid, r.acc.density, r.lut_pct, r.ff_pct,
+        r.model.bram36_equiv(), r.bram_pct, r.model.dsp, r.fps,
+        std::isfinite(r.yosys_lut) ? fmt::format("  [Yosys: {:.0f} LUT, {:.0f} FF, {:g} BRAM36]", r.yosys_lut,
+                                                 r.yosys_ff, r.yosys_bram36)
+                                   : std::string());
+    fmt::print("    {}\n", dse::rtl_command(r.cfg));
+  }
+}
+
+void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info,
+                   std::ofstream& csv, std::ofstream* html) {
+  if (o.yosys_front) run_yosys_front(rows, o);
+  csv << dse::to_csv(rows) << std::flush;
+  if (!csv) throw InputError(fmt::format("cannot write '{}'", o.csv));
+  if (html) {
+    info.constraints = constraints(o);
+    *html << dse::to_html(rows, info) << std::flush;
+    if (!*html) throw InputError(fmt::format("cannot write '{}'", o.html));
+  }
+  print_recommendations(rows, constraints(o));
+}
+
+StereoConfig base_config(const DseOptions& o) {
+  StereoConfig cfg = o.preset.empty() ? StereoConfig{} : preset(o.preset);
+  if (!o.config_file.empty()) apply_config_file(cfg, o.config_file);
+  for (const auto& [name, value] : o.fixed) set_param(cfg, name, value);
+  return cfg;
+}
+
+void run_sweep(const DseOptions& o, const std::string& command) {
+  dse::SweepOptions s;
+  s.space = dse::parse_space(o.space);
+  s.base = base_config(o);
+  s.datasets = o.datasets;
+  s.cache_dir = o.cache;
+  if (!o.shard.empty()) std::tie(s.shard_index, s.shard_count) = dse::parse_shard(o.shard);
+  if (o.jobs < 1) throw InputError(fmt::format("--jobs {}: expected at least 1", o.jobs));
+  s.jobs = o.jobs;
+  if (!(o.clock_mhz > 0))
+    throw InputError(fmt::format("--clock-mhz {}: expected a positive clock", o.clock_mhz));
+  s.clock_mhz = o.clock_mhz;
+  s.part = dse::find_part(o.out.part).name;
+  s.progress = o.progress || ::isatty(STDERR_FILENO);
+  constraints(o.out);  // bad constraints fail before the sweep
+  if (s.datasets.empty())
+    throw InputError("dse: no dataset (give a folder with pairs.csv, or one of such folders)");
+  auto csv = open_output(o.out.csv);
+  auto html = o.out.html.empty() ? nullptr : open_output(o.out.html);
+
+  dse::SweepResult r = dse::sweep(s);
+  std::cerr << fmt::format(
+      "fpstereo dse: {} configurations{}, {} accuracy-distinct ({} evaluated, {} cached), {} skipped as "
+      "invalid, "
+      "{:.1f} s\n",
+      r.rows.size(), s.shard_count > 1 ? fmt::format(" in shard {}/{}", s.shard_index, s.shard_count) : "",
+      r.accuracy_configs, r.evaluated, r.cached, r.skipped.size(), r.seconds);
+  for (const auto& k : r.skipped) std::cerr << fmt::format("  skipped {}: {}\n", config_tag(k.cfg), k.reason);
+  dse::ReportInfo info;
+  info.dataset = r.dataset;
+  info.part = s.part;
+  info.command = command;
+  info.clock_mhz = s.clock_mhz;
+  info.sweep_seconds = r.seconds;
+  info.skipped = int(r.skipped.size());
+  write_outputs(r.rows, o.out, info, *csv, html.get());
+  fmt::print("wrote {}{}\n", o.out.csv, o.out.html.empty() ? "" : " and " + o.out.html);
+}
+
+void run_merge(const MergeOptions& o, const std::string& command) {
+  if (o.inputs.empty()) throw InputError("dse merge: no input CSV");
+  constraints(o.out);
+  std::vector<dse::Row> rows;
+  std::map<std::string, size_t> seen;  // shards of one sweep are disjoint; repeats are dropped
+  for (const auto& path : o.inputs)
+    for (auto& r : dse::read_csv(path)) {
+      const std::string id = dse::config_flags(r.cfg);
+      if (seen.count(id)) continue;
+      seen[id] = rows.size();
+      rows.push_back(std::move(r));
+    }
+  std::string part = rows.empty() ? o.out.part : rows.front().part;
+  for (const auto& r : rows)
+    if (r.part != part) throw InputError(fmt::format("dse merge: rows for parts {} and {}", part, r.part));
+  auto csv = open_output(o.out.csv);
+  auto html = o.out.html.empty() ? nullptr : open_output(o.out.html);
+  dse::mark_pareto(rows);
+  dse::ReportInfo info;
+  info.dataset = fmt::format("merged from {} CSV files", o.inputs.size());
+  info.part = part;
+  info.command = command;
+  info.clock_mhz = rows.empty() ? 0 : rows.front().clock_mhz;
+  OutputOptions out = o.out;
+  out.part = part;
+  write_outputs(rows, out, info, *csv, html.get());
+  fmt::print("merged {} configurations; wrote {}{}\n", rows.size(), o.out.csv,
+             o.out.html.empty() ? "" : " and " + o.out.html);
+}
+
+void add_output_options(CLI::App& sub, OutputOptions& o) {
+  sub.add_option("-o,--csv", o.csv, "CSV output, one row per configuration")->capture_default_str();
+  sub.add_option("--html", o.html, "HTML report with SVG plots ('' for none)")->capture_default_str();
+  sub.add_option("--part", o.part, "FPGA part for the percentages (fpstereo synth's table)")
+      ->capture_default_str();
+  const std::string g = "Constraints for the recommendation";
+  sub.add_option("--max-lut", o.max_lut, "at most this share of the part's LUTs, e.g. 30%")->group(g);
+  sub.add_option("--max-ff", o.max_ff, "at most this share of the part's FFs")->group(g);
+  sub.add_option("--max-bram", o.max_bram, "at most this share of the part's BRAM36")->group(g);
+  sub.add_option("--max-dsp", o.max_dsp, "at most this share of the part's DSPs")->group(g);
+  sub.add_option("--min-fps", o.min_fps, "at least this many frames per second")->group(g);
+  sub.add_option("--top", o.top, "how many configurations to recommend")->group(g)->capture_default_str();
+  sub.add_flag("--yosys-front", o.yosys_front,
+               "also synthesise the Pareto front with Yosys (fpstereo synth, cached) and show both figures");
+  sub.add_option("--yosys-limit", o.yosys_limit,
+                 "with --yosys-front: at most this many designs, smallest first")
+      ->capture_default_str();
+}
+
+template <class F>
+void guarded(int& exit_code, F&& f) {
+  try {
+    f();
+    exit_code = 0;
+  } catch (const InputError& e) {
+    exit_code = report_error(kTool, e.what());
+  } catch (const ConfigError& e) {
+    exit_code = report_error(kTool, e.what());
+  } catch (const SynthError& e) {
+    exit_code = report_error(kTool, e.what());
+  }
+}
+
+}  // namespace
+
+void register_dse_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<DseOptions>();
+  auto m = std::make_shared<MergeOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "dse",
+      "Design-space exploration: accuracy (golden model on a dataset) against resources (fast model) and "
+      "frame "
+      "rate for every combination of the axes; CSV, HTML report, Pareto front, best configurations under "
+      "constraints");
+  sub->add_option("DATASET", o->datasets,
+                  "folder with pairs.csv, or a folder of such folders (every subset is used)")
+      ->type_name("DIR");
+  const std::string axes = "Axes (comma-separated values)";
+  const auto axis = [&](const std::string& flag, std::vector<std::string>& values, const std::string& help) {
+    std::string d;
+    for (const auto& v : values) d += (d.empty() ? "" : ",") + v;
+    sub->add_option(flag, values, help + " [" + d + "]")->delimiter(',')->group(axes);
+  };
+  axis("--cost", o->space.cost, "cost functions: census, rank, sad, zsad, shd");
+  axis("--window", o->space.window, "cost windows");
+  axis("--dmax", o->space.dmax, "disparity ranges");
+  axis("--uf", o->space.uf, "unroll factors (disparities per clock)");
+  axis("--resolution", o->space.resolution, "largest image sizes, WIDTHxHEIGHT");
+  axis("--refine", o->space.refine, "left-right check: none, lr1, lr2");
+  axis("--median", o->space.median, "median filter: off or a side (3, 5, 7)");
+  const std::string base = "Fixed parameters (every configuration)";
+  sub->add_option("--preset", o->preset, "start from a named configuration")->group(base);
+  sub->add_option("--config", o->config_file, "JSON or TOML file with parameter names as keys")->group(base);
+  for (const auto& spec : param_specs()) {
+    if (is_axis_param(spec.name)) continue;
+    sub->add_option_function<std::string>(
+           "--" + spec.name, [o, name = spec.name](const std::string& v) { o->fixed[name] = v; },
+           spec.help + " [C2: " + spec.get(StereoConfig{}) + "]")
+        ->group(base);
+  }
+  sub->add_option("--clock-mhz", o->clock_mhz, "clock for the frame rate")->capture_default_str();
+  sub->add_option("--cache", o->cache,
+                  "accuracy cache [$XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse]");
+  sub->add_option("--jobs", o->jobs, "golden-model threads")->capture_default_str();
+  sub->add_option(
+      "--shard", o->shard,
+      "evaluate only shard i of N (1 <= i <= N) and write its partial CSV; combine with dse merge");
+  sub->add_flag("--progress", o->progress, "progress bar even when stderr is not a terminal");
+  add_output_options(*sub, o->out);
+  sub->footer(
+      "Accuracy depends on cost, window, dmax, refinement and median only; each such configuration runs once "
+      "on "
+      "the dataset at its own image size and is cached, so an interrupted sweep resumes. Resolution and uf "
+      "set "
+      "resources and frame rate.");
+
+  CLI::App* merge =
+      sub->add_subcommand("merge", "Combine the CSVs of a sharded sweep into one CSV and report");
+  merge->add_option("CSV", m->inputs, "partial CSVs written by dse --shard")->required();
+  add_output_options(*merge, m->out);
+
+  sub->callback([o, merge, &exit_code] {
+    if (merge->parsed()) return;
+    guarded(exit_code, [&] { run_sweep(*o, sweep_command(*o)); });
+  });
+  merge->callback([m, &exit_code] {
+    guarded(exit_code, [&] { run_merge(*m, "fpstereo dse merge " + join(m->inputs, " ")); });
+  });
+}
+
+}  // namespace fpstereo

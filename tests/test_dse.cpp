@@ -1,0 +1,266 @@
+// Design-space exploration: the resource model's block RAM against hand derivations, its
+// monotonicity, the Pareto front, shards and merge, the accuracy cache and the report.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+
+#include "dse.hpp"
+#include "image_io.hpp"
+#include "resource_model.hpp"
+#include "rtl_emitter.hpp"
+
+using namespace fpstereo;
+namespace fs = std::filesystem;
+
+namespace {
+
+dse::MemoryEstimate mapped(int64_t words, int64_t bits) {
+  dse::MemoryEstimate m;
+  m.words = words;
+  m.bits = bits;
+  dse::map_memory(m);
+  return m;
+}
+
+// A small dataset from crops of the bundled Cones pair: two pairs, ground truth included. Each test
+// writes its own (ctest runs the test cases in parallel processes).
+fs::path tiny_dataset(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::create_directories(dir);
+  const std::string ex = FPSTEREO_EXAMPLES_DIR "/cones/";
+  const cv::Mat left = cv::imread(ex + "left.png", cv::IMREAD_GRAYSCALE);
+  const cv::Mat right = cv::imread(ex + "right.png", cv::IMREAD_GRAYSCALE);
+  const cv::Mat gt = cv::imread(ex + "gt_occ.png", cv::IMREAD_UNCHANGED);
+  std::ofstream csv(dir / "pairs.csv");
+  csv << "pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\n";
+  for (int i = 0; i < 2; ++i) {
+    const cv::Rect crop(100 + 150 * i, 120, 96, 40);
+    const std::string n = "crop" + std::to_string(i);
+    cv::imwrite((dir / (n + "_l.png")).string(), left(crop));
+    cv::imwrite((dir / (n + "_r.png")).string(), right(crop));
+    cv::imwrite((dir / (n + "_gt.png")).string(), gt(crop));
+    csv << n << "," << n << "_l.png," << n << "_r.png," << n << "_gt.png,,,4,0,\n";
+  }
+  return dir;
+}
+
+dse::SweepOptions tiny_sweep(const fs::path& cache, const std::string& data) {
+  dse::SpaceText t;
+  t.cost = {"census", "sad"};
+  t.window = {"3", "5"};
+  t.dmax = {"16", "32"};
+  t.uf = {"4", "8", "32"};  // 32 does not divide 16: skipped
+  t.resolution = {"96x40"};
+  t.refine = {"none", "lr1"};
+  t.median = {"off", "3"};
+  dse::SweepOptions o;
+  o.space = dse::parse_space(t);
+  o.datasets = {tiny_dataset(data).string()};
+  o.cache_dir = cache.string();
+  o.progress = false;
+  return o;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / name;
+  fs::remove_all(p);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("block RAM of single memories as Yosys 0.23 maps them", "[dse]") {
+  // 900 x 32 (census 5x5 line buffer): one RAMB36 in 1K x 36 (a RAMB18 pair would cost 258 > 257).
+  CHECK(mapped(900, 32).bram36 == 1);
+  CHECK(mapped(900, 32).bram18 == 0);
+  // 901 x 7 (row minima): one RAMB18 in 2K x 9.
+  CHECK(mapped(901, 7).bram18 == 1);
+  CHECK(mapped(901, 7).bram36 == 0);
+  // 14416 x 28 (a path row, uf 4, G 16): 16K x 2 per RAMB36 -> 14 of them.
+  CHECK(mapped(14416, 28).bram36 == 14);
+  // 28800 x 20 (cost reorder RAM): 32K x 1 per RAMB36 -> 20.
+  CHECK(mapped(28800, 20).bram36 == 20);
+  // 2700 x 7: 4K x 9 in one RAMB36.
+  CHECK(mapped(2700, 7).bram36 == 1);
+  // 16 x 224 (LR1's row-end RAM at uf 32): 16 LUTRAMs cost less than 4 RAMB36.
+  CHECK(mapped(16, 224).target == "lutram");
+}
+
+TEST_CASE("block RAM of a whole design matches the hand derivation (and Yosys)", "[dse]") {
+  // census 5x5, dmax 64, uf 4, 900x260, no median: K = 2, G = 16, 900 slots.
+  // Line buffers 2 x 1, cost RAM 20, three path rows 3 x 14, disparity RAM 1 -> 65 RAMB36;
+  // three row-minimum RAMs -> 3 RAMB18. Yosys: bram36=65, bram18=3.
+  StereoConfig c;
+  c.window = 5;
+  c.dmax = 64;
+  c.uf = 4;
+  c.median = 0;
+  c.width = 900;
+  c.height = 260;
+  const dse::ResourceEstimate e = dse::estimate(c);
+  CHECK(e.bram36 == 65);
+  CHECK(e.bram18 == 3);
+  CHECK(e.bram36_equiv() == 66.5);
+  // The same with median 5 and LR1 adds the median line buffer (900 x 28: 1 RAMB36) and the
+  // completed RAM (3600 x 6: 4K x 9, 1 RAMB36); the disparity RAM grows to 3600 x 7 (still one
+  // RAMB36) and the 64 x 24 row-end RAM costs less as LUTRAM (16 * 24 / 7) than as a RAMB18 (129).
+  c.median = 5;
+  c.lr = LrCheck::Lr1;
+  const dse::ResourceEstimate lr = dse::estimate(c);
+  CHECK(lr.bram36 == 67);
+  CHECK(lr.bram18 == 3);
+}
+
+TEST_CASE("the fitted model grows with uf and the frame rate comes from rtl::plan", "[dse]") {
+  for (const char* cost : {"census", "rank", "sad", "zsad", "shd"}) {
+    double lut = 0, ff = 0;
+    for (int uf : {4, 8, 16, 32}) {
+      StereoConfig c;
+      set_param(c, "cost", cost);
+      c.uf = uf;
+      const dse::ResourceEstimate e = dse::estimate(c);
+      CHECK(e.lut > lut);
+      CHECK(e.ff > ff);
+      lut = e.lut;
+      ff = e.ff;
+    }
+  }
+  StereoConfig c2;
+  const rtl::RtlDesign d = rtl::plan(c2);
+  CHECK(dse::frames_per_second(d, 200) == 200e6 / double(d.cycles_per_frame));
+}
+
+TEST_CASE("non-negative least squares recovers exact coefficients and clamps negative ones", "[dse]") {
+  const std::vector<std::vector<double>> a = {{1, 1, 0}, {1, 2, 1}, {1, 3, 0}, {1, 4, 2}, {1, 5, 1}};
+  std::vector<double> b;
+  for (const auto& r : a) b.push_back(10 + 3 * r[1] + 0.5 * r[2]);
+  const std::vector<double> x = dse::fit_nonnegative(a, b, std::vector<double>(a.size(), 1.0));
+  CHECK(std::abs(x[0] - 10) < 1e-6);
+  CHECK(std::abs(x[1] - 3) < 1e-6);
+  CHECK(std::abs(x[2] - 0.5) < 1e-6);
+  std::vector<double> neg;
+  for (const auto& r : a) neg.push_back(10 + 3 * r[1] - 2 * r[2]);
+  for (double v : dse::fit_nonnegative(a, neg, std::vector<double>(a.size(), 1.0))) CHECK(v >= 0);
+}
+
+TEST_CASE("the Pareto front of a synthetic set", "[dse]") {
+  const auto row = [](double d1, double res, double fps) {
+    dse::Row r;
+    r.acc.d1_all = d1;
+    r.resource_pct = res;
+    r.fps = fps;
+    return r;
+  };
+  std::vector<dse::Row> rows = {
+      row(10, 10, 100),  // front: best D1
+      row(12, 5, 100),   // front: cheaper
+      row(12, 10, 100),  // dominated by the first
+      row(12, 10, 200),  // front: fastest
+      row(11, 10, 100),  // dominated by the first
+      row(10, 10, 100),  // equal to the first: neither dominates, both on the front
+      row(NAN, 1, 999),  // no accuracy: never on the front
+  };
+  dse::mark_pareto(rows);
+  const std::vector<bool> expected = {true, true, false, true, false, true, false};
+  for (size_t i = 0; i < rows.size(); ++i) CHECK(rows[i].pareto == expected[i]);
+}
+
+TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
+  dse::SpaceText t;
+  t.window = {"4"};
+  CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  t = {};
+  t.cost = {"ncc"};
+  CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  t = {};
+  t.resolution = {"1242*374"};
+  CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  CHECK(dse::parse_shard("2/8") == std::make_pair(2, 8));
+  for (const char* bad : {"0/2", "3/2", "2", "a/b", "1/0", "1/2x"})
+    CHECK_THROWS_AS(dse::parse_shard(bad), InputError);
+  CHECK(dse::parse_percent("--max-lut", "30%") == 30);
+  CHECK_THROWS_AS(dse::parse_percent("--max-lut", "lots"), InputError);
+  CHECK_THROWS_AS(dse::find_part("xc9000"), ConfigError);
+  CHECK(dse::find_part("xczu9eg").lut == 274080);
+}
+
+TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, resume from the cache",
+          "[dse]") {
+  const fs::path cache = fresh_dir("fpstereo_test_dse_cache");
+  dse::SweepOptions o = tiny_sweep(cache, "fpstereo_test_dse_data");
+  const dse::SweepResult first = dse::sweep(o);
+  // 2 costs x 2 windows x 2 dmax x 2 refine x 2 median = 32 accuracy keys; uf 32 is skipped for
+  // dmax 16 (x 16 configurations), so 32 * 3 - 16 = 80 rows.
+  CHECK(first.accuracy_configs == 32);
+  CHECK(first.evaluated == 32);
+  CHECK(first.cached == 0);
+  CHECK(first.rows.size() == 80);
+  CHECK(first.skipped.size() == 16);
+  // Configurations that differ only in uf share their accuracy.
+  for (const auto& a : first.rows)
+    for (const auto& b : first.rows)
+      if (dse::accuracy_key(a.cfg) == dse::accuracy_key(b.cfg)) CHECK(a.acc.d1_all == b.acc.d1_all);
+  const dse::SweepResult second = dse::sweep(o);
+  CHECK(second.evaluated == 0);
+  CHECK(second.cached == 32);
+  REQUIRE(second.rows.size() == first.rows.size());
+  for (size_t i = 0; i < first.rows.size(); ++i) CHECK(second.rows[i].acc.d1_all == first.rows[i].acc.d1_all);
+
+  SECTION("shards merged equal the full sweep") {
+    std::vector<dse::Row> merged;
+    for (int i = 1; i <= 3; ++i) {
+      dse::SweepOptions s = o;
+      s.cache_dir = fresh_dir("fpstereo_test_dse_shard" + std::to_string(i)).string();
+      s.shard_index = i;
+      s.shard_count = 3;
+      const fs::path csv =
+          fs::temp_directory_path() / ("fpstereo_test_dse_shard" + std::to_string(i) + ".csv");
+      std::ofstream(csv) << dse::to_csv(dse::sweep(s).rows);
+      for (auto& r : dse::read_csv(csv.string())) merged.push_back(r);
+    }
+    dse::mark_pareto(merged);
+    REQUIRE(merged.size() == first.rows.size());
+    std::map<std::string, const dse::Row*> full;
+    for (const auto& r : first.rows) full[dse::config_flags(r.cfg)] = &r;
+    for (const auto& r : merged) {
+      const dse::Row* f = full.at(dse::config_flags(r.cfg));
+      CHECK(std::abs(r.acc.d1_all - f->acc.d1_all) < 1e-4);
+      CHECK(r.pareto == f->pareto);
+      CHECK(std::abs(r.model.lut - f->model.lut) < 1);
+      CHECK(r.model.bram36_equiv() == f->model.bram36_equiv());
+      CHECK(r.cycles_per_frame == f->cycles_per_frame);
+    }
+  }
+
+  SECTION("the report and the recommendation") {
+    dse::ReportInfo info;
+    info.part = "xczu9eg";
+    info.constraints.min_fps = 1000;
+    info.constraints.top = 3;
+    const std::string html = dse::to_html(first.rows, info);
+    CHECK(html.find("<svg") != std::string::npos);
+    CHECK(html.find("Pareto front") != std::string::npos);
+    CHECK(html.find("<script") == std::string::npos);
+    const std::vector<dse::Row> best = dse::recommend(first.rows, info.constraints);
+    REQUIRE(best.size() == 3);
+    for (const auto& r : best) CHECK(r.fps >= 1000);
+    CHECK(best[0].acc.d1_all <= best[1].acc.d1_all);
+    CHECK(dse::rtl_command(best[0].cfg).rfind("fpstereo-rtl --width 96 --height 40 --cost ", 0) == 0);
+  }
+}
+
+TEST_CASE("a corrupt cache record is an error, not a silent recomputation", "[dse]") {
+  const fs::path cache = fresh_dir("fpstereo_test_dse_corrupt");
+  dse::SweepOptions o = tiny_sweep(cache, "fpstereo_test_dse_corrupt_data");
+  o.space.cost = {CostFunction::Census};
+  o.space.window = {3};
+  o.space.dmax = {16};
+  o.space.refine = {LrCheck::None};
+  o.space.median = {0};
+  dse::sweep(o);
+  for (const auto& e : fs::directory_iterator(cache)) std::ofstream(e.path()) << "{ not json";
+  CHECK_THROWS_AS(dse::sweep(o), InputError);
+}
