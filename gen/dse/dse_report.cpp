@@ -250,7 +250,7 @@ std::string table(const std::vector<Row>& rows, bool with_command) {
         ++i, to_string(r.cfg.cost), r.cfg.window, r.cfg.dmax, r.cfg.uf, r.cfg.width, r.cfg.height,
         to_string(r.cfg.lr), r.cfg.median ? std::to_string(r.cfg.median) : std::string("off"), r.acc.d1_all,
         r.acc.d1_valid, r.acc.density, r.lut_pct, r.ff_pct, r.bram_pct, r.model.dsp, r.fps, yosys,
-        with_command ? "<td><code>" + escape(rtl_command(r.cfg)) + "</code></td>" : "");
+        with_command ? "<td class=\"command\"><code>" + escape(rtl_command(r.cfg)) + "</code></td>" : "");
   }
   return out + "</table>\n";
 }
@@ -380,7 +380,7 @@ std::string to_html(const std::vector<Row>& rows, const ReportInfo& info) {
       "dse</title>\n<style>body{{font-family:"
       "sans-serif;margin:24px;max-width:1400px}} table{{border-collapse:collapse;font-size:12px}} "
       "td,th{{border:1px "
-      "solid #ccc;padding:2px 6px;text-align:right}} code{{font-size:11px;white-space:nowrap}} "
+      "solid #ccc;padding:2px 6px;text-align:right}} code{{font-size:11px}} td.command{{text-align:left;min-width:36em}} "
       ".plots{{display:flex;flex-wrap:wrap;gap:16px}}</style></head><body>\n<h1>fpstereo design-space "
       "exploration</h1>\n<p>{} configurations on part {} at {:g} MHz; dataset {}.{}</p>\n"
       "<p>Accuracy: the golden model (bit-exact with the hardware) on every pair at its own size; D1 = % of "
