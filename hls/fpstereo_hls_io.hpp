@@ -79,7 +79,8 @@ inline Gray load_pgm(const std::string& path, const std::string& role) {
   const std::string bytes = read_file(path, role);
   const std::string what = role + " '" + path + "'";
   HeaderReader header(bytes, what);
-  if (bytes.size() < 2 || header.token() != "P5") throw InputError(what + ": not a binary PGM (P5) image");
+  if (bytes.size() < 2 || header.token() != "P5")
+    throw InputError(what + ": not a binary PGM (P5) image (`fpstereo run --gray-pgm` converts any format)");
   Gray img;
   img.width = header.positive("width");
   img.height = header.positive("height");

@@ -5,7 +5,6 @@
 //   hls_stimulus [--width W --height H] --from L.png R.png [--at X Y] LEFT.pgm RIGHT.pgm
 //     (without --width/--height: the whole images)
 #include <CLI/CLI.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <random>
 
 #include "config_cli.hpp"
@@ -24,13 +23,6 @@ GrayImage region(const GrayImage& img, int x0, int y0, int width, int height) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) out.at(x, y) = img.at(x0 + x, y0 + y);
   return out;
-}
-
-void write_pgm(const GrayImage& img, const std::string& path) {
-  cv::Mat1b mat(img.height, img.width);
-  for (int y = 0; y < img.height; ++y)
-    for (int x = 0; x < img.width; ++x) mat(y, x) = img.at(x, y);
-  if (!cv::imwrite(path, mat)) throw InputError("cannot write '" + path + "'");
 }
 
 }  // namespace
@@ -72,7 +64,7 @@ int main(int argc, char** argv) {
     write_pgm(pair.left, left_path);
     write_pgm(pair.right, right_path);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return report_parse_error(app, "hls_stimulus", e);
   } catch (const InputError& e) {
     return report_error("hls_stimulus", e.what());
   }

@@ -183,6 +183,17 @@ TEST_CASE("write_pfm: little-endian, bottom-to-top, inf for invalid", "[io]") {
   CHECK(same_map(read_disparity(dir.file("d.pfm"), 1, "inf"), disp));
 }
 
+TEST_CASE("write_pgm: binary P5 header, raster bytes, read back by load_gray", "[io]") {
+  TempDir dir;
+  GrayImage image(3, 2);
+  image.pixels = {0, 1, 2, 128, 254, 255};
+  write_pgm(image, dir.file("g.pgm"));
+  std::ifstream in(dir.file("g.pgm"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(bytes == std::string("P5\n3 2\n255\n") + std::string("\x00\x01\x02\x80\xfe\xff", 6));
+  CHECK(load_gray(dir.file("g.pgm"), "left image") == image);
+}
+
 TEST_CASE("write_colour_png: colour map, black invalid pixels, legend on the right", "[io]") {
   TempDir dir;
   cv::Mat1f disp(200, 300, 20.0f);
@@ -202,6 +213,7 @@ TEST_CASE("writers report unwritable paths as InputError", "[io]") {
   CHECK_THAT(error_of([&] { write_kitti_png(disp, path + ".png"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_pfm(disp, path + ".pfm"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_colour_png(disp, 10, path + "_c.png"); }), Contains("cannot write"));
+  CHECK_THAT(error_of([&] { write_pgm(GrayImage(2, 2), path + ".pgm"); }), Contains("cannot write"));
 }
 
 TEST_CASE("to_float_disparity maps the invalid word to NaN", "[io]") {

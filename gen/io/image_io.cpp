@@ -283,6 +283,13 @@ void write_kitti_png(const cv::Mat1f& disp, const std::string& path) {
   write_png(stored, path);
 }
 
+void write_pgm(const GrayImage& image, const std::string& path) {
+  const std::string header = fmt::format("P5\n{} {}\n255\n", image.width, image.height);
+  std::vector<uchar> bytes(header.begin(), header.end());
+  bytes.insert(bytes.end(), image.pixels.begin(), image.pixels.end());
+  write_bytes(path, bytes.data(), bytes.size());
+}
+
 void write_pfm(const cv::Mat1f& disp, const std::string& path) {
   const std::string header = fmt::format("Pf\n{} {}\n-1\n", disp.cols, disp.rows);
   std::vector<uchar> bytes(header.begin(), header.end());

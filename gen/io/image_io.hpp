@@ -28,6 +28,9 @@ void check_pair(const GrayImage& left, const GrayImage& right, const StereoConfi
 // Output words (docs/semantics.md, "Output word") to disparities in pixels, NaN where invalid.
 cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cfg);
 
+// Binary 8-bit PGM (P5): the input format of the generated HLS test bench and host program.
+void write_pgm(const GrayImage& image, const std::string& path);
+
 // KITTI format: 16-bit PNG holding round(d * 256), 0 = invalid; a valid 0 is written as 1.
 void write_kitti_png(const cv::Mat1f& disp, const std::string& path);
 // Single-channel little-endian PFM (scale -1), rows bottom to top, +inf where invalid.

@@ -18,6 +18,7 @@ namespace {
 
 struct RunOptions {
   std::string left, right, output, colour, pfm;
+  std::vector<std::string> gray_pgm;  // left, right
   ConfigFlags config;
 };
 
@@ -26,6 +27,10 @@ int run_pair(const RunOptions& opt) {
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
+  if (!opt.gray_pgm.empty()) {
+    write_pgm(left, opt.gray_pgm[0]);
+    write_pgm(right, opt.gray_pgm[1]);
+  }
   const auto start = std::chrono::steady_clock::now();
   const DisparityImage words = run_golden(cfg, left, right);
   const double ms =
@@ -68,6 +73,12 @@ int main(int argc, char** argv) {
   run_cmd->add_option("-o,--output", run.output, "KITTI 16-bit PNG (disparity x 256, 0 = invalid)");
   run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
   run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
+  run_cmd
+      ->add_option("--gray-pgm", run.gray_pgm,
+                   "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "
+                   "the generated HLS test bench and host program)")
+      ->expected(2)
+      ->type_name("LEFT RIGHT");
   run.config.add_to(*run_cmd);
   run_cmd->callback([&] { exit_code = run_pair(run); });
 
@@ -83,7 +94,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return report_parse_error(app, "fpstereo", e);
   } catch (const ConfigError& e) {
     return report_error("fpstereo", std::string("invalid config: ") + e.what());
   } catch (const InputError& e) {
