@@ -31,6 +31,8 @@ expect_error("not a decodable image" run ${L} ${WORK}/corrupt.png)
 expect_error("4x4" run --width 1242 --height 375 ${L} ${WORK}/small.pgm)
 expect_error("--width" run --dmax 64 --uf 16 --width 200 --height 100 ${L} ${R})
 expect_error("expected an integer" run --dmax many ${L} ${R})
+expect_error("cannot write '/nonexistent_fpstereo_dir/l.pgm'" run ${L} ${R} --gray-pgm /nonexistent_fpstereo_dir/l.pgm ${WORK}/r.pgm)
+expect_error("--gray-pgm" run ${L} ${R} --gray-pgm ${WORK}/l.pgm)
 expect_error("no such directory" eval ${WORK}/nowhere)
 expect_error("pairs.csv" eval ${WORK}/pairs)
 

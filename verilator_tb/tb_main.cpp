@@ -569,8 +569,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     return run_bench(opt);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    return report_error(kTool, e.what());
+    return report_parse_error(app, kTool, e);
   } catch (const ConfigError& e) {
     return report_error(kTool, std::string("invalid config: ") + e.what());
   } catch (const InputError& e) {

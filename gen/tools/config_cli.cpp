@@ -31,4 +31,9 @@ int report_error(const std::string& tool, const std::string& message) {
   return kExitBadInput;
 }
 
+int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseError& e) {
+  if (e.get_exit_code() == 0) return app.exit(e);
+  return report_error(tool, std::string(e.what()) + " (see --help)");
+}
+
 }  // namespace fpstereo

@@ -27,5 +27,8 @@ class ConfigFlags {
 // Prints "fpstereo: <message>" to stderr; the exit status for bad input.
 constexpr int kExitBadInput = 2;
 int report_error(const std::string& tool, const std::string& message);
+// A command-line parse error: --help prints and exits 0; anything else is one line,
+// "<tool>: <message> (see --help)", and kExitBadInput.
+int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseError& e);
 
 }  // namespace fpstereo

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     else
       write_directory(design, out_dir, clock_mhz);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : kExitBadInput;
+    return report_parse_error(app, "fpstereo-rtl", e);
   } catch (const ConfigError& e) {
     return report_error("fpstereo-rtl", std::string("invalid config: ") + e.what());
   } catch (const std::exception& e) {
