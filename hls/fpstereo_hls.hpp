@@ -399,6 +399,16 @@ struct Chains {
   explicit Chains(int width) : half((width + 1) / 2), slots(2 * ((width + 1) / 2)) {}
   int chain(int slot) const { return slot & 1; }
   int x(int slot) const { return chain(slot) * half + slot / 2; }
+  // Steps a chain-order loop to its next iteration: group g of slot `slot` in row-time t.
+  void advance(int groups, int& g, int& slot, int& t) const {
+    if (++g == groups) {
+      g = 0;
+      if (++slot == slots) {
+        slot = 0;
+        ++t;
+      }
+    }
+  }
 };
 
 // Costs from raster order to chain order, one row-time behind: row t's pixels are kept (bank
@@ -418,13 +428,7 @@ to_chain_groups:
     if (t < height && slot < width) banks[t & 1][slot * G + g] = in.read();
     const int x = chains.x(slot), row = t - chains.chain(slot);
     if (row >= 0 && row < height && x < width) out.write(banks[row & 1][x * G + g]);
-    if (++g == G) {
-      g = 0;
-      if (++slot == chains.slots) {
-        slot = 0;
-        ++t;
-      }
-    }
+    chains.advance(G, g, slot, t);
   }
 }
 
@@ -445,13 +449,7 @@ from_chain_groups:
     const int x = chains.x(slot), row = t - chains.chain(slot);
     if (row >= 0 && row < height && x < width) banks[row & 1][x * G + g] = in.read();
     if (t >= 1 && slot < width) out.write(banks[(t - 1) & 1][slot * G + g]);
-    if (++g == G) {
-      g = 0;
-      if (++slot == chains.slots) {
-        slot = 0;
-        ++t;
-      }
-    }
+    chains.advance(G, g, slot, t);
   }
 }
 
@@ -536,13 +534,7 @@ aggregate_groups:
         sum_word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits) = sum[lane];
       sums.write(sum_word);
     }
-    if (++g == G) {
-      g = 0;
-      if (++slot == chains.slots) {
-        slot = 0;
-        ++t;
-      }
-    }
+    chains.advance(G, g, slot, t);
   }
 }
 

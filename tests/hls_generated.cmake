@@ -2,10 +2,8 @@
 # the banner; the sources carry the pragmas the design needs; run_hls.tcl, run by tclsh with the
 # Vitis HLS commands stubbed, names the top function, the generated sources and the part, and runs
 # csim, csynth, cosim and the IP export. Run by ctest with FPSTEREO_RTL and WORK set.
-find_program(TCLSH NAMES tclsh tclsh8.6)
-if(NOT TCLSH)
-  message(FATAL_ERROR "tclsh not found: install the Debian package tcl (scripts/setup.sh does)")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/script_helpers.cmake)
+require_tclsh()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
@@ -29,13 +27,7 @@ endfunction()
 set(lr2 --preset C4 --width 320 --height 96 --cost sad --window 5 --uniqueness 10 --gap-interp on)
 emit(${WORK}/one ${lr2})
 emit(${WORK}/two ${lr2})
-file(GLOB files RELATIVE ${WORK}/one ${WORK}/one/*)
-foreach(f IN LISTS files)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/one/${f} ${WORK}/two/${f} RESULT_VARIABLE same)
-  if(NOT same EQUAL 0)
-    message(SEND_ERROR "${f} differs between two runs")
-  endif()
-endforeach()
+expect_identical_dirs(${WORK}/one ${WORK}/two)
 
 # The banner in every file.
 foreach(f IN LISTS files)

@@ -1,5 +1,6 @@
 # fpstereo-rtl: deterministic output, and one-line rejections with exit 2. Run by ctest with
 # FPSTEREO_RTL and WORK set.
+include(${CMAKE_CURRENT_LIST_DIR}/script_helpers.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
@@ -20,13 +21,7 @@ endif()
 foreach(dir one two)
   execute_process(COMMAND ${FPSTEREO_RTL} ${config} -o ${WORK}/${dir} RESULT_VARIABLE rc)
 endforeach()
-file(GLOB files RELATIVE ${WORK}/one ${WORK}/one/*)
-foreach(f IN LISTS files)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/one/${f} ${WORK}/two/${f} RESULT_VARIABLE same)
-  if(NOT same EQUAL 0)
-    message(SEND_ERROR "${f} differs between two runs")
-  endif()
-endforeach()
+expect_identical_dirs(${WORK}/one ${WORK}/two)
 file(READ ${WORK}/a.v text)
 string(FIND "${text}" "expected cycles per frame" banner)
 if(banner EQUAL -1)

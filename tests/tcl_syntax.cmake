@@ -4,10 +4,8 @@
 # command the scripts use and know the generated top's ports: an undocumented option, a missing
 # required one or a port the top lacks fails. No Vivado command is really executed. Run by ctest
 # with FPSTEREO_RTL and WORK set.
-find_program(TCLSH NAMES tclsh tclsh8.6)
-if(NOT TCLSH)
-  message(FATAL_ERROR "tclsh not found: install the Debian package tcl (scripts/setup.sh does)")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/script_helpers.cmake)
+require_tclsh()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
