@@ -4,8 +4,8 @@
 // of the codes; rank: absolute difference. Where the match pixel lies left of the image
 // (x < d) the cost is COST_MAX (docs/semantics.md, section 2). One register stage.
 module fpstereo_cost_lanes #(
-  // 0 = census (Hamming distance), 1 = rank (absolute difference)
-  parameter KIND = 0,
+  // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
+  parameter HAMMING = 1,
   parameter CODE_W = 48,
   parameter UF = 32,
   parameter COST_W = 6,
@@ -33,7 +33,7 @@ module fpstereo_cost_lanes #(
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
       wire [D_W-1:0]    d = group_base + l[D_W-1:0];
       wire [COST_W-1:0] cost;
-      if (KIND == 0) begin : hamming
+      if (HAMMING) begin : hamming
         reg [COST_W-1:0] count;
         integer b;
         always @* begin

@@ -2,16 +2,18 @@
 `default_nettype none
 // UF window-based matching costs per step (docs/semantics.md, section 2), lane l = disparity
 // d = group*UF + l: the sum over a SPAN x SPAN window of
-//   KIND 0 (SAD):  |b - m|                      over pixels
-//   KIND 1 (ZSAD): |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2)
-//   KIND 2 (SHD):  popcount(b xor m)            over census codes
+//   SAD:  |b - m|                      over pixels
+//   ZSAD: |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2) (ZERO_MEAN)
+//   SHD:  popcount(b xor m)            over census codes (HAMMING)
 // b is the (already zero-extended) base window; the match window of lane l is view columns
 // l .. l + SPAN - 1 (fpstereo_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Two register
 // stages: per-row sums, then the total.
 module fpstereo_window_cost_lanes #(
-  parameter KIND = 0,
+  // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
+  parameter ZERO_MEAN = 0,
+  parameter HAMMING = 0,
   // bits per window element (8 for pixels, the code width for SHD)
   parameter ELEM_W = 8,
   parameter SPAN = 5,
@@ -62,7 +64,7 @@ module fpstereo_window_cost_lanes #(
 
       // ZSAD: the match window's mean from its column sums.
       wire signed [9:0] delta;
-      if (KIND == 1) begin : zero_mean
+      if (ZERO_MEAN) begin : zero_mean
         reg [WINSUM_W-1:0] match_sum;
         integer c;
         always @* begin
@@ -92,7 +94,7 @@ module fpstereo_window_cost_lanes #(
           for (k = 0; k < SPAN; k = k + 1) begin
             bv = base[(i*SPAN + k)*ELEM_W +: ELEM_W];
             mv = column_valid[k] ? view[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
-            if (KIND == 2) begin
+            if (HAMMING) begin
               for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) row_sum = row_sum + {{(COST_W-1){1'b0}}, bv[b2] ^ mv[b2]};
             end else begin
               /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference

@@ -16,37 +16,6 @@ namespace {
 
 // ---- memories ----------------------------------------------------------------------------------
 
-// The memories rtl_templates/ instantiate (fpstereo_sgm_core.v, fpstereo_aggregator.v,
-// fpstereo_window.v, fpstereo_gap_fill.v), with the names Yosys gives them after flattening.
-void add(std::vector<MemoryEstimate>& out, const std::string& name, int64_t words, int64_t bits,
-         bool sync_read = true) {
-  MemoryEstimate m;
-  m.name = name;
-  m.words = words;
-  m.bits = bits;
-  m.sync_read = sync_read;
-  out.push_back(m);
-}
-
-void add_aggregator(std::vector<MemoryEstimate>& out, const rtl::RtlDesign& d, const std::string& scope) {
-  const StereoConfig& c = d.cfg;
-  const int64_t lanes_w = int64_t(c.uf) * d.widths.path_cost;
-  const int64_t row_depth = int64_t(c.width + 1) * d.groups;
-  const int64_t state_depth = int64_t(d.chains) * d.groups;
-  if (c.paths & kPath0) add(out, scope + ".path0.state.mem", state_depth, lanes_w, false);
-  if (c.paths & kPath45) {
-    add(out, scope + ".path45.row.mem", row_depth, lanes_w);
-    add(out, scope + ".path45.row_min.mem", c.width + 1, d.widths.path_cost);
-    add(out, scope + ".path45.state.mem", state_depth, lanes_w, false);
-  }
-  for (int v = 0; v < 2; ++v) {
-    if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
-    const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
-    add(out, p + ".row.mem", row_depth, lanes_w);
-    add(out, p + ".row_min.mem", c.width + 1, d.widths.path_cost);
-  }
-}
-
 // ---- Yosys 0.23 memory_libmap for xcup ------------------------------------------------------------
 // brams_xc4v.txt with HAS_SIZE_36, HAS_CASCADE and HAS_MIXWIDTH_SDP, lutrams_xcu.txt, and the
 // cost rules of passes/memory/memory_libmap.cc (handle_geom): per option and base width, the
@@ -133,41 +102,17 @@ std::string read_script() {
 }  // namespace
 
 std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& d) {
-  const StereoConfig& c = d.cfg;
-  const Widths& w = d.widths;
   std::vector<MemoryEstimate> out;
-  const int64_t slots = d.row_slots;
-  add(out, "core.left_window.line_buffer.mem", slots, int64_t(c.window - 1) * w.pixel);
-  add(out, "core.right_window.line_buffer.mem", slots, int64_t(c.window - 1) * w.pixel);
-  if (c.cost == CostFunction::Shd && c.shd_window > 1) {
-    const int64_t stored = int64_t(c.shd_window - 1) * std::max(1, w.code);
-    add(out, "core.genblk2.code_window_cost.base_codes.line_buffer.mem", slots, stored);
-    add(out, "core.genblk2.code_window_cost.match_codes.line_buffer.mem", slots, stored);
-  }
-  const int lr = c.lr == LrCheck::None ? 0 : c.lr == LrCheck::Lr1 ? 1 : 2;
-  const int64_t cost_depth = int64_t(d.chains + (lr == 2 ? 1 : 0)) * slots * d.groups;
-  add(out, "core.cost_ram.mem", cost_depth, int64_t(c.uf) * w.cost);
-  add_aggregator(out, d, "core.aggregation");
-  const int64_t out_rows = d.chains + 1 + lr;
-  add(out, "core.disp_ram.mem", out_rows * slots, w.disparity + 1);
-  if (lr == 1) {
-    add(out, "core.lr.completed.mem", out_rows * slots, w.disparity);
-    add(out, "core.lr.row_end.mem", out_rows * d.groups, int64_t(c.uf) * w.disparity);
-    add(out, "core.lr.lr1.entries.mem", int64_t(d.chains) * d.groups,
-        int64_t(c.uf) * (w.aggregated + w.disparity), false);
-  } else if (lr == 2) {
-    add(out, "core.lr.completed.mem", out_rows * slots, w.disparity);
-    for (int l = 0; l < c.uf; ++l)
-      add(out, fmt::format("core.lr.lr2.bank[{}].costs_of_lane.mem", l), cost_depth, w.cost);
-    add_aggregator(out, d, "core.lr.lr2.match_aggregation");
-  }
-  if (c.median > 0)
-    add(out, "core.median.line_window.line_buffer.mem", slots, int64_t(c.median - 1) * (w.disparity + 1));
-  if (c.gap_interpolation) {
-    add(out, "core.gap.stage.words.mem", 2 * int64_t(c.width), w.disparity + 1 + d.x_bits);
-    add(out, "core.gap.stage.right_neighbours.mem", 2 * int64_t(c.width), w.disparity + 1);
-  }
-  for (auto& m : out) map_memory(m);
+  for (const auto& stage : d.stages)
+    for (const auto& memory : stage->memories(d)) {
+      MemoryEstimate m;
+      m.name = memory.name;
+      m.words = memory.words;
+      m.bits = memory.bits;
+      m.sync_read = memory.sync_read;
+      map_memory(m);
+      out.push_back(m);
+    }
   return out;
 }
 

@@ -14,7 +14,7 @@
 namespace fpstereo::dse {
 
 // One memory of the emitted design, as Yosys names and sizes it before mapping
-// ("core.cost_ram.mem", words x bits), and what memory_libmap makes of it.
+// ("core.cost_reorder.cost_ram.mem", words x bits), and what memory_libmap makes of it.
 struct MemoryEstimate {
   std::string name;
   int64_t words = 0, bits = 0;
@@ -23,7 +23,7 @@ struct MemoryEstimate {
   int bram18 = 0, bram36 = 0;
 };
 
-// The memories of a design (the constant-write ones Yosys removes are left out).
+// The memories of a design: its stages' (stages.hpp), in data order.
 std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& design);
 
 // memory_libmap's choice for one words x bits memory with one write and one registered read port:

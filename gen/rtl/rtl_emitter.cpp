@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -25,53 +26,12 @@ int min_tree_latency(int n, int levels_per_stage) {
   return std::max(1, ceil_div(levels, levels_per_stage));
 }
 
-// The core's cost function selector (fpstereo_sgm_core's COST_KIND). SHD over a 1 x 1 window
-// is census.
-enum CostKind { kCensus = 0, kRank = 1, kSad = 2, kZsad = 3, kShd = 4 };
-CostKind cost_kind(const StereoConfig& cfg) {
-  switch (cfg.cost) {
-    case CostFunction::Census:
-      return kCensus;
-    case CostFunction::Rank:
-      return kRank;
-    case CostFunction::Sad:
-      return kSad;
-    case CostFunction::Zsad:
-      return kZsad;
-    case CostFunction::Shd:
-      return cfg.shd_window == 1 ? kCensus : kShd;
-  }
-  return kCensus;
-}
-
-// Modules the top uses, in emission order after the top.
+// Templates the design uses: the core's stages', in order, each once.
 std::vector<std::string> used_modules(const RtlDesign& d) {
-  const StereoConfig& cfg = d.cfg;
-  std::vector<std::string> modules = {"fpstereo_sgm_core", "fpstereo_axis_skid", "fpstereo_video_in"};
-  if (d.options.control) modules.push_back("fpstereo_control");
-  modules.insert(modules.end(), {"fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds"});
-  switch (cost_kind(cfg)) {
-    case kCensus:
-      modules.insert(modules.end(), {"fpstereo_census", "fpstereo_cost_lanes"});
-      break;
-    case kRank:
-      modules.insert(modules.end(), {"fpstereo_rank", "fpstereo_cost_lanes"});
-      break;
-    case kSad:
-    case kZsad:
-      modules.insert(modules.end(), {"fpstereo_window_mask", "fpstereo_window_cost_lanes"});
-      break;
-    case kShd:
-      modules.insert(modules.end(),
-                     {"fpstereo_census", "fpstereo_window_mask", "fpstereo_window_cost_lanes"});
-      break;
-  }
-  if (cfg.uniqueness != 0) modules.insert(modules.end(), {"fpstereo_unique_tree", "fpstereo_unique_join"});
-  if (cfg.median != 0) modules.push_back("fpstereo_median_select");
-  if (cfg.gap_interpolation) modules.push_back("fpstereo_gap_fill");
-  modules.insert(modules.end(), {"fpstereo_raster_counter", "fpstereo_match_ring", "fpstereo_aggregator",
-                                 "fpstereo_path_lanes", "fpstereo_path_minimum", "fpstereo_min_tree",
-                                 "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"});
+  std::vector<std::string> modules = {"fpstereo_sequencer"};
+  for (const auto& stage : d.stages)
+    for (const auto& m : stage->modules(d))
+      if (std::find(modules.begin(), modules.end(), m) == modules.end()) modules.push_back(m);
   return modules;
 }
 
@@ -214,28 +174,14 @@ std::string top_module(const RtlDesign& d) {
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
      << fmt::format("  wire [{}:0] out_word;\n", w.disparity);
   os << fmt::format(
-      "  {}_sgm_core #(\n"
-      "    .W({}), .ROW_SLOTS({}), .K({}), .SLEN({}), .G({}), .UF({}), .DMAX({}),\n"
-      "    .COST_KIND({}), .N({}), .CODE_W({}), .SHD_K({}), .COST_W({}), .COST_MAX({}), .COST_LAT({}),\n"
-      "    .COLSUM_W({}), .MEAN_MUL({}), .MEAN_SHIFT({}),\n"
-      "    .PATH_W({}), .SUM_W({}), .DISP_W({}), .LR({}), .UNIQUENESS({}), .MEDIAN({}), .GAP({}),\n"
-      "    .PATHS({}),\n"
-      "    .LEVELS_PER_STAGE({}), .PATH_TREE_LAT({}), .WTA_TREE_LAT({}), .AGG_START({}), .MATCH_START({}), "
-      ".OUT_START({}),\n"
-      "    .X_W({}), .Y_W({}), .G_W({}), .K_W({}), .LANE_W({}), .STEP_W({})\n"
-      "  ) core (\n"
+      "  {}_sgm_core core (\n"
       "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle),\n"
       "    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),\n"
       "    .lr_threshold(lr_threshold),\n"
       "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
       "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
       "    .out_last(out_last), .frame_end(frame_done));\n",
-      d.prefix, c.width, d.row_slots, d.chains, d.segment, d.groups, c.uf, c.dmax,
-      int(cost_kind(c)), c.window, std::max(1, w.code), c.shd_window, w.cost, w.cost_max, d.cost_latency,
-      d.column_sum_bits, d.mean_mul, d.mean_shift, w.path_cost, w.aggregated, w.disparity, int(c.lr),
-      c.uniqueness != 0 ? 1 : 0, c.median, c.gap_interpolation ? 1 : 0, c.paths, d.levels_per_stage,
-      d.path_tree_latency, d.wta_tree_latency, d.agg_start, d.match_start, d.out_start, d.x_bits, d.y_bits,
-      d.group_bits, d.chain_bits, d.lane_bits, d.step_bits);
+      d.prefix);
   const int pad = d.output_bits - w.output_word;
   os << "\n  // Output register slice.\n"
      << fmt::format("  {}_axis_skid #(.DATA_W({})) disp_slice (\n", d.prefix, d.output_bits + 2)
@@ -246,6 +192,40 @@ std::string top_module(const RtlDesign& d) {
      << "    .m_data({m_axis_disp_tuser, m_axis_disp_tlast, m_axis_disp_tdata}), "
         ".m_valid(m_axis_disp_tvalid),\n"
      << "    .m_ready(m_axis_disp_tready));\nendmodule\n`resetall\n";
+  return os.str();
+}
+
+// The core: the stages between the input and output register slices, chained by the emitter
+// (docs/architecture.md, "Stages"). Every stage advances with adv, so the pipeline stalls as one.
+std::string core_module(const RtlDesign& d) {
+  const Widths& w = d.widths;
+  std::ostringstream os;
+  os << "`resetall\n`default_nettype none\n"
+     << "// The SGM pipeline between the input and output register slices, stage by stage:\n";
+  for (const auto& stage : d.stages) os << "//   " << stage->title() << "\n";
+  os << "module " << d.prefix << "_sgm_core (\n"
+     << "  input  wire clk,\n  input  wire rst,\n"
+     << "  // Frames: while idle, start begins one; the settings hold until the core is idle again.\n"
+     << "  input  wire start,\n  output wire idle,\n"
+     << fmt::format("  input  wire [{}:0] frame_width,\n  input  wire [{}:0] frame_height,\n", d.x_bits - 1,
+                    d.y_bits - 1)
+     << fmt::format("  input  wire [{0}:0] p1,\n  input  wire [{0}:0] p2,\n", w.path_cost - 1);
+  const bool unique = d.cfg.uniqueness != 0, lr = d.cfg.lr != LrCheck::None;
+  if (!unique || !lr) os << "  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the check\n";
+  os << "  input  wire [6:0] uniqueness,\n  input  wire [3:0] lr_threshold,\n";
+  if (!unique || !lr) os << "  /* verilator lint_on UNUSEDSIGNAL */\n";
+  os << "  // one pixel of each image, taken when in_take is high\n"
+     << "  input  wire in_valid,\n  input  wire [7:0] in_left,\n  input  wire [7:0] in_right,\n"
+     << "  output wire in_take,\n"
+     << "  // output word (invalid flag above the disparity), pushed when out_push is high\n"
+     << "  input  wire out_ready,\n  output wire out_push,\n"
+     << fmt::format("  output wire [{}:0] out_word,\n", w.disparity)
+     << "  output wire out_first,\n  output wire out_last,\n"
+     << "  // high in the cycle that pushes the frame's last pixel\n"
+     << "  output wire frame_end\n);\n";
+  PixelStream stream;
+  for (const auto& stage : d.stages) os << stage->core_verilog(d, stream);
+  os << "endmodule\n`resetall\n";
   return os.str();
 }
 
@@ -263,13 +243,13 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.prefix = config_tag(cfg);
   d.window_radius = cfg.window / 2;
   d.groups = cfg.dmax / cfg.uf;
-  const CostKind kind = cost_kind(cfg);
-  const bool windowed_cost = kind == kSad || kind == kZsad || kind == kShd;
+  const bool shd = cfg.cost == CostFunction::Shd && cfg.shd_window > 1;
+  const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad || shd;
   d.cost_latency = windowed_cost ? 2 : 1;
   d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
   std::tie(d.mean_mul, d.mean_shift) =
-      kind == kZsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
+      cfg.cost == CostFunction::Zsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
   d.path_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   d.wta_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
@@ -278,44 +258,47 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // Segments need at least 3 pixels (docs/architecture.md); K <= 5 and width >= dmax >= 16 give it.
   d.segment = ceil_div(cfg.width, d.chains);
   d.row_slots = d.chains * d.segment;
-  const int64_t G = d.groups, R = d.row_slots;
-  // Derivations in docs/architecture.md: the first cost word is in the cost RAM r rows, r + 3
-  // slots (one more for SHD's code window, whose radius adds to r) and the cost lanes' latency
-  // plus one step after the frame starts; a row's last disparity is written K - 1 row-times and
-  // 5 + tree latency steps after aggregation reaches it.
-  const int64_t r = d.window_radius + (kind == kShd ? cfg.shd_window / 2 : 0);
-  const int64_t front_slots = kind == kShd ? 4 : 3;
-  d.agg_start = (r * R + r + front_slots) * G + 1 + d.cost_latency;
-  // LR2's match side runs dmax pixels behind (its costs need the base pixels up to x' + dmax - 1);
-  // the output waits one (LR1) or two (LR2) more row-times for the match side to finish a row.
-  const int lr = int(cfg.lr);  // 0, 1, 2 for none, LR1, LR2 (fpstereo_sgm_core's LR)
-  d.match_start = d.agg_start + (int64_t(cfg.dmax) + 2) * G;
-  d.out_start = d.agg_start + (d.chains - 1 + lr) * R * G + 5 + d.wta_tree_latency;
-  // A pixel is pushed one step after its read's slot ends, one more after the left-right check; with
-  // the median, after the read of its window's newest word (RM rows and slots further on) and the
-  // selection (one step per word bit); gap interpolation emits a row when the next one comes in.
-  const int64_t rm = cfg.median / 2;
-  auto push_step = [&](int64_t x, int64_t y) {
-    return d.out_start + ((y + rm) * R + x + rm) * G + G + (lr != 0 ? 1 : 0) +
-           (cfg.median ? 2 + d.widths.output_word : 0) + (cfg.gap_interpolation ? R * G + 3 : 0);
-  };
-  // One more cycle: the core is idle for a cycle between frames, while the next one starts.
-  d.cycles_per_frame = push_step(cfg.width - 1, cfg.height - 1) + 2;
-  d.first_output_latency = push_step(0, 0) - (G - 1);  // the first input is taken in step G - 1
+  const int lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
+  d.cost_rows = d.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
+  d.out_rows = d.chains + 1 + lr_rows;
+
+  // The schedule: the stages' latencies summed in data order (docs/architecture.md, "Stages").
+  // A stage's own schedule starts start_offset after its input; the step that pushes pixel
+  // (x, y) is (y * R + x) * G steps after the one that pushes pixel (0, 0).
+  d.stages = pipeline_stages(cfg);
+  const int64_t R = d.row_slots, G = d.groups;
+  int64_t at = 0;
+  for (const auto& stage : d.stages) {
+    if (!stage->start_parameter().empty())
+      d.start_steps[stage->start_parameter()] = at + stage->start_offset(d).in_steps(R, G);
+    at += stage->latency(d).in_steps(R, G);
+  }
+  // The output stage is the last: its input is the push of pixel (0, 0).
+  const int64_t push_first = at - d.stages.back()->latency(d).in_steps(R, G);
+  const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
+  d.cycles_per_frame = at + last_pixel * G;
+  d.first_output_latency = push_first - (G - 1);  // the first input is taken in step G - 1
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
   d.x_bits = bits_for(uint64_t(R));
   d.y_bits = bits_for(uint64_t(ceil_div(d.cycles_per_frame, R * G) + 2));
+  d.signed_y_bits = d.y_bits + 2;
   d.group_bits = bits_for(uint64_t(G - 1));
   d.chain_bits = bits_for(uint64_t(d.chains - 1));
   d.lane_bits = std::max(1, clog2(cfg.uf));
   d.step_bits = bits_for(uint64_t(d.cycles_per_frame + 16));
+  d.cost_row_bits = clog2(d.cost_rows);
+  d.out_row_bits = clog2(d.out_rows);
+  d.cost_addr_bits = clog2(d.cost_depth());
+  d.disp_addr_bits = clog2(d.disp_depth());
+  d.end_addr_bits = clog2(int64_t(d.out_rows) * G);
   return d;
 }
 
 std::vector<EmittedFile> emit(const RtlDesign& design) {
   const std::string head = banner(design);
-  std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + top_module(design)}};
+  std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + top_module(design)},
+                                    {design.prefix + "_sgm_core.v", head + with_prefix(core_module(design), design.prefix)}};
   for (const auto& module : used_modules(design)) {
     const std::string renamed = with_prefix(module, design.prefix);
     files.push_back({renamed + ".v", head + with_prefix(templates().at(module), design.prefix)});

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "config.hpp"
+#include "stages.hpp"
 #include "widths.hpp"
 
 namespace fpstereo::rtl {
@@ -31,13 +33,20 @@ struct RtlDesign {
   int chains = 0;     // K
   int segment = 0;    // ceil(W / K): pixels per chain per row
   int row_slots = 0;  // K * segment: slots per row-time
+  // rows of the cost reorder RAM (K, one more with LR2, whose match side reads a row longer) and
+  // of the disparity RAMs (K, one more for the output's lag, and one (LR1) or two (LR2) more
+  // while the output waits for the match side)
+  int cost_rows = 0, out_rows = 0;
+  int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * groups; }
+  int64_t disp_depth() const { return int64_t(out_rows) * row_slots; }
   int levels_per_stage = 3;
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
-  // steps from a frame's first step to aggregation, LR2's match-side aggregation and output
-  int64_t agg_start = 0;
-  int64_t match_start = 0;
-  int64_t out_start = 0;
+  // the stages in data order (stages.hpp); the schedule below is the sum of their latencies
+  std::vector<StagePtr> stages;
+  // steps from a frame's first step to the start of each stage with a schedule of its own, by
+  // its start parameter (AGG_START: aggregation, MATCH_START: LR2's match side, OUT_START: output)
+  std::map<std::string, int64_t> start_steps;
   int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls
   int64_t latency_cycles = 0;        // cycles_per_frame - W * H * G
   int64_t first_output_latency = 0;  // cycles from the first input pixel to the first output pixel
@@ -45,6 +54,9 @@ struct RtlDesign {
   // the range of the run-time image size (the configured size is the largest)
   int min_width = 0, min_height = 0;
   int x_bits = 0, y_bits = 0, group_bits = 0, chain_bits = 0, lane_bits = 0, step_bits = 0;
+  int signed_y_bits = 0;  // signed row coordinates: a window centre may lie above the image
+  int cost_row_bits = 0, out_row_bits = 0;  // row slot of the cost and disparity RAMs
+  int cost_addr_bits = 0, disp_addr_bits = 0, end_addr_bits = 0;
 };
 
 // Throws ConfigError if the configuration is invalid.

@@ -1,0 +1,788 @@
+#include "stages.hpp"
+
+#include <fmt/core.h>
+
+#include <utility>
+
+#include "rtl_emitter.hpp"
+#include "widths.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+using Values = std::vector<std::pair<std::string, std::string>>;
+
+std::string num(int64_t v) { return std::to_string(v); }
+
+// `module #(.P(v), ...) name (.port(signal), ...);`, wrapped at about 110 columns.
+std::string instance(const std::string& module, const std::string& name, const Values& parameters,
+                     const Values& ports) {
+  auto list = [](const Values& values, const std::string& indent) {
+    std::string text, line = indent;
+    for (size_t i = 0; i < values.size(); ++i) {
+      const std::string item =
+          fmt::format(".{}({}){}", values[i].first, values[i].second, i + 1 < values.size() ? "," : "");
+      if (line.size() > indent.size() && line.size() + item.size() + 1 > 110) {
+        text += line + "\n";
+        line = indent;
+      }
+      line += (line.size() > indent.size() ? " " : "") + item;
+    }
+    return text + line;
+  };
+  std::string text = "  " + module;
+  if (!parameters.empty()) text += " #(\n" + list(parameters, "    ") + "\n  )";
+  return text + " " + name + " (\n" + list(ports, "    ") + ");\n";
+}
+
+std::string wire(int bits, const std::string& name, bool is_signed = false) {
+  return fmt::format("  wire {}{}{};\n", is_signed ? "signed " : "",
+                     bits > 1 ? fmt::format("[{}:0] ", bits - 1) : "", name);
+}
+
+// Declarations of wires a configuration may leave unread, with the waiver Verilator's lint needs.
+std::string unused_unless(bool used, const std::string& declarations, const std::string& why) {
+  if (used) return declarations;
+  return "  /* verilator lint_off UNUSEDSIGNAL */  // " + why + "\n" + declarations +
+         "  /* verilator lint_on UNUSEDSIGNAL */\n";
+}
+
+std::string start_localparam(const RtlDesign& d, const Stage& stage) {
+  return fmt::format("  localparam {} = {};\n", stage.start_parameter(), d.start_steps.at(stage.start_parameter()));
+}
+
+// A pixel stream's wires; the stages after it read what they need of them.
+std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
+  std::string v;
+  if (!s.done.empty()) v += wire(1, s.done);
+  v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) + wire(d.widths.disparity + 1, s.word);
+  return unused_unless(false, v, "the stages after it read what they need");
+}
+
+// ---- stages -----------------------------------------------------------------------------------------
+
+// Framing: the input register slices, the pairing and framing checks (fpstereo_video_in) and the
+// control interface, in the top; the core starts its time base with the frame.
+class FramingStage : public Stage {
+ public:
+  std::string title() const override { return "framing"; }
+  Latency latency(const RtlDesign&) const override { return {}; }
+  std::vector<std::string> modules(const RtlDesign& d) const override {
+    std::vector<std::string> m = {"fpstereo_axis_skid", "fpstereo_video_in"};
+    if (d.options.control) m.push_back("fpstereo_control");
+    return m;
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    return "  // Frame sequencing: adv is every stage's enable.\n" + wire(1, "adv") + wire(1, "restart") +
+           wire(1, "in_due") + wire(1, "out_due") + wire(1, "frame_done") + wire(d.step_bits, "step") +
+           instance("fpstereo_sequencer", "sequencer", {{"STEP_W", num(d.step_bits)}},
+                    {{"clk", "clk"},
+                     {"rst", "rst"},
+                     {"start", "start"},
+                     {"idle", "idle"},
+                     {"in_due", "in_due"},
+                     {"in_valid", "in_valid"},
+                     {"out_due", "out_due"},
+                     {"out_ready", "out_ready"},
+                     {"frame_done", "frame_done"},
+                     {"adv", "adv"},
+                     {"step", "step"},
+                     {"restart", "restart"}});
+  }
+};
+
+// Window and transform: line buffers, the N x N windows and their bounds, and for census, rank
+// and SHD the codes of the window centres.
+class WindowStage : public Stage {
+ public:
+  explicit WindowStage(const StereoConfig& c) : transform_(c.cost != CostFunction::Sad && c.cost != CostFunction::Zsad) {}
+  std::string title() const override { return transform_ ? "window and transform" : "window"; }
+  // The window centred r rows and r slots behind the input is complete after the input's slot;
+  // its registered position (and the transform's codes) one slot later.
+  Latency latency(const RtlDesign& d) const override {
+    return {d.window_radius, d.window_radius + 2, 0};
+  }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    const int64_t bits = int64_t(d.cfg.window - 1) * d.widths.pixel;
+    return {{"core.front_end.left_window.line_buffer.mem", d.row_slots, bits},
+            {"core.front_end.right_window.line_buffer.mem", d.row_slots, bits}};
+  }
+  std::vector<std::string> modules(const RtlDesign& d) const override {
+    std::vector<std::string> m = {"fpstereo_front_end", "fpstereo_raster_counter", "fpstereo_window",
+                                  "fpstereo_window_centre", "fpstereo_window_bounds"};
+    if (transform_)
+      m.insert(m.end(), {"fpstereo_transform", d.cfg.cost == CostFunction::Rank ? "fpstereo_rank" : "fpstereo_census"});
+    return m;
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const int n = d.cfg.window, window_bits = n * n * 8;
+    std::string v = "\n  // Window stage: line buffers, windows, their bounds and centres.\n" + wire(1, "shift") +
+                    wire(1, "slot_end") + wire(d.group_bits, "group") + wire(window_bits, "window_left") +
+                    wire(window_bits, "window_right") + wire(n, "row_valid") + wire(n, "col_valid") +
+                    wire(d.x_bits, "transform_x") + wire(d.signed_y_bits, "transform_y", true) +
+                    wire(d.cost_row_bits, "transform_slot");
+    v += unused_unless(!transform_, wire(n, "newest_row_valid"), "only the SAD and ZSAD costs use it");
+    v += instance("fpstereo_front_end", "front_end",
+                  {{"N", num(n)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"G", num(d.groups)},
+                   {"COST_ROWS", num(d.cost_rows)},
+                   {"COST_K_W", num(d.cost_row_bits)},
+                   {"X_W", num(d.x_bits)},
+                   {"Y_W", num(d.y_bits)},
+                   {"YS_W", num(d.signed_y_bits)},
+                   {"G_W", num(d.group_bits)}},
+                  {{"clk", "clk"},
+                   {"restart", "restart"},
+                   {"adv", "adv"},
+                   {"frame_width", "frame_width"},
+                   {"frame_height", "frame_height"},
+                   {"in_due", "in_due"},
+                   {"in_take", "in_take"},
+                   {"in_left", "in_left"},
+                   {"in_right", "in_right"},
+                   {"group", "group"},
+                   {"slot_end", "slot_end"},
+                   {"shift", "shift"},
+                   {"window_left", "window_left"},
+                   {"window_right", "window_right"},
+                   {"row_valid", "row_valid"},
+                   {"col_valid", "col_valid"},
+                   {"newest_row_valid", "newest_row_valid"},
+                   {"transform_x", "transform_x"},
+                   {"transform_y", "transform_y"},
+                   {"transform_slot", "transform_slot"}});
+    if (!transform_) return v;
+    const int code_bits = std::max(1, d.widths.code);
+    return v + wire(code_bits, "code_base") + wire(code_bits, "code_match") +
+           instance("fpstereo_transform", "transform",
+                    {{"N", num(n)}, {"RANK", d.cfg.cost == CostFunction::Rank ? "1" : "0"}, {"CODE_W", num(code_bits)}},
+                    {{"clk", "clk"},
+                     {"shift", "shift"},
+                     {"window_left", "window_left"},
+                     {"window_right", "window_right"},
+                     {"row_valid", "row_valid"},
+                     {"col_valid", "col_valid"},
+                     {"code_base", "code_base"},
+                     {"code_match", "code_match"}});
+  }
+
+ private:
+  bool transform_;
+};
+
+// Matching costs: UF per step from the match ring and the cost lanes of the cost function.
+class CostStage : public Stage {
+ public:
+  explicit CostStage(const StereoConfig& c) : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
+  std::string title() const override { return "cost"; }
+  // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
+  // rs + 1 slots); the lanes take their register stages.
+  Latency latency(const RtlDesign& d) const override {
+    const int64_t rs = cost_ == CostFunction::Shd ? d.cfg.shd_window / 2 : 0;
+    return {rs, 1 + (cost_ == CostFunction::Shd ? rs + 1 : 0), d.cost_latency};
+  }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    if (cost_ != CostFunction::Shd) return {};
+    const int64_t bits = int64_t(d.cfg.shd_window - 1) * std::max(1, d.widths.code);
+    return {{"core.cost.base_codes.line_buffer.mem", d.row_slots, bits},
+            {"core.cost.match_codes.line_buffer.mem", d.row_slots, bits}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    switch (cost_) {
+      case CostFunction::Census:
+      case CostFunction::Rank:
+        return {"fpstereo_point_cost", "fpstereo_match_ring", "fpstereo_cost_lanes"};
+      case CostFunction::Sad:
+      case CostFunction::Zsad:
+        return {"fpstereo_pixel_window_cost", "fpstereo_window_mask", "fpstereo_match_ring",
+                "fpstereo_window_cost_lanes"};
+      case CostFunction::Shd:
+        break;
+    }
+    return {"fpstereo_code_window_cost", "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds",
+            "fpstereo_window_mask", "fpstereo_match_ring", "fpstereo_window_cost_lanes"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
+    const int code_bits = std::max(1, w.code);
+    Values common = {{"DMAX", num(c.dmax)},          {"UF", num(c.uf)},
+                     {"COST_W", num(w.cost)},        {"COST_MAX", num(int64_t(w.cost_max))},
+                     {"COST_K_W", num(d.cost_row_bits)}, {"X_W", num(d.x_bits)},
+                     {"YS_W", num(d.signed_y_bits)}, {"G_W", num(d.group_bits)}};
+    Values ports = {{"clk", "clk"}, {"adv", "adv"}, {"slot_end", "slot_end"}, {"shift", "shift"}, {"group", "group"}};
+    Values position = {{"transform_x", "transform_x"},   {"transform_y", "transform_y"},
+                       {"transform_slot", "transform_slot"}, {"history_x", "history_x"},
+                       {"history_y", "history_y"},       {"history_slot", "history_slot"},
+                       {"costs", "costs"}};
+    std::string module;
+    Values parameters;
+    switch (cost_) {
+      case CostFunction::Census:
+      case CostFunction::Rank:
+        module = "fpstereo_point_cost";
+        parameters = {{"HAMMING", cost_ == CostFunction::Census ? "1" : "0"}, {"CODE_W", num(code_bits)}};
+        ports.insert(ports.end(), {{"code_base", "code_base"}, {"code_match", "code_match"}});
+        break;
+      case CostFunction::Sad:
+      case CostFunction::Zsad:
+        module = "fpstereo_pixel_window_cost";
+        parameters = {{"N", num(c.window)},
+                      {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                      {"COLSUM_W", num(d.column_sum_bits)},
+                      {"MEAN_MUL", num(int64_t(d.mean_mul))},
+                      {"MEAN_SHIFT", num(d.mean_shift)}};
+        ports.insert(ports.end(), {{"frame_width", "frame_width"},
+                                   {"window_left", "window_left"},
+                                   {"window_right", "window_right"},
+                                   {"row_valid", "row_valid"},
+                                   {"col_valid", "col_valid"},
+                                   {"newest_row_valid", "newest_row_valid"}});
+        break;
+      case CostFunction::Shd:
+        module = "fpstereo_code_window_cost";
+        parameters = {{"SHD_K", num(c.shd_window)},     {"CODE_W", num(code_bits)},
+                      {"ROW_SLOTS", num(d.row_slots)},  {"COLSUM_W", num(d.column_sum_bits)},
+                      {"COST_ROWS", num(d.cost_rows)},  {"Y_W", num(d.y_bits)}};
+        ports.insert(ports.end(), {{"frame_width", "frame_width"},
+                                   {"frame_height", "frame_height"},
+                                   {"code_base", "code_base"},
+                                   {"code_match", "code_match"}});
+        break;
+    }
+    parameters.insert(parameters.end(), common.begin(), common.end());
+    ports.insert(ports.end(), position.begin(), position.end());
+    return "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n" +
+           wire(d.x_bits, "history_x") + wire(d.signed_y_bits, "history_y", true) +
+           wire(d.cost_row_bits, "history_slot") + wire(c.uf * w.cost, "costs") +
+           instance(module, "cost", parameters, ports);
+  }
+
+ private:
+  CostFunction cost_;  // SHD over a 1 x 1 window is census
+};
+
+// Cost reorder RAM: raster order in, chain order out.
+class CostReorderStage : public Stage {
+ public:
+  std::string title() const override { return "cost reorder"; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, 1}; }  // written, then read
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return {{"core.cost_reorder.cost_ram.mem", d.cost_depth(), int64_t(d.cfg.uf) * d.widths.cost}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_cost_reorder", "fpstereo_delay", "fpstereo_ram_sdp"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const std::string cost_tag = wire(1, "cost_valid") + wire(d.x_bits, "cost_x") +
+                                 wire(d.cost_row_bits, "cost_row_slot") + wire(d.group_bits, "cost_group");
+    return "\n  // Cost reorder RAM.\n" +
+           unused_unless(d.cfg.lr == LrCheck::Lr2, cost_tag, "LR2's lane banks take the cost words' positions") +
+           wire(d.cost_addr_bits, "cost_raddr") + wire(d.cfg.uf * d.widths.cost, "cost_q") +
+           instance("fpstereo_cost_reorder", "cost_reorder",
+                    {{"ROW_SLOTS", num(d.row_slots)},
+                     {"G", num(d.groups)},
+                     {"UF", num(d.cfg.uf)},
+                     {"COST_W", num(d.widths.cost)},
+                     {"LAT", num(d.cost_latency)},
+                     {"COST_ROWS", num(d.cost_rows)},
+                     {"COST_K_W", num(d.cost_row_bits)},
+                     {"COST_AW", num(d.cost_addr_bits)},
+                     {"X_W", num(d.x_bits)},
+                     {"Y_W", num(d.y_bits)},
+                     {"YS_W", num(d.signed_y_bits)},
+                     {"G_W", num(d.group_bits)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"frame_width", "frame_width"},
+                     {"frame_height", "frame_height"},
+                     {"group", "group"},
+                     {"history_x", "history_x"},
+                     {"history_y", "history_y"},
+                     {"history_slot", "history_slot"},
+                     {"costs", "costs"},
+                     {"cost_valid", "cost_valid"},
+                     {"cost_x", "cost_x"},
+                     {"cost_row_slot", "cost_row_slot"},
+                     {"cost_group", "cost_group"},
+                     {"cost_raddr", "cost_raddr"},
+                     {"cost_q", "cost_q"}});
+  }
+};
+
+// The aggregator's memories below scope (fpstereo_aggregator.v).
+std::vector<StageMemory> aggregator_memories(const RtlDesign& d, const std::string& scope) {
+  const StereoConfig& c = d.cfg;
+  const int64_t lanes_w = int64_t(c.uf) * d.widths.path_cost;
+  const int64_t row_depth = int64_t(c.width + 1) * d.groups;
+  const int64_t state_depth = int64_t(d.chains) * d.groups;
+  std::vector<StageMemory> out;
+  if (c.paths & kPath0) out.push_back({scope + ".path0.state.mem", state_depth, lanes_w, false});
+  if (c.paths & kPath45) {
+    out.push_back({scope + ".path45.row.mem", row_depth, lanes_w});
+    out.push_back({scope + ".path45.row_min.mem", c.width + 1, d.widths.path_cost});
+    out.push_back({scope + ".path45.state.mem", state_depth, lanes_w, false});
+  }
+  for (int v = 0; v < 2; ++v) {
+    if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
+    const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
+    out.push_back({p + ".row.mem", row_depth, lanes_w});
+    out.push_back({p + ".row_min.mem", c.width + 1, d.widths.path_cost});
+  }
+  return out;
+}
+
+Values aggregator_parameters(const RtlDesign& d, bool match_side) {
+  const StereoConfig& c = d.cfg;
+  return {{"W", num(c.width)},
+          {"ROW_SLOTS", num(d.row_slots)},
+          {"K", num(d.chains)},
+          {"SLEN", num(d.segment)},
+          {"G", num(d.groups)},
+          {"UF", num(c.uf)},
+          {"COST_W", num(d.widths.cost)},
+          {"COST_MAX", num(int64_t(d.widths.cost_max))},
+          {"PATH_W", num(d.widths.path_cost)},
+          {"SUM_W", num(d.widths.aggregated)},
+          {"PATHS", num(c.paths)},
+          {"MATCH_SIDE", match_side ? "1" : "0"},
+          {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
+          {"PATH_TREE_LAT", num(d.path_tree_latency)},
+          {"OUT_ROWS", num(d.out_rows)},
+          {"OUT_K_W", num(d.out_row_bits)},
+          {"COST_AW", num(d.cost_addr_bits)},
+          {"X_W", num(d.x_bits)},
+          {"Y_W", num(d.y_bits)},
+          {"G_W", num(d.group_bits)},
+          {"K_W", num(d.chain_bits)},
+          {"COST_ROWS", num(d.cost_rows)},
+          {"COST_K_W", num(d.cost_row_bits)}};
+}
+
+// Aggregation in K interleaved chains; a row's last chain runs K - 1 row-times after its first,
+// and the sums leave the aggregator's four register stages (S0 .. S4).
+class AggregationStage : public Stage {
+ public:
+  std::string title() const override { return "aggregation"; }
+  std::string start_parameter() const override { return "AGG_START"; }
+  Latency latency(const RtlDesign& d) const override { return {d.chains - 1, 0, 4}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return aggregator_memories(d, "core.aggregation");
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_aggregator", "fpstereo_path_lanes", "fpstereo_path_minimum", "fpstereo_min_tree",
+            "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    std::string v = "\n  // Aggregation in K interleaved chains, from step AGG_START.\n" +
+                    start_localparam(d, *this) +
+                    wire(d.cfg.uf * d.widths.aggregated, "sum4") + wire(1, "active4") + wire(d.x_bits, "x4") +
+                    wire(d.group_bits, "group4") + wire(d.out_row_bits, "slot4");
+    v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "chain4"), "only LR1 follows the chains");
+    return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d, false),
+                        {{"clk", "clk"},
+                         {"restart", "restart"},
+                         {"adv", "adv"},
+                         {"width", "frame_width"},
+                         {"height", "frame_height"},
+                         {"p1", "p1"},
+                         {"p2", "p2"},
+                         {"agg_on", "step >= AGG_START"},
+                         {"cost_raddr", "cost_raddr"},
+                         {"cost_q", "cost_q"},
+                         {"sum4", "sum4"},
+                         {"active4", "active4"},
+                         {"x4", "x4"},
+                         {"group4", "group4"},
+                         {"chain4", "chain4"},
+                         {"slot4", "slot4"}});
+  }
+};
+
+// The match side's writes into the left-right check's RAM of completed pixels.
+std::string completed_wires(const RtlDesign& d) {
+  return wire(1, "completed_we") + wire(d.disp_addr_bits, "completed_waddr") +
+         wire(d.widths.disparity, "completed_wdata");
+}
+
+// LR1's match side: Dm from the base side's sums, beside the main stream.
+class Lr1MatchStage : public Stage {
+ public:
+  std::string title() const override { return "LR1 match side"; }
+  Latency latency(const RtlDesign&) const override { return {}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return {{"core.lr1_match.entries.mem", int64_t(d.chains) * d.groups,
+             int64_t(d.cfg.uf) * (d.widths.aggregated + d.widths.disparity), false}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_lr1_match", "fpstereo_ram_async"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const StereoConfig& c = d.cfg;
+    return "\n  // LR1 match side: Dm(x') from the base side's sums.\n" + completed_wires(d) + wire(1, "row_end_we") +
+           wire(d.end_addr_bits, "row_end_waddr") + wire(c.uf * d.widths.disparity, "row_end_wdata") +
+           instance("fpstereo_lr1_match", "lr1_match",
+                    {{"K", num(d.chains)},
+                     {"G", num(d.groups)},
+                     {"UF", num(c.uf)},
+                     {"DMAX", num(c.dmax)},
+                     {"ROW_SLOTS", num(d.row_slots)},
+                     {"SUM_W", num(d.widths.aggregated)},
+                     {"DISP_W", num(d.widths.disparity)},
+                     {"OUT_K_W", num(d.out_row_bits)},
+                     {"DISP_AW", num(d.disp_addr_bits)},
+                     {"END_AW", num(d.end_addr_bits)},
+                     {"X_W", num(d.x_bits)},
+                     {"G_W", num(d.group_bits)},
+                     {"K_W", num(d.chain_bits)}},
+                    {{"clk", "clk"},
+                     {"adv", "adv"},
+                     {"frame_width", "frame_width"},
+                     {"sums", "sum4"},
+                     {"active", "active4"},
+                     {"x", "x4"},
+                     {"group", "group4"},
+                     {"chain", "chain4"},
+                     {"slot", "slot4"},
+                     {"completed_we", "completed_we"},
+                     {"completed_waddr", "completed_waddr"},
+                     {"completed_wdata", "completed_wdata"},
+                     {"row_end_we", "row_end_we"},
+                     {"row_end_waddr", "row_end_waddr"},
+                     {"row_end_wdata", "row_end_wdata"}});
+  }
+};
+
+// LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all, dmax + 2
+// slots behind the base side's aggregation (its costs need base pixels up to x' + dmax - 1).
+class Lr2MatchStage : public Stage {
+ public:
+  std::string title() const override { return "LR2 match side"; }
+  std::string start_parameter() const override { return "MATCH_START"; }
+  Latency latency(const RtlDesign&) const override { return {}; }
+  Latency start_offset(const RtlDesign& d) const override { return {0, d.cfg.dmax + 2, 0}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    std::vector<StageMemory> out;
+    for (int l = 0; l < d.cfg.uf; ++l)
+      out.push_back({fmt::format("core.lr2_match.bank[{}].costs_of_lane.mem", l), d.cost_depth(), d.widths.cost});
+    for (auto& m : aggregator_memories(d, "core.lr2_match.match_aggregation")) out.push_back(m);
+    return out;
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_lr2_match", "fpstereo_ram_sdp", "fpstereo_aggregator", "fpstereo_wta", "fpstereo_min_tree",
+            "fpstereo_delay"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const StereoConfig& c = d.cfg;
+    Values parameters = aggregator_parameters(d, true);
+    parameters.erase(parameters.begin() + 11);  // MATCH_SIDE: the module's own
+    parameters.insert(parameters.end(), {{"DMAX", num(c.dmax)},
+                                         {"DISP_W", num(d.widths.disparity)},
+                                         {"WTA_TREE_LAT", num(d.wta_tree_latency)},
+                                         {"DISP_AW", num(d.disp_addr_bits)},
+                                         {"LANE_W", num(d.lane_bits)}});
+    return "\n  // LR2 match side: second cost volume, aggregation and winner-take-all.\n" +
+           start_localparam(d, *this) + completed_wires(d) +
+           instance("fpstereo_lr2_match", "lr2_match", parameters,
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"match_on", "step >= MATCH_START"},
+                     {"frame_width", "frame_width"},
+                     {"frame_height", "frame_height"},
+                     {"p1", "p1"},
+                     {"p2", "p2"},
+                     {"cost_valid", "cost_valid"},
+                     {"cost_x", "cost_x"},
+                     {"cost_row_slot", "cost_row_slot"},
+                     {"cost_group", "cost_group"},
+                     {"costs", "costs"},
+                     {"completed_we", "completed_we"},
+                     {"completed_waddr", "completed_waddr"},
+                     {"completed_wdata", "completed_wdata"}});
+  }
+};
+
+// Winner-take-all (with the uniqueness check when configured): the running minimum's register.
+class WtaStage : public Stage {
+ public:
+  explicit WtaStage(const StereoConfig& c) : unique_(c.uniqueness != 0) {}
+  std::string title() const override { return unique_ ? "winner-take-all with uniqueness" : "winner-take-all"; }
+  Latency latency(const RtlDesign& d) const override { return {0, 0, d.wta_tree_latency + 1}; }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    if (unique_) return {"fpstereo_wta_unique", "fpstereo_unique_tree", "fpstereo_unique_join", "fpstereo_delay"};
+    return {"fpstereo_wta", "fpstereo_min_tree", "fpstereo_delay"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const int tag_bits = 1 + d.x_bits + d.out_row_bits;
+    Values ports = {{"clk", "clk"},
+                    {"restart", "restart"},
+                    {"adv", "adv"},
+                    {"sums", "sum4"},
+                    {"group", "group4"},
+                    {"tag", "{active4, x4, slot4}"}};
+    if (unique_) ports.push_back({"uniqueness", "uniqueness"});
+    ports.insert(ports.end(),
+                 {{"group_out", "wta_group"}, {"tag_out", "{wta_active, wta_x, wta_slot}"}, {"word", "wta_word"}});
+    return "\n  // Winner-take-all: the pixel's word in its last group's step.\n" + wire(d.group_bits, "wta_group") +
+           wire(1, "wta_active") + wire(d.x_bits, "wta_x") + wire(d.out_row_bits, "wta_slot") +
+           wire(d.widths.disparity + 1, "wta_word") +
+           instance(unique_ ? "fpstereo_wta_unique" : "fpstereo_wta", "wta",
+                    {{"UF", num(d.cfg.uf)},
+                     {"SUM_W", num(d.widths.aggregated)},
+                     {"DISP_W", num(d.widths.disparity)},
+                     {"LANE_W", num(d.lane_bits)},
+                     {"G_W", num(d.group_bits)},
+                     {"TAG_W", num(tag_bits)},
+                     {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
+                     {"TREE_LAT", num(d.wta_tree_latency)}},
+                    ports);
+  }
+
+ private:
+  bool unique_;
+};
+
+// Disparity reorder RAM: chain order in, one word per slot in raster order out. With a
+// left-right check the reads wait one (LR1) or two (LR2) more row-times for the match side.
+class DisparityReorderStage : public Stage {
+ public:
+  std::string title() const override { return "disparity reorder"; }
+  std::string start_parameter() const override { return "OUT_START"; }
+  Latency latency(const RtlDesign& d) const override { return {lr_rows(d), 1, 0}; }
+  Latency start_offset(const RtlDesign& d) const override { return {lr_rows(d), 0, 0}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), d.widths.disparity + 1}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_ram_sdp"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
+    stream = {"read_done", "read_event", "read_x", "read_y", "read_word"};
+    return "\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n" +
+           start_localparam(d, *this) + stream_wires(d, stream) +
+           unused_unless(d.cfg.lr != LrCheck::None, wire(d.out_row_bits, "read_slot_row"), "the left-right check reads with it") +
+           instance("fpstereo_disparity_reorder", "disparity_reorder",
+                    {{"ROW_SLOTS", num(d.row_slots)},
+                     {"G", num(d.groups)},
+                     {"DISP_W", num(d.widths.disparity)},
+                     {"OUT_ROWS", num(d.out_rows)},
+                     {"OUT_K_W", num(d.out_row_bits)},
+                     {"DISP_AW", num(d.disp_addr_bits)},
+                     {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
+                     {"X_W", num(d.x_bits)},
+                     {"Y_W", num(d.y_bits)},
+                     {"G_W", num(d.group_bits)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"out_on", "step >= OUT_START"},
+                     {"frame_width", "frame_width"},
+                     {"frame_height", "frame_height"},
+                     {"active", "wta_active"},
+                     {"x", "wta_x"},
+                     {"slot", "wta_slot"},
+                     {"group", "wta_group"},
+                     {"word", "wta_word"},
+                     {"read_done", "read_done"},
+                     {"read_event", "read_event"},
+                     {"read_x", "read_x"},
+                     {"read_y", "read_y"},
+                     {"read_slot_row", "read_slot_row"},
+                     {"read_word", "read_word"}});
+  }
+
+ private:
+  static int lr_rows(const RtlDesign& d) { return d.cfg.lr == LrCheck::None ? 0 : d.cfg.lr == LrCheck::Lr1 ? 1 : 2; }
+};
+
+
+// Left-right check: one step, against the match side's completed pixels (LR1 also its row ends).
+class LrCheckStage : public Stage {
+ public:
+  explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
+  std::string title() const override { return "left-right check"; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, 1}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    std::vector<StageMemory> out = {{"core.lr_check.completed.mem", d.disp_depth(), d.widths.disparity}};
+    if (row_end_)
+      out.push_back({"core.lr_check.row_end.row_end.mem", int64_t(d.out_rows) * d.groups,
+                     int64_t(d.cfg.uf) * d.widths.disparity});
+    return out;
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_lr_check", "fpstereo_ram_sdp"}; }
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
+    const StereoConfig& c = d.cfg;
+    const PixelStream in = stream;
+    stream = {"checked_done", "checked_event", "checked_x", "checked_y", "checked_word"};
+    std::string v = "\n  // Left-right check.\n" + stream_wires(d, stream);
+    Values ports = {{"clk", "clk"},
+                    {"restart", "restart"},
+                    {"adv", "adv"},
+                    {"frame_width", "frame_width"},
+                    {"lr_threshold", "lr_threshold"},
+                    {"completed_we", "completed_we"},
+                    {"completed_waddr", "completed_waddr"},
+                    {"completed_wdata", "completed_wdata"}};
+    if (row_end_)
+      ports.insert(ports.end(), {{"row_end_we", "row_end_we"},
+                                 {"row_end_waddr", "row_end_waddr"},
+                                 {"row_end_wdata", "row_end_wdata"}});
+    else
+      ports.insert(ports.end(), {{"row_end_we", "1'b0"},
+                                 {"row_end_waddr", fmt::format("{}'d0", d.end_addr_bits)},
+                                 {"row_end_wdata", fmt::format("{}'d0", c.uf * d.widths.disparity)}});
+    ports.insert(ports.end(), {{"read_done", in.done},
+                               {"read_event", in.event},
+                               {"read_x", in.x},
+                               {"read_y", in.y},
+                               {"read_slot_row", "read_slot_row"},
+                               {"read_word", in.word},
+                               {"checked_done", stream.done},
+                               {"checked_event", stream.event},
+                               {"checked_x", stream.x},
+                               {"checked_y", stream.y},
+                               {"checked_word", stream.word}});
+    return v + instance("fpstereo_lr_check", "lr_check",
+                        {{"ROW_SLOTS", num(d.row_slots)},
+                         {"G", num(d.groups)},
+                         {"UF", num(c.uf)},
+                         {"DMAX", num(c.dmax)},
+                         {"DISP_W", num(d.widths.disparity)},
+                         {"OUT_ROWS", num(d.out_rows)},
+                         {"OUT_K_W", num(d.out_row_bits)},
+                         {"DISP_AW", num(d.disp_addr_bits)},
+                         {"ROW_END", row_end_ ? "1" : "0"},
+                         {"END_AW", num(d.end_addr_bits)},
+                         {"X_W", num(d.x_bits)},
+                         {"Y_W", num(d.y_bits)},
+                         {"LANE_W", num(d.lane_bits)}},
+                        ports);
+  }
+
+ private:
+  bool row_end_;
+};
+
+// Median filter: its window's newest word is rm rows and rm slots past the centre; the
+// selection takes one step per word bit, and a step each for the window and the result.
+class MedianStage : public Stage {
+ public:
+  std::string title() const override { return "median filter"; }
+  Latency latency(const RtlDesign& d) const override {
+    const int rm = d.cfg.median / 2;
+    return {rm, rm, 2 + d.widths.output_word};
+  }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return {{"core.median.line_window.line_buffer.mem", d.row_slots,
+             int64_t(d.cfg.median - 1) * (d.widths.disparity + 1)}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_median", "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds",
+            "fpstereo_median_select", "fpstereo_delay"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
+    const PixelStream in = stream;
+    stream = {"", "median_event", "median_x", "median_y", "median_word"};
+    return "\n  // Median filter.\n" + stream_wires(d, stream) +
+           instance("fpstereo_median", "median",
+                    {{"M", num(d.cfg.median)},
+                     {"ROW_SLOTS", num(d.row_slots)},
+                     {"DISP_W", num(d.widths.disparity)},
+                     {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
+                     {"X_W", num(d.x_bits)},
+                     {"Y_W", num(d.y_bits)},
+                     {"YS_W", num(d.signed_y_bits)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"frame_width", "frame_width"},
+                     {"frame_height", "frame_height"},
+                     {"in_done", in.done},
+                     {"in_x", in.x},
+                     {"in_y", in.y},
+                     {"in_word", in.word},
+                     {"out_event", stream.event},
+                     {"out_x", stream.x},
+                     {"out_y", stream.y},
+                     {"out_word", stream.word}});
+  }
+};
+
+// Gap interpolation, one row behind its input.
+class GapStage : public Stage {
+ public:
+  std::string title() const override { return "gap interpolation"; }
+  Latency latency(const RtlDesign&) const override { return {1, 0, 3}; }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    return {{"core.gap.words.mem", 2 * int64_t(d.cfg.width), d.widths.disparity + 1 + d.x_bits},
+            {"core.gap.right_neighbours.mem", 2 * int64_t(d.cfg.width), d.widths.disparity + 1}};
+  }
+  std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_gap_fill"}; }
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
+    const PixelStream in = stream;
+    stream = {"", "gap_event", "gap_x", "gap_y", "gap_word"};
+    return "\n  // Gap interpolation.\n" + stream_wires(d, stream) +
+           instance("fpstereo_gap_fill", "gap",
+                    {{"W", num(d.cfg.width)},
+                     {"WORD_W", num(d.widths.disparity + 1)},
+                     {"X_W", num(d.x_bits)},
+                     {"Y_W", num(d.y_bits)}},
+                    {{"clk", "clk"},
+                     {"rst", "restart"},
+                     {"en", "adv"},
+                     {"width", "frame_width"},
+                     {"height", "frame_height"},
+                     {"in_event", in.event},
+                     {"in_x", in.x},
+                     {"in_y", in.y},
+                     {"in_word", in.word},
+                     {"out_event", stream.event},
+                     {"out_x", stream.x},
+                     {"out_y", stream.y},
+                     {"out_word", stream.word}});
+  }
+};
+
+// Output: each pixel's word is pushed in the step its stream event is due (the sequencer stalls
+// while the output register slice is full); the frame ends with its last pixel, and the core
+// is idle for one cycle before the next frame starts.
+class OutputStage : public Stage {
+ public:
+  std::string title() const override { return "output"; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, 2}; }
+  std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_axis_skid"}; }
+  std::string core_verilog(const RtlDesign&, PixelStream& stream) const override {
+    return fmt::format(
+        "\n  // Output.\n"
+        "  assign out_due    = {0};\n"
+        "  assign out_push   = adv && {0};\n"
+        "  assign out_word   = {3};\n"
+        "  assign out_first  = {1} == 0 && {2} == 0;\n"
+        "  assign out_last   = {1} == frame_width - 1'b1;\n"
+        "  assign frame_done = {0} && out_last && {2} == frame_height - 1'b1;\n"
+        "  assign frame_end  = adv && frame_done;\n",
+        stream.event, stream.x, stream.y, stream.word);
+  }
+};
+
+}  // namespace
+
+std::vector<StagePtr> pipeline_stages(const StereoConfig& c) {
+  std::vector<StagePtr> stages = {std::make_shared<FramingStage>(), std::make_shared<WindowStage>(c),
+                                  std::make_shared<CostStage>(c), std::make_shared<CostReorderStage>()};
+  if (c.lr == LrCheck::Lr2) stages.push_back(std::make_shared<Lr2MatchStage>());
+  stages.push_back(std::make_shared<AggregationStage>());
+  if (c.lr == LrCheck::Lr1) stages.push_back(std::make_shared<Lr1MatchStage>());
+  stages.push_back(std::make_shared<WtaStage>(c));
+  stages.push_back(std::make_shared<DisparityReorderStage>());
+  if (c.lr != LrCheck::None) stages.push_back(std::make_shared<LrCheckStage>(c));
+  if (c.median != 0) stages.push_back(std::make_shared<MedianStage>());
+  if (c.gap_interpolation) stages.push_back(std::make_shared<GapStage>());
+  stages.push_back(std::make_shared<OutputStage>());
+  return stages;
+}
+
+}  // namespace fpstereo::rtl

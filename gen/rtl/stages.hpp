@@ -1,0 +1,67 @@
+// The pipeline's stages as objects (docs/architecture.md, "Stages"): each knows its latency in
+// the core's time base, the memories it instantiates, the Verilog it adds to the core and the
+// templates that Verilog uses. plan() chains them; the banner, the INFO registers, the resource
+// model and the DSE read the one plan they make.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "config.hpp"
+
+namespace fpstereo::rtl {
+
+struct RtlDesign;
+
+// A time in the core's time base: row-times of R slots, slots of G steps, and steps.
+struct Latency {
+  int64_t rows = 0, slots = 0, steps = 0;
+  Latency operator+(const Latency& o) const { return {rows + o.rows, slots + o.slots, steps + o.steps}; }
+  int64_t in_steps(int64_t row_slots, int64_t groups) const { return (rows * row_slots + slots) * groups + steps; }
+};
+
+// A RAM a stage instantiates: its name as Yosys gives it after flattening the top
+// ("core.cost_reorder.cost_ram.mem"), its shape and whether its read is registered (block RAM)
+// or asynchronous (distributed RAM).
+struct StageMemory {
+  std::string name;
+  int64_t words = 0;
+  int64_t bits = 0;
+  bool sync_read = true;
+};
+
+// The names of the pixel stream between the output stages: done in the step after each slot's
+// word (empty once the stream has left the slot schedule), event for the frame's pixels, their
+// position and word. Each output stage reads the stream and names its own.
+struct PixelStream {
+  std::string done, event, x, y, word;
+};
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  // What the stage is, for the banner and the docs ("cost (census 7x7)").
+  virtual std::string title() const = 0;
+  // Steps from the first word of the stage's input stream to the first of its output stream.
+  virtual Latency latency(const RtlDesign& d) const = 0;
+  // Stages with a schedule of their own start it start_offset after their input starts; the
+  // core compares the step counter with that sum, the localparam named start_parameter().
+  virtual std::string start_parameter() const { return ""; }
+  virtual Latency start_offset(const RtlDesign&) const { return {}; }
+  virtual std::vector<StageMemory> memories(const RtlDesign&) const { return {}; }
+  // Templates of rtl_templates/ the stage's Verilog instantiates, directly or below.
+  virtual std::vector<std::string> modules(const RtlDesign& d) const = 0;
+  // Its part of the core: the wires it drives and its instances.
+  virtual std::string core_verilog(const RtlDesign& d, PixelStream& stream) const = 0;
+};
+
+using StagePtr = std::shared_ptr<const Stage>;
+
+// The stages of a configuration in the order data flows through them; stages that run beside
+// the main stream (the match side of the left-right check) follow the stage they read from and
+// add no latency to the stream.
+std::vector<StagePtr> pipeline_stages(const StereoConfig& cfg);
+
+}  // namespace fpstereo::rtl

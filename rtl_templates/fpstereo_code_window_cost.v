@@ -1,0 +1,112 @@
+`resetall
+`default_nettype none
+// Cost stage for SHD: the census codes enter SHD_K x SHD_K code windows (zero outside the
+// image); the base window waits a slot, the match window's newest column enters the match ring,
+// and the lanes sum the Hamming distances over the window (docs/semantics.md, section 2).
+// history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
+module fpstereo_code_window_cost #(
+  // the summation window's side
+  parameter SHD_K = 3,
+  parameter CODE_W = 24,
+  parameter ROW_SLOTS = 64,
+  parameter DMAX = 32,
+  parameter UF = 8,
+  parameter COST_W = 8,
+  parameter COST_MAX = 216,
+  parameter COLSUM_W = 11,
+  parameter COST_ROWS = 2,
+  parameter COST_K_W = 1,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter YS_W = 8,
+  parameter G_W = 2
+) (
+  input  wire                   clk,
+  input  wire                   adv,
+  input  wire                   slot_end,
+  input  wire                   shift,
+  input  wire [G_W-1:0]         group,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  input  wire [CODE_W-1:0]      code_base,
+  input  wire [CODE_W-1:0]      code_match,
+  input  wire [X_W-1:0]         transform_x,
+  input  wire signed [YS_W-1:0] transform_y,
+  input  wire [COST_K_W-1:0]    transform_slot,
+  output reg  [X_W-1:0]         history_x,
+  output reg  signed [YS_W-1:0] history_y,
+  output reg  [COST_K_W-1:0]    history_slot,
+  output wire [UF*COST_W-1:0]   costs
+);
+  localparam RS = SHD_K / 2;
+  localparam signed [YS_W-1:0] RS_Y = RS;
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  // The code windows take in the codes at column transform_x.
+  wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
+  wire [SHD_K*SHD_K*CODE_W-1:0] codes_left, codes_right;
+  fpstereo_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) base_codes (
+    .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_base), .window(codes_left));
+  fpstereo_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) match_codes (
+    .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match), .window(codes_right));
+  // Centre of the code window: RS rows and RS slots behind the entering code; the newest
+  // column is the entering code's own column (zero outside the image, as for SAD).
+  wire [X_W-1:0] codes_centre_x;
+  wire signed [YS_W-1:0] codes_centre_y;
+  wire [COST_K_W-1:0] codes_slot_next;
+  fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
+                           .SLOT_W(COST_K_W)) codes_centre (
+    .x(transform_x), .y(transform_y), .slot(transform_slot), .centre_x(codes_centre_x),
+    .centre_y(codes_centre_y), .centre_slot(codes_slot_next));
+  reg [X_W-1:0] codes_x;
+  reg signed [YS_W-1:0] codes_y;
+  reg [COST_K_W-1:0] codes_slot;
+  reg code_newest_in_row;
+  reg signed [YS_W-1:0] code_newest_y;
+  always @(posedge clk)
+    if (shift) begin
+      code_newest_in_row <= {1'b0, transform_x} < width_x;
+      code_newest_y <= transform_y - RS_Y;
+      codes_x <= codes_centre_x;
+      codes_y <= codes_centre_y;
+      codes_slot <= codes_slot_next;
+    end
+  wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is code_newest_in_row
+  wire [SHD_K-1:0] code_newest_unused_columns;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_bounds (
+    .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid),
+    .col_valid(code_col_valid));
+  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
+    .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows),
+    .col_valid(code_newest_unused_columns));
+  wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
+  wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;
+  fpstereo_window_mask #(.N(SHD_K), .WORD_W(CODE_W)) base_mask (
+    .window(codes_left), .row_valid(code_row_valid), .col_valid(code_col_valid), .masked(base_masked));
+  reg [SHD_K*CODE_W-1:0] newest_column;
+  integer e;
+  always @*
+    for (e = 0; e < SHD_K; e = e + 1)
+      newest_column[e*CODE_W +: CODE_W] = code_newest_row_valid[e] ? codes_right[(e*SHD_K + SHD_K - 1)*CODE_W +: CODE_W]
+                                                                    : {CODE_W{1'b0}};
+  reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
+  always @(posedge clk)
+    if (shift) begin
+      base_h       <= base_masked;
+      history_x    <= codes_x;
+      history_y    <= codes_y;
+      history_slot <= codes_slot;
+    end
+  wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
+  fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
+  fpstereo_window_cost_lanes #(.ZERO_MEAN(0), .HAMMING(1), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF),
+                               .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
+                               .COLSUM_W(COLSUM_W)) lanes (
+    .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
+    .group(group), .x(history_x), .width(frame_width), .costs(costs));
+endmodule
+`resetall

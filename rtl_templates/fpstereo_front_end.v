@@ -1,0 +1,109 @@
+`resetall
+`default_nettype none
+// Window stage (docs/architecture.md, "Front end"): takes one left and one right pixel per slot
+// in raster order, keeps N - 1 rows of each image in line buffers and forms the N x N windows,
+// with the positions of their centres and which window rows and columns lie inside the image
+// (semantics section 1). Outside the frame (bubble slots, rows below the image) the windows take
+// zeros. transform_x / transform_y / transform_slot are the centre of the windows of the
+// previous shift: the position of what the transform (or the SAD/ZSAD window registers) holds.
+module fpstereo_front_end #(
+  parameter N = 5,
+  parameter ROW_SLOTS = 64,
+  parameter G = 4,
+  // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
+  parameter COST_ROWS = 2,
+  parameter COST_K_W = 1,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  // signed row coordinates (Y_W + 2): a window centre may lie above the image
+  parameter YS_W = 8,
+  parameter G_W = 2
+) (
+  input  wire                   clk,
+  input  wire                   restart,
+  input  wire                   adv,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
+  output wire                   in_due,
+  output wire                   in_take,
+  input  wire [7:0]             in_left,
+  input  wire [7:0]             in_right,
+  // the step's group and the slot's last step; shift = adv in a slot's last step
+  output wire [G_W-1:0]         group,
+  output wire                   slot_end,
+  output wire                   shift,
+  output wire [N*N*8-1:0]       window_left,
+  output wire [N*N*8-1:0]       window_right,
+  output wire [N-1:0]           row_valid,
+  output wire [N-1:0]           col_valid,
+  // window rows inside the image for the newest column (zero when that column is outside)
+  output wire [N-1:0]           newest_row_valid,
+  output reg  [X_W-1:0]         transform_x,
+  output reg  signed [YS_W-1:0] transform_y,
+  output reg  [COST_K_W-1:0]    transform_slot
+);
+  localparam R = N / 2;
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam signed [YS_W-1:0] R_Y = R;
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+
+  wire [X_W-1:0] si;
+  wire [Y_W-1:0] ti;
+  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+                            .K_W(COST_K_W))
+    input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
+                    .slot_end(slot_end));
+  assign in_due  = slot_end && si < frame_width && ti < frame_height;
+  assign in_take = adv && in_due;
+  assign shift = adv && slot_end;
+  wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
+
+  fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .word(in_due ? in_left : 8'd0), .window(window_left));
+  fpstereo_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .word(in_due ? in_right : 8'd0), .window(window_right));
+
+  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
+  wire [X_W-1:0] centre_x;
+  wire signed [YS_W-1:0] centre_y;
+  wire [COST_K_W-1:0] centre_slot;
+  fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
+                           .SLOT_W(COST_K_W)) centre (
+    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
+    .centre_slot(centre_slot));
+  reg  [X_W-1:0] window_x;
+  reg  signed [YS_W-1:0] window_y;
+  reg  [COST_K_W-1:0] window_slot;
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
+  reg  newest_in_row;
+  reg  signed [YS_W-1:0] newest_y;
+  always @(posedge clk)
+    if (shift) begin
+      window_x <= centre_x;
+      window_y <= centre_y;
+      window_slot <= centre_slot;
+      newest_in_row <= {1'b0, si} < width_x;
+      newest_y <= $signed({2'b00, ti}) - R_Y;
+      transform_x <= window_x;
+      transform_y <= window_y;
+      transform_slot <= window_slot;
+    end
+
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+  wire [N-1:0] newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is newest_in_row
+  wire [N-1:0] newest_unused_columns;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
+    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .col_valid(newest_unused_columns));
+  assign newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
+endmodule
+`resetall

@@ -1,0 +1,82 @@
+`resetall
+`default_nettype none
+// LR1 match side (docs/semantics.md, section 5): Dm(x') = argmin_d S(x' + d, d) from the base
+// side's sums. Each chain keeps, for the match pixels x - e (e < DMAX) of its current pixel x,
+// the best (sum, disparity) over d <= e so far; the next pixel shifts them by one and offers its
+// own S(x + 1, e + 1), smaller d winning ties. At e = DMAX - 1 a match pixel is complete
+// (completed_*); at the row's end the rest are (row_end_*, one word of UF per group). The state
+// follows the chains like the path costs do.
+module fpstereo_lr1_match #(
+  parameter K = 2,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter DMAX = 32,
+  parameter ROW_SLOTS = 64,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter OUT_K_W = 2,
+  parameter DISP_AW = 8,
+  parameter END_AW = 4,
+  parameter X_W = 7,
+  parameter G_W = 2,
+  parameter K_W = 1
+) (
+  input  wire                 clk,
+  input  wire                 adv,
+  input  wire [X_W-1:0]       frame_width,
+  // the base side's sums of one group of one pixel, and where they belong
+  input  wire [UF*SUM_W-1:0]  sums,
+  input  wire                 active,
+  input  wire [X_W-1:0]       x,
+  input  wire [G_W-1:0]       group,
+  input  wire [K_W-1:0]       chain,
+  input  wire [OUT_K_W-1:0]   slot,
+  output wire                 completed_we,
+  output wire [DISP_AW-1:0]   completed_waddr,
+  output wire [DISP_W-1:0]    completed_wdata,
+  output wire                 row_end_we,
+  output wire [END_AW-1:0]    row_end_waddr,
+  output wire [UF*DISP_W-1:0] row_end_wdata
+);
+  localparam E_W = SUM_W + DISP_W;
+  localparam STATE_DEPTH = K * G;
+  localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  generate
+    if (DMAX != G * UF) begin : invalid
+      fpstereo_invalid_parameters_DMAX_is_not_G_times_UF failed ();
+    end
+  endgenerate
+  // Addresses and disparities are products of narrow counters and constants, cut to width.
+  // verilator lint_off WIDTH
+  wire [STATE_AW-1:0] entry_addr = chain * G + group;
+  wire [UF*E_W-1:0]   previous, updated;
+  /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
+  wire [UF*E_W-1:0]   previous_unused;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
+    .clk(clk), .we(adv && active), .waddr(entry_addr), .wdata(updated),
+    .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
+  reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
+  always @(posedge clk)
+    if (adv) below_q <= previous[UF*E_W-1 -: E_W];
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [DISP_W-1:0] disparity = group * UF + l;
+      wire [E_W-1:0]    earlier = (l == 0) ? below_q : previous[(l-1)*E_W +: E_W];
+      wire [SUM_W-1:0]  offered = sums[l*SUM_W +: SUM_W];
+      wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
+      assign updated[l*E_W +: E_W] = take ? {offered, disparity} : earlier;
+      assign row_end_wdata[l*DISP_W +: DISP_W] = updated[l*E_W +: DISP_W];
+    end
+  endgenerate
+  assign completed_we = adv && active && group == LAST_GROUP && x >= DMAX - 1;
+  assign completed_waddr = slot * ROW_SLOTS + (x - (DMAX - 1));
+  assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
+  assign row_end_we = adv && active && x == frame_width - 1;
+  assign row_end_waddr = slot * G + group;
+  // verilator lint_on WIDTH
+endmodule
+`resetall

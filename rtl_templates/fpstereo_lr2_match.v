@@ -1,0 +1,111 @@
+`resetall
+`default_nettype none
+// LR2 match side (docs/semantics.md, section 5): a second cost volume and aggregation with the
+// images' roles swapped, and its winner-take-all (no uniqueness). Every cost is symmetric, so the
+// match side's C(x', d) is the base side's C(x' + d, d): lane l of each base cost word goes to its
+// own RAM bank at match pixel x - d, and a word of the match side reads all banks at one address.
+// From match_on on, completed_* writes Dm(x') of each match pixel.
+module fpstereo_lr2_match #(
+  parameter W = 64,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter SLEN = 32,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter DMAX = 32,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter PATH_W = 7,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter PATHS = 15,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter PATH_TREE_LAT = 1,
+  parameter WTA_TREE_LAT = 1,
+  parameter OUT_ROWS = 3,
+  parameter OUT_K_W = 2,
+  parameter DISP_AW = 8,
+  parameter COST_ROWS = 3,
+  parameter COST_K_W = 2,
+  parameter COST_AW = 10,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter G_W = 2,
+  parameter K_W = 1,
+  parameter LANE_W = 3
+) (
+  input  wire                 clk,
+  input  wire                 restart,
+  input  wire                 adv,
+  input  wire                 match_on,
+  input  wire [X_W-1:0]       frame_width,
+  input  wire [Y_W-1:0]       frame_height,
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
+  // the base side's cost words as the cost reorder RAM takes them
+  input  wire                 cost_valid,
+  input  wire [X_W-1:0]       cost_x,
+  input  wire [COST_K_W-1:0]  cost_row_slot,
+  input  wire [G_W-1:0]       cost_group,
+  input  wire [UF*COST_W-1:0] costs,
+  output wire                 completed_we,
+  output wire [DISP_AW-1:0]   completed_waddr,
+  output wire [DISP_W-1:0]    completed_wdata
+);
+  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  generate
+    if (DMAX != G * UF || COST_ROWS != K + 1) begin : invalid
+      fpstereo_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
+    end
+  endgenerate
+  // Addresses and disparities are products of narrow counters and constants, cut to width.
+  // verilator lint_off WIDTH
+  wire [UF*COST_W-1:0] match_costs;
+  wire [COST_AW-1:0]   match_raddr;
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : bank
+      wire [DISP_W-1:0] disparity = cost_group * UF + l;
+      fpstereo_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+        .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
+        .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
+        .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
+        .rdata(match_costs[l*COST_W +: COST_W]));
+    end
+  endgenerate
+  wire [UF*SUM_W-1:0] sums;
+  wire                active;
+  wire [X_W-1:0]      x;
+  wire [G_W-1:0]      group;
+  /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
+  wire [K_W-1:0]      chain;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [OUT_K_W-1:0]  slot;
+  fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+                        .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
+                        .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
+                        .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
+                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
+    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1),
+    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sum4(sums),
+    .active4(active), .x4(x), .group4(group), .chain4(chain), .slot4(slot));
+  wire              active_w;
+  wire [X_W-1:0]    x_w;
+  wire [OUT_K_W-1:0] slot_w;
+  wire [G_W-1:0]    group_w;
+  /* verilator lint_off UNUSEDSIGNAL */  // the match side's disparities are never invalid
+  wire [DISP_W:0]   word_w;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
+                 .TAG_W(1 + X_W + OUT_K_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+    .clk(clk), .restart(restart), .adv(adv), .sums(sums), .group(group), .tag({active, x, slot}),
+    .group_out(group_w), .tag_out({active_w, x_w, slot_w}), .word(word_w));
+  assign completed_we = adv && active_w && group_w == LAST_GROUP;
+  assign completed_waddr = slot_w * ROW_SLOTS + x_w;
+  assign completed_wdata = word_w[DISP_W-1:0];
+  // verilator lint_on WIDTH
+endmodule
+`resetall

@@ -1,0 +1,88 @@
+`resetall
+`default_nettype none
+// Median filter stage (docs/semantics.md, section 6): the stream's word of each slot (the invalid
+// word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
+// the median of the window's valid words (fpstereo_median_select, WORD_W steps), and leaves with
+// its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
+// interpolation), with its word.
+module fpstereo_median #(
+  parameter M = 5,
+  parameter ROW_SLOTS = 64,
+  parameter DISP_W = 5,
+  parameter EXTRA_ROWS = 0,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter YS_W = 8
+) (
+  input  wire             clk,
+  input  wire             restart,
+  input  wire             adv,
+  input  wire [X_W-1:0]   frame_width,
+  input  wire [Y_W-1:0]   frame_height,
+  input  wire             in_done,
+  input  wire [X_W-1:0]   in_x,
+  input  wire [Y_W-1:0]   in_y,
+  input  wire [DISP_W:0]  in_word,
+  output reg              out_event,
+  output reg  [X_W-1:0]   out_x,
+  output reg  [Y_W-1:0]   out_y,
+  output reg  [DISP_W:0]  out_word
+);
+  localparam RM = M / 2;
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
+  wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
+  wire [M*M*(DISP_W+1)-1:0] window;
+  fpstereo_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+    .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
+  wire [X_W-1:0] centre_x;
+  wire signed [YS_W-1:0] centre_y;
+  /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
+  wire centre_slot;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
+    .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .centre_x(centre_x), .centre_y(centre_y),
+    .centre_slot(centre_slot));
+  reg [X_W-1:0] median_x;
+  reg signed [YS_W-1:0] median_y;
+  reg           fresh;     // high in the step after a shift: one result per slot
+  always @(posedge clk)
+    if (restart) fresh <= 1'b0;
+    else if (adv) fresh <= in_done;
+  always @(posedge clk)
+    if (shift) begin
+      median_x <= centre_x;
+      median_y <= centre_y;
+    end
+  wire [M-1:0] row_valid, col_valid;
+  fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .YS_W(YS_W)) bounds (
+    .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+  wire [DISP_W:0] selected;
+  fpstereo_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
+    .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
+  // The centre's coordinates travel as long as the selection takes.
+  wire signed [YS_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
+  /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
+  wire [YS_W-1:0] median_row = median_y;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire           done_m;
+  wire [X_W-1:0] x_m;
+  wire [Y_W-1:0] y_m;
+  fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(DISP_W + 1)) median_delay (
+    .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
+    .out({done_m, x_m, y_m}));
+  always @(posedge clk)
+    if (restart) out_event <= 1'b0;
+    else if (adv) begin
+      out_event <= done_m;
+      out_x <= x_m;
+      out_y <= y_m;
+    end
+  // One more register holds the word of the pixel in out_x / out_y.
+  always @(posedge clk)
+    if (adv) out_word <= selected;
+endmodule
+`resetall

@@ -1,0 +1,51 @@
+`resetall
+`default_nettype none
+// Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
+// match ring, which holds the last DMAX match codes; the lanes give UF costs per step
+// (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
+// costs the lanes compute in this slot.
+module fpstereo_point_cost #(
+  // 1: census codes (Hamming distance); 0: ranks (absolute difference)
+  parameter HAMMING = 1,
+  parameter CODE_W = 24,
+  parameter DMAX = 32,
+  parameter UF = 8,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter COST_K_W = 1,
+  parameter X_W = 7,
+  parameter YS_W = 8,
+  parameter G_W = 2
+) (
+  input  wire                   clk,
+  input  wire                   adv,
+  input  wire                   slot_end,
+  input  wire                   shift,
+  input  wire [G_W-1:0]         group,
+  input  wire [CODE_W-1:0]      code_base,
+  input  wire [CODE_W-1:0]      code_match,
+  input  wire [X_W-1:0]         transform_x,
+  input  wire signed [YS_W-1:0] transform_y,
+  input  wire [COST_K_W-1:0]    transform_slot,
+  output reg  [X_W-1:0]         history_x,
+  output reg  signed [YS_W-1:0] history_y,
+  output reg  [COST_K_W-1:0]    history_slot,
+  output wire [UF*COST_W-1:0]   costs
+);
+  reg [CODE_W-1:0] code_base_h;
+  always @(posedge clk)
+    if (shift) begin
+      code_base_h  <= code_base;
+      history_x    <= transform_x;
+      history_y    <= transform_y;
+      history_slot <= transform_slot;
+    end
+  wire [UF*CODE_W-1:0] match_lanes;
+  fpstereo_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match), .view(match_lanes));
+  fpstereo_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+                        .GROUP_W(G_W), .X_W(X_W)) lanes (
+    .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
+    .x(history_x), .costs(costs));
+endmodule
+`resetall

@@ -1,0 +1,37 @@
+`resetall
+`default_nettype none
+// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
+// a frame; from then on the step counter advances in every cycle where adv is high, and adv is
+// the one enable of every stage, so the whole pipeline stalls together. adv is low while a stage
+// is due to take an input pixel that is not there (in_due) or to push an output word that cannot
+// leave (out_due). The frame ends in the step that pushes its last word (frame_done); restart
+// clears the stages' valid flags then and at reset.
+module fpstereo_sequencer #(
+  parameter STEP_W = 20
+) (
+  input  wire              clk,
+  input  wire              rst,
+  input  wire              start,
+  output wire              idle,
+  input  wire              in_due,
+  input  wire              in_valid,
+  input  wire              out_due,
+  input  wire              out_ready,
+  input  wire              frame_done,
+  output wire              adv,
+  output reg  [STEP_W-1:0] step,
+  output wire              restart
+);
+  reg in_frame;
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
+  always @(posedge clk)
+    if (rst) in_frame <= 1'b0;
+    else if (!in_frame) in_frame <= start;
+    else if (adv && frame_done) in_frame <= 1'b0;
+  assign idle = !in_frame;
+  always @(posedge clk)
+    if (rst) step <= 0;
+    else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
+  assign restart = rst || (adv && frame_done);
+endmodule
+`resetall

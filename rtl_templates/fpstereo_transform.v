@@ -1,0 +1,41 @@
+`resetall
+`default_nettype none
+// Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
+// centres, registered once per slot (docs/semantics.md, section 2).
+module fpstereo_transform #(
+  parameter N = 5,
+  // 1: rank transform; 0: census
+  parameter RANK = 0,
+  // code width: N*N - 1 for census, clog2(N*N) for rank
+  parameter CODE_W = 24
+) (
+  input  wire              clk,
+  input  wire              shift,
+  input  wire [N*N*8-1:0]  window_left,
+  input  wire [N*N*8-1:0]  window_right,
+  input  wire [N-1:0]      row_valid,
+  input  wire [N-1:0]      col_valid,
+  output reg  [CODE_W-1:0] code_base,
+  output reg  [CODE_W-1:0] code_match
+);
+  wire [CODE_W-1:0] code_left, code_right;
+  generate
+    if (RANK) begin : rank
+      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
+                                                     .col_valid(col_valid), .rank(code_left));
+      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
+                                                      .col_valid(col_valid), .rank(code_right));
+    end else begin : census
+      fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
+                                     .code(code_left));
+      fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
+                                      .code(code_right));
+    end
+  endgenerate
+  always @(posedge clk)
+    if (shift) begin
+      code_base  <= code_left;
+      code_match <= code_right;
+    end
+endmodule
+`resetall

@@ -1,0 +1,61 @@
+`resetall
+`default_nettype none
+// Winner-take-all with the uniqueness check (docs/semantics.md, section 4): per step the range
+// summaries of one group's lanes (fpstereo_unique_tree), joined over the groups of the pixel
+// (fpstereo_unique_join); in the pixel's last group's step, word is the winner or the invalid
+// word when S2 * (100 - u) < S1 * 100. The tag travels along, TREE_LAT steps.
+module fpstereo_wta_unique #(
+  parameter UF = 8,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter LANE_W = 3,
+  parameter G_W = 2,
+  parameter TAG_W = 8,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter TREE_LAT = 1
+) (
+  input  wire                clk,
+  input  wire                restart,
+  input  wire                adv,
+  input  wire [UF*SUM_W-1:0] sums,
+  input  wire [G_W-1:0]      group,
+  input  wire [TAG_W-1:0]    tag,
+  // the uniqueness ratio in percent (0: every winner is kept)
+  input  wire [6:0]          uniqueness,
+  output wire [G_W-1:0]      group_out,
+  output wire [TAG_W-1:0]    tag_out,
+  output wire [DISP_W:0]     word
+);
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  localparam S_W = 5 * SUM_W + DISP_W + 2;
+  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
+    .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
+  wire [SUM_W-1:0]  best, all, but_first, but_last, second;
+  wire [LANE_W-1:0] lane;
+  wire              first, last;
+  fpstereo_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+    .clk(clk), .en(adv), .values(sums), .best(best), .index(lane), .first(first), .last(last), .all(all),
+    .but_first(but_first), .but_last(but_last), .second(second));
+  /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
+  wire [DISP_W-1:0] group_disparity = group_out * UF + lane;
+  /* verilator lint_on WIDTH */
+  wire [S_W-1:0] group_summary = {best, all, but_first, but_last, second, group_disparity, first, last};
+  reg  [S_W-1:0] running;  // groups 0 .. group_out - 1
+  wire [S_W-1:0] joined;
+  fpstereo_unique_join #(.W(SUM_W), .IDX_W(DISP_W)) join_groups (.a(running), .b(group_summary), .joined(joined));
+  wire [S_W-1:0] total = group_out == 0 ? group_summary : joined;
+  always @(posedge clk)
+    if (adv) running <= total;
+  wire [SUM_W-1:0]  s1 = total[S_W-1 -: SUM_W];
+  wire [SUM_W-1:0]  s2 = total[S_W-4*SUM_W-1 -: SUM_W];
+  wire [DISP_W-1:0] winner = total[DISP_W+1:2];
+  // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division (u = 0 never
+  // invalidates: S2 >= S1).
+  wire [7:0] keep = 8'd100 - {1'b0, uniqueness};
+  /* verilator lint_off WIDTH */  // products widened to their full width
+  wire [SUM_W+7:0] scaled_second = s2 * keep;
+  wire [SUM_W+7:0] scaled_best = s1 * 8'd100;
+  /* verilator lint_on WIDTH */
+  assign word = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
+endmodule
+`resetall
