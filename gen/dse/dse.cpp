@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "golden_model.hpp"
+#include "hash.hpp"
 #include "image_io.hpp"
 #include "metrics.hpp"
 #include "rtl_emitter.hpp"
@@ -82,15 +83,7 @@ void require_values(const std::string& flag, const std::vector<T>& values) {
   if (values.empty()) throw InputError(fmt::format("--{}: no values", flag));
 }
 
-// ---- hashing and the cache -------------------------------------------------------------------------
-
-uint64_t fnv1a(const std::string& text, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
+// ---- the cache -------------------------------------------------------------------------------------
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -131,7 +124,7 @@ class AccuracyCache {
   }
   fs::path path(const std::string& key, const std::string& dataset_id) const {
     const std::string text = key + '\0' + dataset_id + '\0' + FPSTEREO_VERSION;
-    return dir_ / fmt::format("{:016x}.json", fnv1a(text));
+    return dir_ / fmt::format("{:016x}.json", fnv1a64(text));
   }
   // A record that exists but does not parse is an error, not a miss: the user should know.
   std::optional<Accuracy> load(const fs::path& p) const {
@@ -288,7 +281,7 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
       ds.description += (ds.description.empty() ? "" : ", ") + set.string();
     }
   }
-  ds.id = fmt::format("{:016x}", fnv1a(identity));
+  ds.id = fmt::format("{:016x}", fnv1a64(identity));
   return ds;
 }
 

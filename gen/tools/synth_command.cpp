@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "config_cli.hpp"
+#include "hash.hpp"
 #include "rtl_emitter.hpp"
 
 #ifndef FPSTEREO_SOURCE_DIR
@@ -204,12 +205,6 @@ std::string verilog_text(const std::vector<rtl::EmittedFile>& files) {
   std::string text;
   for (const auto& f : files) text += f.name + '\0' + f.text + '\0';
   return text;
-}
-
-uint64_t fnv1a64(const std::string& text) {
-  uint64_t h = 14695981039346656037ull;
-  for (char ch : text) h = (h ^ uint8_t(ch)) * 1099511628211ull;
-  return h;
 }
 
 // Cache keys become file names: anything but [A-Za-z0-9_] in a user-given name becomes '_' (the
