@@ -18,6 +18,7 @@
 #include <sstream>
 #include <thread>
 
+#include "files.hpp"
 #include "golden_model.hpp"
 #include "hash.hpp"
 #include "image_io.hpp"
@@ -92,14 +93,6 @@ std::string read_file(const fs::path& path) {
   return s.str();
 }
 
-fs::path default_cache_dir() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg) return fs::path(xdg) / "fpstereo" / "dse";
-  const char* home = std::getenv("HOME");
-  if (home && *home) return fs::path(home) / ".cache" / "fpstereo" / "dse";
-  throw InputError("no cache directory: HOME is not set; pass --cache DIR");
-}
-
 nlohmann::json accuracy_json(const Accuracy& a) {
   const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   return {{"d1_all", num(a.d1_all)},
@@ -137,16 +130,10 @@ class AccuracyCache {
       throw InputError(fmt::format("cache '{}': corrupt record (delete it to recompute)", p.string()));
     }
   }
-  // Written to a temporary and renamed: an interrupted sweep never leaves half a record.
+  // Atomic: an interrupted sweep never leaves half a record.
   void store(const fs::path& p, const std::string& key, const Accuracy& a) const {
     const nlohmann::json j = {{"key", key}, {"accuracy", accuracy_json(a)}};
-    const fs::path tmp = p.string() + fmt::format(".{}.tmp", ::getpid());
-    {
-      std::ofstream out(tmp);
-      out << j.dump(1) << "\n";
-      if (!out) throw InputError(fmt::format("cache '{}': cannot write", tmp.string()));
-    }
-    fs::rename(tmp, p);
+    write_file_atomically(p, j.dump(1) + "\n");
   }
 
  private:
@@ -383,7 +370,7 @@ SweepResult sweep(const SweepOptions& o) {
 
   const Dataset ds = load_dataset(o.datasets);
   result.dataset = ds.description;
-  const AccuracyCache cache(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
+  const AccuracyCache cache(o.cache_dir.empty() ? cache_dir("dse") : fs::path(o.cache_dir));
 
   // Cache hits first (cheap, and a corrupt record fails before any work), then the misses on
   // o.jobs threads.

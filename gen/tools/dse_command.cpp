@@ -13,6 +13,7 @@
 
 #include "config_cli.hpp"
 #include "dse.hpp"
+#include "files.hpp"
 #include "image_io.hpp"
 #include "synth_command.hpp"
 
@@ -275,6 +276,8 @@ void guarded(int& exit_code, F&& f) {
     exit_code = report_error(kTool, e.what());
   } catch (const SynthError& e) {
     exit_code = report_error(kTool, e.what());
+  } catch (const FileError& e) {
+    exit_code = report_error(kTool, e.what());
   }
 }
 
@@ -316,8 +319,7 @@ void register_dse_command(CLI::App& app, int& exit_code) {
         ->group(base);
   }
   sub->add_option("--clock-mhz", o->clock_mhz, "clock for the frame rate")->capture_default_str();
-  sub->add_option("--cache", o->cache,
-                  "accuracy cache [$XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse]");
+  sub->add_option("--cache", o->cache, "accuracy cache [" + cache_dir_rule("dse") + "]");
   sub->add_option("--jobs", o->jobs, "golden-model threads")->capture_default_str();
   sub->add_option(
       "--shard", o->shard,
