@@ -183,8 +183,8 @@ TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
     CHECK_THROWS_AS(dse::parse_shard(bad), InputError);
   CHECK(dse::parse_percent("--max-lut", "30%") == 30);
   CHECK_THROWS_AS(dse::parse_percent("--max-lut", "lots"), InputError);
-  CHECK_THROWS_AS(dse::find_part("xc9000"), ConfigError);
-  CHECK(dse::find_part("xczu9eg").lut == 274080);
+  CHECK_THROWS_AS(find_part("xc9000"), ConfigError);
+  CHECK(find_part("xczu9eg").lut == 274080);
 }
 
 TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, resume from the cache",

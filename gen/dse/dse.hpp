@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "config.hpp"
+#include "fpga_parts.hpp"
 #include "pair_eval.hpp"
 #include "resource_model.hpp"
 
@@ -100,7 +101,7 @@ struct SweepOptions {
   int shard_index = 1, shard_count = 1;
   int jobs = 2;
   double clock_mhz = 200;
-  std::string part = "xczu9eg";
+  std::string part = default_part();
   bool progress = true;
 };
 

@@ -22,12 +22,9 @@
 
 #include "config_cli.hpp"
 #include "files.hpp"
+#include "fpga_parts.hpp"
 #include "hash.hpp"
 #include "rtl_emitter.hpp"
-
-#ifndef FPSTEREO_SOURCE_DIR
-#error "FPSTEREO_SOURCE_DIR must name the source tree, where scripts/synth-yosys.sh lives (CMakeLists.txt)"
-#endif
 
 extern char** environ;
 
@@ -187,9 +184,6 @@ void make_directory(const fs::path& dir) {
   fs::create_directories(dir, ec);
   if (ec) throw SynthError(fmt::format("cannot create directory '{}': {}", dir.string(), ec.message()));
 }
-
-// The script lives in the source tree: it is the one place the resource counting is defined.
-fs::path script_path() { return fs::path(FPSTEREO_SOURCE_DIR) / "scripts" / "synth-yosys.sh"; }
 
 // Names and contents of every emitted file: what the cache key hashes.
 std::string verilog_text(const std::vector<rtl::EmittedFile>& files) {
@@ -365,7 +359,7 @@ void print(const Record& record, bool cached, bool kv) {
 void run(const SynthOptions& o) {
   const StereoConfig cfg = o.config.resolve();
   const std::vector<rtl::EmittedFile> files = rtl::emit(rtl::plan(cfg));
-  const fs::path script = script_path();
+  const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
   if (!script_text) throw SynthError(fmt::format("cannot read '{}'", script.string()));
   const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
@@ -450,10 +444,7 @@ void register_synth_command(CLI::App& app, int& exit_code) {
   o->config.add_to(*sub);
   sub->add_option("--family", o->family, "xcup (UltraScale+, the default) or xc7 (7 series)")
       ->type_name("NAME");
-  sub->add_option("--part", o->part,
-                  "part for the percentages: xczu9eg (xcup default), xczu7ev, xczu3eg, xck26, xc7z020 (xc7 "
-                  "default), xc7a100t")
-      ->type_name("NAME");
+  sub->add_option("--part", o->part, "part for the percentages: " + part_list())->type_name("NAME");
   sub->add_option("--cache", o->cache_dir, "cache directory [" + cache_dir_rule("synth") + "]")
       ->type_name("DIR");
   sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");
