@@ -26,28 +26,30 @@ done
 
 # Part totals from the vendor product tables: Zynq UltraScale+ DS891 (xczu*), Kria K26 SOM DS987
 # (xck26, the ZU5EV die), Zynq-7000 DS190 (xc7z020), 7 series DS180 (xc7a100t). LUTRAM = LUTs in
-# SLICEMs (the "LUT as Memory" total Vivado reports). Columns: family LUT FF BRAM36 DSP LUTRAM.
-part_row() {
-  case "$1" in
-    xczu9eg)  echo "xcup 274080 548160 912 2520 144000" ;;  # ZCU102
-    xczu7ev)  echo "xcup 230400 460800 312 1728 101760" ;;  # ZCU104 (plus 96 URAM, not used)
-    xczu3eg)  echo "xcup  70560 141120 216  360  28800" ;;  # Ultra96
-    xck26)    echo "xcup 117120 234240 144 1248  57600" ;;  # KV260 (plus 64 URAM, not used)
-    xc7z020)  echo "xc7   53200 106400 140  220  17400" ;;  # Zedboard, PYNQ-Z1/Z2
-    xc7a100t) echo "xc7   63400 126800 135  240  19000" ;;  # Arty A7-100T, Nexys A7
-    *) return 1 ;;
-  esac
-}
+# SLICEMs (the "LUT as Memory" total Vivado reports). The first part of a family is its default, and
+# the first row the default of all. fpstereo reads this table too (gen/tools/fpga_parts.cpp): it is
+# the one list of parts.
+part_table="
+# part    family LUT    FF     BRAM36 DSP LUTRAM  board
+xczu9eg   xcup  274080 548160  912  2520 144000   ZCU102
+xczu7ev   xcup  230400 460800  312  1728 101760   ZCU104 (plus 96 URAM, not used)
+xczu3eg   xcup   70560 141120  216   360  28800   Ultra96
+xck26     xcup  117120 234240  144  1248  57600   KV260 (plus 64 URAM, not used)
+xc7z020   xc7    53200 106400  140   220  17400   Zedboard, PYNQ-Z1/Z2
+xc7a100t  xc7    63400 126800  135   240  19000   Arty A7-100T, Nexys A7
+"
+# The rows, without the header and blank lines; the distinct values of column $1 in table order.
+part_rows() { awk 'NF && $1 !~ /^#/' <<<"$part_table"; }
+column_values() { part_rows | awk -v c="$1" '!seen[$c]++ { printf "%s%s", sep, $c; sep = " " }'; }
 
-case "$family" in
-  ""|xcup|xc7) ;;
-  *) die "unknown family '$family' (xcup or xc7)" ;;
-esac
+families=$(column_values 2)
+[ -z "$family" ] || [[ " $families " == *" $family "* ]] || die "unknown family '$family' ($families)"
 # Without --part the part follows the family, so the percentages never mix families.
 if [ -z "$part" ]; then
-  if [ "$family" = xc7 ]; then part=xc7z020; else part=xczu9eg; fi
+  part=$(part_rows | awk -v f="$family" 'f == "" || $2 == f { print $1; exit }')
 fi
-row=$(part_row "$part") || die "unknown part '$part' (xczu9eg xczu7ev xczu3eg xck26 xc7z020 xc7a100t)"
+row=$(part_rows | awk -v p="$part" '$1 == p { print $2, $3, $4, $5, $6, $7 }')
+[ -n "$row" ] || die "unknown part '$part' ($(column_values 1))"
 read -r part_family p_lut p_ff p_bram36 p_dsp p_lutram <<<"$row"
 [ -z "$family" ] || [ "$family" = "$part_family" ] || die "part $part is $part_family, not $family"
 family=$part_family

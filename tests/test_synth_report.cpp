@@ -1,8 +1,10 @@
 // `fpstereo synth` without Yosys: parsing the script's key=value report, the table printed from it,
-// and the cache key (tests/synth_smoke.cmake runs the command end to end).
+// the cache key and the script's part table (tests/synth_smoke.cmake runs the command end to end).
 #include <catch2/catch.hpp>
+#include <cstdio>
 #include <string>
 
+#include "fpga_parts.hpp"
 #include "synth_command.hpp"
 
 namespace fpstereo {
@@ -215,4 +217,40 @@ TEST_CASE("cache_key changes with everything that decides the result", "[synth]"
 }
 
 }  // namespace
+TEST_CASE("the parts, their defaults and the --part help come from the script's table", "[synth]") {
+  const std::vector<Part>& table = parts();
+  REQUIRE(table.size() == 6);
+  CHECK(table.front().name == "xczu9eg");
+  CHECK(table.back().name == "xc7a100t");
+  CHECK(find_part("xck26").family == "xcup");
+  CHECK(find_part("xc7z020").lutram == 17400);
+  CHECK(default_part() == "xczu9eg");
+  CHECK(default_part("xc7") == "xc7z020");
+  CHECK_THROWS_AS(default_part("xc9"), ConfigError);
+  CHECK(part_list() == "xczu9eg (xcup default), xczu7ev, xczu3eg, xck26, xc7z020 (xc7 default), xc7a100t");
+  CLI::App app;
+  int exit_code = 0;
+  register_synth_command(app, exit_code);
+  CHECK(app.get_subcommand("synth")->help().find(part_list()) != std::string::npos);
+}
+
+// The script's own errors, which come before it looks for Yosys, name the same table.
+TEST_CASE("synth-yosys.sh names the parts and families of the table", "[synth]") {
+  const auto script_error = [](const std::string& args) {
+    const std::string command = "bash '" + synth_script_path().string() + "' " + args + " x.v 2>&1";
+    FILE* out = ::popen(command.c_str(), "r");
+    REQUIRE(out);
+    std::string text;
+    char buf[256];
+    for (size_t got; (got = fread(buf, 1, sizeof buf, out)) > 0;) text.append(buf, got);
+    CHECK(::pclose(out) != 0);
+    return text;
+  };
+  std::string names;
+  for (const Part& p : parts()) names += (names.empty() ? "" : " ") + p.name;
+  CHECK(script_error("--part xc9zz") == "synth-yosys: unknown part 'xc9zz' (" + names + ")\n");
+  CHECK(script_error("--family xc9") == "synth-yosys: unknown family 'xc9' (xcup xc7)\n");
+  CHECK(script_error("--family xc7 --part xczu9eg") == "synth-yosys: part xczu9eg is xcup, not xc7\n");
+}
+
 }  // namespace fpstereo

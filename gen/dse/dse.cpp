@@ -18,7 +18,9 @@
 #include <sstream>
 #include <thread>
 
+#include "files.hpp"
 #include "golden_model.hpp"
+#include "hash.hpp"
 #include "image_io.hpp"
 #include "metrics.hpp"
 #include "rtl_emitter.hpp"
@@ -82,29 +84,13 @@ void require_values(const std::string& flag, const std::vector<T>& values) {
   if (values.empty()) throw InputError(fmt::format("--{}: no values", flag));
 }
 
-// ---- hashing and the cache -------------------------------------------------------------------------
-
-uint64_t fnv1a(const std::string& text, uint64_t h = 1469598103934665603ull) {
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
+// ---- the cache -------------------------------------------------------------------------------------
 
 std::string read_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-fs::path default_cache_dir() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg) return fs::path(xdg) / "fpstereo" / "dse";
-  const char* home = std::getenv("HOME");
-  if (home && *home) return fs::path(home) / ".cache" / "fpstereo" / "dse";
-  throw InputError("no cache directory: HOME is not set; pass --cache DIR");
 }
 
 nlohmann::json accuracy_json(const Accuracy& a) {
@@ -131,7 +117,7 @@ class AccuracyCache {
   }
   fs::path path(const std::string& key, const std::string& dataset_id) const {
     const std::string text = key + '\0' + dataset_id + '\0' + FPSTEREO_VERSION;
-    return dir_ / fmt::format("{:016x}.json", fnv1a(text));
+    return dir_ / fmt::format("{:016x}.json", fnv1a64(text));
   }
   // A record that exists but does not parse is an error, not a miss: the user should know.
   std::optional<Accuracy> load(const fs::path& p) const {
@@ -144,16 +130,10 @@ class AccuracyCache {
       throw InputError(fmt::format("cache '{}': corrupt record (delete it to recompute)", p.string()));
     }
   }
-  // Written to a temporary and renamed: an interrupted sweep never leaves half a record.
+  // Atomic: an interrupted sweep never leaves half a record.
   void store(const fs::path& p, const std::string& key, const Accuracy& a) const {
     const nlohmann::json j = {{"key", key}, {"accuracy", accuracy_json(a)}};
-    const fs::path tmp = p.string() + fmt::format(".{}.tmp", ::getpid());
-    {
-      std::ofstream out(tmp);
-      out << j.dump(1) << "\n";
-      if (!out) throw InputError(fmt::format("cache '{}': cannot write", tmp.string()));
-    }
-    fs::rename(tmp, p);
+    write_file_atomically(p, j.dump(1) + "\n");
   }
 
  private:
@@ -288,7 +268,7 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
       ds.description += (ds.description.empty() ? "" : ", ") + set.string();
     }
   }
-  ds.id = fmt::format("{:016x}", fnv1a(identity));
+  ds.id = fmt::format("{:016x}", fnv1a64(identity));
   return ds;
 }
 
@@ -390,7 +370,7 @@ SweepResult sweep(const SweepOptions& o) {
 
   const Dataset ds = load_dataset(o.datasets);
   result.dataset = ds.description;
-  const AccuracyCache cache(o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir));
+  const AccuracyCache cache(o.cache_dir.empty() ? cache_dir("dse") : fs::path(o.cache_dir));
 
   // Cache hits first (cheap, and a corrupt record fails before any work), then the misses on
   // o.jobs threads.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "config.hpp"
+#include "fpga_parts.hpp"
 #include "pair_eval.hpp"
 #include "resource_model.hpp"
 
@@ -96,11 +97,11 @@ struct SweepOptions {
   Space space;
   StereoConfig base;
   std::vector<std::string> datasets;
-  std::string cache_dir;  // empty: $XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse
+  std::string cache_dir;  // empty: cache_dir("dse")
   int shard_index = 1, shard_count = 1;
   int jobs = 2;
   double clock_mhz = 200;
-  std::string part = "xczu9eg";
+  std::string part = default_part();
   bool progress = true;
 };
 
@@ -112,7 +113,8 @@ struct SweepResult {
   std::string dataset;
 };
 
-// Throws InputError (bad dataset, unreadable or corrupt cache) or ConfigError.
+// Throws InputError (bad dataset, unreadable or corrupt cache), FileError (no cache directory) or
+// ConfigError.
 SweepResult sweep(const SweepOptions& options);
 
 // "i/N" with 1 <= i <= N. Throws InputError.

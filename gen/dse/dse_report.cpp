@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -15,16 +16,6 @@ namespace fpstereo::dse {
 namespace {
 
 // ---- CSV ------------------------------------------------------------------------------------------
-
-const std::vector<std::string>& csv_columns() {
-  static const std::vector<std::string> columns = {
-      "cost",         "window",           "dmax",      "uf",       "width",   "height",   "refine",
-      "median",       "d1_all",           "d1_noc",    "d1_valid", "density", "pairs",    "lut",
-      "ff",           "bram36",           "dsp",       "lut_pct",  "ff_pct",  "bram_pct", "dsp_pct",
-      "resource_pct", "cycles_per_frame", "clock_mhz", "fps",      "part",    "pareto",   "yosys_lut",
-      "yosys_ff",     "yosys_bram36",     "yosys_dsp", "flags",    "command"};
-  return columns;
-}
 
 std::string number(double v, int digits = 4) {
   return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : std::string();
@@ -74,6 +65,70 @@ StereoConfig parse_flags(const std::string& flags) {
   }
   validate(cfg);
   return cfg;
+}
+
+// One column of the CSV: its header, its cell, and how reading it back fills a row. The columns
+// the configuration determines are read back through "flags" alone, so they have no reader.
+struct CsvColumn {
+  const char* name;
+  std::function<std::string(const Row&)> write;
+  std::function<void(Row&, const std::string&)> read;
+};
+
+// A column of a number in the row with `digits` decimals, empty for NaN; `field` points to it in a
+// const or a mutable row.
+template <class Field>
+CsvColumn decimal(const char* name, int digits, Field field) {
+  return {name, [=](const Row& r) { return number(*field(r), digits); },
+          [=](Row& r, const std::string& s) { *field(r) = cell_number(s); }};
+}
+
+const std::vector<CsvColumn>& csv_columns() {
+  static const std::vector<CsvColumn> columns = {
+      {"cost", [](const Row& r) { return to_string(r.cfg.cost); }, nullptr},
+      {"window", [](const Row& r) { return std::to_string(r.cfg.window); }, nullptr},
+      {"dmax", [](const Row& r) { return std::to_string(r.cfg.dmax); }, nullptr},
+      {"uf", [](const Row& r) { return std::to_string(r.cfg.uf); }, nullptr},
+      {"width", [](const Row& r) { return std::to_string(r.cfg.width); }, nullptr},
+      {"height", [](const Row& r) { return std::to_string(r.cfg.height); }, nullptr},
+      {"refine", [](const Row& r) { return to_string(r.cfg.lr); }, nullptr},
+      {"median", [](const Row& r) { return std::to_string(r.cfg.median); }, nullptr},
+      decimal("d1_all", 4, [](auto& r) { return &r.acc.d1_all; }),
+      decimal("d1_noc", 4, [](auto& r) { return &r.acc.d1_noc; }),
+      decimal("d1_valid", 4, [](auto& r) { return &r.acc.d1_valid; }),
+      decimal("density", 4, [](auto& r) { return &r.acc.density; }),
+      {"pairs", [](const Row& r) { return std::to_string(r.acc.pairs); },
+       [](Row& r, const std::string& s) { r.acc.pairs = std::stoi(s); }},
+      decimal("lut", 0, [](auto& r) { return &r.model.lut; }),
+      decimal("ff", 0, [](auto& r) { return &r.model.ff; }),
+      // BRAM36 equivalents: the RAMB18/RAMB36 split is not in the CSV, halves go to bram18.
+      {"bram36", [](const Row& r) { return number(r.model.bram36_equiv(), 1); },
+       [](Row& r, const std::string& s) {
+         const double bram = cell_number(s);
+         r.model.bram36 = int(std::floor(bram));
+         r.model.bram18 = int(std::lround((bram - std::floor(bram)) * 2));
+       }},
+      decimal("dsp", 0, [](auto& r) { return &r.model.dsp; }),
+      decimal("lut_pct", 3, [](auto& r) { return &r.lut_pct; }),
+      decimal("ff_pct", 3, [](auto& r) { return &r.ff_pct; }),
+      decimal("bram_pct", 3, [](auto& r) { return &r.bram_pct; }),
+      decimal("dsp_pct", 3, [](auto& r) { return &r.dsp_pct; }),
+      decimal("resource_pct", 3, [](auto& r) { return &r.resource_pct; }),
+      {"cycles_per_frame", [](const Row& r) { return std::to_string(r.cycles_per_frame); },
+       [](Row& r, const std::string& s) { r.cycles_per_frame = std::stoll(s); }},
+      decimal("clock_mhz", 3, [](auto& r) { return &r.clock_mhz; }),
+      decimal("fps", 3, [](auto& r) { return &r.fps; }),
+      {"part", [](const Row& r) { return r.part; }, [](Row& r, const std::string& s) { r.part = s; }},
+      {"pareto", [](const Row& r) { return std::string(r.pareto ? "1" : "0"); },
+       [](Row& r, const std::string& s) { r.pareto = s == "1"; }},
+      decimal("yosys_lut", 0, [](auto& r) { return &r.yosys_lut; }),
+      decimal("yosys_ff", 0, [](auto& r) { return &r.yosys_ff; }),
+      decimal("yosys_bram36", 1, [](auto& r) { return &r.yosys_bram36; }),
+      decimal("yosys_dsp", 0, [](auto& r) { return &r.yosys_dsp; }),
+      {"flags", [](const Row& r) { return config_flags(r.cfg); },
+       [](Row& r, const std::string& s) { r.cfg = parse_flags(s); }},
+      {"command", [](const Row& r) { return rtl_command(r.cfg); }, nullptr}};
+  return columns;
 }
 
 // ---- SVG ------------------------------------------------------------------------------------------
@@ -262,45 +317,11 @@ double fps_of(const Row& r) { return r.fps; }
 
 std::string to_csv(const std::vector<Row>& rows) {
   std::string out;
-  for (const auto& c : csv_columns()) out += (out.empty() ? "" : ",") + c;
+  for (const auto& c : csv_columns()) out += (out.empty() ? "" : ",") + std::string(c.name);
   out += "\n";
   for (const auto& r : rows) {
-    const StereoConfig& c = r.cfg;
-    const std::vector<std::string> cells = {to_string(c.cost),
-                                            std::to_string(c.window),
-                                            std::to_string(c.dmax),
-                                            std::to_string(c.uf),
-                                            std::to_string(c.width),
-                                            std::to_string(c.height),
-                                            to_string(c.lr),
-                                            std::to_string(c.median),
-                                            number(r.acc.d1_all),
-                                            number(r.acc.d1_noc),
-                                            number(r.acc.d1_valid),
-                                            number(r.acc.density),
-                                            std::to_string(r.acc.pairs),
-                                            number(r.model.lut, 0),
-                                            number(r.model.ff, 0),
-                                            number(r.model.bram36_equiv(), 1),
-                                            number(r.model.dsp, 0),
-                                            number(r.lut_pct, 3),
-                                            number(r.ff_pct, 3),
-                                            number(r.bram_pct, 3),
-                                            number(r.dsp_pct, 3),
-                                            number(r.resource_pct, 3),
-                                            std::to_string(r.cycles_per_frame),
-                                            number(r.clock_mhz, 3),
-                                            number(r.fps, 3),
-                                            r.part,
-                                            r.pareto ? "1" : "0",
-                                            number(r.yosys_lut, 0),
-                                            number(r.yosys_ff, 0),
-                                            number(r.yosys_bram36, 1),
-                                            number(r.yosys_dsp, 0),
-                                            config_flags(c),
-                                            rtl_command(c)};
     std::string line;
-    for (const auto& cell : cells) line += (line.empty() ? "" : ",") + quoted(cell);
+    for (const auto& c : csv_columns()) line += (line.empty() ? "" : ",") + quoted(c.write(r));
     out += line + "\n";
   }
   return out;
@@ -315,7 +336,8 @@ std::vector<Row> read_csv(const std::string& path) {
   std::map<std::string, size_t> col;
   for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
   for (const auto& c : csv_columns())
-    if (!col.count(c)) throw InputError(fmt::format("'{}': not a dse CSV (no column '{}')", path, c));
+    if (!col.count(c.name))
+      throw InputError(fmt::format("'{}': not a dse CSV (no column '{}')", path, c.name));
   std::vector<Row> rows;
   int line_no = 1;
   while (std::getline(in, line)) {
@@ -324,32 +346,9 @@ std::vector<Row> read_csv(const std::string& path) {
     const std::vector<std::string> f = split_csv_line(line);
     try {
       if (f.size() != header.size()) throw std::invalid_argument("wrong number of cells");
-      const auto get = [&](const char* name) { return f[col.at(name)]; };
       Row r;
-      r.cfg = parse_flags(get("flags"));
-      r.acc = {cell_number(get("d1_all")), cell_number(get("d1_noc")), cell_number(get("d1_valid")),
-               cell_number(get("density")), std::stoi(get("pairs"))};
-      r.model.lut = cell_number(get("lut"));
-      r.model.ff = cell_number(get("ff"));
-      // BRAM36 equivalents: the RAMB18/RAMB36 split is not in the CSV, halves go to bram18.
-      const double bram = cell_number(get("bram36"));
-      r.model.bram36 = int(std::floor(bram));
-      r.model.bram18 = int(std::lround((bram - std::floor(bram)) * 2));
-      r.model.dsp = cell_number(get("dsp"));
-      r.lut_pct = cell_number(get("lut_pct"));
-      r.ff_pct = cell_number(get("ff_pct"));
-      r.bram_pct = cell_number(get("bram_pct"));
-      r.dsp_pct = cell_number(get("dsp_pct"));
-      r.resource_pct = cell_number(get("resource_pct"));
-      r.cycles_per_frame = std::stoll(get("cycles_per_frame"));
-      r.clock_mhz = cell_number(get("clock_mhz"));
-      r.fps = cell_number(get("fps"));
-      r.part = get("part");
-      r.pareto = get("pareto") == "1";
-      r.yosys_lut = cell_number(get("yosys_lut"));
-      r.yosys_ff = cell_number(get("yosys_ff"));
-      r.yosys_bram36 = cell_number(get("yosys_bram36"));
-      r.yosys_dsp = cell_number(get("yosys_dsp"));
+      for (const auto& c : csv_columns())
+        if (c.read) c.read(r, f[col.at(c.name)]);
       rows.push_back(std::move(r));
     } catch (const std::exception& e) {
       throw InputError(fmt::format("'{}' line {}: malformed row ({})", path, line_no, e.what()));

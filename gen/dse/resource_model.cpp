@@ -4,10 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <regex>
-#include <sstream>
 
 #include "widths.hpp"
 
@@ -86,17 +83,6 @@ double best_distributed(int64_t words, int64_t bits) {
     best = std::min(best, cost);
   }
   return best;
-}
-
-// ---- the part table --------------------------------------------------------------------------------
-
-std::string read_script() {
-  const std::string path = std::string(FPSTEREO_SOURCE_DIR) + "/scripts/synth-yosys.sh";
-  std::ifstream in(path);
-  if (!in) throw ConfigError("cannot read the part table in " + path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace
@@ -233,35 +219,6 @@ ResourceEstimate estimate(const StereoConfig& cfg) { return estimate(rtl::plan(c
 
 double frames_per_second(const rtl::RtlDesign& d, double clock_mhz) {
   return clock_mhz * 1e6 / double(d.cycles_per_frame);
-}
-
-// ---- parts ------------------------------------------------------------------------------------------
-
-std::vector<Part> parts() {
-  static const std::vector<Part> table = [] {
-    // Lines like:    xczu9eg)  echo "xcup 274080 548160 912 2520 144000" ;;  # ZCU102
-    const std::regex row(R"re(^\s*([a-z0-9]+)\)\s+echo\s+"(\w+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)")re");
-    std::vector<Part> out;
-    std::istringstream in(read_script());
-    std::string line;
-    std::smatch m;
-    while (std::getline(in, line))
-      if (std::regex_search(line, m, row))
-        out.push_back({m[1], m[2], std::stoll(m[3]), std::stoll(m[4]), std::stoll(m[5]), std::stoll(m[6]),
-                       std::stoll(m[7])});
-    if (out.empty()) throw ConfigError("no part table in scripts/synth-yosys.sh");
-    return out;
-  }();
-  return table;
-}
-
-Part find_part(const std::string& name) {
-  std::string known;
-  for (const Part& p : parts()) {
-    if (p.name == name) return p;
-    known += (known.empty() ? "" : ", ") + p.name;
-  }
-  throw ConfigError(fmt::format("--part '{}': unknown part (known: {})", name, known));
 }
 
 // ---- fitting ------------------------------------------------------------------------------------------

@@ -55,15 +55,6 @@ ResourceEstimate estimate(const StereoConfig& cfg);
 // Frames per second at a clock, from rtl::plan's exact cycles per frame.
 double frames_per_second(const rtl::RtlDesign& design, double clock_mhz);
 
-// A part of scripts/synth-yosys.sh's table (the one place the part sizes live).
-struct Part {
-  std::string name, family;
-  int64_t lut = 0, ff = 0, bram36 = 0, dsp = 0, lutram = 0;
-};
-// Throws ConfigError naming the known parts when `name` is not in the table.
-Part find_part(const std::string& name);
-std::vector<Part> parts();
-
 // Weighted non-negative least squares: the x >= 0 minimising sum_i w_i (a_i . x - b_i)^2
 // (Lawson-Hanson). Non-negative because every term adds hardware.
 std::vector<double> fit_nonnegative(const std::vector<std::vector<double>>& a, const std::vector<double>& b,

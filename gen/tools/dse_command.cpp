@@ -13,6 +13,7 @@
 
 #include "config_cli.hpp"
 #include "dse.hpp"
+#include "files.hpp"
 #include "image_io.hpp"
 #include "synth_command.hpp"
 
@@ -29,7 +30,7 @@ bool is_axis_param(const std::string& name) {
 }
 
 struct OutputOptions {
-  std::string csv = "dse.csv", html = "dse.html", part = "xczu9eg";
+  std::string csv = "dse.csv", html = "dse.html", part = default_part();
   std::string max_lut, max_ff, max_bram, max_dsp;
   double min_fps = -1;
   int top = 5;
@@ -188,7 +189,7 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   if (!(o.clock_mhz > 0))
     throw InputError(fmt::format("--clock-mhz {}: expected a positive clock", o.clock_mhz));
   s.clock_mhz = o.clock_mhz;
-  s.part = dse::find_part(o.out.part).name;
+  s.part = find_part(o.out.part).name;
   s.progress = o.progress || ::isatty(STDERR_FILENO);
   constraints(o.out);  // bad constraints fail before the sweep
   if (s.datasets.empty())
@@ -248,8 +249,7 @@ void run_merge(const MergeOptions& o, const std::string& command) {
 void add_output_options(CLI::App& sub, OutputOptions& o) {
   sub.add_option("-o,--csv", o.csv, "CSV output, one row per configuration")->capture_default_str();
   sub.add_option("--html", o.html, "HTML report with SVG plots ('' for none)")->capture_default_str();
-  sub.add_option("--part", o.part, "FPGA part for the percentages (fpstereo synth's table)")
-      ->capture_default_str();
+  sub.add_option("--part", o.part, "FPGA part for the percentages: " + part_list())->capture_default_str();
   const std::string g = "Constraints for the recommendation";
   sub.add_option("--max-lut", o.max_lut, "at most this share of the part's LUTs, e.g. 30%")->group(g);
   sub.add_option("--max-ff", o.max_ff, "at most this share of the part's FFs")->group(g);
@@ -274,6 +274,8 @@ void guarded(int& exit_code, F&& f) {
   } catch (const ConfigError& e) {
     exit_code = report_error(kTool, e.what());
   } catch (const SynthError& e) {
+    exit_code = report_error(kTool, e.what());
+  } catch (const FileError& e) {
     exit_code = report_error(kTool, e.what());
   }
 }
@@ -316,8 +318,7 @@ void register_dse_command(CLI::App& app, int& exit_code) {
         ->group(base);
   }
   sub->add_option("--clock-mhz", o->clock_mhz, "clock for the frame rate")->capture_default_str();
-  sub->add_option("--cache", o->cache,
-                  "accuracy cache [$XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse]");
+  sub->add_option("--cache", o->cache, "accuracy cache [" + cache_dir_rule("dse") + "]");
   sub->add_option("--jobs", o->jobs, "golden-model threads")->capture_default_str();
   sub->add_option(
       "--shard", o->shard,

@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <fmt/core.h>
 #include <spawn.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,11 +21,10 @@
 #include <sstream>
 
 #include "config_cli.hpp"
+#include "files.hpp"
+#include "fpga_parts.hpp"
+#include "hash.hpp"
 #include "rtl_emitter.hpp"
-
-#ifndef FPSTEREO_SOURCE_DIR
-#error "FPSTEREO_SOURCE_DIR must name the source tree, where scripts/synth-yosys.sh lives (CMakeLists.txt)"
-#endif
 
 extern char** environ;
 
@@ -187,29 +185,11 @@ void make_directory(const fs::path& dir) {
   if (ec) throw SynthError(fmt::format("cannot create directory '{}': {}", dir.string(), ec.message()));
 }
 
-// The script lives in the source tree: it is the one place the resource counting is defined.
-fs::path script_path() { return fs::path(FPSTEREO_SOURCE_DIR) / "scripts" / "synth-yosys.sh"; }
-
-// Follows the XDG base directory rules, which ignore a relative XDG_CACHE_HOME.
-fs::path default_cache_dir() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  if (xdg && *xdg == '/') return fs::path(xdg) / "fpstereo" / "synth";
-  const char* home = std::getenv("HOME");
-  if (home && *home) return fs::path(home) / ".cache" / "fpstereo" / "synth";
-  throw SynthError("no cache directory: HOME is not set; pass --cache DIR");
-}
-
 // Names and contents of every emitted file: what the cache key hashes.
 std::string verilog_text(const std::vector<rtl::EmittedFile>& files) {
   std::string text;
   for (const auto& f : files) text += f.name + '\0' + f.text + '\0';
   return text;
-}
-
-uint64_t fnv1a64(const std::string& text) {
-  uint64_t h = 14695981039346656037ull;
-  for (char ch : text) h = (h ^ uint8_t(ch)) * 1099511628211ull;
-  return h;
 }
 
 // Cache keys become file names: anything but [A-Za-z0-9_] in a user-given name becomes '_' (the
@@ -321,24 +301,13 @@ std::optional<Record> load_record(const fs::path& path) {
   }
 }
 
-void warn_not_stored(const fs::path& path, int error) {
-  std::cerr << fmt::format("{}: warning: cannot store the result in '{}': {}\n", kTool, path.string(),
-                           std::strerror(error));
-}
-
-// Written to a unique temporary file and renamed into place: readers see the old record or the new
-// one, never half of one, however many runs race. A failure costs only the cache, so it warns.
+// Atomic, as concurrent runs may store the same record. A failure costs only the cache, so it warns.
 void store_record(const fs::path& path, const std::string& text) {
-  std::string temp = path.string() + ".tmp.XXXXXX";
-  const int fd = mkstemp(temp.data());
-  if (fd < 0) return warn_not_stored(path, errno);
-  ::fchmod(fd, 0644);  // mkstemp's 0600 would hide a shared cache from other users
-  const bool written = ::write(fd, text.data(), text.size()) == ssize_t(text.size());
-  const int write_errno = errno;
-  if (::close(fd) == 0 && written && std::rename(temp.c_str(), path.c_str()) == 0) return;
-  const int error = written ? errno : write_errno;
-  ::unlink(temp.c_str());
-  warn_not_stored(path, error);
+  try {
+    write_file_atomically(path, text);
+  } catch (const FileError& e) {
+    std::cerr << fmt::format("{}: warning: cannot store the result: {}\n", kTool, e.what());
+  }
 }
 
 // ---- the command -----------------------------------------------------------------------------
@@ -390,19 +359,19 @@ void print(const Record& record, bool cached, bool kv) {
 void run(const SynthOptions& o) {
   const StereoConfig cfg = o.config.resolve();
   const std::vector<rtl::EmittedFile> files = rtl::emit(rtl::plan(cfg));
-  const fs::path script = script_path();
+  const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
   if (!script_text) throw SynthError(fmt::format("cannot read '{}'", script.string()));
   const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
-  const fs::path cache_dir = o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir);
-  const fs::path record_path = cache_dir / (key + ".kv");
+  const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
+  const fs::path record_path = cache / (key + ".kv");
 
   // A log exists only if Yosys runs, so asking for one bypasses the cache too.
   std::optional<Record> record;
   if (!o.no_cache && o.log.empty()) record = load_record(record_path);
   const bool cached = record.has_value();
   if (!cached) {
-    record = synthesise(o, cfg, files, script, cache_dir, key);
+    record = synthesise(o, cfg, files, script, cache, key);
     store_record(record_path, record->text);
   }
   print(*record, cached, o.kv);
@@ -475,12 +444,8 @@ void register_synth_command(CLI::App& app, int& exit_code) {
   o->config.add_to(*sub);
   sub->add_option("--family", o->family, "xcup (UltraScale+, the default) or xc7 (7 series)")
       ->type_name("NAME");
-  sub->add_option("--part", o->part,
-                  "part for the percentages: xczu9eg (xcup default), xczu7ev, xczu3eg, xck26, xc7z020 (xc7 "
-                  "default), xc7a100t")
-      ->type_name("NAME");
-  sub->add_option("--cache", o->cache_dir,
-                  "cache directory [$XDG_CACHE_HOME/fpstereo/synth or ~/.cache/fpstereo/synth]")
+  sub->add_option("--part", o->part, "part for the percentages: " + part_list())->type_name("NAME");
+  sub->add_option("--cache", o->cache_dir, "cache directory [" + cache_dir_rule("synth") + "]")
       ->type_name("DIR");
   sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");
   sub->add_flag("--kv", o->kv,
@@ -498,6 +463,8 @@ void register_synth_command(CLI::App& app, int& exit_code) {
     } catch (const ConfigError& e) {
       exit_code = report_error(kTool, std::string("invalid config: ") + e.what());
     } catch (const SynthError& e) {
+      exit_code = report_error(kTool, e.what());
+    } catch (const FileError& e) {
       exit_code = report_error(kTool, e.what());
     }
   });

@@ -1,0 +1,103 @@
+// The helpers every tool shares: the hash of cache keys, the cache directory, the atomic write.
+#include <sys/stat.h>
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "files.hpp"
+#include "hash.hpp"
+
+using namespace fpstereo;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Sets (or, with nullopt, unsets) an environment variable for one scope.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value)
+      ::setenv(name, value->c_str(), 1);
+    else
+      ::unsetenv(name);
+  }
+  ~ScopedEnv() {
+    if (old_)
+      ::setenv(name_, old_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("fnv1a64 is the standard 64-bit FNV-1a", "[tools]") {
+  // The reference vectors of the FNV specification.
+  CHECK(fnv1a64("") == 0xcbf29ce484222325ull);
+  CHECK(fnv1a64("a") == 0xaf63dc4c8601ec8cull);
+  CHECK(fnv1a64("foobar") == 0x85944171f73967e8ull);
+  CHECK(fnv1a64(std::string("a\0b", 3)) != fnv1a64("ab"));
+}
+
+TEST_CASE("cache_dir follows the XDG base directory rules", "[tools]") {
+  const ScopedEnv home("HOME", "/home/someone");
+  SECTION("an absolute XDG_CACHE_HOME") {
+    const ScopedEnv xdg("XDG_CACHE_HOME", "/var/cache/me");
+    CHECK(cache_dir("dse") == fs::path("/var/cache/me/fpstereo/dse"));
+    CHECK(cache_dir_rule("dse") == "$XDG_CACHE_HOME/fpstereo/dse or ~/.cache/fpstereo/dse");
+  }
+  SECTION("a relative XDG_CACHE_HOME is ignored") {
+    const ScopedEnv xdg("XDG_CACHE_HOME", "relative/cache");
+    CHECK(cache_dir("dse") == fs::path("/home/someone/.cache/fpstereo/dse"));
+  }
+  SECTION("an empty or missing XDG_CACHE_HOME") {
+    const ScopedEnv xdg("XDG_CACHE_HOME", "");
+    CHECK(cache_dir("synth") == fs::path("/home/someone/.cache/fpstereo/synth"));
+    const ScopedEnv no_xdg("XDG_CACHE_HOME", std::nullopt);
+    CHECK(cache_dir("synth") == fs::path("/home/someone/.cache/fpstereo/synth"));
+  }
+  SECTION("neither is set") {
+    const ScopedEnv xdg("XDG_CACHE_HOME", std::nullopt);
+    const ScopedEnv no_home("HOME", std::nullopt);
+    CHECK_THROWS_WITH(cache_dir("dse"), "no cache directory: HOME is not set; pass --cache DIR");
+  }
+}
+
+TEST_CASE("write_file_atomically replaces the file whole and leaves nothing else", "[tools]") {
+  const fs::path dir = fresh_dir("fpstereo_test_atomic");
+  const fs::path path = dir / "record.txt";
+  write_file_atomically(path, "first\n");
+  write_file_atomically(path, std::string("second\0with a NUL\n", 18));
+  CHECK(contents(path) == std::string("second\0with a NUL\n", 18));
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
+  struct stat st {};
+  REQUIRE(::stat(path.c_str(), &st) == 0);
+  CHECK((st.st_mode & 0777) == 0644);
+
+  CHECK_THROWS_WITH(write_file_atomically(dir / "missing" / "x.txt", "x"),
+                    "cannot write '" + (dir / "missing" / "x.txt").string() + "': No such file or directory");
+  fs::remove_all(dir);
+}
