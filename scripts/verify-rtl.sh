@@ -1,40 +1,59 @@
 #!/usr/bin/env bash
 # Generates the RTL for one configuration, lints it, builds its Verilator test bench and runs it.
 #   scripts/verify-rtl.sh [--build-dir B] [config flags] [-- test bench args]
+#   scripts/verify-rtl.sh [--build-dir B] --rtl-dir DIR [-- test bench args]
 # B (default: build in the repository) must hold a built fpstereo-rtl. Everything goes to
-# B/rtl/<hash of the config flags>/{rtl,tb}. Exits with the test bench's status (0 pass,
-# 1 mismatch or protocol error, 2 bad input, 3 timeout), the generator's status if it fails
-# (2 for a bad configuration), or 1 when linting or building fails.
+# B/rtl/<hash of the config flags>/{rtl,tb}. With --rtl-dir, DIR holds a design already
+# generated with fpstereo-rtl -o DIR (perhaps altered since, as tests/rtl_timing_check.cmake
+# does): it is linted and verified as it is, and the test bench goes to B/rtl/<hash of DIR>/tb.
+# Exits with the test bench's status (0 pass, 1 mismatch, protocol, register or timing error,
+# 2 bad input, 3 timeout), the generator's status if it fails (2 for a bad configuration), or 1
+# when linting or building fails.
 set -euo pipefail
 fail() { echo "verify-rtl: $*" >&2; exit 1; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
+rtl_dir=
 config_flags=()
 tb_args=()
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
                  shift 2 ;;
+    --rtl-dir) rtl_dir=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--rtl-dir '${2:-}': no such directory"
+               shift 2 ;;
     --) shift; tb_args=("$@"); break ;;
     *) config_flags+=("$1"); shift ;;
   esac
 done
 [ -x "$build/fpstereo-rtl" ] || fail "$build/fpstereo-rtl not found: build the project first (scripts/build.sh)"
 
-work=$build/rtl/$(printf '%s\n' "${config_flags[@]}" | sha1sum | cut -c1-12)
-rtl=$work/rtl
-tb=$work/tb
+if [ -n "$rtl_dir" ]; then
+  [ ${#config_flags[@]} -eq 0 ] || fail "--rtl-dir takes no config flags: ${config_flags[*]}"
+  [ -f "$rtl_dir/filelist.f" ] || fail "$rtl_dir/filelist.f is missing: run fpstereo-rtl -o $rtl_dir first"
+  work=$build/rtl/$(printf 'rtl-dir %s\n' "$rtl_dir" | sha1sum | cut -c1-12)
+  rtl=$rtl_dir
+  tb=$work/tb
+  # 1. The design is there; a different set of files needs a freshly configured test bench.
+  mkdir -p "$work"
+  cmp -s "$rtl/filelist.f" "$work/filelist.f" || rm -rf "$tb"
+  cp "$rtl/filelist.f" "$work/filelist.f"
+else
+  work=$build/rtl/$(printf '%s\n' "${config_flags[@]}" | sha1sum | cut -c1-12)
+  rtl=$work/rtl
+  tb=$work/tb
 
-# 1. Generate into a fresh directory, then copy over only what changed, so that an unchanged
-#    design is neither re-verilated nor recompiled.
-rm -rf "$work/rtl.new"
-"$build/fpstereo-rtl" "${config_flags[@]}" -o "$work/rtl.new"
-mkdir -p "$rtl"
-# A different set of files needs a freshly configured test bench (verilate() lists them then).
-cmp -s "$work/rtl.new/filelist.f" "$rtl/filelist.f" || rm -rf "$tb"
-for f in "$work/rtl.new"/*; do cmp -s "$f" "$rtl/${f##*/}" || cp "$f" "$rtl/"; done
-for f in "$rtl"/*; do [ -e "$work/rtl.new/${f##*/}" ] || rm "$f"; done
-rm -rf "$work/rtl.new"
+  # 1. Generate into a fresh directory, then copy over only what changed, so that an unchanged
+  #    design is neither re-verilated nor recompiled.
+  rm -rf "$work/rtl.new"
+  "$build/fpstereo-rtl" "${config_flags[@]}" -o "$work/rtl.new"
+  mkdir -p "$rtl"
+  # A different set of files needs a freshly configured test bench (verilate() lists them then).
+  cmp -s "$work/rtl.new/filelist.f" "$rtl/filelist.f" || rm -rf "$tb"
+  for f in "$work/rtl.new"/*; do cmp -s "$f" "$rtl/${f##*/}" || cp "$f" "$rtl/"; done
+  for f in "$rtl"/*; do [ -e "$work/rtl.new/${f##*/}" ] || rm "$f"; done
+  rm -rf "$work/rtl.new"
+fi
 
 # 2. Lint: any warning fails.
 lint=$(cd "$rtl" && verilator --lint-only -Wall -f filelist.f 2>&1) || { echo "$lint" >&2; fail "lint failed in $rtl"; }

@@ -77,6 +77,7 @@ class OutputMonitor {
   // The design was reset: a frame in progress will not be completed.
   void reset() {
     stalled_.reset();
+    if (in_frame_ > 0) run_.frame_start_cycle.pop_back();
     received_ -= in_frame_;
     in_frame_ = 0;
   }
@@ -125,6 +126,7 @@ class OutputMonitor {
       run_.protocol.add(fmt::format("cycle {}: frame {} ({}, {}): tlast {}, expected {}", cycle, frame, x, y,
                                     int(beat.last), int(row_end)));
     frame_.at(x, y) = beat.data;
+    if (in_frame_ == 0) run_.frame_start_cycle.push_back(cycle);
     ++received_;
     if (++in_frame_ == frame_.pixels.size()) {
       run_.outputs.push_back(frame_);

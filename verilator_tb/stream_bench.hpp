@@ -66,10 +66,11 @@ struct ProtocolErrors {
 };
 
 struct StreamRun {
-  std::vector<DisparityImage> outputs;    // the complete output frames, in order
-  std::vector<uint64_t> frame_end_cycle;  // cycle of each frame's last output handshake
-  uint64_t first_input_cycle = 0;         // cycle of the first input handshake on either stream
-  uint64_t cycles = 0;                    // cycles simulated after reset
+  std::vector<DisparityImage> outputs;      // the complete output frames, in order
+  std::vector<uint64_t> frame_start_cycle;  // cycle of each frame's first output handshake
+  std::vector<uint64_t> frame_end_cycle;    // cycle of each frame's last output handshake
+  uint64_t first_input_cycle = 0;           // cycle of the first input handshake on either stream
+  uint64_t cycles = 0;                      // cycles simulated after reset
   // How much the idle cycles and backpressure bit: cycles in which a source withheld a pixel
   // while the design was ready for it, and cycles in which an output waited for tready.
   uint64_t left_idle_while_ready = 0;

@@ -2,19 +2,22 @@
 // against the golden model, the output stream's protocol, the throughput and the status registers.
 //
 // Runs, each from reset: a throughput run (2 frames, no idle cycles, no backpressure) that
-// measures latency and cycles per frame and tries writes the control interface must refuse;
+// measures latency and cycles per frame, fails unless they are exactly what the design states in
+// its banner (check_timing), and tries writes the control interface must refuse;
 // the checked run with the requested idle and backpressure probabilities and run-time settings
 // (--set, written during frame 0, in effect from frame 1); then one run per framing fault
 // (--fault). Every frame a fault does not truncate is compared pixel for pixel.
-// Exit status: 0 pass, 1 mismatch or protocol error, 2 bad input, 3 timeout.
+// Exit status: 0 pass, 1 mismatch, protocol, register or timing error, 2 bad input, 3 timeout.
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <random>
+#include <regex>
 
 #include "compare.hpp"
 #include "config_cli.hpp"
@@ -26,6 +29,9 @@
 
 #ifndef FPSTEREO_TB_CONFIG_FILE
 #error "FPSTEREO_TB_CONFIG_FILE must name the config.json the RTL was generated with"
+#endif
+#ifndef FPSTEREO_TB_TOP_FILE
+#error "FPSTEREO_TB_TOP_FILE must name the design's top file, the first of its filelist.f"
 #endif
 #ifdef FPSTEREO_TB_CONTROL
 // The register map as the generator emitted it: <prefix>_regs.h, names <PREFIX>_<REGISTER>.
@@ -69,6 +75,31 @@ StereoConfig load_tb_config() {
   apply_config_file(cfg, FPSTEREO_TB_CONFIG_FILE);
   validate(cfg);
   return cfg;
+}
+
+// ---- The timing the design states, in the banner comment its files open with (the generator's
+// "Initiation interval" and "Latency" lines): read from the top's file when the bench runs, so
+// that the bench checks what the design says, not a figure it would compute itself.
+struct StatedTiming {
+  std::optional<uint64_t> cycles_per_frame;      // "expected cycles per frame without stalls: N"
+  std::optional<uint64_t> first_output_latency;  // "Latency from the first input pixel to the first
+                                                 // output pixel: N cycles"
+};
+
+StatedTiming read_stated_timing(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("cannot read '{}', the design's top file", path));
+  static const std::regex cycles(R"(expected cycles per frame without stalls: (\d+)\b)");
+  static const std::regex latency(
+      R"(Latency from the first input pixel to the first output pixel: (\d+) cycles)");
+  StatedTiming stated;
+  std::string line;
+  std::smatch m;
+  while (std::getline(in, line) && line.rfind("//", 0) == 0) {  // the banner: the leading comment
+    if (std::regex_search(line, m, cycles)) stated.cycles_per_frame = std::stoull(m[1]);
+    if (std::regex_search(line, m, latency)) stated.first_output_latency = std::stoull(m[1]);
+  }
+  return stated;
 }
 
 // ---- Run-time settings (--set): each is a register and the configuration field it stands for.
@@ -367,6 +398,7 @@ struct Totals {
   size_t mismatches = 0;
   size_t protocol_errors = 0;
   size_t register_errors = 0;
+  size_t timing_errors = 0;
 };
 
 // Streams the run, compares each output frame with its golden words, the register accesses with
@@ -432,19 +464,80 @@ uint64_t ideal_cycles_per_frame(const StereoConfig& cfg) {
   return uint64_t(cfg.width) * uint64_t(cfg.height) * uint64_t(cfg.dmax / cfg.uf);
 }
 
-void print_throughput(const StreamRun& run, const StereoConfig& cfg) {
+// What the banner's first-output latency leaves out at the ports. The banner counts in the core's
+// time base, from step G - 1 of the first frame (the core takes the first pixel at the end of its
+// first slot) to the step in which it pushes the first output pixel into the output register
+// slice. At the ports, in the throughput run (from reset, both sources valid from the first
+// cycle, the sink always ready), the first input handshake is into the input register slice in
+// cycle c; the slice presents the beat in c + 1, when the framing stage starts the core, whose
+// step 0 is c + 2; the output slice presents the pushed pixel one cycle after the push. So the
+// first output handshake comes stated + (G - 1) + kPortCycles cycles after the first input one.
+constexpr int kPortCycles = 3;
+
+// Prints the throughput run's timing and checks it against what the design states, exactly:
+//   cycles per frame: between the last output handshakes of frames 0 and 1 (steady state; the
+//     sources never withhold a pixel and the sink is always ready, so the design alone sets it),
+//     equal to the banner's "expected cycles per frame without stalls";
+//   first-output latency: from the cycle of the first input handshake (either stream; cycles
+//     counted at the rising edge) to the cycle of frame 0's first output handshake, minus the
+//     (G - 1) + kPortCycles the banner's figure does not count (above), equal to the banner's
+//     "Latency from the first input pixel to the first output pixel".
+// Returns the number of timing errors, each printed as a FAIL line.
+size_t check_timing(const StreamRun& run, const StereoConfig& cfg, const StatedTiming& stated) {
+  if (run.frame_start_cycle.size() < 2 || run.frame_end_cycle.size() < 2) {
+    fmt::print("FAIL: the throughput run did not complete two frames, nothing to measure\n");
+    return 1;
+  }
+  const uint64_t first_output = run.frame_start_cycle[0] - run.first_input_cycle;
+  const int64_t core_latency = int64_t(first_output) - int64_t(cfg.dmax / cfg.uf - 1 + kPortCycles);
   const uint64_t latency = run.frame_end_cycle[0] - run.first_input_cycle;
   const uint64_t per_frame = run.frame_end_cycle[1] - run.frame_end_cycle[0];
   const uint64_t ideal = ideal_cycles_per_frame(cfg);
+  fmt::print(
+      "first output: {} cycles (first input handshake to the first frame's first output pixel); "
+      "first-output latency {} cycles (without the first slot's G - 1 = {} and {} cycles of port "
+      "register slices, as the banner counts it)\n",
+      first_output, core_latency, cfg.dmax / cfg.uf - 1, kPortCycles);
   fmt::print("latency: {} cycles (first input handshake to the first frame's last output pixel)\n", latency);
   fmt::print("steady state: {} cycles per frame (between the last output pixels of frames 0 and 1)\n",
              per_frame);
   fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.3f}\n", ideal, cfg.width,
              cfg.height, cfg.dmax, cfg.uf, double(per_frame) / double(ideal));
+  size_t errors = 0;
+  if (!stated.cycles_per_frame) {
+    fmt::print(
+        "FAIL: the design does not state its cycles per frame (no 'expected cycles per frame without "
+        "stalls: N' in the banner of {})\n",
+        FPSTEREO_TB_TOP_FILE);
+    ++errors;
+  } else if (per_frame != *stated.cycles_per_frame) {
+    fmt::print("FAIL: measured {} cycles per frame, the design states {}\n", per_frame,
+               *stated.cycles_per_frame);
+    ++errors;
+  }
+  if (stated.first_output_latency && core_latency != int64_t(*stated.first_output_latency)) {
+    fmt::print("FAIL: measured a first-output latency of {} cycles, the design states {}\n", core_latency,
+               *stated.first_output_latency);
+    ++errors;
+  }
+#ifdef FPSTEREO_TB_CONTROL
+  // The register map states the figure too (CYCLES_PER_FRAME, read back in the run above).
+  if (stated.cycles_per_frame && *stated.cycles_per_frame != FPS_REG(CYCLES_PER_FRAME_VALUE)) {
+    fmt::print("FAIL: the banner states {} cycles per frame, the register map {}\n", *stated.cycles_per_frame,
+               FPS_REG(CYCLES_PER_FRAME_VALUE));
+    ++errors;
+  }
+#endif
+  if (errors == 0)
+    fmt::print(
+        "timing: as the design states ({} cycles per frame{})\n", per_frame,
+        stated.first_output_latency ? fmt::format(", first-output latency {} cycles", core_latency) : "");
+  return errors;
 }
 
 int run_bench(const Options& opt) {
   const StereoConfig cfg = load_tb_config();
+  const StatedTiming stated = read_stated_timing(FPSTEREO_TB_TOP_FILE);
   const Widths widths = derive_widths(cfg);
   const int port_bits = widths.output_word <= 8 ? 8 : 16;
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
@@ -480,7 +573,7 @@ int run_bench(const Options& opt) {
     fmt::print("{}\n", measured.timeout);
     return kExitTimeout;
   }
-  print_throughput(measured, cfg);
+  totals.timing_errors += check_timing(measured, cfg, stated);
 
   // With neither idle cycles nor backpressure, up to two plain frames repeat the throughput run.
   std::vector<Run> runs;
@@ -498,10 +591,13 @@ int run_bench(const Options& opt) {
     }
   }
 
-  const bool pass = totals.mismatches == 0 && totals.protocol_errors == 0 && totals.register_errors == 0;
-  fmt::print("{}: {} frames compared, {} mismatching pixels, {} protocol errors, {} register errors\n",
-             pass ? "PASS" : "FAIL", totals.frames, totals.mismatches, totals.protocol_errors,
-             totals.register_errors);
+  const bool pass = totals.mismatches == 0 && totals.protocol_errors == 0 && totals.register_errors == 0 &&
+                    totals.timing_errors == 0;
+  fmt::print(
+      "{}: {} frames compared, {} mismatching pixels, {} protocol errors, {} register errors, {} timing "
+      "errors\n",
+      pass ? "PASS" : "FAIL", totals.frames, totals.mismatches, totals.protocol_errors,
+      totals.register_errors, totals.timing_errors);
   return pass ? 0 : kExitFail;
 }
 
