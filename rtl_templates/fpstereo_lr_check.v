@@ -24,7 +24,9 @@ module fpstereo_lr_check #(
   input  wire                 clk,
   input  wire                 restart,
   input  wire                 adv,
+  /* verilator lint_off UNUSEDSIGNAL */  // only LR1's row ends need the width
   input  wire [X_W-1:0]       frame_width,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [3:0]           lr_threshold,
   input  wire                 completed_we,
   input  wire [DISP_AW-1:0]   completed_waddr,

@@ -63,7 +63,7 @@ std::string banner(const RtlDesign& d) {
      << " cycles per pixel; expected cycles per frame without stalls: " << d.cycles_per_frame
      << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.latency_cycles
      << "\n"
-     << "// Latency from the first input pixel to the first output pixel: " << d.first_output_latency
+     << "// Latency without stalls from the first input handshake to the first output handshake: " << d.first_output_latency
      << " cycles\n";
   return os.str();
 }
@@ -277,7 +277,9 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   const int64_t push_first = at - d.stages.back()->latency(d).in_steps(R, G);
   const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
   d.cycles_per_frame = at + last_pixel * G;
-  d.first_output_latency = push_first - (G - 1);  // the first input is taken in step G - 1
+  // At the ports: the input register slice, the cycle in which the framing stage starts the core
+  // (its step 0 follows), and the output register slice.
+  d.first_output_latency = push_first + 3;
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
   d.x_bits = bits_for(uint64_t(R));

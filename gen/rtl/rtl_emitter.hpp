@@ -49,7 +49,7 @@ struct RtlDesign {
   std::map<std::string, int64_t> start_steps;
   int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls
   int64_t latency_cycles = 0;        // cycles_per_frame - W * H * G
-  int64_t first_output_latency = 0;  // cycles from the first input pixel to the first output pixel
+  int64_t first_output_latency = 0;  // cycles from the first input handshake to the first output one
   int output_bits = 0;               // tdata width of m_axis_disp (8 or 16)
   // the range of the run-time image size (the configured size is the largest)
   int min_width = 0, min_height = 0;
