@@ -1,0 +1,8 @@
+# The parameter sets of the per-module tests: modtb_set(<bench> <test name> TOP ... SOURCES ...
+# PARAMS ...), see CMakeLists.txt. Test names are ctest's modules_<name>.
+modtb_set(min_tree min_tree_n8_l3 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=8 W=8 IDX_W=3 LEVELS_PER_STAGE=3)
+modtb_set(min_tree min_tree_n13_l1 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=13 W=5 IDX_W=4 LEVELS_PER_STAGE=1)
+modtb_set(min_tree min_tree_n6_l2 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=6 W=3 IDX_W=3 LEVELS_PER_STAGE=2)
