@@ -16,3 +16,11 @@ modtb_set(unique_join unique_join_w6 TOP fpstereo_unique_join SOURCES fpstereo_u
           PARAMS W=6 IDX_W=4)
 modtb_set(unique_join unique_join_w3 TOP fpstereo_unique_join SOURCES fpstereo_unique_join.v
           PARAMS W=3 IDX_W=3)
+modtb_set(median_select median_select_m3_w5 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=3 WORD_W=5)
+modtb_set(median_select median_select_m5_w8 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=5 WORD_W=8)
+modtb_set(median_select median_select_m7_w4 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=7 WORD_W=4)
+modtb_set(axis_skid axis_skid_w8 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=8)
+modtb_set(axis_skid axis_skid_w37 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=37)
