@@ -24,3 +24,15 @@ modtb_set(median_select median_select_m7_w4 TOP fpstereo_median_select SOURCES f
           PARAMS M=7 WORD_W=4)
 modtb_set(axis_skid axis_skid_w8 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=8)
 modtb_set(axis_skid axis_skid_w37 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=37)
+modtb_set(window window_n3_s5 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=3 WORD_W=8 ROW_SLOTS=5 ADDR_W=3)
+modtb_set(window window_n7_s16 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=7 WORD_W=4 ROW_SLOTS=16 ADDR_W=5)
+modtb_set(window window_n5_s3 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=5 WORD_W=10 ROW_SLOTS=3 ADDR_W=2)
+modtb_set(path_lanes path_lanes_uf4 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=4 COST_W=6 PATH_W=8)
+modtb_set(path_lanes path_lanes_uf1 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=1 COST_W=4 PATH_W=6)
+modtb_set(path_lanes path_lanes_uf8 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=8 COST_W=5 PATH_W=9)
