@@ -1,0 +1,38 @@
+# The parameter sets of the per-module tests: modtb_set(<bench> <test name> TOP ... SOURCES ...
+# PARAMS ...), see CMakeLists.txt. Test names are ctest's modules_<name>.
+modtb_set(min_tree min_tree_n8_l3 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=8 W=8 IDX_W=3 LEVELS_PER_STAGE=3)
+modtb_set(min_tree min_tree_n13_l1 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=13 W=5 IDX_W=4 LEVELS_PER_STAGE=1)
+modtb_set(min_tree min_tree_n6_l2 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
+          PARAMS N=6 W=3 IDX_W=3 LEVELS_PER_STAGE=2)
+modtb_set(unique_tree unique_tree_n8_l3 TOP fpstereo_unique_tree
+          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=8 W=10 IDX_W=3 LEVELS_PER_STAGE=3)
+modtb_set(unique_tree unique_tree_n13_l2 TOP fpstereo_unique_tree
+          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=13 W=4 IDX_W=4 LEVELS_PER_STAGE=2)
+modtb_set(unique_tree unique_tree_n3_l1 TOP fpstereo_unique_tree
+          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=3 W=3 IDX_W=2 LEVELS_PER_STAGE=1)
+modtb_set(unique_join unique_join_w6 TOP fpstereo_unique_join SOURCES fpstereo_unique_join.v
+          PARAMS W=6 IDX_W=4)
+modtb_set(unique_join unique_join_w3 TOP fpstereo_unique_join SOURCES fpstereo_unique_join.v
+          PARAMS W=3 IDX_W=3)
+modtb_set(median_select median_select_m3_w5 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=3 WORD_W=5)
+modtb_set(median_select median_select_m5_w8 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=5 WORD_W=8)
+modtb_set(median_select median_select_m7_w4 TOP fpstereo_median_select SOURCES fpstereo_median_select.v
+          PARAMS M=7 WORD_W=4)
+modtb_set(axis_skid axis_skid_w8 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=8)
+modtb_set(axis_skid axis_skid_w37 TOP fpstereo_axis_skid SOURCES fpstereo_axis_skid.v PARAMS DATA_W=37)
+modtb_set(window window_n3_s5 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=3 WORD_W=8 ROW_SLOTS=5 ADDR_W=3)
+modtb_set(window window_n7_s16 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=7 WORD_W=4 ROW_SLOTS=16 ADDR_W=5)
+modtb_set(window window_n5_s3 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=5 WORD_W=10 ROW_SLOTS=3 ADDR_W=2)
+modtb_set(path_lanes path_lanes_uf4 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=4 COST_W=6 PATH_W=8)
+modtb_set(path_lanes path_lanes_uf1 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=1 COST_W=4 PATH_W=6)
+modtb_set(path_lanes path_lanes_uf8 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
+          PARAMS UF=8 COST_W=5 PATH_W=9)
