@@ -54,6 +54,30 @@ module fpstereo_aggregator #(
   output wire [K_W-1:0]       chain4,
   output wire [OUT_K_W-1:0]   slot4
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fpstereo_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    end
+    if ((K - 1) * G < PATH_TREE_LAT + 1) begin : invalid_chains
+      fpstereo_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
+    end
+    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
+      fpstereo_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
+    end
+    if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
+      fpstereo_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
+    end
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+      fpstereo_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
+    end
+    if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
+      fpstereo_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
+    end
+    if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
+      fpstereo_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+    end
+  endgenerate
   localparam ONES = {PATH_W{1'b1}};
   localparam ROW_DEPTH = (W + 1) * G;
   localparam ROW_AW = $clog2(ROW_DEPTH);

@@ -15,6 +15,12 @@ module fpstereo_axis_skid #(
   output wire              m_valid,
   input  wire              m_ready
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DATA_W < 1) begin : invalid
+      fpstereo_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
+    end
+  endgenerate
   reg [DATA_W-1:0] data_q, skid_q;
   reg              valid_q, skid_valid_q;
 

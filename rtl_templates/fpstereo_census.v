@@ -12,6 +12,12 @@ module fpstereo_census #(
   input  wire [N-1:0]     col_valid,
   output wire [N*N-2:0]   code
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid
+      fpstereo_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
+    end
+  endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
   wire [7:0] centre = window[CENTRE*8 +: 8];
 

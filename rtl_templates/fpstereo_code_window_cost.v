@@ -38,6 +38,18 @@ module fpstereo_code_window_cost #(
   output reg  [COST_K_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SHD_K < 3 || SHD_K % 2 == 0) begin : invalid_SHD_K
+      fpstereo_invalid_parameters_code_window_cost_SHD_K_is_not_odd_and_at_least_3 failed ();
+    end
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
+      fpstereo_invalid_parameters_code_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+    end
+    if (YS_W < Y_W + 2) begin : invalid_YS_W
+      fpstereo_invalid_parameters_code_window_cost_YS_W_below_Y_W_plus_2 failed ();
+    end
+  endgenerate
   localparam RS = SHD_K / 2;
   localparam signed [YS_W-1:0] RS_Y = RS;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;

@@ -62,6 +62,21 @@ module fpstereo_control #(
   input  wire              frame_truncated,
   input  wire              protocol_error
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
+      fpstereo_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+    end
+    if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
+      fpstereo_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
+    end
+    if (P1_INIT < 0 || P1_INIT > P2_INIT || P2_INIT > P2_MAX || P2_MAX >= (1 << PATH_W)) begin : invalid_penalties
+      fpstereo_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
+    end
+    if (UNIQUENESS_INIT < 0 || UNIQUENESS_INIT > 99 || LR_THRESHOLD_INIT < 0 || LR_THRESHOLD_INIT > 15) begin : invalid_settings
+      fpstereo_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
+    end
+  endgenerate
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
                    A_P1 = 8'h10, A_P2 = 8'h14, A_UNIQUENESS = 8'h18, A_LR_THRESHOLD = 8'h1C,
                    A_WIDTH = 8'h20, A_HEIGHT = 8'h24, A_REJECTED_WRITES = 8'h28, A_FRAMES_DONE = 8'h30,

@@ -22,6 +22,15 @@ module fpstereo_cost_lanes #(
   input  wire [X_W-1:0]       x,
   output reg  [UF*COST_W-1:0] costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fpstereo_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
+      fpstereo_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+    end
+  endgenerate
   // wide enough for x and for any disparity, plus one bit so both zero-extend
   localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 1;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};

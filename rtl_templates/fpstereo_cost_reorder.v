@@ -36,6 +36,15 @@ module fpstereo_cost_reorder #(
   input  wire [COST_AW-1:0]     cost_raddr,
   output wire [UF*COST_W-1:0]   cost_q
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (LAT < 1) begin : invalid_LAT
+      fpstereo_invalid_parameters_cost_reorder_LAT_below_1 failed ();
+    end
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+      fpstereo_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
+    end
+  endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});

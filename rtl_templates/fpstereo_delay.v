@@ -12,6 +12,12 @@ module fpstereo_delay #(
   input  wire [WIDTH-1:0] in,
   output wire [WIDTH-1:0] out
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fpstereo_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
   reg [WIDTH*DEPTH-1:0] line;
   generate
     if (DEPTH == 1) begin : one

@@ -43,6 +43,15 @@ module fpstereo_front_end #(
   output reg  signed [YS_W-1:0] transform_y,
   output reg  [COST_K_W-1:0]    transform_slot
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fpstereo_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (YS_W < Y_W + 2) begin : invalid_YS_W
+      fpstereo_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    end
+  endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   localparam signed [YS_W-1:0] R_Y = R;

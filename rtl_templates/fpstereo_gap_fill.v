@@ -33,6 +33,12 @@ module fpstereo_gap_fill #(
   output reg  [Y_W-1:0]    out_y,
   output reg  [WORD_W-1:0] out_word
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (W < 1 || W >= (1 << X_W) || WORD_W < 2) begin : invalid
+      fpstereo_invalid_parameters_gap_fill_needs_X_W_holding_W_and_WORD_W_at_least_2 failed ();
+    end
+  endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
   wire [X_W-1:0] last_x = width - 1'b1;

@@ -21,6 +21,12 @@ module fpstereo_match_ring #(
   input  wire [COLUMN_W-1:0]             column_in,
   output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fpstereo_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
   localparam LENGTH = DMAX + SPAN - 1;
   // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
   // turn that completes the slot plus the shift by one slot.

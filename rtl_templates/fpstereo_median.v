@@ -28,6 +28,15 @@ module fpstereo_median #(
   output reg  [Y_W-1:0]   out_y,
   output reg  [DISP_W:0]  out_word
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (M < 3 || M % 2 == 0) begin : invalid_M
+      fpstereo_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
+    end
+    if (YS_W < Y_W + 2) begin : invalid_YS_W
+      fpstereo_invalid_parameters_median_YS_W_below_Y_W_plus_2 failed ();
+    end
+  endgenerate
   localparam RM = M / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};

@@ -40,6 +40,15 @@ module fpstereo_median_select #(
   input  wire [M-1:0]          col_valid,
   output wire [WORD_W-1:0]     median
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (M != 3 && M != 5 && M != 7) begin : invalid_M
+      fpstereo_invalid_parameters_median_select_M_is_not_3_5_or_7 failed ();
+    end
+    if (WORD_W < 2) begin : invalid_WORD_W
+      fpstereo_invalid_parameters_median_select_WORD_W_below_2 failed ();
+    end
+  endgenerate
   localparam N = M * M;
   localparam DISP_W = WORD_W - 1;
   localparam CENTRE = (M / 2) * M + M / 2;

@@ -19,6 +19,18 @@ module fpstereo_min_tree #(
   output wire [W-1:0]     min_value,
   output wire [IDX_W-1:0] min_index
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fpstereo_invalid_parameters_min_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fpstereo_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fpstereo_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
   localparam LEVELS = (N > 1) ? $clog2(N) : 0;
 
   genvar l, i;

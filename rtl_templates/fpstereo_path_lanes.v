@@ -23,6 +23,12 @@ module fpstereo_path_lanes #(
   input  wire [PATH_W-1:0]    prev_min,
   output reg  [UF*PATH_W-1:0] path
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
+      fpstereo_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+    end
+  endgenerate
   // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
   localparam EXT_W = PATH_W + 1;
   wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)

@@ -16,6 +16,12 @@ module fpstereo_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
+      fpstereo_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;

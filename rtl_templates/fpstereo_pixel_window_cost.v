@@ -10,7 +10,7 @@ module fpstereo_pixel_window_cost #(
   parameter ZERO_MEAN = 0,
   parameter DMAX = 32,
   parameter UF = 8,
-  parameter COST_W = 10,
+  parameter COST_W = 13,
   parameter COST_MAX = 6375,
   // width of a window column's pixel sum; ZSAD: mean = (sum * MEAN_MUL) >> MEAN_SHIFT
   parameter COLSUM_W = 11,
@@ -40,6 +40,18 @@ module fpstereo_pixel_window_cost #(
   output reg  [COST_K_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fpstereo_invalid_parameters_pixel_window_cost_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (255 * N >= (1 << COLSUM_W)) begin : invalid_COLSUM_W
+      fpstereo_invalid_parameters_pixel_window_cost_COLSUM_W_does_not_hold_255_N failed ();
+    end
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
+      fpstereo_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+    end
+  endgenerate
   wire [N*N*8-1:0] base_masked;
   fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));

@@ -32,6 +32,12 @@ module fpstereo_point_cost #(
   output reg  [COST_K_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
+      fpstereo_invalid_parameters_point_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+    end
+  endgenerate
   reg [CODE_W-1:0] code_base_h;
   always @(posedge clk)
     if (shift) begin

@@ -20,6 +20,12 @@ module fpstereo_ram_async #(
   input  wire [ADDR_W-1:0] raddr_b,
   output wire [WIDTH-1:0]  rdata_b
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fpstereo_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
 
   always @(posedge clk)

@@ -18,6 +18,12 @@ module fpstereo_ram_sdp #(
   input  wire [ADDR_W-1:0] raddr,
   output reg  [WIDTH-1:0]  rdata
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fpstereo_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
 
   always @(posedge clk) begin

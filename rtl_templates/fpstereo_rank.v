@@ -13,6 +13,15 @@ module fpstereo_rank #(
   input  wire [N-1:0]     col_valid,
   output reg  [RANK_W-1:0] rank
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fpstereo_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (N * N - 1 >= (1 << RANK_W)) begin : invalid_RANK_W
+      fpstereo_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
+    end
+  endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
   wire [7:0] centre = window[CENTRE*8 +: 8];
 

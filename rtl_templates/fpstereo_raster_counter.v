@@ -20,6 +20,15 @@ module fpstereo_raster_counter #(
   output reg  [K_W-1:0] row_slot,
   output wire           slot_end
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
+      fpstereo_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+    end
+    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
+      fpstereo_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+    end
+  endgenerate
   localparam integer LAST_GROUP_I = G - 1;
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];

@@ -22,6 +22,12 @@ module fpstereo_sequencer #(
   output reg  [STEP_W-1:0] step,
   output wire              restart
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (STEP_W < 1) begin : invalid
+      fpstereo_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+    end
+  endgenerate
   reg in_frame;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   always @(posedge clk)

@@ -18,6 +18,15 @@ module fpstereo_transform #(
   output reg  [CODE_W-1:0] code_base,
   output reg  [CODE_W-1:0] code_match
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fpstereo_invalid_parameters_transform_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if ((RANK == 0 && CODE_W != N * N - 1) || (RANK != 0 && N * N - 1 >= (1 << CODE_W))) begin : invalid_CODE_W
+      fpstereo_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
+    end
+  endgenerate
   wire [CODE_W-1:0] code_left, code_right;
   generate
     if (RANK) begin : rank

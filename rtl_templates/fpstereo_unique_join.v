@@ -11,6 +11,12 @@ module fpstereo_unique_join #(
   input  wire [5*W+IDX_W+1:0] b,
   output wire [5*W+IDX_W+1:0] joined
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (W < 1 || IDX_W < 1) begin : invalid
+      fpstereo_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+    end
+  endgenerate
   localparam S_W = 5 * W + IDX_W + 2;
 
   function [W-1:0] min2(input [W-1:0] x, input [W-1:0] y);

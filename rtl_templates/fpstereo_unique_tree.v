@@ -33,6 +33,18 @@ module fpstereo_unique_tree #(
   output wire [W-1:0]     but_last,
   output wire [W-1:0]     second
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fpstereo_invalid_parameters_unique_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fpstereo_invalid_parameters_unique_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fpstereo_invalid_parameters_unique_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
   localparam LEVELS = (N > 1) ? $clog2(N) : 0;
   localparam NONE = {W{1'b1}};
   // One summary: {best, all, but_first, but_last, second} values, the index and two flags.

@@ -44,6 +44,12 @@ module fpstereo_video_in #(
   output wire           frame_truncated,
   output wire           protocol_error
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (X_W < 1 || Y_W < 2) begin : invalid
+      fpstereo_invalid_parameters_video_in_X_W_below_1_or_Y_W_below_2 failed ();
+    end
+  endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
   reg [1:0]     state;
   reg           quiet;  // skipped data is already accounted for

@@ -25,6 +25,15 @@ module fpstereo_window #(
   input  wire [WORD_W-1:0] word,
   output wire [N*N*WORD_W-1:0] window
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3) begin : invalid_N
+      fpstereo_invalid_parameters_window_N_below_3 failed ();
+    end
+    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
+      fpstereo_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+    end
+  endgenerate
   localparam STORED_W = (N - 1) * WORD_W;
   localparam LB_AW = $clog2(ROW_SLOTS);
 

@@ -15,6 +15,12 @@ module fpstereo_window_bounds #(
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
+      fpstereo_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+    end
+  endgenerate
   localparam LAG = SIDE / 2;
   localparam [X_W:0] LAG_X = LAG;
   localparam signed [YS_W-1:0] LAG_Y = LAG;

@@ -22,6 +22,15 @@ module fpstereo_window_centre #(
   output wire signed [YS_W-1:0] centre_y,
   output wire [SLOT_W-1:0]      centre_slot
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
+      fpstereo_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
+    end
+    if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
+      fpstereo_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
+    end
+  endgenerate
   localparam integer LAG_I = LAG;
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];

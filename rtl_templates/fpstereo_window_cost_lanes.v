@@ -40,6 +40,21 @@ module fpstereo_window_cost_lanes #(
   input  wire [X_W-1:0]                      width,
   output reg  [UF*COST_W-1:0]                costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SPAN < 1 || SPAN % 2 == 0 || (ZERO_MEAN != 0 && SPAN > 16)) begin : invalid_SPAN
+      fpstereo_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
+    end
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fpstereo_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if ((HAMMING == 0 && ELEM_W != 8) || ELEM_W < 1) begin : invalid_ELEM_W
+      fpstereo_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
+      fpstereo_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
+    end
+  endgenerate
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
   // wide enough for x + SPAN and for any disparity plus R

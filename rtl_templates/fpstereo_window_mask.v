@@ -13,6 +13,12 @@ module fpstereo_window_mask #(
   input  wire [N-1:0]          col_valid,
   output wire [N*N*WORD_W-1:0] masked
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || WORD_W < 1) begin : invalid
+      fpstereo_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
+    end
+  endgenerate
   genvar p;
   generate
     for (p = 0; p < N * N; p = p + 1) begin : position

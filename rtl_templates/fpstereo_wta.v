@@ -25,6 +25,15 @@ module fpstereo_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
+      fpstereo_invalid_parameters_wta_LANE_W_does_not_hold_UF_minus_1 failed ();
+    end
+    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
+      fpstereo_invalid_parameters_wta_TREE_LAT_is_not_the_min_tree_latency failed ();
+    end
+  endgenerate
   fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;

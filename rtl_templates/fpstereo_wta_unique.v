@@ -26,6 +26,15 @@ module fpstereo_wta_unique #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
+      fpstereo_invalid_parameters_wta_unique_LANE_W_does_not_hold_UF_minus_1 failed ();
+    end
+    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
+      fpstereo_invalid_parameters_wta_unique_TREE_LAT_is_not_the_unique_tree_latency failed ();
+    end
+  endgenerate
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   localparam S_W = 5 * SUM_W + DISP_W + 2;
   fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
