@@ -21,7 +21,7 @@
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887873 = W*H*dmax/uf (1863000) + 24873
-// Latency from the first input pixel to the first output pixel: 24872 cycles
+// Latency without stalls from the first input handshake to the first output handshake: 24878 cycles
 
 `resetall
 `default_nettype none
@@ -136,15 +136,7 @@ module fps_sad5_d128u32_fa1add_top (
 
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
-  fps_sad5_d128u32_fa1add_sgm_core #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .DMAX(128),
-    .COST_KIND(2), .N(5), .CODE_W(8), .SHD_K(5), .COST_W(13), .COST_MAX(6375), .COST_LAT(2),
-    .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0),
-    .PATH_W(13), .SUM_W(15), .DISP_W(7), .LR(2), .UNIQUENESS(0), .MEDIAN(0), .GAP(0),
-    .PATHS(15),
-    .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .WTA_TREE_LAT(2), .AGG_START(9959), .MATCH_START(10479), .OUT_START(24870),
-    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .LANE_W(5), .STEP_W(21)
-  ) core (
+  fps_sad5_d128u32_fa1add_sgm_core core (
     .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),
     .lr_threshold(lr_threshold),
@@ -163,791 +155,247 @@ endmodule
 
 `resetall
 `default_nettype none
-// The SGM pipeline between the input and output skid buffers (docs/architecture.md): front end
-// in raster order, cost reorder RAM, aggregation in K interleaved chains, winner-take-all (with
-// uniqueness), disparity reorder RAM, left-right check (LR1 or LR2), median, gap interpolation
-// and output. Every register advances only in steps where adv is high, so the whole pipeline
-// stalls together; the stages find their pixel from step counters.
-module fps_sad5_d128u32_fa1add_sgm_core #(
-  // largest image width W and time base: ROW_SLOTS = K * SLEN slots per row-time, G steps per slot
-  parameter W = 64,
-  parameter ROW_SLOTS = 64,
-  parameter K = 2,
-  parameter SLEN = 32,
-  parameter G = 4,
-  // disparities: DMAX = G * UF
-  parameter UF = 8,
-  parameter DMAX = 32,
-  // cost function: 0 = census, 1 = rank, 2 = SAD, 3 = ZSAD, 4 = SHD; window side N; census code
-  // or rank width; SHD summation window; cost lanes' latency
-  parameter COST_KIND = 0,
-  parameter N = 5,
-  parameter CODE_W = 24,
-  parameter SHD_K = 3,
-  parameter COST_W = 5,
-  parameter COST_MAX = 24,
-  parameter COST_LAT = 1,
-  // SAD/ZSAD: width of a window column's pixel sum; ZSAD: mean = (sum * MEAN_MUL) >> MEAN_SHIFT
-  parameter COLSUM_W = 11,
-  parameter MEAN_MUL = 1,
-  parameter MEAN_SHIFT = 0,
-  // path cost, sum and disparity widths (docs/semantics.md, "Bit widths")
-  parameter PATH_W = 7,
-  parameter SUM_W = 9,
-  parameter DISP_W = 5,
-  // left-right check (0 = none, 1 = LR1, 2 = LR2); uniqueness check present (its ratio is a
-  // setting); median filter window (0 = off, 3, 5 or 7)
-  parameter LR = 0,
-  parameter UNIQUENESS = 0,
-  parameter MEDIAN = 0,
-  // gap interpolation (0 = off, 1 = on)
-  parameter GAP = 0,
-  // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
-  parameter PATHS = 15,
-  // compare-select levels per register stage in the minimum trees, and the trees' latencies
-  parameter LEVELS_PER_STAGE = 3,
-  parameter PATH_TREE_LAT = 1,
-  parameter WTA_TREE_LAT = 1,
-  // steps after the frame's first step at which aggregation, LR2's match-side aggregation and
-  // output begin
-  parameter AGG_START = 100,
-  parameter MATCH_START = 200,
-  parameter OUT_START = 200,
-  // counter widths
-  parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter G_W = 2,
-  parameter K_W = 1,
-  parameter LANE_W = 3,
+// The SGM pipeline between the input and output register slices, stage by stage:
+//   framing
+//   window
+//   cost
+//   cost reorder
+//   LR2 match side
+//   aggregation
+//   winner-take-all
+//   disparity reorder
+//   left-right check
+//   output
+module fps_sad5_d128u32_fa1add_sgm_core (
+  input  wire clk,
+  input  wire rst,
+  // Frames: while idle, start begins one; the settings hold until the core is idle again.
+  input  wire start,
+  output wire idle,
+  input  wire [10:0] frame_width,
+  input  wire [8:0] frame_height,
+  input  wire [12:0] p1,
+  input  wire [12:0] p2,
+  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the check
+  input  wire [6:0] uniqueness,
+  input  wire [3:0] lr_threshold,
+  /* verilator lint_on UNUSEDSIGNAL */
+  // one pixel of each image, taken when in_take is high
+  input  wire in_valid,
+  input  wire [7:0] in_left,
+  input  wire [7:0] in_right,
+  output wire in_take,
+  // output word (invalid flag above the disparity), pushed when out_push is high
+  input  wire out_ready,
+  output wire out_push,
+  output wire [7:0] out_word,
+  output wire out_first,
+  output wire out_last,
+  // high in the cycle that pushes the frame's last pixel
+  output wire frame_end
+);
+  // Frame sequencing: adv is every stage's enable.
+  wire adv;
+  wire restart;
+  wire in_due;
+  wire out_due;
+  wire frame_done;
+  wire [20:0] step;
+  fps_sad5_d128u32_fa1add_sequencer #(
+    .STEP_W(21)
+  ) sequencer (
+    .clk(clk), .rst(rst), .start(start), .idle(idle), .in_due(in_due), .in_valid(in_valid), .out_due(out_due),
+    .out_ready(out_ready), .frame_done(frame_done), .adv(adv), .step(step), .restart(restart));
+
+  // Window stage: line buffers, windows, their bounds and centres.
+  wire shift;
+  wire slot_end;
+  wire [1:0] group;
+  wire [199:0] window_left;
+  wire [199:0] window_right;
+  wire [4:0] row_valid;
+  wire [4:0] col_valid;
+  wire [10:0] transform_x;
+  wire signed [10:0] transform_y;
+  wire [1:0] transform_slot;
+  wire [4:0] newest_row_valid;
+  fps_sad5_d128u32_fa1add_front_end #(
+    .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_K_W(2), .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+  ) front_end (
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .in_due(in_due), .in_take(in_take), .in_left(in_left), .in_right(in_right), .group(group),
+    .slot_end(slot_end), .shift(shift), .window_left(window_left), .window_right(window_right),
+    .row_valid(row_valid), .col_valid(col_valid), .newest_row_valid(newest_row_valid),
+    .transform_x(transform_x), .transform_y(transform_y), .transform_slot(transform_slot));
+
+  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.
+  wire [10:0] history_x;
+  wire signed [10:0] history_y;
+  wire [1:0] history_slot;
+  wire [415:0] costs;
+  fps_sad5_d128u32_fa1add_pixel_window_cost #(
+    .N(5), .ZERO_MEAN(0), .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
+    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2)
+  ) cost (
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
+    .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
+    .newest_row_valid(newest_row_valid), .transform_x(transform_x), .transform_y(transform_y),
+    .transform_slot(transform_slot), .history_x(history_x), .history_y(history_y),
+    .history_slot(history_slot), .costs(costs));
+
+  // Cost reorder RAM.
+  wire cost_valid;
+  wire [10:0] cost_x;
+  wire [1:0] cost_row_slot;
+  wire [1:0] cost_group;
+  wire [13:0] cost_raddr;
+  wire [415:0] cost_q;
+  fps_sad5_d128u32_fa1add_cost_reorder #(
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(2), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
+    .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+  ) cost_reorder (
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
+    .cost_valid(cost_valid), .cost_x(cost_x), .cost_row_slot(cost_row_slot), .cost_group(cost_group),
+    .cost_raddr(cost_raddr), .cost_q(cost_q));
+
+  // LR2 match side: second cost volume, aggregation and winner-take-all.
+  localparam MATCH_START = 10479;
+  wire completed_we;
+  wire [12:0] completed_waddr;
+  wire [6:0] completed_wdata;
+  fps_sad5_d128u32_fa1add_lr2_match #(
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
+    .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_K_W(3), .COST_AW(14),
+    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .DMAX(128), .DISP_W(7),
+    .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5)
+  ) lr2_match (
+    .clk(clk), .restart(restart), .adv(adv), .match_on(step >= MATCH_START), .frame_width(frame_width),
+    .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid), .cost_x(cost_x),
+    .cost_row_slot(cost_row_slot), .cost_group(cost_group), .costs(costs), .completed_we(completed_we),
+    .completed_waddr(completed_waddr), .completed_wdata(completed_wdata));
+
+  // Aggregation in K interleaved chains, from step AGG_START.
+  localparam AGG_START = 9959;
+  wire [479:0] sum4;
+  wire active4;
+  wire [10:0] x4;
+  wire [1:0] group4;
+  wire [2:0] slot4;
+  /* verilator lint_off UNUSEDSIGNAL */  // only LR1 follows the chains
+  wire chain4;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_aggregator #(
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
+    .SUM_W(15), .PATHS(15), .MATCH_SIDE(0), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5),
+    .OUT_K_W(3), .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2)
+  ) aggregation (
+    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1), .p2(p2),
+    .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4), .active4(active4),
+    .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+
+  // Winner-take-all: the pixel's word in its last group's step.
+  wire [1:0] wta_group;
+  wire wta_active;
+  wire [10:0] wta_x;
+  wire [2:0] wta_slot;
+  wire [7:0] wta_word;
+  fps_sad5_d128u32_fa1add_wta #(
+    .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
+  ) wta (
+    .clk(clk), .restart(restart), .adv(adv), .sums(sum4), .group(group4), .tag({active4, x4, slot4}),
+    .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}), .word(wta_word));
+
+  // Disparity reorder RAM, read in raster order from step OUT_START.
+  localparam OUT_START = 24870;
+  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
+  wire read_done;
+  wire read_event;
+  wire [10:0] read_x;
+  wire [8:0] read_y;
+  wire [7:0] read_word;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [2:0] read_slot_row;
+  fps_sad5_d128u32_fa1add_disparity_reorder #(
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_K_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
+    .Y_W(9), .G_W(2)
+  ) disparity_reorder (
+    .clk(clk), .restart(restart), .adv(adv), .out_on(step >= OUT_START), .frame_width(frame_width),
+    .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
+    .word(wta_word), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
+    .read_slot_row(read_slot_row), .read_word(read_word));
+
+  // Left-right check.
+  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
+  wire checked_done;
+  wire checked_event;
+  wire [10:0] checked_x;
+  wire [8:0] checked_y;
+  wire [7:0] checked_word;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_lr_check #(
+    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .OUT_ROWS(5), .OUT_K_W(3), .DISP_AW(13),
+    .ROW_END(0), .END_AW(5), .X_W(11), .Y_W(9), .LANE_W(5)
+  ) lr_check (
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
+    .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata),
+    .row_end_we(1'b0), .row_end_waddr(5'd0), .row_end_wdata(224'd0), .read_done(read_done),
+    .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_slot_row(read_slot_row),
+    .read_word(read_word), .checked_done(checked_done), .checked_event(checked_event), .checked_x(checked_x),
+    .checked_y(checked_y), .checked_word(checked_word));
+
+  // Output.
+  assign out_due    = checked_event;
+  assign out_push   = adv && checked_event;
+  assign out_word   = checked_word;
+  assign out_first  = checked_x == 0 && checked_y == 0;
+  assign out_last   = checked_x == frame_width - 1'b1;
+  assign frame_done = checked_event && out_last && checked_y == frame_height - 1'b1;
+  assign frame_end  = adv && frame_done;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
+// a frame; from then on the step counter advances in every cycle where adv is high, and adv is
+// the one enable of every stage, so the whole pipeline stalls together. adv is low while a stage
+// is due to take an input pixel that is not there (in_due) or to push an output word that cannot
+// leave (out_due). The frame ends in the step that pushes its last word (frame_done); restart
+// clears the stages' valid flags then and at reset.
+module fps_sad5_d128u32_fa1add_sequencer #(
   parameter STEP_W = 20
 ) (
   input  wire              clk,
   input  wire              rst,
-  // Frames: while idle, start begins one. The settings are the frame's and must hold until the
-  // core is idle again (fps_sad5_d128u32_fa1add_control latches them); the frame is at most W pixels wide.
   input  wire              start,
   output wire              idle,
-  input  wire [X_W-1:0]    frame_width,
-  input  wire [Y_W-1:0]    frame_height,
-  input  wire [PATH_W-1:0] p1,
-  input  wire [PATH_W-1:0] p2,
-  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the uniqueness or LR check
-  input  wire [6:0]        uniqueness,
-  input  wire [3:0]        lr_threshold,
-  /* verilator lint_on UNUSEDSIGNAL */
-  // one pixel of each image, taken when in_take is high
+  input  wire              in_due,
   input  wire              in_valid,
-  input  wire [7:0]        in_left,
-  input  wire [7:0]        in_right,
-  output wire              in_take,
-  // output word (invalid flag above the disparity), pushed when out_push is high
+  input  wire              out_due,
   input  wire              out_ready,
-  output wire              out_push,
-  output wire [DISP_W:0]   out_word,
-  output wire              out_first,
-  output wire              out_last,
-  // high in the cycle that pushes the frame's last pixel
-  output wire              frame_end
+  input  wire              frame_done,
+  output wire              adv,
+  output reg  [STEP_W-1:0] step,
+  output wire              restart
 );
-  localparam R = N / 2;
-  // Rows of the cost reorder RAM: K, one more with LR2, whose match side reads a row longer.
-  localparam COST_ROWS = K + (LR == 2 ? 1 : 0);
-  localparam COST_K_W = $clog2(COST_ROWS);
-  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
-  localparam COST_AW = $clog2(COST_DEPTH);
-  localparam STATE_DEPTH = K * G;
-  localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
-  // Rows of the disparity (and match disparity) RAMs: K, one more for the output's lag, and one
-  // (LR1) or two (LR2) more, as long as the output waits for the match side to finish a row.
-  localparam OUT_ROWS = K + 1 + LR;
-  localparam OUT_K_W = $clog2(OUT_ROWS);
-  localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
-  localparam DISP_AW = $clog2(DISP_DEPTH);
-  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
-  // Sized copies of the constants the counters are compared with (keeps widths exact).
-  localparam integer LAST_GROUP_I = G - 1;
-  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  wire [X_W:0] width_x = {1'b0, frame_width};
-  localparam YS_W = Y_W + 2;  // signed row coordinates: a window centre may lie above the image
-  localparam signed [YS_W-1:0] R_Y = R;
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
-
-  // ------------------------------------------------------------------------------------------
-  // Global advance and frame sequencing.
-  wire in_due, out_due, frame_done;
-  reg  in_frame;
-  wire adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (STEP_W < 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+    end
+  endgenerate
+  reg in_frame;
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   always @(posedge clk)
     if (rst) in_frame <= 1'b0;
     else if (!in_frame) in_frame <= start;
     else if (adv && frame_done) in_frame <= 1'b0;
   assign idle = !in_frame;
-  reg  [STEP_W-1:0] step;
   always @(posedge clk)
     if (rst) step <= 0;
     else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
-  wire restart = rst || (adv && frame_done);
-
-  // ------------------------------------------------------------------------------------------
-  // Front end: input counters (group, slot, row-time).
-  wire [G_W-1:0] gi;
-  wire [X_W-1:0] si;
-  wire [Y_W-1:0] ti;
-  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS: which row of the cost reorder RAM the row uses
-  wire slot_end;
-  fps_sad5_d128u32_fa1add_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(COST_K_W))
-    input_position (.clk(clk), .restart(restart), .en(adv), .group(gi), .slot(si), .row(ti), .row_slot(ti_slot),
-                    .slot_end(slot_end));
-  assign in_due  = slot_end && si < frame_width && ti < frame_height;
-  assign in_take = adv && in_due;
-  wire shift = adv && slot_end;
-  wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
-
-  wire [N*N*8-1:0] window_left, window_right;
-  fps_sad5_d128u32_fa1add_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
-    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .word(in_due ? in_left : 8'd0), .window(window_left));
-  fps_sad5_d128u32_fa1add_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
-    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .word(in_due ? in_right : 8'd0), .window(window_right));
-
-  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
-  wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
-  wire [COST_K_W-1:0] centre_slot;
-  fps_sad5_d128u32_fa1add_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
-                           .SLOT_W(COST_K_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
-    .centre_slot(centre_slot));
-  reg  [X_W-1:0] window_x;
-  reg  signed [YS_W-1:0] window_y;
-  reg  [COST_K_W-1:0] window_slot;
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
-  reg  newest_in_row;
-  reg  signed [YS_W-1:0] newest_y;
-  always @(posedge clk)
-    if (shift) begin
-      window_x <= centre_x;
-      window_y <= centre_y;
-      window_slot <= centre_slot;
-      newest_in_row <= {1'b0, si} < width_x;
-      newest_y <= $signed({2'b00, ti}) - R_Y;
-    end
-
-  // Window positions inside the image (semantics section 1), for the window and for its newest
-  // column on its own row.
-  wire [N-1:0] row_valid, col_valid;
-  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  /* verilator lint_off UNUSEDSIGNAL */  // only the window costs (SAD, ZSAD) use them
-  wire [N-1:0] newest_rows, newest_unused_columns;
-  wire [N-1:0] newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
-  /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows), .col_valid(newest_unused_columns));
-
-  // Transform stage, once per slot: the window centre's position and, for census, rank and SHD,
-  // the base and match codes (SAD and ZSAD keep their windows; their branch registers them).
-  reg  [X_W-1:0] transform_x;
-  reg  signed [YS_W-1:0] transform_y;
-  reg  [COST_K_W-1:0] transform_slot;
-  always @(posedge clk)
-    if (shift) begin
-      transform_x    <= window_x;
-      transform_y    <= window_y;
-      transform_slot <= window_slot;
-    end
-  /* verilator lint_off UNUSEDSIGNAL */  // SAD and ZSAD use no codes
-  reg  [CODE_W-1:0] code_base_t, code_match_t;
-  /* verilator lint_on UNUSEDSIGNAL */
-  generate
-    if (COST_KIND == 0 || COST_KIND == 1 || COST_KIND == 4) begin : codes
-      wire [CODE_W-1:0] code_left, code_right;
-      if (COST_KIND == 1) begin : rank
-        fps_sad5_d128u32_fa1add_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .rank(code_left));
-        fps_sad5_d128u32_fa1add_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .rank(code_right));
-      end else begin : census
-        fps_sad5_d128u32_fa1add_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid), .code(code_left));
-        fps_sad5_d128u32_fa1add_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid), .code(code_right));
-      end
-      always @(posedge clk)
-        if (shift) begin
-          code_base_t  <= code_left;
-          code_match_t <= code_right;
-        end
-    end
-  endgenerate
-
-  // Match history and cost lanes of the chosen cost function. Each branch sets history_x /
-  // history_y: the centre whose costs the lanes compute in this slot.
-  reg  [X_W-1:0] history_x;
-  reg  signed [YS_W-1:0] history_y;
-  reg  [COST_K_W-1:0] history_slot;
-  wire [UF*COST_W-1:0] costs;
-  generate
-    if (COST_KIND <= 1) begin : point_cost
-      // Census or rank: one code per pixel.
-      reg [CODE_W-1:0] code_base_h;
-      always @(posedge clk)
-        if (shift) begin
-          code_base_h    <= code_base_t;
-          history_x      <= transform_x;
-          history_y      <= transform_y;
-          history_slot   <= transform_slot;
-        end
-      wire [UF*CODE_W-1:0] match_lanes;
-      fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
-        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match_t), .view(match_lanes));
-      fps_sad5_d128u32_fa1add_cost_lanes #(.KIND(COST_KIND), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                            .GROUP_W(G_W), .X_W(X_W)) lanes (
-        .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(gi),
-        .x(history_x), .costs(costs));
-
-    end else if (COST_KIND <= 3) begin : pixel_window_cost
-      // SAD or ZSAD: the zero-extended base window, and the match window's newest column, which
-      // enters the match ring (plus, for ZSAD, the base window's mean and the column's sum). The
-      // ring serves later centres too, so the column is zero-extended by its own position.
-      wire [N*N*8-1:0] base_masked;
-      fps_sad5_d128u32_fa1add_window_mask #(.N(N), .WORD_W(8)) base_mask (
-        .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
-      reg [N*8-1:0]      newest_column;
-      reg [COLSUM_W-1:0] newest_sum;
-      reg [COLSUM_W+7:0] base_sum;
-      integer e;
-      always @* begin
-        newest_sum = 0;
-        base_sum = 0;
-        for (e = 0; e < N; e = e + 1) begin
-          newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
-          newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
-        end
-        for (e = 0; e < N * N; e = e + 1) base_sum = base_sum + {{COLSUM_W{1'b0}}, base_masked[e*8 +: 8]};
-      end
-      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-      wire [7:0] base_mean = (base_sum * MEAN_MUL) >> MEAN_SHIFT;
-      /* verilator lint_on WIDTH */
-      reg [N*N*8-1:0]    base_t, base_h;
-      reg [N*8-1:0]      column_t;
-      reg [COLSUM_W-1:0] column_sum_t;
-      reg [7:0]          base_mean_t, base_mean_h;
-      always @(posedge clk)
-        if (shift) begin
-          history_slot <= transform_slot;
-          base_t       <= base_masked;
-          column_t     <= newest_column;
-          column_sum_t <= newest_sum;
-          base_mean_t  <= base_mean;
-          base_h       <= base_t;
-          base_mean_h  <= base_mean_t;
-          history_x    <= transform_x;
-          history_y    <= transform_y;
-        end
-      wire [(UF+N-1)*N*8-1:0]    view;
-      wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
-      fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_t), .view(view));
-      fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
-      fps_sad5_d128u32_fa1add_window_cost_lanes #(.KIND(COST_KIND - 2), .ELEM_W(8), .SPAN(N), .UF(UF), .COST_W(COST_W),
-                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .COLSUM_W(COLSUM_W),
-                                   .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
-        .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
-        .group(gi), .x(history_x), .width(frame_width), .costs(costs));
-
-    end else begin : code_window_cost
-      // SHD: census codes, then a SHD_K x SHD_K window of codes (zero outside the image) whose
-      // newest match column enters the match ring.
-      localparam RS = SHD_K / 2;
-      localparam signed [YS_W-1:0] RS_Y = RS;
-      // The code windows take in code_base_t / code_match_t, at column transform_x.
-      wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
-      wire [SHD_K*SHD_K*CODE_W-1:0] codes_left, codes_right;
-      fps_sad5_d128u32_fa1add_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) base_codes (
-        .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_base_t), .window(codes_left));
-      fps_sad5_d128u32_fa1add_window #(.N(SHD_K), .WORD_W(CODE_W), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) match_codes (
-        .clk(clk), .shift(shift), .col(transform_x), .next_col(code_next_col), .word(code_match_t), .window(codes_right));
-      // Centre of the code window: RS rows and RS slots behind the entering code; the newest
-      // column is the entering code's own column (zero outside the image, as for SAD).
-      wire [X_W-1:0] codes_centre_x;
-      wire signed [YS_W-1:0] codes_centre_y;
-      wire [COST_K_W-1:0] codes_slot_next;
-      fps_sad5_d128u32_fa1add_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
-                               .SLOT_W(COST_K_W)) codes_centre (
-        .x(transform_x), .y(transform_y), .slot(transform_slot), .centre_x(codes_centre_x),
-        .centre_y(codes_centre_y), .centre_slot(codes_slot_next));
-      reg [X_W-1:0] codes_x;
-      reg signed [YS_W-1:0] codes_y;
-      reg [COST_K_W-1:0] codes_slot;
-      reg code_newest_in_row;
-      reg signed [YS_W-1:0] code_newest_y;
-      always @(posedge clk)
-        if (shift) begin
-          code_newest_in_row <= {1'b0, transform_x} < width_x;
-          code_newest_y <= transform_y - RS_Y;
-          codes_x <= codes_centre_x;
-          codes_y <= codes_centre_y;
-          codes_slot <= codes_slot_next;
-        end
-      wire [SHD_K-1:0] code_row_valid, code_col_valid, code_newest_rows;
-      /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is code_newest_in_row
-      wire [SHD_K-1:0] code_newest_unused_columns;
-      /* verilator lint_on UNUSEDSIGNAL */
-      fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_bounds (
-        .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid), .col_valid(code_col_valid));
-      fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
-        .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows), .col_valid(code_newest_unused_columns));
-      wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
-      wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;
-      fps_sad5_d128u32_fa1add_window_mask #(.N(SHD_K), .WORD_W(CODE_W)) base_mask (
-        .window(codes_left), .row_valid(code_row_valid), .col_valid(code_col_valid), .masked(base_masked));
-      reg [SHD_K*CODE_W-1:0] newest_column;
-      integer e;
-      always @*
-        for (e = 0; e < SHD_K; e = e + 1)
-          newest_column[e*CODE_W +: CODE_W] = code_newest_row_valid[e] ? codes_right[(e*SHD_K + SHD_K - 1)*CODE_W +: CODE_W]
-                                                                        : {CODE_W{1'b0}};
-      reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
-      always @(posedge clk)
-        if (shift) begin
-          base_h       <= base_masked;
-          history_x    <= codes_x;
-          history_y    <= codes_y;
-          history_slot <= codes_slot;
-        end
-      wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
-      fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
-        .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
-      fps_sad5_d128u32_fa1add_window_cost_lanes #(.KIND(2), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF), .COST_W(COST_W),
-                                   .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W), .COLSUM_W(COLSUM_W)) lanes (
-        .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
-        .group(gi), .x(history_x), .width(frame_width), .costs(costs));
-    end
-  endgenerate
-  wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-
-  // ------------------------------------------------------------------------------------------
-  // From here on, RAM addresses are products of narrow unsigned counters and constants; they
-  // zero-extend and are cut to the address widths (sized from the RAM depths), which Verilator's
-  // WIDTH lint reports. The bit-exact test benches check every address path.
-  // verilator lint_off WIDTH
-
-  // The cost word's position, delayed as long as the cost lanes take. Rows outside the image
-  // are never written, so only valid rows' slots (row mod K) matter.
-  wire [X_W-1:0] history_x_cut = history_x;
-  wire           cost_valid;
-  wire [X_W-1:0] cost_x;
-  wire [COST_K_W-1:0] cost_row_slot;
-  wire [G_W-1:0] cost_group;
-  fps_sad5_d128u32_fa1add_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(COST_LAT)) cost_tag (
-    .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x_cut, history_slot, gi}),
-    .out({cost_valid, cost_x, cost_row_slot, cost_group}));
-
-  // Cost reorder RAM: K rows, written in raster order, read in chain order.
-  wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
-  wire [COST_AW-1:0] cost_raddr;
-  wire [UF*COST_W-1:0] cost_q;
-  fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(UF*COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
-    .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
-    .re(adv), .raddr(cost_raddr), .rdata(cost_q));
-
-  // ------------------------------------------------------------------------------------------
-  // Aggregation in K interleaved chains (fps_sad5_d128u32_fa1add_aggregator), from step AGG_START.
-  wire agg_on = step >= AGG_START;
-  wire [UF*SUM_W-1:0] sum4;
-  wire                active4;
-  wire [X_W-1:0]      x4;
-  wire [G_W-1:0]      group4;
-  wire [K_W-1:0]      chain4;
-  wire [OUT_K_W-1:0]  slot4;
-  fps_sad5_d128u32_fa1add_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF), .COST_W(COST_W),
-                        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
-                        .MATCH_SIDE(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
-                        .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W), .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W),
-                        .K_W(K_W), .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) aggregation (
-    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1), .p2(p2),
-    .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q),
-    .sum4(sum4), .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
-  // What the stages after the sums need of a pixel's position.
-  localparam TAG_W = 1 + X_W + G_W + K_W + OUT_K_W;
-  wire [TAG_W-1:0] tag4 = {active4, x4, group4, chain4, slot4};
-  `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
-  `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
-
-  // ------------------------------------------------------------------------------------------
-  // Winner-take-all: minimum over the lanes, then over the groups (the earlier group wins ties);
-  // with uniqueness, the summaries of fps_sad5_d128u32_fa1add_unique_tree instead (semantics section 4).
-  wire [TAG_W-1:0] tag_w;
-  fps_sad5_d128u32_fa1add_delay #(.WIDTH(TAG_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_w));
-  wire [G_W-1:0] g_w = `FPS_TAG_GROUP(tag_w);
-  wire [DISP_W:0] word_w;  // the pixel's word, invalid flag on top, in its last group's step
-  generate
-    if (UNIQUENESS == 0) begin : plain_wta
-      wire [SUM_W-1:0]  group_min;
-      wire [LANE_W-1:0] group_lane;
-      fps_sad5_d128u32_fa1add_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-        .clk(clk), .en(adv), .values(sum4), .min_value(group_min), .min_index(group_lane));
-      wire [DISP_W-1:0] group_disparity = g_w * UF + group_lane;
-      reg  [SUM_W-1:0]  best_sum;
-      reg  [DISP_W-1:0] best_disparity;
-      wire take_group = g_w == 0 || group_min < best_sum;
-      always @(posedge clk)
-        if (adv && take_group) begin
-          best_sum <= group_min;
-          best_disparity <= group_disparity;
-        end
-      assign word_w = {1'b0, take_group ? group_disparity : best_disparity};
-    end else begin : unique_wta
-      localparam S_W = 5 * SUM_W + DISP_W + 2;
-      wire [SUM_W-1:0]  best, all, but_first, but_last, second;
-      wire [LANE_W-1:0] lane;
-      wire              first, last;
-      fps_sad5_d128u32_fa1add_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-        .clk(clk), .en(adv), .values(sum4), .best(best), .index(lane), .first(first), .last(last), .all(all),
-        .but_first(but_first), .but_last(but_last), .second(second));
-      wire [DISP_W-1:0] group_disparity = g_w * UF + lane;
-      wire [S_W-1:0] group_summary = {best, all, but_first, but_last, second, group_disparity, first, last};
-      reg  [S_W-1:0] running;  // groups 0 .. g_w - 1
-      wire [S_W-1:0] joined;
-      fps_sad5_d128u32_fa1add_unique_join #(.W(SUM_W), .IDX_W(DISP_W)) join_groups (.a(running), .b(group_summary), .joined(joined));
-      wire [S_W-1:0] total = g_w == 0 ? group_summary : joined;
-      always @(posedge clk)
-        if (adv) running <= total;
-      wire [SUM_W-1:0]  s1 = total[S_W-1 -: SUM_W];
-      wire [SUM_W-1:0]  s2 = total[S_W-4*SUM_W-1 -: SUM_W];
-      wire [DISP_W-1:0] winner = total[DISP_W+1:2];
-      // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division (u = 0 never
-      // invalidates: S2 >= S1).
-      wire [7:0] keep = 8'd100 - {1'b0, uniqueness};
-      wire [SUM_W+7:0] scaled_second = s2 * keep;
-      wire [SUM_W+7:0] scaled_best = s1 * 8'd100;
-      assign word_w = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
-    end
-  endgenerate
-
-  // ------------------------------------------------------------------------------------------
-  // Disparity reorder RAM (K rows) and output in raster order.
-  wire [DISP_AW-1:0] disp_waddr = `FPS_TAG_SLOT(tag_w) * ROW_SLOTS + `FPS_TAG_X(tag_w);
-  wire disp_write = adv && `FPS_TAG_ACTIVE(tag_w) && g_w == LAST_GROUP;
-
-  wire out_on = step >= OUT_START;
-  /* verilator lint_off UNUSEDSIGNAL */  // out_slot_end says what the output needs of the group
-  wire [G_W-1:0] go;
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire [X_W-1:0] so;
-  wire [Y_W-1:0] to;
-  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
-  wire out_slot_end;
-  fps_sad5_d128u32_fa1add_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(OUT_K_W))
-    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
-                     .row_slot(to_slot), .slot_end(out_slot_end));
-  // One read per slot, in raster order; rows below the image (the median's last rows need
-  // them) and bubble slots read as invalid words. Gap interpolation, one row behind, needs one
-  // more row of events.
-  wire [Y_W-1:0] event_rows = frame_height + GAP;
-  wire read_slot = out_on && out_slot_end;
-  wire read_event = read_slot && so < frame_width && to < event_rows;
-  wire read_valid = read_event && to < frame_height;
-  wire [DISP_W:0] disparity_q;
-  fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
-    .clk(clk), .we(disp_write), .waddr(disp_waddr), .wdata(word_w),
-    .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
-  reg               read_done, read_was_event, read_was_valid;
-  reg [X_W-1:0]     read_x;
-  reg [Y_W-1:0]     read_y;
-  /* verilator lint_off UNUSEDSIGNAL */  // the left-right check reads with it
-  reg [OUT_K_W-1:0] read_slot_row;
-  /* verilator lint_on UNUSEDSIGNAL */
-  always @(posedge clk)
-    if (restart) begin
-      read_done <= 1'b0;
-      read_was_event <= 1'b0;
-      read_was_valid <= 1'b0;
-    end else if (adv) begin
-      read_done <= read_slot;
-      read_was_event <= read_event;
-      read_was_valid <= read_valid;
-      read_x <= so;
-      read_y <= to;
-      read_slot_row <= to_slot;
-    end
-  wire [DISP_W:0] read_word = read_was_valid ? disparity_q : INVALID_WORD;
-
-  // Left-right check (semantics section 5): the stream after it, one step later with LR1.
-  /* verilator lint_off UNUSEDSIGNAL */  // the median uses the slot steps, the plain output the events
-  wire            checked_done, checked_event;
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire [X_W-1:0]  checked_x;
-  wire [Y_W-1:0]  checked_y;
-  wire [DISP_W:0] checked_word;
-  generate
-    if (LR == 0) begin : no_lr
-      assign checked_done = read_done;
-      assign checked_event = read_was_event;
-      assign checked_x = read_x;
-      assign checked_y = read_y;
-      assign checked_word = read_word;
-    end else begin : lr
-      // The match side writes Dm(x') into the completed RAM (and, for LR1, the row-end RAM).
-      localparam END_AW = $clog2(OUT_ROWS * G);
-      wire                 completed_we, end_we;
-      wire [DISP_AW-1:0]   completed_waddr;
-      wire [DISP_W-1:0]    completed_wdata;
-      wire [END_AW-1:0]    end_waddr;
-      wire [UF*DISP_W-1:0] end_wdata;
-      if (LR == 1) begin : lr1
-        // Dm(x') = argmin_d S(x' + d, d) from the base side's sums. Each chain keeps, for the
-        // match pixels x - e (e < DMAX) of its current pixel x, the best (sum, disparity) over
-        // d <= e so far; the next pixel shifts them by one and offers its own S(x + 1, e + 1),
-        // smaller d winning ties. At e = DMAX - 1 a match pixel is complete; at the row's end the
-        // rest are (row-end RAM). The state follows the chains like the path costs do.
-        localparam E_W = SUM_W + DISP_W;
-        wire [STATE_AW-1:0] entry_addr = chain4 * G + group4;
-        wire [UF*E_W-1:0]   previous, updated;
-        /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
-        wire [UF*E_W-1:0]   previous_unused;
-        /* verilator lint_on UNUSEDSIGNAL */
-        fps_sad5_d128u32_fa1add_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
-          .clk(clk), .we(adv && active4), .waddr(entry_addr), .wdata(updated),
-          .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
-        reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
-        always @(posedge clk)
-          if (adv) below_q <= previous[UF*E_W-1 -: E_W];
-        genvar l2;
-        for (l2 = 0; l2 < UF; l2 = l2 + 1) begin : lane
-          wire [DISP_W-1:0] disparity = group4 * UF + l2;
-          wire [E_W-1:0]    earlier = (l2 == 0) ? below_q : previous[(l2-1)*E_W +: E_W];
-          wire [SUM_W-1:0]  offered = sum4[l2*SUM_W +: SUM_W];
-          wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
-          assign updated[l2*E_W +: E_W] = take ? {offered, disparity} : earlier;
-          assign end_wdata[l2*DISP_W +: DISP_W] = updated[l2*E_W +: DISP_W];
-        end
-        assign completed_we = adv && active4 && group4 == LAST_GROUP && x4 >= DMAX - 1;
-        assign completed_waddr = slot4 * ROW_SLOTS + (x4 - (DMAX - 1));
-        assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
-        assign end_we = adv && active4 && x4 == frame_width - 1;
-        assign end_waddr = slot4 * G + group4;
-      end else begin : lr2
-        // A second cost volume and aggregation with the images' roles swapped. Every cost is
-        // symmetric, so the match side's C(x', d) is the base side's C(x' + d, d): lane l of each
-        // base cost word goes to its own RAM bank at match pixel x - d, and a word of the match
-        // side reads all banks at one address.
-        wire [UF*COST_W-1:0] match_costs;
-        wire [COST_AW-1:0]   match_raddr;
-        genvar l3;
-        for (l3 = 0; l3 < UF; l3 = l3 + 1) begin : bank
-          wire [DISP_W-1:0] disparity = cost_group * UF + l3;
-          fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
-            .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
-            .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
-            .wdata(costs[l3*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
-            .rdata(match_costs[l3*COST_W +: COST_W]));
-        end
-        wire [UF*SUM_W-1:0] match_sum4;
-        wire                match_active4;
-        wire [X_W-1:0]      match_x4;
-        wire [G_W-1:0]      match_group4;
-        /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
-        wire [K_W-1:0]      match_chain4;
-        /* verilator lint_on UNUSEDSIGNAL */
-        wire [OUT_K_W-1:0]  match_slot4;
-        fps_sad5_d128u32_fa1add_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
-                              .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
-                              .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
-                              .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
-                              .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                              .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
-          .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1),
-          .p2(p2), .agg_on(step >= MATCH_START), .cost_raddr(match_raddr),
-          .cost_q(match_costs), .sum4(match_sum4), .active4(match_active4), .x4(match_x4),
-          .group4(match_group4), .chain4(match_chain4), .slot4(match_slot4));
-        // Winner-take-all of the match side (no uniqueness).
-        wire [SUM_W-1:0]  group_min;
-        wire [LANE_W-1:0] group_lane;
-        fps_sad5_d128u32_fa1add_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-          .clk(clk), .en(adv), .values(match_sum4), .min_value(group_min), .min_index(group_lane));
-        wire              active_w;
-        wire [X_W-1:0]    x_w;
-        wire [G_W-1:0]    group_w;
-        wire [OUT_K_W-1:0] slot_w;
-        fps_sad5_d128u32_fa1add_delay #(.WIDTH(1 + X_W + G_W + OUT_K_W), .DEPTH(WTA_TREE_LAT)) tag_to_wta (
-          .clk(clk), .rst(restart), .en(adv), .in({match_active4, match_x4, match_group4, match_slot4}),
-          .out({active_w, x_w, group_w, slot_w}));
-        wire [DISP_W-1:0] group_disparity = group_w * UF + group_lane;
-        reg  [SUM_W-1:0]  best_sum;
-        reg  [DISP_W-1:0] best_disparity;
-        wire take_group = group_w == 0 || group_min < best_sum;
-        always @(posedge clk)
-          if (adv && take_group) begin
-            best_sum <= group_min;
-            best_disparity <= group_disparity;
-          end
-        assign completed_we = adv && active_w && group_w == LAST_GROUP;
-        assign completed_waddr = slot_w * ROW_SLOTS + x_w;
-        assign completed_wdata = take_group ? group_disparity : best_disparity;
-        assign end_we = 1'b0;
-        assign end_waddr = {END_AW{1'b0}};
-        assign end_wdata = {UF*DISP_W{1'b0}};
-      end
-
-      // Dm(x') of x' = x - D, from the completed match pixels or, for LR1's last DMAX - 1 of the
-      // row, from the row-end RAM; then the check.
-      wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-      wire outside = read_word[DISP_W] || read_x < d;
-      wire [X_W-1:0] xm = read_x - d;
-      wire from_row_end = LR == 1 && xm > frame_width - DMAX;
-      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
-      wire [DISP_W-1:0] match_q;
-      wire [UF*DISP_W-1:0] end_q;
-      fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(DISP_W), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) completed (
-        .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
-        .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
-      fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
-        .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata),
-        .re(adv), .raddr(read_slot_row * G + from_end / UF), .rdata(end_q));
-      reg               done_c, event_c, outside_c, from_row_end_c;
-      reg [X_W-1:0]     x_c;
-      reg [Y_W-1:0]     y_c;
-      reg [DISP_W:0]    word_c;
-      reg [LANE_W-1:0]  lane_c;
-      always @(posedge clk)
-        if (restart) begin
-          done_c <= 1'b0;
-          event_c <= 1'b0;
-        end else if (adv) begin
-          done_c <= read_done;
-          event_c <= read_was_event;
-          x_c <= read_x;
-          y_c <= read_y;
-          word_c <= read_word;
-          outside_c <= outside;
-          from_row_end_c <= from_row_end;
-          lane_c <= from_end % UF;
-        end
-      wire [DISP_W-1:0] dm = from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] : match_q;
-      wire [DISP_W-1:0] db = word_c[DISP_W-1:0];
-      wire [DISP_W-1:0] difference = db > dm ? db - dm : dm - db;
-      assign checked_done = done_c;
-      assign checked_event = event_c;
-      assign checked_x = x_c;
-      assign checked_y = y_c;
-      assign checked_word = (outside_c || difference > lr_threshold) ? INVALID_WORD : word_c;
-    end
-  endgenerate
-
-  // Optional median filter (semantics section 6): the stream of words before gap interpolation.
-  wire            pre_pending;  // a register in both branches
-  wire [X_W-1:0]  pre_x;
-  wire [Y_W-1:0]  pre_y;
-  wire [DISP_W:0] final_word;
-  generate
-    if (MEDIAN == 0) begin : no_median
-      assign pre_pending = checked_event;
-      assign pre_x = checked_x;
-      assign pre_y = checked_y;
-      assign final_word = checked_word;
-    end else begin : median
-      // The word read in the previous slot enters an M x M window; its centre is RM rows and
-      // RM slots behind.
-      localparam RM = MEDIAN / 2;
-      wire median_shift = adv && checked_done;  // a slot's word (or the invalid word outside the image)
-      wire [X_W-1:0] median_next_col = (checked_x == LAST_SLOT) ? {X_W{1'b0}} : checked_x + 1'b1;
-      wire [MEDIAN*MEDIAN*(DISP_W+1)-1:0] window;
-      fps_sad5_d128u32_fa1add_window #(.N(MEDIAN), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
-        .clk(clk), .shift(median_shift), .col(checked_x), .next_col(median_next_col), .word(checked_word),
-        .window(window));
-      wire [X_W-1:0] centre_x_m;
-      wire signed [YS_W-1:0] centre_y_m;
-      /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
-      wire centre_slot_m;
-      /* verilator lint_on UNUSEDSIGNAL */
-      fps_sad5_d128u32_fa1add_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre_m (
-        .x(checked_x), .y($signed({2'b00, checked_y})), .slot(1'b0), .centre_x(centre_x_m), .centre_y(centre_y_m),
-        .centre_slot(centre_slot_m));
-      reg [X_W-1:0] median_x;
-      reg signed [YS_W-1:0] median_y;
-      reg           fresh;     // high in the step after a shift: one result per slot
-      always @(posedge clk)
-        if (restart) fresh <= 1'b0;
-        else if (adv) fresh <= checked_done;
-      always @(posedge clk)
-        if (median_shift) begin
-          median_x <= centre_x_m;
-          median_y <= centre_y_m;
-        end
-      wire [MEDIAN-1:0] row_valid_m, col_valid_m;
-      fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(MEDIAN), .X_W(X_W), .YS_W(YS_W)) bounds_m (
-        .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid_m), .col_valid(col_valid_m));
-      fps_sad5_d128u32_fa1add_median_select #(.M(MEDIAN), .WORD_W(DISP_W + 1)) select (
-        .clk(clk), .en(adv), .window(window), .row_valid(row_valid_m), .col_valid(col_valid_m),
-        .median(final_word));
-      // The centre's coordinates travel as long as the selection takes.
-      wire signed [YS_W-1:0] event_rows_y = height_y + GAP;
-      wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
-      /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
-      wire [YS_W-1:0] median_row = median_y;
-      /* verilator lint_on UNUSEDSIGNAL */
-      wire          done_m;
-      wire [X_W-1:0] x_m;
-      wire [Y_W-1:0] y_m;
-      fps_sad5_d128u32_fa1add_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(DISP_W + 1)) median_delay (
-        .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}), .out({done_m, x_m, y_m}));
-      reg           pending_q;
-      reg [X_W-1:0] x_q;
-      reg [Y_W-1:0] y_q;
-      always @(posedge clk)
-        if (restart) pending_q <= 1'b0;
-        else if (adv) begin
-          pending_q <= done_m;
-          x_q <= x_m;
-          y_q <= y_m;
-        end
-      assign pre_pending = pending_q;
-      assign pre_x = x_q;
-      assign pre_y = y_q;
-    end
-  endgenerate
-  // After the median, one more register holds the word of the pixel in pre_x / pre_y.
-  reg [DISP_W:0] median_word_q;
-  always @(posedge clk)
-    if (adv) median_word_q <= final_word;
-  wire [DISP_W:0] pre_word = MEDIAN == 0 ? checked_word : median_word_q;
-
-  // Optional gap interpolation (semantics section 7), then the output.
-  wire            out_pending;  // a register in both branches
-  wire [X_W-1:0]  out_x;
-  wire [Y_W-1:0]  out_y;
-  generate
-    if (GAP == 0) begin : no_gap
-      assign out_pending = pre_pending;
-      assign out_x = pre_x;
-      assign out_y = pre_y;
-      assign out_word = pre_word;
-    end else begin : gap
-      fps_sad5_d128u32_fa1add_gap_fill #(.W(W), .WORD_W(DISP_W + 1), .X_W(X_W), .Y_W(Y_W)) stage (
-        .clk(clk), .rst(restart), .en(adv), .width(frame_width), .height(frame_height), .in_event(pre_pending), .in_x(pre_x), .in_y(pre_y), .in_word(pre_word),
-        .out_event(out_pending), .out_x(out_x), .out_y(out_y), .out_word(out_word));
-    end
-  endgenerate
-  assign out_due    = out_pending;
-  assign out_push   = adv && out_pending;
-  assign out_first  = out_x == 0 && out_y == 0;
-  assign out_last   = out_x == frame_width - 1;
-  assign frame_done = out_pending && out_last && out_y == frame_height - 1;
-  assign frame_end  = adv && frame_done;
-  // verilator lint_on WIDTH
-
-  `undef FPS_TAG_ACTIVE
-  `undef FPS_TAG_X
-  `undef FPS_TAG_GROUP
-  `undef FPS_TAG_CHAIN
-  `undef FPS_TAG_SLOT
+  assign restart = rst || (adv && frame_done);
 endmodule
 `resetall
 
@@ -968,6 +416,12 @@ module fps_sad5_d128u32_fa1add_axis_skid #(
   output wire              m_valid,
   input  wire              m_ready
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DATA_W < 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
+    end
+  endgenerate
   reg [DATA_W-1:0] data_q, skid_q;
   reg              valid_q, skid_valid_q;
 
@@ -1043,6 +497,12 @@ module fps_sad5_d128u32_fa1add_video_in #(
   output wire           frame_truncated,
   output wire           protocol_error
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (X_W < 1 || Y_W < 2) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_video_in_X_W_below_1_or_Y_W_below_2 failed ();
+    end
+  endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
   reg [1:0]     state;
   reg           quiet;  // skipped data is already accounted for
@@ -1190,6 +650,21 @@ module fps_sad5_d128u32_fa1add_control #(
   input  wire              frame_truncated,
   input  wire              protocol_error
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
+      fps_sad5_d128u32_fa1add_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+    end
+    if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
+      fps_sad5_d128u32_fa1add_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
+    end
+    if (P1_INIT < 0 || P1_INIT > P2_INIT || P2_INIT > P2_MAX || P2_MAX >= (1 << PATH_W)) begin : invalid_penalties
+      fps_sad5_d128u32_fa1add_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
+    end
+    if (UNIQUENESS_INIT < 0 || UNIQUENESS_INIT > 99 || LR_THRESHOLD_INIT < 0 || LR_THRESHOLD_INIT > 15) begin : invalid_settings
+      fps_sad5_d128u32_fa1add_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
+    end
+  endgenerate
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
                    A_P1 = 8'h10, A_P2 = 8'h14, A_UNIQUENESS = 8'h18, A_LR_THRESHOLD = 8'h1C,
                    A_WIDTH = 8'h20, A_HEIGHT = 8'h24, A_REJECTED_WRITES = 8'h28, A_FRAMES_DONE = 8'h30,
@@ -1322,6 +797,182 @@ endmodule
 
 `resetall
 `default_nettype none
+// Window stage (docs/architecture.md, "Front end"): takes one left and one right pixel per slot
+// in raster order, keeps N - 1 rows of each image in line buffers and forms the N x N windows,
+// with the positions of their centres and which window rows and columns lie inside the image
+// (semantics section 1). Outside the frame (bubble slots, rows below the image) the windows take
+// zeros. transform_x / transform_y / transform_slot are the centre of the windows of the
+// previous shift: the position of what the transform (or the SAD/ZSAD window registers) holds.
+module fps_sad5_d128u32_fa1add_front_end #(
+  parameter N = 5,
+  parameter ROW_SLOTS = 64,
+  parameter G = 4,
+  // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
+  parameter COST_ROWS = 2,
+  parameter COST_K_W = 1,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  // signed row coordinates (Y_W + 2): a window centre may lie above the image
+  parameter YS_W = 8,
+  parameter G_W = 2
+) (
+  input  wire                   clk,
+  input  wire                   restart,
+  input  wire                   adv,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
+  output wire                   in_due,
+  output wire                   in_take,
+  input  wire [7:0]             in_left,
+  input  wire [7:0]             in_right,
+  // the step's group and the slot's last step; shift = adv in a slot's last step
+  output wire [G_W-1:0]         group,
+  output wire                   slot_end,
+  output wire                   shift,
+  output wire [N*N*8-1:0]       window_left,
+  output wire [N*N*8-1:0]       window_right,
+  output wire [N-1:0]           row_valid,
+  output wire [N-1:0]           col_valid,
+  // window rows inside the image for the newest column (zero when that column is outside)
+  output wire [N-1:0]           newest_row_valid,
+  output reg  [X_W-1:0]         transform_x,
+  output reg  signed [YS_W-1:0] transform_y,
+  output reg  [COST_K_W-1:0]    transform_slot
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fps_sad5_d128u32_fa1add_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (YS_W < Y_W + 2) begin : invalid_YS_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    end
+  endgenerate
+  localparam R = N / 2;
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam signed [YS_W-1:0] R_Y = R;
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+
+  wire [X_W-1:0] si;
+  wire [Y_W-1:0] ti;
+  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
+  fps_sad5_d128u32_fa1add_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+                            .K_W(COST_K_W))
+    input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
+                    .slot_end(slot_end));
+  assign in_due  = slot_end && si < frame_width && ti < frame_height;
+  assign in_take = adv && in_due;
+  assign shift = adv && slot_end;
+  wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
+
+  fps_sad5_d128u32_fa1add_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .word(in_due ? in_left : 8'd0), .window(window_left));
+  fps_sad5_d128u32_fa1add_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+    .clk(clk), .shift(shift), .col(si), .next_col(next_col),
+    .word(in_due ? in_right : 8'd0), .window(window_right));
+
+  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
+  wire [X_W-1:0] centre_x;
+  wire signed [YS_W-1:0] centre_y;
+  wire [COST_K_W-1:0] centre_slot;
+  fps_sad5_d128u32_fa1add_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
+                           .SLOT_W(COST_K_W)) centre (
+    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
+    .centre_slot(centre_slot));
+  reg  [X_W-1:0] window_x;
+  reg  signed [YS_W-1:0] window_y;
+  reg  [COST_K_W-1:0] window_slot;
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
+  reg  newest_in_row;
+  reg  signed [YS_W-1:0] newest_y;
+  always @(posedge clk)
+    if (shift) begin
+      window_x <= centre_x;
+      window_y <= centre_y;
+      window_slot <= centre_slot;
+      newest_in_row <= {1'b0, si} < width_x;
+      newest_y <= $signed({2'b00, ti}) - R_Y;
+      transform_x <= window_x;
+      transform_y <= window_y;
+      transform_slot <= window_slot;
+    end
+
+  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+  wire [N-1:0] newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is newest_in_row
+  wire [N-1:0] newest_unused_columns;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
+    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .col_valid(newest_unused_columns));
+  assign newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
+// row-time `row`, and row mod K (which row of a K-row reorder RAM the row uses).
+module fps_sad5_d128u32_fa1add_raster_counter #(
+  parameter G = 4,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter G_W = 2,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter K_W = 1
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           en,
+  output reg  [G_W-1:0] group,
+  output reg  [X_W-1:0] slot,
+  output reg  [Y_W-1:0] row,
+  output reg  [K_W-1:0] row_slot,
+  output wire           slot_end
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
+      fps_sad5_d128u32_fa1add_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+    end
+    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
+      fps_sad5_d128u32_fa1add_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+    end
+  endgenerate
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam integer LAST_CHAIN_I = K - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+
+  assign slot_end = group == LAST_GROUP;
+  always @(posedge clk)
+    if (restart) begin
+      group <= 0;
+      slot <= 0;
+      row <= 0;
+      row_slot <= 0;
+    end else if (en) begin
+      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
+      if (slot_end) begin
+        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
+        if (slot == LAST_SLOT) begin
+          row <= row + 1'b1;
+          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
+        end
+      end
+    end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // Line buffer and N x N window over a raster stream of WORD_W-bit words (pixels, or transform
 // codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
 // one slot ahead); the window is a register array that shifts in one column per slot.
@@ -1347,6 +998,15 @@ module fps_sad5_d128u32_fa1add_window #(
   input  wire [WORD_W-1:0] word,
   output wire [N*N*WORD_W-1:0] window
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3) begin : invalid_N
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_N_below_3 failed ();
+    end
+    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+    end
+  endgenerate
   localparam STORED_W = (N - 1) * WORD_W;
   localparam LB_AW = $clog2(ROW_SLOTS);
 
@@ -1396,6 +1056,15 @@ module fps_sad5_d128u32_fa1add_window_centre #(
   output wire signed [YS_W-1:0] centre_y,
   output wire [SLOT_W-1:0]      centre_slot
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
+    end
+    if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
+    end
+  endgenerate
   localparam integer LAG_I = LAG;
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
@@ -1430,6 +1099,12 @@ module fps_sad5_d128u32_fa1add_window_bounds #(
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+    end
+  endgenerate
   localparam LAG = SIDE / 2;
   localparam [X_W:0] LAG_X = LAG;
   localparam signed [YS_W-1:0] LAG_Y = LAG;
@@ -1450,6 +1125,109 @@ endmodule
 
 `resetall
 `default_nettype none
+// Cost stage for SAD and ZSAD: the zero-extended base window, and the match window's newest
+// column, which enters the match ring (plus, for ZSAD, the base window's mean and the column's
+// sum). The ring serves later centres too, so the column is zero-extended by its own position.
+// history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
+module fps_sad5_d128u32_fa1add_pixel_window_cost #(
+  parameter N = 5,
+  // ZSAD: subtract the windows' means
+  parameter ZERO_MEAN = 0,
+  parameter DMAX = 32,
+  parameter UF = 8,
+  parameter COST_W = 13,
+  parameter COST_MAX = 6375,
+  // width of a window column's pixel sum; ZSAD: mean = (sum * MEAN_MUL) >> MEAN_SHIFT
+  parameter COLSUM_W = 11,
+  parameter MEAN_MUL = 1,
+  parameter MEAN_SHIFT = 0,
+  parameter COST_K_W = 1,
+  parameter X_W = 7,
+  parameter YS_W = 8,
+  parameter G_W = 2
+) (
+  input  wire                   clk,
+  input  wire                   adv,
+  input  wire                   slot_end,
+  input  wire                   shift,
+  input  wire [G_W-1:0]         group,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [N*N*8-1:0]       window_left,
+  input  wire [N*N*8-1:0]       window_right,
+  input  wire [N-1:0]           row_valid,
+  input  wire [N-1:0]           col_valid,
+  input  wire [N-1:0]           newest_row_valid,
+  input  wire [X_W-1:0]         transform_x,
+  input  wire signed [YS_W-1:0] transform_y,
+  input  wire [COST_K_W-1:0]    transform_slot,
+  output reg  [X_W-1:0]         history_x,
+  output reg  signed [YS_W-1:0] history_y,
+  output reg  [COST_K_W-1:0]    history_slot,
+  output wire [UF*COST_W-1:0]   costs
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fps_sad5_d128u32_fa1add_invalid_parameters_pixel_window_cost_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (255 * N >= (1 << COLSUM_W)) begin : invalid_COLSUM_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_pixel_window_cost_COLSUM_W_does_not_hold_255_N failed ();
+    end
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+    end
+  endgenerate
+  wire [N*N*8-1:0] base_masked;
+  fps_sad5_d128u32_fa1add_window_mask #(.N(N), .WORD_W(8)) base_mask (
+    .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
+  reg [N*8-1:0]      newest_column;
+  reg [COLSUM_W-1:0] newest_sum;
+  reg [COLSUM_W+7:0] base_sum;
+  integer e;
+  always @* begin
+    newest_sum = 0;
+    base_sum = 0;
+    for (e = 0; e < N; e = e + 1) begin
+      newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
+      newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
+    end
+    for (e = 0; e < N * N; e = e + 1) base_sum = base_sum + {{COLSUM_W{1'b0}}, base_masked[e*8 +: 8]};
+  end
+  /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+  wire [7:0] base_mean = (base_sum * MEAN_MUL) >> MEAN_SHIFT;
+  /* verilator lint_on WIDTH */
+  reg [N*N*8-1:0]    base_t, base_h;
+  reg [N*8-1:0]      column_t;
+  reg [COLSUM_W-1:0] column_sum_t;
+  reg [7:0]          base_mean_t, base_mean_h;
+  always @(posedge clk)
+    if (shift) begin
+      history_slot <= transform_slot;
+      base_t       <= base_masked;
+      column_t     <= newest_column;
+      column_sum_t <= newest_sum;
+      base_mean_t  <= base_mean;
+      base_h       <= base_t;
+      base_mean_h  <= base_mean_t;
+      history_x    <= transform_x;
+      history_y    <= transform_y;
+    end
+  wire [(UF+N-1)*N*8-1:0]      view;
+  wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
+  fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_t), .view(view));
+  fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
+  fps_sad5_d128u32_fa1add_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
+                               .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
+                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
+    .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
+    .group(group), .x(history_x), .width(frame_width), .costs(costs));
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // Zero extension (docs/semantics.md, section 1): words of an N x N window whose row or column
 // lies outside the image read as 0.
 module fps_sad5_d128u32_fa1add_window_mask #(
@@ -1463,6 +1241,12 @@ module fps_sad5_d128u32_fa1add_window_mask #(
   input  wire [N-1:0]          col_valid,
   output wire [N*N*WORD_W-1:0] masked
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || WORD_W < 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
+    end
+  endgenerate
   genvar p;
   generate
     for (p = 0; p < N * N; p = p + 1) begin : position
@@ -1475,18 +1259,68 @@ endmodule
 
 `resetall
 `default_nettype none
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
+module fps_sad5_d128u32_fa1add_match_ring #(
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
+  // disparity range
+  parameter DMAX = 128,
+  // disparities per step
+  parameter UF = 32
+) (
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
+  always @(posedge clk)
+    if (en)
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // UF window-based matching costs per step (docs/semantics.md, section 2), lane l = disparity
 // d = group*UF + l: the sum over a SPAN x SPAN window of
-//   KIND 0 (SAD):  |b - m|                      over pixels
-//   KIND 1 (ZSAD): |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2)
-//   KIND 2 (SHD):  popcount(b xor m)            over census codes
+//   SAD:  |b - m|                      over pixels
+//   ZSAD: |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2) (ZERO_MEAN)
+//   SHD:  popcount(b xor m)            over census codes (HAMMING)
 // b is the (already zero-extended) base window; the match window of lane l is view columns
 // l .. l + SPAN - 1 (fps_sad5_d128u32_fa1add_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Two register
 // stages: per-row sums, then the total.
 module fps_sad5_d128u32_fa1add_window_cost_lanes #(
-  parameter KIND = 0,
+  // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
+  parameter ZERO_MEAN = 0,
+  parameter HAMMING = 0,
   // bits per window element (8 for pixels, the code width for SHD)
   parameter ELEM_W = 8,
   parameter SPAN = 5,
@@ -1513,6 +1347,21 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   input  wire [X_W-1:0]                      width,
   output reg  [UF*COST_W-1:0]                costs
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SPAN < 1 || SPAN % 2 == 0 || (ZERO_MEAN != 0 && SPAN > 16)) begin : invalid_SPAN
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
+    end
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if ((HAMMING == 0 && ELEM_W != 8) || ELEM_W < 1) begin : invalid_ELEM_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
+    end
+  endgenerate
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
   // wide enough for x + SPAN and for any disparity plus R
@@ -1537,7 +1386,7 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
 
       // ZSAD: the match window's mean from its column sums.
       wire signed [9:0] delta;
-      if (KIND == 1) begin : zero_mean
+      if (ZERO_MEAN) begin : zero_mean
         reg [WINSUM_W-1:0] match_sum;
         integer c;
         always @* begin
@@ -1567,7 +1416,7 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
           for (k = 0; k < SPAN; k = k + 1) begin
             bv = base[(i*SPAN + k)*ELEM_W +: ELEM_W];
             mv = column_valid[k] ? view[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
-            if (KIND == 2) begin
+            if (HAMMING) begin
               for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) row_sum = row_sum + {{(COST_W-1){1'b0}}, bv[b2] ^ mv[b2]};
             end else begin
               /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference
@@ -1603,91 +1452,248 @@ endmodule
 
 `resetall
 `default_nettype none
-// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
-// row-time `row`, and row mod K (which row of a K-row reorder RAM the row uses).
-module fps_sad5_d128u32_fa1add_raster_counter #(
-  parameter G = 4,
+// Cost reorder RAM (docs/architecture.md): the cost words, written in raster order as the cost
+// lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
+// order. Rows outside the image are never written, so only valid rows' slots (row mod
+// COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
+module fps_sad5_d128u32_fa1add_cost_reorder #(
   parameter ROW_SLOTS = 64,
-  parameter K = 2,
-  parameter G_W = 2,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter COST_W = 5,
+  // register stages of the cost lanes
+  parameter LAT = 1,
+  parameter COST_ROWS = 2,
+  parameter COST_K_W = 1,
+  parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter K_W = 1
+  parameter YS_W = 8,
+  parameter G_W = 2
 ) (
-  input  wire           clk,
-  input  wire           restart,
-  input  wire           en,
-  output reg  [G_W-1:0] group,
-  output reg  [X_W-1:0] slot,
-  output reg  [Y_W-1:0] row,
-  output reg  [K_W-1:0] row_slot,
-  output wire           slot_end
+  input  wire                   clk,
+  input  wire                   restart,
+  input  wire                   adv,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  input  wire [G_W-1:0]         group,
+  input  wire [X_W-1:0]         history_x,
+  input  wire signed [YS_W-1:0] history_y,
+  input  wire [COST_K_W-1:0]    history_slot,
+  input  wire [UF*COST_W-1:0]   costs,
+  output wire                   cost_valid,
+  output wire [X_W-1:0]         cost_x,
+  output wire [COST_K_W-1:0]    cost_row_slot,
+  output wire [G_W-1:0]         cost_group,
+  input  wire [COST_AW-1:0]     cost_raddr,
+  output wire [UF*COST_W-1:0]   cost_q
 );
-  localparam integer LAST_GROUP_I = G - 1;
-  localparam integer LAST_CHAIN_I = K - 1;
-  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
-  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-
-  assign slot_end = group == LAST_GROUP;
-  always @(posedge clk)
-    if (restart) begin
-      group <= 0;
-      slot <= 0;
-      row <= 0;
-      row_slot <= 0;
-    end else if (en) begin
-      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
-      if (slot_end) begin
-        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
-        if (slot == LAST_SLOT) begin
-          row <= row + 1'b1;
-          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
-        end
-      end
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (LAT < 1) begin : invalid_LAT
+      fps_sad5_d128u32_fa1add_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+      fps_sad5_d128u32_fa1add_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
+    end
+  endgenerate
+  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
+  fps_sad5_d128u32_fa1add_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(LAT)) cost_tag (
+    .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
+    .out({cost_valid, cost_x, cost_row_slot, cost_group}));
+  // The address is a product of narrow counters and constants, cut to the RAM's address width.
+  /* verilator lint_off WIDTH */
+  wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
+  /* verilator lint_on WIDTH */
+  fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(UF*COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+    .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
+    .re(adv), .raddr(cost_raddr), .rdata(cost_q));
 endmodule
 `resetall
 
 `resetall
 `default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_sad5_d128u32_fa1add_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_sad5_d128u32_fa1add_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
 ) (
-  input  wire                            clk,
-  input  wire                            en,
-  input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
 );
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall
 
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+`resetall
+`default_nettype none
+// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
+// register only loads when re is high, so a stalled pipeline keeps its read data.
+module fps_sad5_d128u32_fa1add_ram_sdp #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 16,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 4
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire              re,
+  input  wire [ADDR_W-1:0] raddr,
+  output reg  [WIDTH-1:0]  rdata
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
 
-  integer p;
-  always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+  always @(posedge clk) begin
+    if (we) mem[waddr] <= wdata;
+    if (re) rdata <= mem[raddr];
+  end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// LR2 match side (docs/semantics.md, section 5): a second cost volume and aggregation with the
+// images' roles swapped, and its winner-take-all (no uniqueness). Every cost is symmetric, so the
+// match side's C(x', d) is the base side's C(x' + d, d): lane l of each base cost word goes to its
+// own RAM bank at match pixel x - d, and a word of the match side reads all banks at one address.
+// From match_on on, completed_* writes Dm(x') of each match pixel.
+module fps_sad5_d128u32_fa1add_lr2_match #(
+  parameter W = 64,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter SLEN = 32,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter DMAX = 32,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter PATH_W = 7,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter PATHS = 15,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter PATH_TREE_LAT = 1,
+  parameter WTA_TREE_LAT = 1,
+  parameter OUT_ROWS = 3,
+  parameter OUT_K_W = 2,
+  parameter DISP_AW = 8,
+  parameter COST_ROWS = 3,
+  parameter COST_K_W = 2,
+  parameter COST_AW = 10,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter G_W = 2,
+  parameter K_W = 1,
+  parameter LANE_W = 3
+) (
+  input  wire                 clk,
+  input  wire                 restart,
+  input  wire                 adv,
+  input  wire                 match_on,
+  input  wire [X_W-1:0]       frame_width,
+  input  wire [Y_W-1:0]       frame_height,
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
+  // the base side's cost words as the cost reorder RAM takes them
+  input  wire                 cost_valid,
+  input  wire [X_W-1:0]       cost_x,
+  input  wire [COST_K_W-1:0]  cost_row_slot,
+  input  wire [G_W-1:0]       cost_group,
+  input  wire [UF*COST_W-1:0] costs,
+  output wire                 completed_we,
+  output wire [DISP_AW-1:0]   completed_waddr,
+  output wire [DISP_W-1:0]    completed_wdata
+);
+  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  generate
+    if (DMAX != G * UF || COST_ROWS != K + 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
+    end
+  endgenerate
+  // Addresses and disparities are products of narrow counters and constants, cut to width.
+  // verilator lint_off WIDTH
+  wire [UF*COST_W-1:0] match_costs;
+  wire [COST_AW-1:0]   match_raddr;
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : bank
+      wire [DISP_W-1:0] disparity = cost_group * UF + l;
+      fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+        .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
+        .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
+        .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
+        .rdata(match_costs[l*COST_W +: COST_W]));
+    end
+  endgenerate
+  wire [UF*SUM_W-1:0] sums;
+  wire                active;
+  wire [X_W-1:0]      x;
+  wire [G_W-1:0]      group;
+  /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
+  wire [K_W-1:0]      chain;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [OUT_K_W-1:0]  slot;
+  fps_sad5_d128u32_fa1add_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+                        .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
+                        .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
+                        .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
+                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
+    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1),
+    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sum4(sums),
+    .active4(active), .x4(x), .group4(group), .chain4(chain), .slot4(slot));
+  wire              active_w;
+  wire [X_W-1:0]    x_w;
+  wire [OUT_K_W-1:0] slot_w;
+  wire [G_W-1:0]    group_w;
+  /* verilator lint_off UNUSEDSIGNAL */  // the match side's disparities are never invalid
+  wire [DISP_W:0]   word_w;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
+                 .TAG_W(1 + X_W + OUT_K_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+    .clk(clk), .restart(restart), .adv(adv), .sums(sums), .group(group), .tag({active, x, slot}),
+    .group_out(group_w), .tag_out({active_w, x_w, slot_w}), .word(word_w));
+  assign completed_we = adv && active_w && group_w == LAST_GROUP;
+  assign completed_waddr = slot_w * ROW_SLOTS + x_w;
+  assign completed_wdata = word_w[DISP_W-1:0];
+  // verilator lint_on WIDTH
 endmodule
 `resetall
 
@@ -1747,6 +1753,30 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   output wire [K_W-1:0]       chain4,
   output wire [OUT_K_W-1:0]   slot4
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    end
+    if ((K - 1) * G < PATH_TREE_LAT + 1) begin : invalid_chains
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
+    end
+    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
+    end
+    if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
+    end
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
+    end
+    if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
+    end
+    if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
+      fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+    end
+  endgenerate
   localparam ONES = {PATH_W{1'b1}};
   localparam ROW_DEPTH = (W + 1) * G;
   localparam ROW_AW = $clog2(ROW_DEPTH);
@@ -2015,83 +2045,58 @@ endmodule
 
 `resetall
 `default_nettype none
-// One aggregation path for UF lanes (docs/semantics.md, section 3):
-//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
-// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
-// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
-module fps_sad5_d128u32_fa1add_path_lanes #(
-  parameter UF = 32,
-  parameter COST_W = 6,
-  parameter PATH_W = 8
+// Winner-take-all (docs/semantics.md, section 4): per step the minimum over the UF lanes of one
+// group (fps_sad5_d128u32_fa1add_min_tree), then a running minimum over the groups of the pixel, the earlier
+// group winning ties. word is the pixel's word (invalid flag on top, never set here) including
+// the group in group_out; it is the pixel's result in its last group's step. The tag (the
+// pixel's position) travels along, TREE_LAT steps.
+module fps_sad5_d128u32_fa1add_wta #(
+  parameter UF = 8,
+  parameter SUM_W = 9,
+  parameter DISP_W = 5,
+  parameter LANE_W = 3,
+  parameter G_W = 2,
+  parameter TAG_W = 8,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter TREE_LAT = 1
 ) (
-  input  wire                 clk,
-  input  wire                 en,
-  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
-  input  wire [PATH_W-1:0]    p1,
-  input  wire [PATH_W-1:0]    p2,
-  input  wire [UF*COST_W-1:0] cost,
-  input  wire                 has_pred,
-  input  wire [UF*PATH_W-1:0] prev,
-  input  wire [PATH_W-1:0]    prev_below,
-  input  wire [PATH_W-1:0]    prev_above,
-  input  wire [PATH_W-1:0]    prev_min,
-  output reg  [UF*PATH_W-1:0] path
+  input  wire                clk,
+  input  wire                restart,
+  input  wire                adv,
+  input  wire [UF*SUM_W-1:0] sums,
+  input  wire [G_W-1:0]      group,
+  input  wire [TAG_W-1:0]    tag,
+  output wire [G_W-1:0]      group_out,
+  output wire [TAG_W-1:0]    tag_out,
+  output wire [DISP_W:0]     word
 );
-  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
-  localparam EXT_W = PATH_W + 1;
-  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
-  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
-
-  genvar l;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
-      wire [EXT_W-1:0] stay = same < jump ? same : jump;
-      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
-      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
-      /* verilator lint_on UNUSEDSIGNAL */
-      always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_wta_LANE_W_does_not_hold_UF_minus_1 failed ();
+    end
+    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
+      fps_sad5_d128u32_fa1add_invalid_parameters_wta_TREE_LAT_is_not_the_min_tree_latency failed ();
     end
   endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
-// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
-// result in the step where the tree delivers its last group (group == G - 1).
-module fps_sad5_d128u32_fa1add_path_minimum #(
-  parameter UF = 32,
-  parameter PATH_W = 8,
-  parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
-) (
-  input  wire               clk,
-  input  wire               en,
-  input  wire [UF*PATH_W-1:0] path,
-  // group of the values the tree delivers in this step
-  input  wire [G_W-1:0]     group,
-  output wire [PATH_W-1:0]  minimum
-);
-  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
-  wire [PATH_W-1:0] group_min;
-  wire [LANE_W-1:0] unused_lane;
-  fps_sad5_d128u32_fa1add_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
-
-  reg [PATH_W-1:0] running;
-  assign minimum = (group == 0 || group_min < running) ? group_min : running;
+  fps_sad5_d128u32_fa1add_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
+    .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
+  wire [SUM_W-1:0]  group_min;
+  wire [LANE_W-1:0] group_lane;
+  fps_sad5_d128u32_fa1add_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+    .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
+  /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
+  wire [DISP_W-1:0] group_disparity = group_out * UF + group_lane;
+  /* verilator lint_on WIDTH */
+  reg  [SUM_W-1:0]  best_sum;
+  reg  [DISP_W-1:0] best_disparity;
+  wire take_group = group_out == 0 || group_min < best_sum;
   always @(posedge clk)
-    if (en) running <= minimum;
+    if (adv && take_group) begin
+      best_sum <= group_min;
+      best_disparity <= group_disparity;
+    end
+  assign word = {1'b0, take_group ? group_disparity : best_disparity};
 endmodule
 `resetall
 
@@ -2116,6 +2121,18 @@ module fps_sad5_d128u32_fa1add_min_tree #(
   output wire [W-1:0]     min_value,
   output wire [IDX_W-1:0] min_index
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fps_sad5_d128u32_fa1add_invalid_parameters_min_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fps_sad5_d128u32_fa1add_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
   localparam LEVELS = (N > 1) ? $clog2(N) : 0;
 
   genvar l, i;
@@ -2170,60 +2187,95 @@ endmodule
 
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_sad5_d128u32_fa1add_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
+// One aggregation path for UF lanes (docs/semantics.md, section 3):
+//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
+// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
+// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
+// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
+module fps_sad5_d128u32_fa1add_path_lanes #(
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter PATH_W = 8
 ) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
+  input  wire                 clk,
+  input  wire                 en,
+  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
+  input  wire [UF*COST_W-1:0] cost,
+  input  wire                 has_pred,
+  input  wire [UF*PATH_W-1:0] prev,
+  input  wire [PATH_W-1:0]    prev_below,
+  input  wire [PATH_W-1:0]    prev_above,
+  input  wire [PATH_W-1:0]    prev_min,
+  output reg  [UF*PATH_W-1:0] path
 );
-  reg [WIDTH*DEPTH-1:0] line;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
     end
   endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
+  localparam EXT_W = PATH_W + 1;
+  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
+  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
+      wire [EXT_W-1:0] stay = same < jump ? same : jump;
+      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
+      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      /* verilator lint_on UNUSEDSIGNAL */
+      always @(posedge clk)
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+    end
+  endgenerate
 endmodule
 `resetall
 
 `resetall
 `default_nettype none
-// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
-// register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_sad5_d128u32_fa1add_ram_sdp #(
-  // word width in bits
-  parameter WIDTH = 8,
-  // number of words
-  parameter DEPTH = 16,
-  // address bits, at least clog2(DEPTH)
-  parameter ADDR_W = 4
+// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
+// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
+// result in the step where the tree delivers its last group (group == G - 1).
+module fps_sad5_d128u32_fa1add_path_minimum #(
+  parameter UF = 32,
+  parameter PATH_W = 8,
+  parameter G_W = 2,
+  parameter LEVELS_PER_STAGE = 3
 ) (
-  input  wire              clk,
-  input  wire              we,
-  input  wire [ADDR_W-1:0] waddr,
-  input  wire [WIDTH-1:0]  wdata,
-  input  wire              re,
-  input  wire [ADDR_W-1:0] raddr,
-  output reg  [WIDTH-1:0]  rdata
+  input  wire               clk,
+  input  wire               en,
+  input  wire [UF*PATH_W-1:0] path,
+  // group of the values the tree delivers in this step
+  input  wire [G_W-1:0]     group,
+  output wire [PATH_W-1:0]  minimum
 );
-  reg [WIDTH-1:0] mem [0:DEPTH-1];
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
+  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
+  wire [PATH_W-1:0] group_min;
+  wire [LANE_W-1:0] unused_lane;
+  fps_sad5_d128u32_fa1add_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
-  always @(posedge clk) begin
-    if (we) mem[waddr] <= wdata;
-    if (re) rdata <= mem[raddr];
-  end
+  reg [PATH_W-1:0] running;
+  assign minimum = (group == 0 || group_min < running) ? group_min : running;
+  always @(posedge clk)
+    if (en) running <= minimum;
 endmodule
 `resetall
 
@@ -2249,6 +2301,12 @@ module fps_sad5_d128u32_fa1add_ram_async #(
   input  wire [ADDR_W-1:0] raddr_b,
   output wire [WIDTH-1:0]  rdata_b
 );
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
 
   always @(posedge clk)
@@ -2256,5 +2314,207 @@ module fps_sad5_d128u32_fa1add_ram_async #(
 
   assign rdata_a = mem[raddr_a];
   assign rdata_b = mem[raddr_b];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Disparity reorder RAM and the output's raster order (docs/architecture.md): the winner-take-all
+// writes each pixel's word in its last group's step, in chain order; from out_on on, one word is
+// read per slot in raster order. Rows below the image (the median's last rows need them, and
+// EXTRA_ROWS more for gap interpolation, one row behind) and bubble slots read as invalid words.
+// The read stream: read_done in the step after each slot's read, read_event where that slot is a
+// pixel of the frame's output rows, its position and word.
+module fps_sad5_d128u32_fa1add_disparity_reorder #(
+  parameter ROW_SLOTS = 64,
+  parameter G = 4,
+  parameter DISP_W = 5,
+  // rows of the RAM (the slot is the row modulo OUT_ROWS)
+  parameter OUT_ROWS = 3,
+  parameter OUT_K_W = 2,
+  // address width of the OUT_ROWS * ROW_SLOTS words
+  parameter DISP_AW = 8,
+  parameter EXTRA_ROWS = 0,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter G_W = 2
+) (
+  input  wire               clk,
+  input  wire               restart,
+  input  wire               adv,
+  input  wire               out_on,
+  input  wire [X_W-1:0]     frame_width,
+  input  wire [Y_W-1:0]     frame_height,
+  // the winner-take-all's pixel: written in its last group's step
+  input  wire               active,
+  input  wire [X_W-1:0]     x,
+  input  wire [OUT_K_W-1:0] slot,
+  input  wire [G_W-1:0]     group,
+  input  wire [DISP_W:0]    word,
+  output reg                read_done,
+  output reg                read_event,
+  output reg  [X_W-1:0]     read_x,
+  output reg  [Y_W-1:0]     read_y,
+  output reg  [OUT_K_W-1:0] read_slot_row,
+  output wire [DISP_W:0]    read_word
+);
+  localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  generate
+    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_K_W) < OUT_ROWS) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_reorder_addresses_too_narrow failed ();
+    end
+  endgenerate
+  // Addresses are products of narrow counters and constants, cut to the RAM's address width.
+  // verilator lint_off WIDTH
+  wire [DISP_AW-1:0] waddr = slot * ROW_SLOTS + x;
+  wire write = adv && active && group == LAST_GROUP;
+
+  /* verilator lint_off UNUSEDSIGNAL */  // slot_end says what the output needs of the group
+  wire [G_W-1:0] go;
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [X_W-1:0] so;
+  wire [Y_W-1:0] to;
+  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
+  wire slot_end;
+  fps_sad5_d128u32_fa1add_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+                            .K_W(OUT_K_W))
+    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
+                     .row_slot(to_slot), .slot_end(slot_end));
+  wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
+  wire read_slot = out_on && slot_end;
+  wire read_now = read_slot && so < frame_width && to < event_rows;
+  wire read_valid = read_now && to < frame_height;
+  wire [DISP_W:0] disparity_q;
+  fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+    .clk(clk), .we(write), .waddr(waddr), .wdata(word),
+    .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
+  // verilator lint_on WIDTH
+  reg read_was_valid;
+  always @(posedge clk)
+    if (restart) begin
+      read_done <= 1'b0;
+      read_event <= 1'b0;
+      read_was_valid <= 1'b0;
+    end else if (adv) begin
+      read_done <= read_slot;
+      read_event <= read_now;
+      read_was_valid <= read_valid;
+      read_x <= so;
+      read_y <= to;
+      read_slot_row <= to_slot;
+    end
+  assign read_word = read_was_valid ? disparity_q : INVALID_WORD;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Left-right check (docs/semantics.md, section 5), one step: the match side writes Dm(x') of its
+// completed pixels (and, with ROW_END, as LR1 does, the last DMAX - 1 of each row into the
+// row-end RAM, one word of UF per group); for the read stream's pixel x with disparity D, Dm of
+// x' = x - D is read, and the word becomes invalid where x' lies outside the image or
+// |D - Dm(x')| > lr_threshold. The stream leaves one step later.
+module fps_sad5_d128u32_fa1add_lr_check #(
+  parameter ROW_SLOTS = 64,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter DMAX = 32,
+  parameter DISP_W = 5,
+  parameter OUT_ROWS = 3,
+  parameter OUT_K_W = 2,
+  parameter DISP_AW = 8,
+  // LR1: the row ends come from the row-end RAM
+  parameter ROW_END = 1,
+  parameter END_AW = 4,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter LANE_W = 3
+) (
+  input  wire                 clk,
+  input  wire                 restart,
+  input  wire                 adv,
+  /* verilator lint_off UNUSEDSIGNAL */  // only LR1's row ends need the width
+  input  wire [X_W-1:0]       frame_width,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [3:0]           lr_threshold,
+  input  wire                 completed_we,
+  input  wire [DISP_AW-1:0]   completed_waddr,
+  input  wire [DISP_W-1:0]    completed_wdata,
+  /* verilator lint_off UNUSEDSIGNAL */  // LR2 has no row-end RAM
+  input  wire                 row_end_we,
+  input  wire [END_AW-1:0]    row_end_waddr,
+  input  wire [UF*DISP_W-1:0] row_end_wdata,
+  /* verilator lint_on UNUSEDSIGNAL */
+  // the read stream (fps_sad5_d128u32_fa1add_disparity_reorder)
+  input  wire                 read_done,
+  input  wire                 read_event,
+  input  wire [X_W-1:0]       read_x,
+  input  wire [Y_W-1:0]       read_y,
+  input  wire [OUT_K_W-1:0]   read_slot_row,
+  input  wire [DISP_W:0]      read_word,
+  output reg                  checked_done,
+  output reg                  checked_event,
+  output reg  [X_W-1:0]       checked_x,
+  output reg  [Y_W-1:0]       checked_y,
+  output wire [DISP_W:0]      checked_word
+);
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  generate
+    if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_lr_check_addresses_too_narrow failed ();
+    end
+  endgenerate
+  // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
+  // verilator lint_off WIDTH
+  wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
+  wire outside = read_word[DISP_W] || read_x < d;
+  wire [X_W-1:0] xm = read_x - d;
+  wire [DISP_W-1:0] match_q;
+  fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
+    .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
+    .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
+  reg [DISP_W:0] word_c;
+  reg            outside_c;
+  always @(posedge clk)
+    if (restart) begin
+      checked_done <= 1'b0;
+      checked_event <= 1'b0;
+    end else if (adv) begin
+      checked_done <= read_done;
+      checked_event <= read_event;
+      checked_x <= read_x;
+      checked_y <= read_y;
+      word_c <= read_word;
+      outside_c <= outside;
+    end
+  // Dm(x'): from the completed match pixels or, for LR1's last DMAX - 1 of the row, the row end.
+  wire [DISP_W-1:0] dm;
+  generate
+    if (ROW_END) begin : row_end
+      wire from_row_end = xm > frame_width - DMAX;
+      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
+      wire [UF*DISP_W-1:0] end_q;
+      fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
+        .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
+        .re(adv), .raddr(read_slot_row * G + from_end / UF), .rdata(end_q));
+      reg              from_row_end_c;
+      reg [LANE_W-1:0] lane_c;
+      always @(posedge clk)
+        if (adv) begin
+          from_row_end_c <= from_row_end;
+          lane_c <= from_end % UF;
+        end
+      assign dm = from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] : match_q;
+    end else begin : completed_only
+      assign dm = match_q;
+    end
+  endgenerate
+  wire [DISP_W-1:0] db = word_c[DISP_W-1:0];
+  wire [DISP_W-1:0] difference = db > dm ? db - dm : dm - db;
+  assign checked_word = (outside_c || difference > lr_threshold) ? INVALID_WORD : word_c;
+  // verilator lint_on WIDTH
 endmodule
 `resetall
