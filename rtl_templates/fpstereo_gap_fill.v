@@ -9,7 +9,7 @@
 //   ends, its right neighbour (or "none" at the row end) is stored under the run's start.
 //   Reading row y - 1: the left neighbour is the last valid word read; the right one is fetched
 //   by the run start stored with the word. Two rows of each (ping-pong by row parity).
-// Latency: the result for (x, y - 1) leaves 3 en-steps after the event of (x, y).
+// Latency: the result for (x, y - 1) leaves 3 adv-steps after the event of (x, y).
 module fpstereo_gap_fill #(
   // the largest image width (the RAMs hold two rows of it)
   parameter W = 64,
@@ -19,11 +19,11 @@ module fpstereo_gap_fill #(
   parameter Y_W = 6
 ) (
   input  wire              clk,
-  input  wire              rst,
-  input  wire              en,
+  input  wire              restart,
+  input  wire              adv,
   // the frame's size
-  input  wire [X_W-1:0]    width,
-  input  wire [Y_W-1:0]    height,
+  input  wire [X_W-1:0]    frame_width,
+  input  wire [Y_W-1:0]    frame_height,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
@@ -41,7 +41,7 @@ module fpstereo_gap_fill #(
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  wire [X_W-1:0] last_x = width - 1'b1;
+  wire [X_W-1:0] last_x = frame_width - 1'b1;
 
   function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
     // verilator lint_off WIDTH
@@ -50,34 +50,34 @@ module fpstereo_gap_fill #(
   endfunction
 
   // ---- Writing row in_y.
-  wire writing = in_event && in_y < height;
+  wire writing = in_event && in_y < frame_height;
   wire word_invalid = in_word[WORD_W-1];
   reg  run_open;  // the previous word of the row was invalid
   reg  [X_W-1:0] run_start;
   wire continues = run_open && in_x != 0;
   wire [X_W-1:0] start = continues ? run_start : in_x;
   always @(posedge clk)
-    if (rst) run_open <= 1'b0;
-    else if (en && writing) begin
+    if (restart) run_open <= 1'b0;
+    else if (adv && writing) begin
       run_open <= word_invalid;
       run_start <= start;
     end
   // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
-  wire side_we = en && writing && (word_invalid ? in_x == last_x : continues);
+  wire side_we = adv && writing && (word_invalid ? in_x == last_x : continues);
   wire [ADDR_W-1:0] side_waddr = address(in_y[0], word_invalid ? start : run_start);
 
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
   wire reading = in_event && in_y != 0;
   wire [WORD_W+X_W-1:0] stored;
   fpstereo_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
-    .clk(clk), .we(en && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
-    .re(en), .raddr(address(!in_y[0], in_x)), .rdata(stored));
+    .clk(clk), .we(adv && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
+    .re(adv), .raddr(address(!in_y[0], in_x)), .rdata(stored));
   reg           event1;
   reg [X_W-1:0] x1;
   reg [Y_W-1:0] y1;
   always @(posedge clk)
-    if (rst) event1 <= 1'b0;
-    else if (en) begin
+    if (restart) event1 <= 1'b0;
+    else if (adv) begin
       event1 <= reading;
       x1 <= in_x;
       y1 <= in_y - 1'b1;
@@ -87,7 +87,7 @@ module fpstereo_gap_fill #(
   wire [WORD_W-1:0] right2;
   fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
     .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
-    .re(en), .raddr(address(y1[0], start1)), .rdata(right2));
+    .re(adv), .raddr(address(y1[0], start1)), .rdata(right2));
 
   reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
   wire [WORD_W-1:0] left_before = x1 == 0 ? INVALID : left;
@@ -96,8 +96,8 @@ module fpstereo_gap_fill #(
   reg  [Y_W-1:0]    y2;
   reg  [WORD_W-1:0] word2, left2;
   always @(posedge clk)
-    if (rst) event2 <= 1'b0;
-    else if (en) begin
+    if (restart) event2 <= 1'b0;
+    else if (adv) begin
       event2 <= event1;
       x2 <= x1;
       y2 <= y1;
@@ -111,8 +111,8 @@ module fpstereo_gap_fill #(
   wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right2 < left2 ? right2 : left2)
                          : left_ok ? left2 : right2;
   always @(posedge clk)
-    if (rst) out_event <= 1'b0;
-    else if (en) begin
+    if (restart) out_event <= 1'b0;
+    else if (adv) begin
       out_event <= event2;
       out_x <= x2;
       out_y <= y2;

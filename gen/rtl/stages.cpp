@@ -51,6 +51,27 @@ std::string start_localparam(const RtlDesign& d, const Stage& stage) {
   return fmt::format("  localparam {} = {};\n", stage.start_parameter(), d.start_steps.at(stage.start_parameter()));
 }
 
+// The ports every stage module has: the clock, the frame's restart and the pipeline's advance,
+// and the frame's size.
+Values frame_ports() {
+  return {{"clk", "clk"},
+          {"restart", "restart"},
+          {"adv", "adv"},
+          {"frame_width", "frame_width"},
+          {"frame_height", "frame_height"}};
+}
+
+Values operator+(Values a, const Values& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// A stage's pixel stream in and out, for the stages after the disparity reorder RAM.
+Values stream_ports(const PixelStream& in, const PixelStream& out) {
+  return {{"in_x", in.x},          {"in_y", in.y},   {"in_word", in.word}, {"out_event", out.event},
+          {"out_x", out.x},        {"out_y", out.y}, {"out_word", out.word}};
+}
+
 // A pixel stream's wires; the stages after it read what they need of them.
 std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
   std::string v;
@@ -132,12 +153,7 @@ class WindowStage : public Stage {
                    {"Y_W", num(d.y_bits)},
                    {"YS_W", num(d.signed_y_bits)},
                    {"G_W", num(d.group_bits)}},
-                  {{"clk", "clk"},
-                   {"restart", "restart"},
-                   {"adv", "adv"},
-                   {"frame_width", "frame_width"},
-                   {"frame_height", "frame_height"},
-                   {"in_due", "in_due"},
+                  frame_ports() + Values{{"in_due", "in_due"},
                    {"in_take", "in_take"},
                    {"in_left", "in_left"},
                    {"in_right", "in_right"},
@@ -293,12 +309,7 @@ class CostReorderStage : public Stage {
                      {"Y_W", num(d.y_bits)},
                      {"YS_W", num(d.signed_y_bits)},
                      {"G_W", num(d.group_bits)}},
-                    {{"clk", "clk"},
-                     {"restart", "restart"},
-                     {"adv", "adv"},
-                     {"frame_width", "frame_width"},
-                     {"frame_height", "frame_height"},
-                     {"group", "group"},
+                    frame_ports() + Values{{"group", "group"},
                      {"history_x", "history_x"},
                      {"history_y", "history_y"},
                      {"history_slot", "history_slot"},
@@ -382,12 +393,7 @@ class AggregationStage : public Stage {
                     wire(d.group_bits, "group4") + wire(d.out_row_bits, "slot4");
     v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "chain4"), "only LR1 follows the chains");
     return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d, false),
-                        {{"clk", "clk"},
-                         {"restart", "restart"},
-                         {"adv", "adv"},
-                         {"width", "frame_width"},
-                         {"height", "frame_height"},
-                         {"p1", "p1"},
+                        frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
                          {"agg_on", "step >= AGG_START"},
                          {"cost_raddr", "cost_raddr"},
@@ -486,13 +492,8 @@ class Lr2MatchStage : public Stage {
     return "\n  // LR2 match side: second cost volume, aggregation and winner-take-all.\n" +
            start_localparam(d, *this) + completed_wires(d) +
            instance("fpstereo_lr2_match", "lr2_match", parameters,
-                    {{"clk", "clk"},
-                     {"restart", "restart"},
-                     {"adv", "adv"},
-                     {"match_on", "step >= MATCH_START"},
-                     {"frame_width", "frame_width"},
-                     {"frame_height", "frame_height"},
-                     {"p1", "p1"},
+                    frame_ports() + Values{{"match_on", "step >= MATCH_START"},
+                                          {"p1", "p1"},
                      {"p2", "p2"},
                      {"cost_valid", "cost_valid"},
                      {"cost_x", "cost_x"},
@@ -695,19 +696,7 @@ class MedianStage : public Stage {
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)},
                      {"YS_W", num(d.signed_y_bits)}},
-                    {{"clk", "clk"},
-                     {"restart", "restart"},
-                     {"adv", "adv"},
-                     {"frame_width", "frame_width"},
-                     {"frame_height", "frame_height"},
-                     {"in_done", in.done},
-                     {"in_x", in.x},
-                     {"in_y", in.y},
-                     {"in_word", in.word},
-                     {"out_event", stream.event},
-                     {"out_x", stream.x},
-                     {"out_y", stream.y},
-                     {"out_word", stream.word}});
+                    frame_ports() + Values{{"in_done", in.done}} + stream_ports(in, stream));
   }
 };
 
@@ -730,19 +719,7 @@ class GapStage : public Stage {
                      {"WORD_W", num(d.widths.disparity + 1)},
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)}},
-                    {{"clk", "clk"},
-                     {"rst", "restart"},
-                     {"en", "adv"},
-                     {"width", "frame_width"},
-                     {"height", "frame_height"},
-                     {"in_event", in.event},
-                     {"in_x", in.x},
-                     {"in_y", in.y},
-                     {"in_word", in.word},
-                     {"out_event", stream.event},
-                     {"out_x", stream.x},
-                     {"out_y", stream.y},
-                     {"out_word", stream.word}});
+                    frame_ports() + Values{{"in_event", in.event}} + stream_ports(in, stream));
   }
 };
 
