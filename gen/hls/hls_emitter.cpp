@@ -90,10 +90,10 @@ std::string banner(const rtl::RtlDesign& d, const std::string& comment) {
      << "Expected throughput (the paper's Eq. 1, II = 1): cycles = IL + II x (H x W x dmax/uf - 1)\n"
      << "  = IL + " << s.paper - 1 << " at " << cfg.width << "x" << cfg.height << ", " << s.groups
      << " loop iterations (disparity groups of " << cfg.uf << ") per pixel.\n"
-     << "This kernel's loops per frame:";
-  for (size_t i = 0; i < s.loops.size(); ++i)
-    os << (i ? ", " : " ") << s.loops[i].what << " " << s.loops[i].formula << " = " << s.loops[i].iterations;
-  os << "; the largest, " << s.bound << ", bounds the cycles per frame under DATAFLOW,\n"
+     << "This kernel's longest loops per frame, by stage:\n";
+  for (const auto& loop : s.loops)
+    os << "  " << loop.what << " " << loop.formula << " = " << loop.iterations << "\n";
+  os << "The largest, " << s.bound << ", bounds the cycles per frame under DATAFLOW,\n"
      << "plus the fill latency IL of about " << s.fill_rows << " rows (" << s.fill_rows
      << " x W x dmax/uf = " << int64_t(s.fill_rows) * cfg.width * s.groups
      << " cycles) and the pipeline depths.\n"

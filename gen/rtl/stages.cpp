@@ -60,18 +60,20 @@ std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
 }
 
 // ---- the HLS side's text: `hls::stream<type> a("a"), b("b");` with a FIFO depth per stream when given.
-std::string hls_streams(const std::string& type, const std::vector<std::string>& names, const std::string& depth = "") {
+std::string hls_streams(const std::string& type, const std::vector<std::string>& names,
+                        const std::string& depth = "") {
   std::string text = "  hls::stream<" + type + "> ";
   for (size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i] + "(\"" + names[i] + "\")";
   text += ";\n";
   if (!depth.empty())
-    for (const auto& name : names) text += "#pragma HLS STREAM variable = " + name + " depth = " + depth + "\n";
+    for (const auto& name : names)
+      text += "#pragma HLS STREAM variable = " + name + " depth = " + depth + "\n";
   return text;
 }
 
-// A window loop's iterations: the centre lags the input by r rows and r pixels (window_stage).
+// The loop of a window of radius r: its centre lags the input by r rows and r pixels (window_stage).
 HlsLoop hls_window_loop(const RtlDesign& d, const std::string& what, int r) {
-  return {what, "(W+r)*(H+r), r = " + num(r), (int64_t(d.cfg.width) + r) * (int64_t(d.cfg.height) + r)};
+  return {what, fmt::format("(W+{0})*(H+{0})", r), (int64_t(d.cfg.width) + r) * (int64_t(d.cfg.height) + r)};
 }
 
 // The side of the window the HLS cost sums over (the kernels' cost_window<C>()): 1 for census and
@@ -111,6 +113,7 @@ class FramingStage : public Stage {
                      {"step", "step"},
                      {"restart", "restart"}});
   }
+
   // ---- HLS: the pixel pairs of the two video streams.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     s = {"left", "right"};
@@ -200,19 +203,25 @@ class WindowStage : public Stage {
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     const HlsStreams in = s;
     s = {"base_windows", "match_windows"};
-    std::string text = "\n  // Windows of the cost.\n" + hls_streams("Window<Feature<C>, cost_window<C>()>", {s.base, s.match});
+    std::string text = "\n  // Windows of the cost.\n" +
+                       hls_streams("Window<Feature<C>, cost_window<C>()>", {s.base, s.match});
     if (d.cfg.cost == CostFunction::Sad)
-      return text + fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n", in.base, s.base) +
-             fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n", in.match, s.match);
+      return text +
+             fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n",
+                         in.base, s.base) +
+             fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n",
+                         in.match, s.match);
     text += hls_streams("Window<Pixel, C::kWindow>", {"left_pixels", "right_pixels"}) +
             hls_streams("Feature<C>", {"left_features", "right_features"});
     for (const auto& [pixels, side] : {std::pair{in.base, "left"}, std::pair{in.match, "right"}})
-      text += fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}_pixels, W, H, Pixel(0));\n", pixels, side);
+      text += fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}_pixels, W, H, Pixel(0));\n",
+                          pixels, side);
     for (const char* side : {"left", "right"})
       text += fmt::format("  transform_stage<C>({0}_pixels, {0}_features, W, H);\n", side);
     for (const auto& [side, windows] : {std::pair{"left", s.base}, std::pair{"right", s.match}})
       text += fmt::format(
-          "  window_stage<Feature<C>, cost_window<C>(), C::kMaxWidth>({}_features, {}, W, H, zero_value<Feature<C>>());\n",
+          "  window_stage<Feature<C>, cost_window<C>(), C::kMaxWidth>({}_features, {}, W, H, "
+          "zero_value<Feature<C>>());\n",
           side, windows);
     return text;
   }
@@ -223,6 +232,7 @@ class WindowStage : public Stage {
   int hls_fill_rows(const RtlDesign& d) const override {
     return (d.cfg.cost == CostFunction::Sad ? 0 : d.cfg.window / 2) + hls_cost_window(d.cfg) / 2;
   }
+
  private:
   bool transform_;
 };
@@ -322,6 +332,7 @@ class CostStage : public Stage {
     return "\n  // Cost.\n" + hls_streams("CostWord<C>", {s.base, s.match}, "kDepth") +
            fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
   }
+
  private:
   CostFunction cost_;  // SHD over a 1 x 1 window is census
 };
@@ -373,6 +384,7 @@ class CostReorderStage : public Stage {
                      {"cost_raddr", "cost_raddr"},
                      {"cost_q", "cost_q"}});
   }
+
   // ---- HLS: aggregate's to_chain_order.
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
     return "\n  // Cost reorder: in aggregate (to_chain_order).\n";
@@ -466,6 +478,7 @@ class AggregationStage : public Stage {
                          {"chain4", "chain4"},
                          {"slot4", "slot4"}});
   }
+
   // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which
   // delay the stream by a row-time.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
@@ -476,7 +489,8 @@ class AggregationStage : public Stage {
   }
   HlsLoop hls_loop(const RtlDesign& d) const override {
     const int64_t W = d.cfg.width, H = d.cfg.height;
-    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf", (H + 1) * 2 * ((W + 1) / 2) * d.groups};
+    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf",
+            (H + 1) * 2 * ((W + 1) / 2) * d.groups};
   }
   int hls_fill_rows(const RtlDesign&) const override { return 1; }
 };
@@ -533,10 +547,12 @@ class Lr1MatchStage : public Stage {
                      {"row_end_waddr", "row_end_waddr"},
                      {"row_end_wdata", "row_end_wdata"}});
   }
+
   // ---- HLS: select_base finds Dm from the base side's sums as they pass.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     s.match = "match_disparity";
-    return "\n  // LR1 match side: Dm, found by select_base (winner-take-all).\n" + hls_streams("Word<C>", {s.match});
+    return "\n  // LR1 match side: Dm, found by select_base (winner-take-all).\n" +
+           hls_streams("Word<C>", {s.match});
   }
 };
 
@@ -588,6 +604,7 @@ class Lr2MatchStage : public Stage {
                      {"completed_waddr", "completed_waddr"},
                      {"completed_wdata", "completed_wdata"}});
   }
+
   // ---- HLS: the base costs regrouped per match pixel, their aggregation and winner-take-all.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     const std::string base_costs = s.match;
@@ -655,6 +672,7 @@ class WtaStage : public Stage {
     s.base = "disparity";
     return text;
   }
+
  private:
   bool unique_;
 };
@@ -712,6 +730,7 @@ class DisparityReorderStage : public Stage {
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
     return "\n  // Disparity reorder: none, select_base writes raster order.\n";
   }
+
  private:
   static int lr_rows(const RtlDesign& d) { return d.cfg.lr == LrCheck::None ? 0 : d.cfg.lr == LrCheck::Lr1 ? 1 : 2; }
 };
@@ -787,6 +806,7 @@ class LrCheckStage : public Stage {
     return "\n  // Left-right check.\n" + hls_streams("Word<C>", {s.base}) +
            fmt::format("  lr_check<C>({}, {}, {}, W, H, lr_threshold);\n", in.base, in.match, s.base);
   }
+
  private:
   bool row_end_;
 };
@@ -834,18 +854,22 @@ class MedianStage : public Stage {
                      {"out_y", stream.y},
                      {"out_word", stream.word}});
   }
+
   // ---- HLS: the median window (positions outside the image invalid) and the selection.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     const std::string in = s.base;
     s.base = "filtered";
     return "\n  // Median filter.\n" + hls_streams("Window<Word<C>, C::kMedian>", {"median_windows"}) +
            hls_streams("Word<C>", {s.base}) +
-           fmt::format("  window_stage<Word<C>, C::kMedian, C::kMaxWidth>({}, median_windows, W, H, "
-                       "Word<C>(C::kInvalidWord));\n",
-                       in) +
+           fmt::format(
+               "  window_stage<Word<C>, C::kMedian, C::kMaxWidth>({}, median_windows, W, H, "
+               "Word<C>(C::kInvalidWord));\n",
+               in) +
            fmt::format("  median_stage<C>(median_windows, {}, W, H);\n", s.base);
   }
-  HlsLoop hls_loop(const RtlDesign& d) const override { return hls_window_loop(d, "median window", d.cfg.median / 2); }
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    return hls_window_loop(d, "median window", d.cfg.median / 2);
+  }
   int hls_fill_rows(const RtlDesign& d) const override { return d.cfg.median / 2; }
 };
 
@@ -882,6 +906,7 @@ class GapStage : public Stage {
                      {"out_y", stream.y},
                      {"out_word", stream.word}});
   }
+
   // ---- HLS: one row behind its input.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     const std::string in = s.base;
@@ -912,6 +937,7 @@ class OutputStage : public Stage {
         "  assign frame_end  = adv && frame_done;\n",
         stream.event, stream.x, stream.y, stream.word);
   }
+
   // ---- HLS: the words into the output video stream.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     return fmt::format("\n  // Output.\n  write_disparity<C>({}, out, W, H);\n", s.base);

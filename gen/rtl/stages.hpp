@@ -75,8 +75,9 @@ class Stage {
   // The HLS side. Its part of the pipeline's body: declarations of the streams it writes (with
   // their STREAM pragmas) and its kernel calls, or a comment naming the kernel that does its work.
   virtual std::string hls_calls(const RtlDesign& d, HlsStreams& streams) const = 0;
-  // Its kernels' longest loop (each at II = 1; empty for stages without kernels of their own) and
-  // the rows by which they delay the stream (the fill latency before the first output).
+  // Its kernels' longest loop, at II = 1, if it may bound the frame time: empty for stages without
+  // kernels of their own and for those whose loops (W*H, W*H*dmax/uf, (H+1)*W) never exceed the
+  // aggregation's. And the rows by which its kernels delay the stream (the fill latency).
   virtual HlsLoop hls_loop(const RtlDesign&) const { return {}; }
   virtual int hls_fill_rows(const RtlDesign&) const { return 0; }
 };
