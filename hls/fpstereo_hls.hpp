@@ -2,7 +2,9 @@
 // with the golden model (docs/semantics.md). Every stage is a function template on a configuration
 // struct C (the generated <prefix>_config.hpp: constants from StereoConfig and derive_widths), reads
 // hls::streams and writes hls::streams in raster order (the aggregation works in chain order
-// inside), and is meant to run under DATAFLOW with its main loop pipelined at II = 1. Stages, in
+// inside), and is meant to run under DATAFLOW with its main loop pipelined at II = 1. The generated
+// top's <top>_pipeline chains them: each stage of the plan (gen/rtl/stages.cpp, hls_calls) emits
+// its calls and the streams between them, only those the configuration needs. Stages, in
 // data-flow order:
 //
 //   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost
@@ -848,80 +850,6 @@ store_pixels:
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
     words[i] = (unsigned short)(in.read().data);
   }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The whole pipeline. Called from the generated top function, whose DATAFLOW region it becomes
-// (inlined); only the stages the configuration needs are instantiated.
-template <class C>
-void sgm_pipeline(hls::stream<VideoIn>& left_in, hls::stream<VideoIn>& right_in,
-                  hls::stream<VideoOut<C>>& out, int width_reg, int height_reg, int p1, int p2,
-                  int uniqueness, int lr_threshold) {
-#pragma HLS INLINE
-  constexpr int kDepth = 2 * C::kGroups + 2;  // a pixel's words plus slack
-  (void)kDepth;                               // used by the STREAM pragmas only
-  constexpr int K = cost_window<C>();
-  const Frame f = clamp_frame<C>(width_reg, height_reg);
-  const int W = f.width, H = f.height;
-
-  hls::stream<Pixel> left("left"), right("right");
-  read_pair<C>(left_in, right_in, left, right, W, H);
-
-  hls::stream<Window<Feature<C>, K>> base_windows("base_windows"), match_windows("match_windows");
-  if constexpr (C::kCost == Cost::Sad) {
-    window_stage<Pixel, K, C::kMaxWidth>(left, base_windows, W, H, Pixel(0));
-    window_stage<Pixel, K, C::kMaxWidth>(right, match_windows, W, H, Pixel(0));
-  } else {
-    hls::stream<Window<Pixel, C::kWindow>> left_pixels("left_pixels"), right_pixels("right_pixels");
-    hls::stream<Feature<C>> left_features("left_features"), right_features("right_features");
-    window_stage<Pixel, C::kWindow, C::kMaxWidth>(left, left_pixels, W, H, Pixel(0));
-    window_stage<Pixel, C::kWindow, C::kMaxWidth>(right, right_pixels, W, H, Pixel(0));
-    transform_stage<C>(left_pixels, left_features, W, H);
-    transform_stage<C>(right_pixels, right_features, W, H);
-    window_stage<Feature<C>, K, C::kMaxWidth>(left_features, base_windows, W, H, zero_value<Feature<C>>());
-    window_stage<Feature<C>, K, C::kMaxWidth>(right_features, match_windows, W, H, zero_value<Feature<C>>());
-  }
-
-  hls::stream<CostWord<C>> costs("costs"), match_side_base_costs("match_side_base_costs");
-#pragma HLS STREAM variable = costs depth = kDepth
-#pragma HLS STREAM variable = match_side_base_costs depth = kDepth
-  cost_stage<C>(base_windows, match_windows, costs, match_side_base_costs, W, H);
-
-  hls::stream<SumWord<C>> sums("sums");
-#pragma HLS STREAM variable = sums depth = kDepth
-  aggregate<C, 0>(costs, sums, W, H, p1, p2);
-
-  // D waits for Dm: up to dmax pixels with LR1, the match side's extra latency with LR2.
-  hls::stream<Word<C>> disparity("disparity"), match_disparity("match_disparity");
-#pragma HLS STREAM variable = disparity depth = 2 * C::kDmax + 4
-  select_base<C>(sums, disparity, match_disparity, W, H, uniqueness);
-
-  hls::stream<Word<C>> checked("checked");
-  if constexpr (C::kLr == Lr::Lr2) {
-    hls::stream<CostWord<C>> match_side_costs("match_side_costs");
-    hls::stream<SumWord<C>> match_side_sums("match_side_sums");
-    match_costs<C>(match_side_base_costs, match_side_costs, W, H);
-    aggregate<C, 1>(match_side_costs, match_side_sums, W, H, p1, p2);
-    select_match<C>(match_side_sums, match_disparity, W, H);
-  }
-  if constexpr (C::kLr != Lr::None) {
-    lr_check<C>(disparity, match_disparity, checked, W, H, lr_threshold);
-  }
-  hls::stream<Word<C>>& after_lr = C::kLr != Lr::None ? checked : disparity;
-
-  hls::stream<Word<C>> filtered("filtered");
-  if constexpr (C::kMedian != 0) {
-    hls::stream<Window<Word<C>, C::kMedian>> median_windows("median_windows");
-    window_stage<Word<C>, C::kMedian, C::kMaxWidth>(after_lr, median_windows, W, H, Word<C>(C::kInvalidWord));
-    median_stage<C>(median_windows, filtered, W, H);
-  }
-  hls::stream<Word<C>>& after_median = C::kMedian != 0 ? filtered : after_lr;
-
-  hls::stream<Word<C>> filled("filled");
-  if constexpr (C::kGapInterpolation) {
-    gap_fill<C>(after_median, filled, W, H);
-  }
-  write_disparity<C>(C::kGapInterpolation ? filled : after_median, out, W, H);
 }
 
 }  // namespace fpstereo_hls

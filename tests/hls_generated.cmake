@@ -51,6 +51,13 @@ foreach(port left right disparity)
 endforeach()
 expect_in(${top} "void ${top_name}\\(hls::stream[^\n]*\n[^\n]*\n[^\n]*\\) {\n(#pragma HLS INTERFACE[^\n]*\n)+#pragma HLS DATAFLOW"
           "DATAFLOW in the top function")
+# The pipeline the stages emit, called by both top functions; the LR2 configuration's match side.
+foreach(call "${top_name}_pipeline\\(s_axis_left, s_axis_right, m_axis_disp," "${top_name}_pipeline\\(left_video, right_video,"
+             "read_pair<C>\\(left_in, right_in," "cost_stage<C>\\(" "aggregate<C, 0>\\(costs, sums,"
+             "match_costs<C>\\(match_side_base_costs," "aggregate<C, 1>\\(" "select_match<C>\\(" "select_base<C>\\(sums,"
+             "lr_check<C>\\(disparity, match_disparity," "gap_fill<C>\\(" "write_disparity<C>\\([a-z]+, out,")
+  expect_in(${top} "${call}" "a kernel call of the pipeline")
+endforeach()
 set(lib ${WORK}/one/fpstereo_hls.hpp)
 expect_in(${lib} "aggregate_groups:\n  for [^\n]*\n#pragma HLS PIPELINE II = 1" "pipelined aggregation loop, labelled")
 foreach(label read_pair_pixels window_pixels transform_pixels cost_groups match_cost_groups select_groups
@@ -69,7 +76,7 @@ foreach(label to_chain_groups from_chain_groups)
   expect_in(${lib} "${label}:\n *for [^\n]*\n#pragma HLS PIPELINE II = 1" "reorder loop ${label}")
 endforeach()
 expect_in(${lib} "#pragma HLS ARRAY_PARTITION variable = history complete" "match history in registers")
-expect_in(${lib} "#pragma HLS STREAM variable = costs depth" "FIFO depths")
+expect_in(${top} "#pragma HLS STREAM variable = costs depth" "FIFO depths")
 expect_in(${lib} "#pragma HLS UNROLL" "uf cost lanes")
 expect_in(${lib} "__has_include\\(<ap_int.h>\\)" "the real Vitis headers win when present")
 file(GLOB config ${WORK}/one/*_config.hpp)

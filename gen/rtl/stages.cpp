@@ -80,6 +80,30 @@ std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
   return unused_unless(false, v, "the stages after it read what they need");
 }
 
+// ---- the HLS side's text: `hls::stream<type> a("a"), b("b");` with a FIFO depth per stream when given.
+std::string hls_streams(const std::string& type, const std::vector<std::string>& names,
+                        const std::string& depth = "") {
+  std::string text = "  hls::stream<" + type + "> ";
+  for (size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i] + "(\"" + names[i] + "\")";
+  text += ";\n";
+  if (!depth.empty())
+    for (const auto& name : names)
+      text += "#pragma HLS STREAM variable = " + name + " depth = " + depth + "\n";
+  return text;
+}
+
+// The loop of a window of radius r: its centre lags the input by r rows and r pixels (window_stage).
+HlsLoop hls_window_loop(const RtlDesign& d, const std::string& what, int r) {
+  return {what, fmt::format("(W+{0})*(H+{0})", r), (int64_t(d.cfg.width) + r) * (int64_t(d.cfg.height) + r)};
+}
+
+// The side of the window the HLS cost sums over (the kernels' cost_window<C>()): 1 for census and
+// rank, the SHD window for SHD, N for SAD and ZSAD.
+int hls_cost_window(const StereoConfig& c) {
+  if (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) return 1;
+  return c.cost == CostFunction::Shd ? c.shd_window : c.window;
+}
+
 // ---- stages -----------------------------------------------------------------------------------------
 
 // Framing: the input register slices, the pairing and framing checks (fpstereo_video_in) and the
@@ -109,6 +133,13 @@ class FramingStage : public Stage {
                      {"adv", "adv"},
                      {"step", "step"},
                      {"restart", "restart"}});
+  }
+
+  // ---- HLS: the pixel pairs of the two video streams.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    s = {"left", "right"};
+    return "\n  // Framing: the left and right pixels.\n" + hls_streams("Pixel", {s.base, s.match}) +
+           "  read_pair<C>(left_in, right_in, left, right, W, H);\n";
   }
 };
 
@@ -181,6 +212,41 @@ class WindowStage : public Stage {
                      {"col_valid", "col_valid"},
                      {"code_base", "code_base"},
                      {"code_match", "code_match"}});
+  }
+
+  // ---- HLS: the windows the cost sums over. SAD's are the pixel windows; the others transform the
+  // pixel windows (census or rank codes, ZSAD's pixels with their means) and window the results.
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
+    const HlsStreams in = s;
+    s = {"base_windows", "match_windows"};
+    std::string text = "\n  // Windows of the cost.\n" +
+                       hls_streams("Window<Feature<C>, cost_window<C>()>", {s.base, s.match});
+    if (d.cfg.cost == CostFunction::Sad)
+      return text +
+             fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n",
+                         in.base, s.base) +
+             fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n",
+                         in.match, s.match);
+    text += hls_streams("Window<Pixel, C::kWindow>", {"left_pixels", "right_pixels"}) +
+            hls_streams("Feature<C>", {"left_features", "right_features"});
+    for (const auto& [pixels, side] : {std::pair{in.base, "left"}, std::pair{in.match, "right"}})
+      text += fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}_pixels, W, H, Pixel(0));\n",
+                          pixels, side);
+    for (const char* side : {"left", "right"})
+      text += fmt::format("  transform_stage<C>({0}_pixels, {0}_features, W, H);\n", side);
+    for (const auto& [side, windows] : {std::pair{"left", s.base}, std::pair{"right", s.match}})
+      text += fmt::format(
+          "  window_stage<Feature<C>, cost_window<C>(), C::kMaxWidth>({}_features, {}, W, H, "
+          "zero_value<Feature<C>>());\n",
+          side, windows);
+    return text;
+  }
+  // The widest window loop; each window delays by its radius in rows.
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    return hls_window_loop(d, "windows", std::max(d.cfg.window, hls_cost_window(d.cfg)) / 2);
+  }
+  int hls_fill_rows(const RtlDesign& d) const override {
+    return (d.cfg.cost == CostFunction::Sad ? 0 : d.cfg.window / 2) + hls_cost_window(d.cfg) / 2;
   }
 
  private:
@@ -275,6 +341,14 @@ class CostStage : public Stage {
            instance(module, "cost", parameters, ports);
   }
 
+  // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const HlsStreams in = s;
+    s = {"costs", "match_side_base_costs"};
+    return "\n  // Cost.\n" + hls_streams("CostWord<C>", {s.base, s.match}, "kDepth") +
+           fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
+  }
+
  private:
   CostFunction cost_;  // SHD over a 1 x 1 window is census
 };
@@ -320,6 +394,11 @@ class CostReorderStage : public Stage {
                      {"cost_group", "cost_group"},
                      {"cost_raddr", "cost_raddr"},
                      {"cost_q", "cost_q"}});
+  }
+
+  // ---- HLS: aggregate's to_chain_order.
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Cost reorder: in aggregate (to_chain_order).\n";
   }
 };
 
@@ -405,6 +484,21 @@ class AggregationStage : public Stage {
                          {"chain4", "chain4"},
                          {"slot4", "slot4"}});
   }
+
+  // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which
+  // delay the stream by a row-time.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string costs = s.base;
+    s.base = "sums";
+    return "\n  // Aggregation.\n" + hls_streams("SumWord<C>", {s.base}, "kDepth") +
+           fmt::format("  aggregate<C, 0>({}, {}, W, H, p1, p2);\n", costs, s.base);
+  }
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    const int64_t W = d.cfg.width, H = d.cfg.height;
+    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf",
+            (H + 1) * 2 * ((W + 1) / 2) * d.groups};
+  }
+  int hls_fill_rows(const RtlDesign&) const override { return 1; }
 };
 
 // The match side's writes into the left-right check's RAM of completed pixels.
@@ -459,6 +553,13 @@ class Lr1MatchStage : public Stage {
                      {"row_end_waddr", "row_end_waddr"},
                      {"row_end_wdata", "row_end_wdata"}});
   }
+
+  // ---- HLS: select_base finds Dm from the base side's sums as they pass.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    s.match = "match_disparity";
+    return "\n  // LR1 match side: Dm, found by select_base (winner-take-all).\n" +
+           hls_streams("Word<C>", {s.match});
+  }
 };
 
 // LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all, dmax + 2
@@ -504,6 +605,22 @@ class Lr2MatchStage : public Stage {
                      {"completed_waddr", "completed_waddr"},
                      {"completed_wdata", "completed_wdata"}});
   }
+
+  // ---- HLS: the base costs regrouped per match pixel, their aggregation and winner-take-all.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string base_costs = s.match;
+    s.match = "match_disparity";
+    return "\n  // LR2 match side.\n" + hls_streams("CostWord<C>", {"match_side_costs"}) +
+           hls_streams("SumWord<C>", {"match_side_sums"}) + hls_streams("Word<C>", {s.match}) +
+           fmt::format("  match_costs<C>({}, match_side_costs, W, H);\n", base_costs) +
+           "  aggregate<C, 1>(match_side_costs, match_side_sums, W, H, p1, p2);\n" +
+           fmt::format("  select_match<C>(match_side_sums, {}, W, H);\n", s.match);
+  }
+  // Match pixel x' waits for base pixel x' + dmax - 1: its rows are dmax - 1 pixels longer.
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    const int64_t W = d.cfg.width, H = d.cfg.height;
+    return {"LR2 match side", "H*(W+dmax-1)*dmax/uf", H * (W + d.cfg.dmax - 1) * d.groups};
+  }
 };
 
 // Winner-take-all (with the uniqueness check when configured): the running minimum's register.
@@ -540,6 +657,21 @@ class WtaStage : public Stage {
                      {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
                      {"TREE_LAT", num(d.wta_tree_latency)}},
                     ports);
+  }
+
+  // ---- HLS: select_base, with LR1 also Dm into the match side's stream; without a left-right
+  // check that stream is never written. D waits in its FIFO for Dm: up to dmax pixels with LR1,
+  // the match side's extra latency with LR2.
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
+    std::string text = std::string("\n  // Winner-take-all") + (unique_ ? " with uniqueness" : "") + ".\n" +
+                       hls_streams("Word<C>", {"disparity"}, "2 * C::kDmax + 4");
+    if (d.cfg.lr == LrCheck::None) {
+      s.match = "match_disparity";
+      text += hls_streams("Word<C>", {s.match});
+    }
+    text += fmt::format("  select_base<C>({}, disparity, {}, W, H, uniqueness);\n", s.base, s.match);
+    s.base = "disparity";
+    return text;
   }
 
  private:
@@ -593,6 +725,11 @@ class DisparityReorderStage : public Stage {
                      {"read_y", "read_y"},
                      {"read_slot_row", "read_slot_row"},
                      {"read_word", "read_word"}});
+  }
+
+  // ---- HLS: select_base writes raster order.
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Disparity reorder: none, select_base writes raster order.\n";
   }
 
  private:
@@ -663,6 +800,14 @@ class LrCheckStage : public Stage {
                         ports);
   }
 
+  // ---- HLS.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const HlsStreams in = s;
+    s = {"checked", ""};
+    return "\n  // Left-right check.\n" + hls_streams("Word<C>", {s.base}) +
+           fmt::format("  lr_check<C>({}, {}, {}, W, H, lr_threshold);\n", in.base, in.match, s.base);
+  }
+
  private:
   bool row_end_;
 };
@@ -698,6 +843,23 @@ class MedianStage : public Stage {
                      {"YS_W", num(d.signed_y_bits)}},
                     frame_ports() + Values{{"in_done", in.done}} + stream_ports(in, stream));
   }
+
+  // ---- HLS: the median window (positions outside the image invalid) and the selection.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string in = s.base;
+    s.base = "filtered";
+    return "\n  // Median filter.\n" + hls_streams("Window<Word<C>, C::kMedian>", {"median_windows"}) +
+           hls_streams("Word<C>", {s.base}) +
+           fmt::format(
+               "  window_stage<Word<C>, C::kMedian, C::kMaxWidth>({}, median_windows, W, H, "
+               "Word<C>(C::kInvalidWord));\n",
+               in) +
+           fmt::format("  median_stage<C>(median_windows, {}, W, H);\n", s.base);
+  }
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    return hls_window_loop(d, "median window", d.cfg.median / 2);
+  }
+  int hls_fill_rows(const RtlDesign& d) const override { return d.cfg.median / 2; }
 };
 
 // Gap interpolation, one row behind its input.
@@ -721,6 +883,15 @@ class GapStage : public Stage {
                      {"Y_W", num(d.y_bits)}},
                     frame_ports() + Values{{"in_event", in.event}} + stream_ports(in, stream));
   }
+
+  // ---- HLS: one row behind its input.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string in = s.base;
+    s.base = "filled";
+    return "\n  // Gap interpolation.\n" + hls_streams("Word<C>", {s.base}) +
+           fmt::format("  gap_fill<C>({}, {}, W, H);\n", in, s.base);
+  }
+  int hls_fill_rows(const RtlDesign&) const override { return 1; }
 };
 
 // Output: each pixel's word is pushed in the step its stream event is due (the sequencer stalls
@@ -742,6 +913,11 @@ class OutputStage : public Stage {
         "  assign frame_done = {0} && out_last && {2} == frame_height - 1'b1;\n"
         "  assign frame_end  = adv && frame_done;\n",
         stream.event, stream.x, stream.y, stream.word);
+  }
+
+  // ---- HLS: the words into the output video stream.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    return fmt::format("\n  // Output.\n  write_disparity<C>({}, out, W, H);\n", s.base);
   }
 };
 

@@ -39,6 +39,22 @@ struct PixelStream {
   std::string done, event, x, y, word;
 };
 
+// The HLS side (gen/hls): the names of the hls::streams between the kernel calls of the generated
+// pipeline, the base side's and, beside it, the match side's (the right image's pixels and
+// windows, the costs LR2's match side regroups, the match-side disparities). Each stage reads
+// them and names the streams its calls write; the pipeline's function provides left_in,
+// right_in, out (the video streams), W, H (the clamped frame), p1, p2, uniqueness and
+// lr_threshold, and works in namespace fpstereo_hls with the configuration struct as C.
+struct HlsStreams {
+  std::string base, match;
+};
+
+// A loop of a stage's HLS kernels with its iterations per frame at the configured size.
+struct HlsLoop {
+  std::string what, formula;  // "aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf"
+  int64_t iterations = 0;
+};
+
 class Stage {
  public:
   virtual ~Stage() = default;
@@ -55,6 +71,15 @@ class Stage {
   virtual std::vector<std::string> modules(const RtlDesign& d) const = 0;
   // Its part of the core: the wires it drives and its instances.
   virtual std::string core_verilog(const RtlDesign& d, PixelStream& stream) const = 0;
+
+  // The HLS side. Its part of the pipeline's body: declarations of the streams it writes (with
+  // their STREAM pragmas) and its kernel calls, or a comment naming the kernel that does its work.
+  virtual std::string hls_calls(const RtlDesign& d, HlsStreams& streams) const = 0;
+  // Its kernels' longest loop, at II = 1, if it may bound the frame time: empty for stages without
+  // kernels of their own and for those whose loops (W*H, W*H*dmax/uf, (H+1)*W) never exceed the
+  // aggregation's. And the rows by which its kernels delay the stream (the fill latency).
+  virtual HlsLoop hls_loop(const RtlDesign&) const { return {}; }
+  virtual int hls_fill_rows(const RtlDesign&) const { return 0; }
 };
 
 using StagePtr = std::shared_ptr<const Stage>;
