@@ -63,8 +63,16 @@ std::string banner(const RtlDesign& d) {
      << " cycles per pixel; expected cycles per frame without stalls: " << d.cycles_per_frame
      << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.latency_cycles
      << "\n"
-     << "// Latency without stalls from the first input handshake to the first output handshake: " << d.first_output_latency
-     << " cycles\n";
+     << "// Latency without stalls from the first input handshake to the first output handshake: "
+     << d.first_output_latency << " cycles\n"
+     << "// Stages in data order, their latency (row-times, slots, steps) and the settings they own:\n";
+  for (const auto& stage : d.stages) {
+    const Latency l = stage->latency(d);
+    std::string knobs;
+    for (const auto& k : stage->knobs()) knobs += (knobs.empty() ? "" : ", ") + k;
+    std::string line = fmt::format("//   {:<34} {:>3} {:>5} {:>4}   {}", stage->title(), l.rows, l.slots, l.steps, knobs);
+    os << line.substr(0, line.find_last_not_of(' ') + 1) << "\n";
+  }
   return os.str();
 }
 

@@ -111,6 +111,7 @@ int hls_cost_window(const StereoConfig& c) {
 class FramingStage : public Stage {
  public:
   std::string title() const override { return "framing"; }
+  std::vector<std::string> knobs() const override { return {"width", "height"}; }
   Latency latency(const RtlDesign&) const override { return {}; }
   std::vector<std::string> modules(const RtlDesign& d) const override {
     std::vector<std::string> m = {"fpstereo_axis_skid", "fpstereo_video_in"};
@@ -149,6 +150,7 @@ class WindowStage : public Stage {
  public:
   explicit WindowStage(const StereoConfig& c) : transform_(c.cost != CostFunction::Sad && c.cost != CostFunction::Zsad) {}
   std::string title() const override { return transform_ ? "window and transform" : "window"; }
+  std::vector<std::string> knobs() const override { return {"window", "cost"}; }
   // The window centred r rows and r slots behind the input is complete after the input's slot;
   // its registered position (and the transform's codes) one slot later.
   Latency latency(const RtlDesign& d) const override {
@@ -258,6 +260,7 @@ class CostStage : public Stage {
  public:
   explicit CostStage(const StereoConfig& c) : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
   std::string title() const override { return "cost"; }
+  std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf"}; }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots); the lanes take their register stages.
   Latency latency(const RtlDesign& d) const override {
@@ -357,6 +360,7 @@ class CostStage : public Stage {
 class CostReorderStage : public Stage {
  public:
   std::string title() const override { return "cost reorder"; }
+  std::vector<std::string> knobs() const override { return {"uf"}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 1}; }  // written, then read
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.cost_reorder.cost_ram.mem", d.cost_depth(), int64_t(d.cfg.uf) * d.widths.cost}};
@@ -456,6 +460,7 @@ Values aggregator_parameters(const RtlDesign& d, bool match_side) {
 class AggregationStage : public Stage {
  public:
   std::string title() const override { return "aggregation"; }
+  std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "dmax", "uf"}; }
   std::string start_parameter() const override { return "AGG_START"; }
   Latency latency(const RtlDesign& d) const override { return {d.chains - 1, 0, 4}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
@@ -511,6 +516,7 @@ std::string completed_wires(const RtlDesign& d) {
 class Lr1MatchStage : public Stage {
  public:
   std::string title() const override { return "LR1 match side"; }
+  std::vector<std::string> knobs() const override { return {"lr"}; }
   Latency latency(const RtlDesign&) const override { return {}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.lr1_match.entries.mem", int64_t(d.chains) * d.groups,
@@ -567,6 +573,7 @@ class Lr1MatchStage : public Stage {
 class Lr2MatchStage : public Stage {
  public:
   std::string title() const override { return "LR2 match side"; }
+  std::vector<std::string> knobs() const override { return {"lr", "paths", "p1", "p2"}; }
   std::string start_parameter() const override { return "MATCH_START"; }
   Latency latency(const RtlDesign&) const override { return {}; }
   Latency start_offset(const RtlDesign& d) const override { return {0, d.cfg.dmax + 2, 0}; }
@@ -628,6 +635,7 @@ class WtaStage : public Stage {
  public:
   explicit WtaStage(const StereoConfig& c) : unique_(c.uniqueness != 0) {}
   std::string title() const override { return unique_ ? "winner-take-all with uniqueness" : "winner-take-all"; }
+  std::vector<std::string> knobs() const override { return {"uniqueness"}; }
   Latency latency(const RtlDesign& d) const override { return {0, 0, d.wta_tree_latency + 1}; }
   std::vector<std::string> modules(const RtlDesign&) const override {
     if (unique_) return {"fpstereo_wta_unique", "fpstereo_unique_tree", "fpstereo_unique_join", "fpstereo_delay"};
@@ -683,6 +691,7 @@ class WtaStage : public Stage {
 class DisparityReorderStage : public Stage {
  public:
   std::string title() const override { return "disparity reorder"; }
+  std::vector<std::string> knobs() const override { return {"lr"}; }
   std::string start_parameter() const override { return "OUT_START"; }
   Latency latency(const RtlDesign& d) const override { return {lr_rows(d), 1, 0}; }
   Latency start_offset(const RtlDesign& d) const override { return {lr_rows(d), 0, 0}; }
@@ -742,6 +751,7 @@ class LrCheckStage : public Stage {
  public:
   explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
   std::string title() const override { return "left-right check"; }
+  std::vector<std::string> knobs() const override { return {"lr", "lr-threshold"}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 1}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     std::vector<StageMemory> out = {{"core.lr_check.completed.mem", d.disp_depth(), d.widths.disparity}};
@@ -817,6 +827,7 @@ class LrCheckStage : public Stage {
 class MedianStage : public Stage {
  public:
   std::string title() const override { return "median filter"; }
+  std::vector<std::string> knobs() const override { return {"median"}; }
   Latency latency(const RtlDesign& d) const override {
     const int rm = d.cfg.median / 2;
     return {rm, rm, 2 + d.widths.output_word};
@@ -866,6 +877,7 @@ class MedianStage : public Stage {
 class GapStage : public Stage {
  public:
   std::string title() const override { return "gap interpolation"; }
+  std::vector<std::string> knobs() const override { return {"gap-interp"}; }
   Latency latency(const RtlDesign&) const override { return {1, 0, 3}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.gap.words.mem", 2 * int64_t(d.cfg.width), d.widths.disparity + 1 + d.x_bits},
@@ -900,6 +912,7 @@ class GapStage : public Stage {
 class OutputStage : public Stage {
  public:
   std::string title() const override { return "output"; }
+  std::vector<std::string> knobs() const override { return {}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 2}; }
   std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_axis_skid"}; }
   std::string core_verilog(const RtlDesign&, PixelStream& stream) const override {

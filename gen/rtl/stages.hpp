@@ -58,8 +58,10 @@ struct HlsLoop {
 class Stage {
  public:
   virtual ~Stage() = default;
-  // What the stage is, for the banner and the docs ("cost (census 7x7)").
+  // What the stage is, for the banner and the docs ("cost reorder").
   virtual std::string title() const = 0;
+  // The configuration parameters (param_specs names) that shape the stage.
+  virtual std::vector<std::string> knobs() const = 0;
   // Steps from the first word of the stage's input stream to the first of its output stream.
   virtual Latency latency(const RtlDesign& d) const = 0;
   // Stages with a schedule of their own start it start_offset after their input starts; the

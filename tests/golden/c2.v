@@ -22,6 +22,16 @@
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1892861 = W*H*dmax/uf (1863000) + 29861
 // Latency without stalls from the first input handshake to the first output handshake: 29866 cycles
+// Stages in data order, their latency (row-times, slots, steps) and the settings they own:
+//   framing                              0     0    0   width, height
+//   window and transform                 3     5    0   window, cost
+//   cost                                 0     1    1   cost, window, shd-window, dmax, uf
+//   cost reorder                         0     0    1   uf
+//   aggregation                          1     0    4   paths, p1, p2, dmax, uf
+//   winner-take-all                      0     0    3   uniqueness
+//   disparity reorder                    0     1    0   lr
+//   median filter                        2     2   10   median
+//   output                               0     0    2
 
 `resetall
 `default_nettype none

@@ -22,6 +22,19 @@
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902801 = W*H*dmax/uf (1863000) + 39801
 // Latency without stalls from the first input handshake to the first output handshake: 39806 cycles
+// Stages in data order, their latency (row-times, slots, steps) and the settings they own:
+//   framing                              0     0    0   width, height
+//   window and transform                 3     5    0   window, cost
+//   cost                                 0     1    1   cost, window, shd-window, dmax, uf
+//   cost reorder                         0     0    1   uf
+//   aggregation                          1     0    4   paths, p1, p2, dmax, uf
+//   LR1 match side                       0     0    0   lr
+//   winner-take-all with uniqueness      0     0    3   uniqueness
+//   disparity reorder                    1     1    0   lr
+//   left-right check                     0     0    1   lr, lr-threshold
+//   median filter                        2     2   10   median
+//   gap interpolation                    1     0    3   gap-interp
+//   output                               0     0    2
 
 `resetall
 `default_nettype none

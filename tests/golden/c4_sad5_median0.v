@@ -22,6 +22,17 @@
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887873 = W*H*dmax/uf (1863000) + 24873
 // Latency without stalls from the first input handshake to the first output handshake: 24878 cycles
+// Stages in data order, their latency (row-times, slots, steps) and the settings they own:
+//   framing                              0     0    0   width, height
+//   window                               2     4    0   window, cost
+//   cost                                 0     1    2   cost, window, shd-window, dmax, uf
+//   cost reorder                         0     0    1   uf
+//   LR2 match side                       0     0    0   lr, paths, p1, p2
+//   aggregation                          1     0    4   paths, p1, p2, dmax, uf
+//   winner-take-all                      0     0    3   uniqueness
+//   disparity reorder                    2     1    0   lr
+//   left-right check                     0     0    1   lr, lr-threshold
+//   output                               0     0    2
 
 `resetall
 `default_nettype none

@@ -1,0 +1,87 @@
+// The stage objects (gen/rtl/stages.*): every setting belongs to a stage, every template is used
+// by some configuration, and the schedule is the sum of the stages' latencies.
+#include <catch2/catch.hpp>
+
+#include <set>
+
+#include "rtl_emitter.hpp"
+#include "rtl_templates.hpp"
+
+using namespace fpstereo;
+
+namespace {
+
+// Configurations that together enable every stage and every variant of one.
+std::vector<StereoConfig> covering_configs() {
+  std::vector<StereoConfig> out;
+  for (CostFunction cost : {CostFunction::Census, CostFunction::Rank, CostFunction::Sad, CostFunction::Zsad,
+                            CostFunction::Shd})
+    for (LrCheck lr : {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2}) {
+      StereoConfig c;
+      c.width = 64;
+      c.height = 16;
+      c.dmax = 32;
+      c.uf = 8;
+      c.cost = cost;
+      c.shd_window = 3;
+      c.lr = lr;
+      c.uniqueness = lr == LrCheck::Lr1 ? 10 : 0;
+      c.gap_interpolation = lr == LrCheck::Lr2;
+      out.push_back(c);
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every configuration parameter is owned by a stage", "[stages]") {
+  std::set<std::string> owned;
+  for (const auto& cfg : covering_configs())
+    for (const auto& stage : rtl::plan(cfg).stages)
+      for (const auto& knob : stage->knobs()) owned.insert(knob);
+  for (const auto& spec : param_specs()) {
+    INFO("parameter " << spec.name);
+    CHECK(owned.count(spec.name) == 1);
+  }
+  for (const auto& knob : owned) {
+    INFO("knob " << knob);
+    CHECK(std::any_of(param_specs().begin(), param_specs().end(),
+                      [&](const ParamSpec& s) { return s.name == knob; }));
+  }
+}
+
+TEST_CASE("every template is used by some configuration, and every module a stage names exists", "[stages]") {
+  std::set<std::string> used;
+  for (const auto& cfg : covering_configs()) {
+    const rtl::RtlDesign d = rtl::plan(cfg);
+    for (const auto& file : rtl::emit(d))
+      for (const auto& [name, text] : rtl::templates())
+        if (file.name == d.prefix + name.substr(std::string("fpstereo").size()) + ".v") used.insert(name);
+  }
+  for (const auto& cfg : covering_configs()) {
+    const rtl::RtlDesign d = rtl::plan(cfg);
+    for (const auto& stage : d.stages)
+      for (const auto& module : stage->modules(d)) {
+        INFO(stage->title() << " names " << module);
+        CHECK(rtl::templates().count(module) == 1);
+      }
+  }
+  for (const auto& [name, text] : rtl::templates()) {
+    INFO("template " << name);
+    CHECK(used.count(name) == 1);
+  }
+}
+
+TEST_CASE("the schedule is the sum of the stages' latencies", "[stages]") {
+  for (const auto& cfg : covering_configs()) {
+    const rtl::RtlDesign d = rtl::plan(cfg);
+    int64_t sum = 0;
+    for (const auto& stage : d.stages) sum += stage->latency(d).in_steps(d.row_slots, d.groups);
+    const int64_t last_pixel = (int64_t(cfg.height) - 1) * d.row_slots + cfg.width - 1;
+    INFO(config_tag(cfg));
+    CHECK(d.cycles_per_frame == sum + last_pixel * d.groups);
+    // Every stage with a schedule of its own has its start step, and only those.
+    for (const auto& stage : d.stages)
+      CHECK(d.start_steps.count(stage->start_parameter()) == (stage->start_parameter().empty() ? 0u : 1u));
+  }
+}
