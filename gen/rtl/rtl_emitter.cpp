@@ -28,7 +28,7 @@ int min_tree_latency(int n, int levels_per_stage) {
 
 // Templates the design uses: the core's stages', in order, each once.
 std::vector<std::string> used_modules(const RtlDesign& d) {
-  std::vector<std::string> modules = {"fpstereo_sequencer"};
+  std::vector<std::string> modules;
   for (const auto& stage : d.stages)
     for (const auto& m : stage->modules(d))
       if (std::find(modules.begin(), modules.end(), m) == modules.end()) modules.push_back(m);

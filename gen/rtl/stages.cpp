@@ -41,10 +41,12 @@ std::string wire(int bits, const std::string& name, bool is_signed = false) {
 }
 
 // Declarations of wires a configuration may leave unread, with the waiver Verilator's lint needs.
-std::string unused_unless(bool used, const std::string& declarations, const std::string& why) {
-  if (used) return declarations;
+std::string maybe_unused(const std::string& declarations, const std::string& why) {
   return "  /* verilator lint_off UNUSEDSIGNAL */  // " + why + "\n" + declarations +
          "  /* verilator lint_on UNUSEDSIGNAL */\n";
+}
+std::string unused_unless(bool used, const std::string& declarations, const std::string& why) {
+  return used ? declarations : maybe_unused(declarations, why);
 }
 
 std::string start_localparam(const RtlDesign& d, const Stage& stage) {
@@ -77,7 +79,7 @@ std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
   std::string v;
   if (!s.done.empty()) v += wire(1, s.done);
   v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) + wire(d.widths.disparity + 1, s.word);
-  return unused_unless(false, v, "the stages after it read what they need");
+  return maybe_unused(v, "the stages after it read what they need");
 }
 
 // ---- the HLS side's text: `hls::stream<type> a("a"), b("b");` with a FIFO depth per stream when given.
@@ -114,7 +116,7 @@ class FramingStage : public Stage {
   std::vector<std::string> knobs() const override { return {"width", "height"}; }
   Latency latency(const RtlDesign&) const override { return {}; }
   std::vector<std::string> modules(const RtlDesign& d) const override {
-    std::vector<std::string> m = {"fpstereo_axis_skid", "fpstereo_video_in"};
+    std::vector<std::string> m = {"fpstereo_sequencer", "fpstereo_axis_skid", "fpstereo_video_in"};
     if (d.options.control) m.push_back("fpstereo_control");
     return m;
   }
