@@ -6,6 +6,7 @@
 #   --mutate FILE SED  prove against a copy of FILE (one of the files) with the sed expression
 #                    applied; the proof must then FAIL (exit 0 when it does, 1 when it passes)
 #   --work DIR       where the SMT2 file and logs go (default: a temporary directory)
+#   --define NAME=VALUE  a Verilog define for read_verilog
 # A wrapper may read a submodule's internal signal for the induction: a line
 #   // formal-probe: <wire of the wrapper> <instance>.<signal>
 # connects that (undriven) wire to the flattened instance's signal.
@@ -18,12 +19,14 @@ induction=0
 mutate_file=""
 mutate_sed=""
 work=""
+defines=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --depth) depth="$2"; shift 2 ;;
     --induction) induction="$2"; shift 2 ;;
     --mutate) mutate_file="$2"; mutate_sed="$3"; shift 3 ;;
     --work) work="$2"; shift 2 ;;
+    --define) defines+=" -D$2"; shift 2 ;;
     -*) echo "run_proof: unknown option $1" >&2; exit 2 ;;
     *) break ;;
   esac
@@ -69,7 +72,7 @@ while read -r wire signal; do
 done < <(sed -n 's|^[[:space:]]*// formal-probe:[[:space:]]*\([^[:space:]]*\)[[:space:]]*\([^[:space:]]*\).*|\1 \2|p' "${files[@]}")
 
 smt="$work/$top.smt2"
-if ! yosys -q -l "$work/yosys.log" -p "read_verilog -formal ${files[*]}; hierarchy -check -top $top; proc; flatten; ${probes}prep -top $top; async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1; then
+if ! yosys -q -l "$work/yosys.log" -p "read_verilog -formal${defines} ${files[*]}; hierarchy -check -top $top; proc; flatten; ${probes}prep -top $top; async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1; then
   echo "run_proof: yosys failed:" >&2
   grep -i -E "error" "$work/yosys.log" >&2
   exit 2
@@ -87,7 +90,7 @@ run_smtbmc() {
     return 0
   elif grep -q "Status: FAILED" "$log"; then
     echo "run_proof: $top $label: FAILED ($((SECONDS - start)) s)"
-    grep -E "Assert failed|Assumptions are unsatisfiable|failed" "$log" | sort -u | head -4 | sed 's/^ *##[^A-Z]*/  /'
+    grep -oE "Assert failed.*|Temporal induction failed!|BMC failed!|Assumptions are unsatisfiable!" "$log" | sort -u | head -4 | sed 's/^/  /'
     return 1
   fi
   echo "run_proof: $top $label: yosys-smtbmc error (exit $rc):" >&2
