@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libopencv-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
-  verilator yosys iverilog tcl
+  verilator yosys z3 iverilog tcl
 )
 
 missing=()
