@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "dse.hpp"
+#include "files.hpp"
 #include "image_io.hpp"
 
 namespace fpstereo::dse {
@@ -328,8 +329,12 @@ std::string to_csv(const std::vector<Row>& rows) {
 }
 
 std::vector<Row> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("cannot read '{}'", path));
+  std::istringstream in;
+  try {
+    in.str(read_regular_file(path, "dse CSV", kMaxTableBytes));
+  } catch (const FileError& e) {
+    throw InputError(e.what());
+  }
   std::string line;
   if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty, expected a dse CSV", path));
   const std::vector<std::string> header = split_csv_line(line);
