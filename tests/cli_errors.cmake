@@ -45,6 +45,7 @@ expect_error("expected an integer" run --dmax many ${L} ${R})
 expect_error("cannot write '/nonexistent_fpstereo_dir/l.pgm'" run ${L} ${R} --gray-pgm /nonexistent_fpstereo_dir/l.pgm ${WORK}/r.pgm)
 expect_error("--gray-pgm" run ${L} ${R} --gray-pgm ${WORK}/l.pgm)
 expect_error("no such directory" eval ${WORK}/nowhere)
+expect_error("sgbm-block = 8193: must be an odd number from 1 to 255" eval ${EXAMPLES}/cones --baseline opencv-sgbm --sgbm-block 8193)
 expect_error("pairs.csv" eval ${WORK}/pairs)
 
 # fpstereo dse: bad axes, shards, constraints, datasets, caches and CSVs (outputs kept in WORK).
