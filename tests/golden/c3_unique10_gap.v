@@ -22,6 +22,7 @@
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902801 = W*H*dmax/uf (1863000) + 39801
 // Latency without stalls from the first input handshake to the first output handshake: 39806 cycles
+/* verilator lint_off DECLFILENAME */
 
 `resetall
 `default_nettype none
@@ -282,9 +283,9 @@ module fps_census7_d128u32_796e15_sgm_core (
     .SUM_W(10), .PATHS(15), .MATCH_SIDE(0), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4),
     .OUT_K_W(2), .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1)
   ) aggregation (
-    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1), .p2(p2),
-    .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4), .active4(active4),
-    .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
+    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),
+    .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
 
   // LR1 match side: Dm(x') from the base side's sums.
   wire completed_we;
@@ -376,9 +377,9 @@ module fps_census7_d128u32_796e15_sgm_core (
   fps_census7_d128u32_796e15_gap_fill #(
     .W(1242), .WORD_W(8), .X_W(11), .Y_W(9)
   ) gap (
-    .clk(clk), .rst(restart), .en(adv), .width(frame_width), .height(frame_height), .in_event(median_event),
-    .in_x(median_x), .in_y(median_y), .in_word(median_word), .out_event(gap_event), .out_x(gap_x),
-    .out_y(gap_y), .out_word(gap_word));
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .in_event(median_event), .in_x(median_x), .in_y(median_y), .in_word(median_word), .out_event(gap_event),
+    .out_x(gap_x), .out_y(gap_y), .out_word(gap_word));
 
   // Output.
   assign out_due    = gap_event;
@@ -1589,8 +1590,8 @@ module fps_census7_d128u32_796e15_aggregator #(
   input  wire                 restart,
   input  wire                 adv,
   // the frame's size and penalties
-  input  wire [X_W-1:0]       width,
-  input  wire [Y_W-1:0]       height,
+  input  wire [X_W-1:0]       frame_width,
+  input  wire [Y_W-1:0]       frame_height,
   input  wire [PATH_W-1:0]    p1,
   input  wire [PATH_W-1:0]    p2,
   // high from the frame's step at which aggregation starts
@@ -1682,7 +1683,7 @@ module fps_census7_d128u32_796e15_aggregator #(
     end
   wire [X_W-1:0] x0 = ka * SLEN + ja;
   wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
-  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, height} && x0 < width;
+  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
@@ -1740,7 +1741,7 @@ module fps_census7_d128u32_796e15_aggregator #(
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > width - 1;
+      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate
@@ -1847,7 +1848,7 @@ module fps_census7_d128u32_796e15_aggregator #(
             above_min2 <= above_min_q;
           end
         fps_census7_d128u32_796e15_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < width), .prev(cur),
+          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
         fps_census7_d128u32_796e15_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
@@ -2887,7 +2888,7 @@ endmodule
 //   ends, its right neighbour (or "none" at the row end) is stored under the run's start.
 //   Reading row y - 1: the left neighbour is the last valid word read; the right one is fetched
 //   by the run start stored with the word. Two rows of each (ping-pong by row parity).
-// Latency: the result for (x, y - 1) leaves 3 en-steps after the event of (x, y).
+// Latency: the result for (x, y - 1) leaves 3 adv-steps after the event of (x, y).
 module fps_census7_d128u32_796e15_gap_fill #(
   // the largest image width (the RAMs hold two rows of it)
   parameter W = 64,
@@ -2897,11 +2898,11 @@ module fps_census7_d128u32_796e15_gap_fill #(
   parameter Y_W = 6
 ) (
   input  wire              clk,
-  input  wire              rst,
-  input  wire              en,
+  input  wire              restart,
+  input  wire              adv,
   // the frame's size
-  input  wire [X_W-1:0]    width,
-  input  wire [Y_W-1:0]    height,
+  input  wire [X_W-1:0]    frame_width,
+  input  wire [Y_W-1:0]    frame_height,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
@@ -2919,7 +2920,7 @@ module fps_census7_d128u32_796e15_gap_fill #(
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  wire [X_W-1:0] last_x = width - 1'b1;
+  wire [X_W-1:0] last_x = frame_width - 1'b1;
 
   function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
     // verilator lint_off WIDTH
@@ -2928,34 +2929,34 @@ module fps_census7_d128u32_796e15_gap_fill #(
   endfunction
 
   // ---- Writing row in_y.
-  wire writing = in_event && in_y < height;
+  wire writing = in_event && in_y < frame_height;
   wire word_invalid = in_word[WORD_W-1];
   reg  run_open;  // the previous word of the row was invalid
   reg  [X_W-1:0] run_start;
   wire continues = run_open && in_x != 0;
   wire [X_W-1:0] start = continues ? run_start : in_x;
   always @(posedge clk)
-    if (rst) run_open <= 1'b0;
-    else if (en && writing) begin
+    if (restart) run_open <= 1'b0;
+    else if (adv && writing) begin
       run_open <= word_invalid;
       run_start <= start;
     end
   // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
-  wire side_we = en && writing && (word_invalid ? in_x == last_x : continues);
+  wire side_we = adv && writing && (word_invalid ? in_x == last_x : continues);
   wire [ADDR_W-1:0] side_waddr = address(in_y[0], word_invalid ? start : run_start);
 
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
   wire reading = in_event && in_y != 0;
   wire [WORD_W+X_W-1:0] stored;
   fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
-    .clk(clk), .we(en && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
-    .re(en), .raddr(address(!in_y[0], in_x)), .rdata(stored));
+    .clk(clk), .we(adv && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
+    .re(adv), .raddr(address(!in_y[0], in_x)), .rdata(stored));
   reg           event1;
   reg [X_W-1:0] x1;
   reg [Y_W-1:0] y1;
   always @(posedge clk)
-    if (rst) event1 <= 1'b0;
-    else if (en) begin
+    if (restart) event1 <= 1'b0;
+    else if (adv) begin
       event1 <= reading;
       x1 <= in_x;
       y1 <= in_y - 1'b1;
@@ -2965,7 +2966,7 @@ module fps_census7_d128u32_796e15_gap_fill #(
   wire [WORD_W-1:0] right2;
   fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
     .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
-    .re(en), .raddr(address(y1[0], start1)), .rdata(right2));
+    .re(adv), .raddr(address(y1[0], start1)), .rdata(right2));
 
   reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
   wire [WORD_W-1:0] left_before = x1 == 0 ? INVALID : left;
@@ -2974,8 +2975,8 @@ module fps_census7_d128u32_796e15_gap_fill #(
   reg  [Y_W-1:0]    y2;
   reg  [WORD_W-1:0] word2, left2;
   always @(posedge clk)
-    if (rst) event2 <= 1'b0;
-    else if (en) begin
+    if (restart) event2 <= 1'b0;
+    else if (adv) begin
       event2 <= event1;
       x2 <= x1;
       y2 <= y1;
@@ -2989,8 +2990,8 @@ module fps_census7_d128u32_796e15_gap_fill #(
   wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right2 < left2 ? right2 : left2)
                          : left_ok ? left2 : right2;
   always @(posedge clk)
-    if (rst) out_event <= 1'b0;
-    else if (en) begin
+    if (restart) out_event <= 1'b0;
+    else if (adv) begin
       out_event <= event2;
       out_x <= x2;
       out_y <= y2;

@@ -22,6 +22,7 @@
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887873 = W*H*dmax/uf (1863000) + 24873
 // Latency without stalls from the first input handshake to the first output handshake: 24878 cycles
+/* verilator lint_off DECLFILENAME */
 
 `resetall
 `default_nettype none
@@ -270,8 +271,8 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .DMAX(128), .DISP_W(7),
     .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5)
   ) lr2_match (
-    .clk(clk), .restart(restart), .adv(adv), .match_on(step >= MATCH_START), .frame_width(frame_width),
-    .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid), .cost_x(cost_x),
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .match_on(step >= MATCH_START), .p1(p1), .p2(p2), .cost_valid(cost_valid), .cost_x(cost_x),
     .cost_row_slot(cost_row_slot), .cost_group(cost_group), .costs(costs), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata));
 
@@ -290,9 +291,9 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .SUM_W(15), .PATHS(15), .MATCH_SIDE(0), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5),
     .OUT_K_W(3), .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2)
   ) aggregation (
-    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1), .p2(p2),
-    .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4), .active4(active4),
-    .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
+    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),
+    .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] wta_group;
@@ -1676,7 +1677,7 @@ module fps_sad5_d128u32_fa1add_lr2_match #(
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
-    .clk(clk), .restart(restart), .adv(adv), .width(frame_width), .height(frame_height), .p1(p1),
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sum4(sums),
     .active4(active), .x4(x), .group4(group), .chain4(chain), .slot4(slot));
   wire              active_w;
@@ -1737,8 +1738,8 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   input  wire                 restart,
   input  wire                 adv,
   // the frame's size and penalties
-  input  wire [X_W-1:0]       width,
-  input  wire [Y_W-1:0]       height,
+  input  wire [X_W-1:0]       frame_width,
+  input  wire [Y_W-1:0]       frame_height,
   input  wire [PATH_W-1:0]    p1,
   input  wire [PATH_W-1:0]    p2,
   // high from the frame's step at which aggregation starts
@@ -1830,7 +1831,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
     end
   wire [X_W-1:0] x0 = ka * SLEN + ja;
   wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
-  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, height} && x0 < width;
+  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
@@ -1888,7 +1889,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > width - 1;
+      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate
@@ -1995,7 +1996,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
             above_min2 <= above_min_q;
           end
         fps_sad5_d128u32_fa1add_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < width), .prev(cur),
+          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
         fps_sad5_d128u32_fa1add_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
