@@ -9,9 +9,20 @@ file(WRITE ${WORK}/bad.json "{\"dmax\": 100, \"uf\": 32}")
 file(WRITE ${WORK}/pairs/pairs.csv "pair,left\n")
 
 set(failures 0)
+set(FPSTEREO_MAIN ${FPSTEREO})
+# With PROGRESS_FIRST set, only the last line of stderr is checked.
+# Standard output goes to ${STDOUT_TO} when it is set (e.g. /dev/full), else it is captured.
 function(expect_error expected)
-  execute_process(COMMAND ${FPSTEREO} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(STDOUT_TO)
+    set(stdout_args OUTPUT_FILE ${STDOUT_TO})
+  else()
+    set(stdout_args OUTPUT_VARIABLE out)
+  endif()
+  execute_process(COMMAND ${FPSTEREO} ${ARGN} RESULT_VARIABLE rc ${stdout_args} ERROR_VARIABLE err)
   string(STRIP "${err}" err)
+  if(PROGRESS_FIRST)  # a command that reports progress on stderr: the last line is the error
+    string(REGEX REPLACE "^.*\n" "" err "${err}")
+  endif()
   string(FIND "${err}" "\n" newline)
   string(FIND "${err}" "${expected}" found)
   if(NOT rc EQUAL 2 OR found EQUAL -1 OR NOT newline EQUAL -1)
@@ -34,6 +45,7 @@ expect_error("expected an integer" run --dmax many ${L} ${R})
 expect_error("cannot write '/nonexistent_fpstereo_dir/l.pgm'" run ${L} ${R} --gray-pgm /nonexistent_fpstereo_dir/l.pgm ${WORK}/r.pgm)
 expect_error("--gray-pgm" run ${L} ${R} --gray-pgm ${WORK}/l.pgm)
 expect_error("no such directory" eval ${WORK}/nowhere)
+expect_error("sgbm-block = 8193: must be an odd number from 1 to 255" eval ${EXAMPLES}/cones --baseline opencv-sgbm --sgbm-block 8193)
 expect_error("pairs.csv" eval ${WORK}/pairs)
 
 # fpstereo dse: bad axes, shards, constraints, datasets, caches and CSVs (outputs kept in WORK).
@@ -50,7 +62,46 @@ expect_error("no pairs.csv" dse ${WORK}/empty ${DSE_OUT})
 expect_error("not a writable directory" dse ${EXAMPLES}/cones --cost census --window 5 --dmax 64 --uf 16
              --refine none --median off -o ${WORK}/dse.csv --html ${WORK}/dse.html --cache ${WORK}/corrupt.png)
 expect_error("not a dse CSV" dse merge ${WORK}/corrupt.png -o ${WORK}/merged.csv)
-expect_error("cannot read" dse merge ${WORK}/none.csv -o ${WORK}/merged.csv)
+expect_error("cannot be read: no such file" dse merge ${WORK}/none.csv -o ${WORK}/merged.csv)
+
+# Corrupt PNGs (cut short; a damaged compressed stream): our line only, none of libpng's.
+execute_process(COMMAND head -c 3000 ${L} OUTPUT_FILE ${WORK}/truncated.png)
+execute_process(COMMAND sh -c "cp '${L}' '${WORK}/damaged.png' && printf 'xxxx' | dd of='${WORK}/damaged.png' bs=1 seek=200 conv=notrunc 2>/dev/null")
+expect_error("not a decodable image" run ${WORK}/truncated.png ${R})
+expect_error("not a decodable image" run ${L} ${WORK}/damaged.png)
+
+# Inputs that are not regular files: a device read forever, directories named like files.
+expect_error("left image '/dev/zero': not a regular file" run /dev/zero ${R})
+expect_error("config file '/dev/zero': not a regular file" run --config /dev/zero ${L} ${R})
+file(MAKE_DIRECTORY ${WORK}/dir.toml ${WORK}/dir.json)
+expect_error("config file '${WORK}/dir.toml': not a regular file" config --config ${WORK}/dir.toml)
+expect_error("config file '${WORK}/dir.json': not a regular file" config --config ${WORK}/dir.json)
+
+# A failing run leaves every previous output untouched and no temporary file behind.
+function(expect_untouched)
+  foreach(f ${ARGN})
+    file(READ ${f} content)
+    if(NOT content STREQUAL "previous")
+      message(SEND_ERROR "${f} was changed by a failing run: '${content}'")
+    endif()
+  endforeach()
+  file(GLOB temps ${WORK}/*.tmp.*)
+  if(temps)
+    message(SEND_ERROR "temporary files left behind: ${temps}")
+  endif()
+endfunction()
+set(KEEP ${WORK}/keep.png ${WORK}/keep.pfm ${WORK}/keep.json ${WORK}/keep.csv ${WORK}/keep.html)
+foreach(f ${KEEP})
+  file(WRITE ${f} "previous")
+endforeach()
+expect_error("cannot write '/nonexistent_fpstereo_dir/c.png'" run --width 450 --height 375 --dmax 64 --uf 16
+             ${L} ${R} -o ${WORK}/keep.png --pfm ${WORK}/keep.pfm --colour /nonexistent_fpstereo_dir/c.png)
+expect_error("pairs.csv" eval ${WORK}/pairs --json ${WORK}/keep.json --csv ${WORK}/keep.csv)
+# dse whose fixed parameters leave no valid design: an error, and nothing written.
+set(DSE_KEEP -o ${WORK}/keep.csv --html ${WORK}/keep.html --cache ${WORK}/dse_cache)
+expect_error("every configuration is invalid" dse ${EXAMPLES}/cones --p1 100 --p2 50 ${DSE_KEEP})
+expect_error("every configuration is invalid" dse ${EXAMPLES}/cones --dmax 17 ${DSE_KEEP})
+expect_untouched(${KEEP})
 
 # fpstereo-rtl --emit (expect_error runs ${FPSTEREO}).
 set(FPSTEREO ${FPSTEREO_RTL})
@@ -58,3 +109,20 @@ expect_error("--emit hls writes a directory: give -o DIR" --emit hls)
 expect_error("--emit 'vhdl': expected verilog or hls" --emit vhdl -o ${WORK}/vhdl)
 expect_error("--part 'zcu 102'" --emit hls --part "zcu 102" -o ${WORK}/bad_part)
 expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad_uf)
+expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
+set(FPSTEREO ${FPSTEREO_MAIN})
+file(MAKE_DIRECTORY ${WORK}/nul)
+execute_process(COMMAND sh -c "printf 'pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\\np,left.png\\0x,right.png,,,,1,0,\\n' > '${WORK}/nul/pairs.csv'")
+expect_error("column left: 'left.png\\x00x' holds a control character" eval ${WORK}/nul)
+set(FPSTEREO ${FPSTEREO_RTL})
+
+# A write error on standard output is an error, not a silent success.
+set(STDOUT_TO /dev/full)
+expect_error("cannot write to standard output" --dmax 16 --uf 4 --width 32 --height 8)
+set(FPSTEREO ${FPSTEREO_MAIN})
+expect_error("cannot write to standard output" config)
+expect_error("cannot write to standard output" run --width 450 --height 375 --dmax 64 --uf 16 ${L} ${R})
+set(PROGRESS_FIRST ON)
+expect_error("cannot write to standard output" eval --dmax 64 --uf 16 ${EXAMPLES}/cones)
+unset(PROGRESS_FIRST)
+unset(STDOUT_TO)

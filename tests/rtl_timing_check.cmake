@@ -80,3 +80,15 @@ endforeach()
 if(NOT rc EQUAL 1)
   message(SEND_ERROR "the bench exited with ${rc}, expected 1 (a timing error)")
 endif()
+
+# --levels shapes generated textures only: with real images it is an error, not silently ignored
+# (the bench built above is reused).
+string(REPEAT "1 2 3 4 5 6 7 8 " 32 pixels)
+file(WRITE ${WORK}/levels.pgm "P2\n32 8\n255\n${pixels}\n")
+execute_process(COMMAND ${VERIFY_RTL} --build-dir ${BUILD_DIR} --rtl-dir ${rtl} --
+                        --left ${WORK}/levels.pgm --right ${WORK}/levels.pgm --levels 4
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(FIND "${err}" "--levels" at)
+if(NOT rc EQUAL 2 OR at EQUAL -1)
+  message(SEND_ERROR "the bench with --left and --levels: expected exit 2 naming --levels, got ${rc}: ${err}")
+endif()

@@ -127,11 +127,28 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"median", "4", "median = 4: expected 0 (off), 3, 5 or 7"},
       {"median", "9", "median = 9: expected 0 (off), 3, 5 or 7"},
       {"gap-interp", "maybe", "gap-interp = 'maybe': expected on or off"},
+      {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135"},
+      {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135"},
+      {"dmax", "+64", "dmax = '+64': expected an integer"},
+      {"dmax", " 64", "dmax = ' 64': expected an integer"},
+      {"dmax", "64 ", "dmax = '64 ': expected an integer"},
+      {"dmax", "0x40", "dmax = '0x40': expected an integer"},
+      {"dmax", "-", "dmax = '-': expected an integer"},
+      {"p1", "18446744073709551609", "p1 = '18446744073709551609': expected an integer"},
+      {"shd-window", "4", "shd-window = 4: must be an odd window side from 1 to 11"},
+      {"shd-window", "13", "shd-window = 13: must be an odd window side from 1 to 11"},
+      {"cost", "a\nb", "cost = 'a\\nb': expected one of census rank sad zsad shd"},
   };
   for (const auto& c : cases) {
     INFO(c.name << " = " << c.value);
     CHECK(rejection_of(c.name, c.value) == c.expected);
   }
+}
+
+TEST_CASE("compose_config: a preset given as '' is an error, not the defaults", "[config]") {
+  CHECK(compose_config(std::nullopt, "", {}) == StereoConfig{});
+  CHECK(compose_config(std::string("C0"), "", {{"median", "3"}}).median == 3);
+  CHECK_THROWS_WITH(compose_config(std::string(""), "", {}), Catch::StartsWith("preset = '': expected one of"));
 }
 
 TEST_CASE("invalid combinations are rejected", "[config]") {
@@ -143,8 +160,8 @@ TEST_CASE("invalid combinations are rejected", "[config]") {
   shd.cost = CostFunction::Shd;
   shd.shd_window = 4;
   CHECK(rejection(shd) == "shd-window = 4: must be an odd window side from 1 to 11");
-  shd.cost = CostFunction::Census;  // the SHD window only matters for SHD
-  CHECK(rejection(shd).empty());
+  shd.cost = CostFunction::Census;  // checked even when unused: a bad value is never silently kept
+  CHECK(rejection(shd) == "shd-window = 4: must be an odd window side from 1 to 11");
 
   CHECK_THROWS_WITH(
       [] {
@@ -193,6 +210,23 @@ TEST_CASE("config files in JSON and TOML use the same names", "[config]") {
   CHECK_THROWS_WITH(apply_config_file(c, "no/such/file.json"), Catch::Contains("cannot be read"));
   CHECK_THROWS_WITH(apply_config_file(c, write_temp("f.json", R"({"dmax": "x"})")),
                     "dmax = 'x': expected an integer");
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("g.json", R"({"dmax": [64]})")),
+                    Catch::Contains("dmax = [...]") && Catch::Contains("expected a single value"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("g.toml", "dmax = [64]\n")),
+                    Catch::Contains("dmax = [...]") && Catch::Contains("expected a single value"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("h.json", R"({"paths": [[0], 90]})")),
+                    Catch::Contains("paths = [[...]]"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("i.json", R"({"dmax": 64, "dmax": 32})")),
+                    Catch::Contains("key 'dmax' appears twice"));
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("j.json", R"({"p1": 18446744073709551609})")),
+                    "p1 = '18446744073709551609': expected an integer");
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("k.json", R"({"dmax": 64.0})")),
+                    "dmax = '64.0': expected an integer");
+  // 100,000 levels: refused while parsing, no recursion over it.
+  const std::string deep = "{\"dmax\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  CHECK_THROWS_WITH(apply_config_file(c, write_temp("l.json", deep)), Catch::Contains("nested deeper than"));
+  for (const char* f : {"g.json", "g.toml", "h.json", "i.json", "j.json", "k.json", "l.json"})
+    std::remove((std::string("fpstereo_test_") + f).c_str());
   for (const char* f : {"a.json", "a.toml", "b.json", "c.json", "d.toml", "e.yaml", "f.json"})
     std::remove((std::string("fpstereo_test_") + f).c_str());
 }

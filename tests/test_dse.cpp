@@ -1,10 +1,12 @@
 // Design-space exploration: the resource model's block RAM against hand derivations, its
 // monotonicity, the Pareto front, shards and merge, the accuracy cache and the report.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <opencv2/imgcodecs.hpp>
 
 #include "dse.hpp"
@@ -288,7 +290,9 @@ TEST_CASE("every CSV column reads back what was written", "[dse]") {
   row.yosys_ff = 23000;
   row.yosys_bram36 = 16.5;
   const fs::path csv = fs::temp_directory_path() / "fpstereo_test_dse_columns.csv";
-  const std::string text = dse::to_csv({row, dse::Row{}});
+  dse::Row blank;
+  blank.part = "xck26";  // every row names a known part
+  const std::string text = dse::to_csv({row, blank});
   std::ofstream(csv) << text;
   const std::vector<dse::Row> back = dse::read_csv(csv.string());
   REQUIRE(back.size() == 2);
@@ -297,4 +301,46 @@ TEST_CASE("every CSV column reads back what was written", "[dse]") {
   CHECK(back[0].model.bram36 == 17);
   CHECK(back[0].model.bram18 == 1);
   CHECK(std::isnan(back[0].yosys_dsp));
+}
+
+TEST_CASE("dse CSV: a bad cell is an error naming the file, line and column", "[dse]") {
+  dse::Row row;
+  row.cfg = preset("C2");
+  row.part = "xck26";
+  row.model.bram36 = 3;
+  const std::string text = dse::to_csv({row});
+  const std::string header = text.substr(0, text.find('\n'));
+  std::vector<std::string> names, cells;
+  std::stringstream hs(header);
+  for (std::string n; std::getline(hs, n, ',');) names.push_back(n);
+  const std::string line = text.substr(header.size() + 1, text.size() - header.size() - 2);
+  std::stringstream ls(line);
+  for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+  if (line.back() == ',') cells.emplace_back();
+  REQUIRE(cells.size() == names.size());
+  const fs::path csv = fs::temp_directory_path() / "fpstereo_test_dse_bad_cell.csv";
+  const auto error_with = [&](const std::string& column, const std::string& value) {
+    std::vector<std::string> changed = cells;
+    changed[size_t(std::find(names.begin(), names.end(), column) - names.begin())] = value;
+    std::string out = header + "\n";
+    for (size_t i = 0; i < changed.size(); ++i) out += (i ? "," : "") + changed[i];
+    std::ofstream(csv) << out << "\n";
+    try {
+      dse::read_csv(csv.string());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string at = "'" + csv.string() + "' line 2, column ";
+  CHECK(error_with("bram36", "-2147483648") == at + "bram36: '-2147483648' is not a number from 0 to 1e+09");
+  CHECK(error_with("bram36", "1e300") == at + "bram36: '1e300' is not a number from 0 to 1e+09");
+  CHECK(error_with("lut", "nan") == at + "lut: 'nan' is not a number from 0 to 1e+09");
+  CHECK(error_with("fps", "inf") == at + "fps: 'inf' is not a number from 0 to 1e+09");
+  CHECK(error_with("lut", "12x") == at + "lut: '12x' is not a number from 0 to 1e+09");
+  CHECK(error_with("cycles_per_frame", "1.5") == at + "cycles_per_frame: '1.5' is not a whole number from 0 to 1e+09");
+  CHECK_THAT(error_with("part", "xc9000"), Catch::StartsWith(at + "part: ") && Catch::Contains("xc9000"));
+  CHECK(error_with("flags", "") == at + "flags: empty, expected the configuration's flags");
+  CHECK(error_with("bram36", "3").empty());
+  fs::remove(csv);
 }

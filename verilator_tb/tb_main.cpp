@@ -608,9 +608,10 @@ int main(int argc, char** argv) {
       app.add_option("--shifted", opt.shift,
                      "pairs with a constant disparity D: right random, left = right shifted by D px")
           ->check(CLI::Range(0, 8192));
-  app.add_option("--levels", opt.levels, "gray levels of generated textures (few levels: many ties)")
-      ->capture_default_str()
-      ->check(CLI::Range(2, 256));
+  auto* levels =
+      app.add_option("--levels", opt.levels, "gray levels of generated textures (few levels: many ties)")
+          ->capture_default_str()
+          ->check(CLI::Range(2, 256));
   app.add_option("--seed", opt.seed, "seed of generated pairs, idle and backpressure patterns, initial state")
       ->capture_default_str();
   app.add_option("--frames", opt.frames, "frames streamed back to back in the checked run")
@@ -648,7 +649,7 @@ int main(int argc, char** argv) {
   left->needs(right);
   right->needs(left);
   crop->needs(left);
-  left->excludes(random)->excludes(shifted);
+  left->excludes(random)->excludes(shifted)->excludes(levels);  // real images have their own levels
   shifted->excludes(random);
 
   try {

@@ -7,7 +7,11 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
+
+#include "files.hpp"
+#include "text.hpp"
 #include <sstream>
 
 namespace fpstereo {
@@ -17,19 +21,20 @@ namespace {
   throw ConfigError(name + " = " + value + ": " + allowed);
 }
 
+// Decimal digits with an optional '-': no sign '+', no spaces, no other base.
 int parse_int(const std::string& name, const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || v < -1000000000L || v > 1000000000L)
-    reject(name, "'" + text + "'", "expected an integer");
+  const size_t digits = text.size() - (text.rfind('-', 0) == 0 ? 1 : 0);
+  const bool plain = digits > 0 && digits <= 10 &&
+                     std::all_of(text.end() - long(digits), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  const long long v = plain ? std::stoll(text) : 0;
+  if (!plain || v < -1000000000LL || v > 1000000000LL) reject(name, quoted(text), "expected an integer");
   return int(v);
 }
 
 bool parse_bool(const std::string& name, const std::string& text) {
   if (text == "on" || text == "true" || text == "1" || text == "yes") return true;
   if (text == "off" || text == "false" || text == "0" || text == "no") return false;
-  reject(name, "'" + text + "'", "expected on or off");
+  reject(name, quoted(text), "expected on or off");
 }
 
 // "off" is accepted wherever 0 means off.
@@ -54,7 +59,7 @@ E parse_enum(const std::string& name, const std::string& text,
     if (n == lower) return e;
   std::string allowed = "expected one of";
   for (const auto& entry : table) allowed += " " + entry.first;
-  reject(name, "'" + text + "'", allowed);
+  reject(name, quoted(text), allowed);
 }
 
 template <class E>
@@ -66,21 +71,27 @@ std::string enum_name(E value, const std::vector<std::pair<std::string, E>>& tab
 
 unsigned parse_paths(const std::string& name, const std::string& text) {
   if (text == "all") return kAllPaths;
+  if (text.empty()) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
   unsigned mask = 0;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
+  std::vector<std::string> items(1);
+  for (char c : text) {  // keeps empty items, unlike getline
+    if (c == ',')
+      items.emplace_back();
+    else
+      items.back().push_back(c);
+  }
+  for (std::string item : items) {
     item.erase(std::remove_if(item.begin(), item.end(), ::isspace), item.end());
     bool found = false;
     for (const auto& p : path_directions())
       if (item == std::to_string(p.angle)) {
-        if (mask & p.mask) reject(name, "'" + text + "'", "each angle at most once");
+        if (mask & p.mask) reject(name, quoted(text), "each angle at most once");
         mask |= p.mask;
         found = true;
       }
-    if (!found) reject(name, "'" + text + "'", "expected a comma-separated subset of 0,45,90,135");
+    if (!found) reject(name, quoted(text), "expected a comma-separated subset of 0,45,90,135");
   }
-  if (mask == 0) reject(name, "'" + text + "'", "expected a non-empty subset of 0,45,90,135");
+  if (mask == 0) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
   return mask;
 }
 
@@ -177,14 +188,14 @@ const std::vector<ParamSpec>& param_specs() {
 void set_param(StereoConfig& cfg, const std::string& name, const std::string& value) {
   for (const auto& spec : param_specs())
     if (spec.name == name) return spec.set(cfg, value);
-  throw ConfigError("unknown parameter '" + name + "'");
+  throw ConfigError("unknown parameter " + quoted(name));
 }
 
 void validate(const StereoConfig& c) {
   check_range("width", c.width, 8, 8192);
   check_range("height", c.height, 4, 8192);
   check_odd_window("window", c.window, 3, 11);
-  if (c.cost == CostFunction::Shd) check_odd_window("shd-window", c.shd_window, 1, 11);
+  check_odd_window("shd-window", c.shd_window, 1, 11);  // checked even when unused: never silently wrong
   check_range("dmax", c.dmax, 16, 256);
   if (c.uf < 1 || c.uf > c.dmax || c.dmax % c.uf != 0)
     reject("uf", std::to_string(c.uf), "must divide dmax (" + std::to_string(c.dmax) + ")");
@@ -229,84 +240,146 @@ StereoConfig preset(const std::string& name) {
   } else {
     std::string allowed = "expected one of";
     for (const auto& n : preset_names()) allowed += " " + n;
-    reject("preset", "'" + name + "'", allowed);
+    reject("preset", quoted(name), allowed);
   }
   return c;
 }
 
 namespace {
 
-std::string json_value_text(const nlohmann::json& v) {
+// Deeper JSON is refused while parsing: a config file is one flat object (depth 1, arrays at 2),
+// and recursion over a hostile 100,000-level document would overflow the stack.
+constexpr int kMaxJsonDepth = 8;
+
+// Only "paths" takes a list; every other parameter is one value.
+bool takes_list(const std::string& key) { return key == "paths"; }
+
+[[noreturn]] void reject_value(const std::string& key, const std::string& shown, const std::string& path) {
+  throw ConfigError(key + " = " + shown + " in " + quoted(path) +
+                    ": expected " + (takes_list(key) ? "a list of angles or a string" : "a single value"));
+}
+
+// A scalar as the text a command-line flag would carry; nullopt for anything else.
+std::optional<std::string> json_scalar_text(const nlohmann::json& v) {
   if (v.is_string()) return v.get<std::string>();
-  if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
+  if (v.is_boolean()) return std::string(v.get<bool>() ? "on" : "off");
+  if (v.is_number_unsigned()) return std::to_string(v.get<unsigned long long>());
   if (v.is_number_integer()) return std::to_string(v.get<long long>());
-  if (v.is_array()) {
-    std::string s;
-    for (const auto& e : v) s += (s.empty() ? "" : ",") + json_value_text(e);
-    return s;
-  }
-  return v.dump();
+  if (v.is_number_float()) return v.dump();  // rejected by the integer parser, shown as written
+  return std::nullopt;
 }
 
-std::string toml_value_text(const toml::node& v) {
+std::string json_value_text(const std::string& key, const nlohmann::json& v, const std::string& path) {
+  if (auto text = json_scalar_text(v)) return *text;
+  if (!v.is_array() || !takes_list(key)) reject_value(key, v.is_array() ? "[...]" : "{...}", path);
+  std::string s;
+  for (const auto& e : v) {
+    const auto text = json_scalar_text(e);
+    if (!text) reject_value(key, "[[...]]", path);
+    s += (s.empty() ? "" : ",") + *text;
+  }
+  return s;
+}
+
+std::optional<std::string> toml_scalar_text(const toml::node& v) {
   if (auto s = v.as_string()) return s->get();
-  if (auto b = v.as_boolean()) return b->get() ? "on" : "off";
+  if (auto b = v.as_boolean()) return std::string(b->get() ? "on" : "off");
   if (auto i = v.as_integer()) return std::to_string(i->get());
-  if (auto a = v.as_array()) {
-    std::string s;
-    for (const auto& e : *a) s += (s.empty() ? "" : ",") + toml_value_text(e);
-    return s;
-  }
   if (auto f = v.as_floating_point()) return std::to_string(f->get());
-  return "(a table or date)";
+  return std::nullopt;
 }
 
-void apply_entries(StereoConfig& cfg, const std::vector<std::pair<std::string, std::string>>& entries,
-                   const std::string& path) {
+std::string toml_value_text(const std::string& key, const toml::node& v, const std::string& path) {
+  if (auto text = toml_scalar_text(v)) return *text;
+  if (!v.as_array() || !takes_list(key)) reject_value(key, v.as_array() ? "[...]" : "(a table or date)", path);
+  std::string s;
+  for (const auto& e : *v.as_array()) {
+    const auto text = toml_scalar_text(e);
+    if (!text) reject_value(key, "[[...]]", path);
+    s += (s.empty() ? "" : ",") + *text;
+  }
+  return s;
+}
+
+using Entries = std::vector<std::pair<std::string, std::string>>;
+
+Entries json_entries(const std::string& text, const std::string& path) {
+  std::vector<std::string> keys;  // of the top-level object, to refuse duplicates
+  const auto limit = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    if (depth > kMaxJsonDepth)
+      throw ConfigError("config file " + quoted(path) + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                        " levels");
+    if (event == nlohmann::json::parse_event_t::key && depth == 1) {
+      const std::string key = parsed.get<std::string>();
+      if (std::find(keys.begin(), keys.end(), key) != keys.end())
+        throw ConfigError("config file " + quoted(path) + ": key " + quoted(key) + " appears twice");
+      keys.push_back(key);
+    }
+    return true;
+  };
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text, limit);
+  } catch (const nlohmann::json::exception& e) {
+    throw ConfigError("config file " + quoted(path) + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) throw ConfigError("config file " + quoted(path) + ": expected a JSON object");
+  Entries entries;
+  for (const auto& [key, value] : j.items()) entries.emplace_back(key, json_value_text(key, value, path));
+  return entries;
+}
+
+Entries toml_entries(const std::string& text, const std::string& path) {
+  toml::table t;
+  try {
+    t = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw ConfigError("config file " + quoted(path) + ": not valid TOML (" + std::string(e.description()) + ")");
+  }
+  Entries entries;
+  for (const auto& [key, value] : t) {
+    const std::string name(key.str());
+    entries.emplace_back(name, toml_value_text(name, value, path));
+  }
+  return entries;
+}
+
+void apply_entries(StereoConfig& cfg, const Entries& entries, const std::string& path) {
   for (const auto& [key, value] : entries)
     if (key == "preset") cfg = preset(value);
   for (const auto& [key, value] : entries) {
     if (key == "preset") continue;
     bool known = std::any_of(param_specs().begin(), param_specs().end(),
                              [&](const ParamSpec& s) { return s.name == key; });
-    if (!known) throw ConfigError("unknown parameter '" + key + "' in " + path);
+    if (!known) throw ConfigError("unknown parameter " + quoted(key) + " in " + quoted(path));
     set_param(cfg, key, value);
   }
+}
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
 
 void apply_config_file(StereoConfig& cfg, const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError("config file '" + path + "': cannot be read");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  std::vector<std::pair<std::string, std::string>> entries;
-  auto ends_with = [&](const std::string& suffix) {
-    return path.size() >= suffix.size() &&
-           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
-  };
-  if (ends_with(".json")) {
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(buf.str());
-    } catch (const nlohmann::json::exception& e) {
-      throw ConfigError("config file '" + path + "': not valid JSON (" + e.what() + ")");
-    }
-    if (!j.is_object()) throw ConfigError("config file '" + path + "': expected a JSON object");
-    for (const auto& [key, value] : j.items()) entries.emplace_back(key, json_value_text(value));
-  } else if (ends_with(".toml")) {
-    toml::table t;
-    try {
-      t = toml::parse(buf.str(), path);
-    } catch (const toml::parse_error& e) {
-      throw ConfigError("config file '" + path + "': not valid TOML (" + std::string(e.description()) + ")");
-    }
-    for (const auto& [key, value] : t) entries.emplace_back(std::string(key.str()), toml_value_text(value));
-  } else {
-    throw ConfigError("config file '" + path + "': expected a .json or .toml file");
+  std::string text;
+  try {
+    text = read_regular_file(path, "config file", kMaxTextFileBytes);
+  } catch (const FileError& e) {
+    throw ConfigError(e.what());
   }
-  apply_entries(cfg, entries, path);
+  if (!ends_with(path, ".json") && !ends_with(path, ".toml"))
+    throw ConfigError("config file " + quoted(path) + ": expected a .json or .toml file");
+  apply_entries(cfg, ends_with(path, ".json") ? json_entries(text, path) : toml_entries(text, path), path);
+}
+
+StereoConfig compose_config(const std::optional<std::string>& preset_name, const std::string& config_file,
+                            const std::map<std::string, std::string>& values) {
+  StereoConfig cfg = preset_name ? preset(*preset_name) : StereoConfig{};
+  if (!config_file.empty()) apply_config_file(cfg, config_file);
+  for (const auto& [name, value] : values) set_param(cfg, name, value);
+  return cfg;
 }
 
 std::string describe(const StereoConfig& cfg, const std::string& line_prefix) {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -83,6 +85,12 @@ StereoConfig preset(const std::string& name);  // throws ConfigError for an unkn
 // Applies a JSON (.json) or TOML (.toml) file whose keys are parameter names (and optionally
 // "preset", applied first). Throws ConfigError on unknown keys, bad values or unreadable files.
 void apply_config_file(StereoConfig& cfg, const std::string& path);
+
+// The configuration a tool's flags describe, not yet validated: the preset when one was given
+// (an empty name is an error, not "no preset"), then the config file when one was given, then
+// each name = value.
+StereoConfig compose_config(const std::optional<std::string>& preset_name, const std::string& config_file,
+                            const std::map<std::string, std::string>& values);
 
 std::string to_string(CostFunction c);
 std::string to_string(LrCheck l);

@@ -10,7 +10,9 @@
 #include <sstream>
 
 #include "dse.hpp"
+#include "files.hpp"
 #include "image_io.hpp"
+#include "text.hpp"
 
 namespace fpstereo::dse {
 namespace {
@@ -21,7 +23,7 @@ std::string number(double v, int digits = 4) {
   return std::isfinite(v) ? fmt::format("{:.{}f}", v, digits) : std::string();
 }
 
-std::string quoted(const std::string& s) {
+std::string csv_cell(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -53,14 +55,35 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return cells;
 }
 
-double cell_number(const std::string& s) { return s.empty() ? NAN : std::stod(s); }
+// The largest number a cell may hold: resources, rates and counts all fit far below it, and
+// it keeps every conversion to int exact.
+constexpr double kMaxCell = 1e9;
+
+// A number cell: empty is "not available" (NaN); anything else must be a whole decimal number,
+// finite and in 0 .. kMaxCell. Throws std::invalid_argument naming the value.
+double cell_number(const std::string& s) {
+  if (s.empty()) return NAN;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (*end != '\0' || !std::isfinite(v) || v < 0 || v > kMaxCell)
+    throw std::invalid_argument(fmt::format("{} is not a number from 0 to {:g}", quoted(s), kMaxCell));
+  return v;
+}
+
+// A count cell: a whole number in 0 .. kMaxCell.
+long long cell_integer(const std::string& s) {
+  const double v = s.empty() ? -1 : cell_number(s);
+  if (v < 0 || v != std::floor(v))
+    throw std::invalid_argument(fmt::format("{} is not a whole number from 0 to {:g}", quoted(s), kMaxCell));
+  return static_cast<long long>(v);
+}
 
 StereoConfig parse_flags(const std::string& flags) {
   std::istringstream in(flags);
   std::string key, value;
   StereoConfig cfg;
   while (in >> key >> value) {
-    if (key.rfind("--", 0) != 0) throw ConfigError("malformed flags '" + flags + "'");
+    if (key.rfind("--", 0) != 0) throw ConfigError("malformed flags " + quoted(flags));
     set_param(cfg, key.substr(2), value);
   }
   validate(cfg);
@@ -98,7 +121,7 @@ const std::vector<CsvColumn>& csv_columns() {
       decimal("d1_valid", 4, [](auto& r) { return &r.acc.d1_valid; }),
       decimal("density", 4, [](auto& r) { return &r.acc.density; }),
       {"pairs", [](const Row& r) { return std::to_string(r.acc.pairs); },
-       [](Row& r, const std::string& s) { r.acc.pairs = std::stoi(s); }},
+       [](Row& r, const std::string& s) { r.acc.pairs = int(cell_integer(s)); }},
       decimal("lut", 0, [](auto& r) { return &r.model.lut; }),
       decimal("ff", 0, [](auto& r) { return &r.model.ff; }),
       // BRAM36 equivalents: the RAMB18/RAMB36 split is not in the CSV, halves go to bram18.
@@ -115,10 +138,10 @@ const std::vector<CsvColumn>& csv_columns() {
       decimal("dsp_pct", 3, [](auto& r) { return &r.dsp_pct; }),
       decimal("resource_pct", 3, [](auto& r) { return &r.resource_pct; }),
       {"cycles_per_frame", [](const Row& r) { return std::to_string(r.cycles_per_frame); },
-       [](Row& r, const std::string& s) { r.cycles_per_frame = std::stoll(s); }},
+       [](Row& r, const std::string& s) { r.cycles_per_frame = cell_integer(s); }},
       decimal("clock_mhz", 3, [](auto& r) { return &r.clock_mhz; }),
       decimal("fps", 3, [](auto& r) { return &r.fps; }),
-      {"part", [](const Row& r) { return r.part; }, [](Row& r, const std::string& s) { r.part = s; }},
+      {"part", [](const Row& r) { return r.part; }, [](Row& r, const std::string& s) { r.part = find_part(s).name; }},
       {"pareto", [](const Row& r) { return std::string(r.pareto ? "1" : "0"); },
        [](Row& r, const std::string& s) { r.pareto = s == "1"; }},
       decimal("yosys_lut", 0, [](auto& r) { return &r.yosys_lut; }),
@@ -126,7 +149,10 @@ const std::vector<CsvColumn>& csv_columns() {
       decimal("yosys_bram36", 1, [](auto& r) { return &r.yosys_bram36; }),
       decimal("yosys_dsp", 0, [](auto& r) { return &r.yosys_dsp; }),
       {"flags", [](const Row& r) { return config_flags(r.cfg); },
-       [](Row& r, const std::string& s) { r.cfg = parse_flags(s); }},
+       [](Row& r, const std::string& s) {
+         if (s.empty()) throw std::invalid_argument("empty, expected the configuration's flags");
+         r.cfg = parse_flags(s);
+       }},
       {"command", [](const Row& r) { return rtl_command(r.cfg); }, nullptr}};
   return columns;
 }
@@ -321,15 +347,19 @@ std::string to_csv(const std::vector<Row>& rows) {
   out += "\n";
   for (const auto& r : rows) {
     std::string line;
-    for (const auto& c : csv_columns()) line += (line.empty() ? "" : ",") + quoted(c.write(r));
+    for (const auto& c : csv_columns()) line += (line.empty() ? "" : ",") + csv_cell(c.write(r));
     out += line + "\n";
   }
   return out;
 }
 
 std::vector<Row> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("cannot read '{}'", path));
+  std::istringstream in;
+  try {
+    in.str(read_regular_file(path, "dse CSV", kMaxTableBytes));
+  } catch (const FileError& e) {
+    throw InputError(e.what());
+  }
   std::string line;
   if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty, expected a dse CSV", path));
   const std::vector<std::string> header = split_csv_line(line);
@@ -344,15 +374,19 @@ std::vector<Row> read_csv(const std::string& path) {
     ++line_no;
     if (line.empty()) continue;
     const std::vector<std::string> f = split_csv_line(line);
-    try {
-      if (f.size() != header.size()) throw std::invalid_argument("wrong number of cells");
-      Row r;
-      for (const auto& c : csv_columns())
-        if (c.read) c.read(r, f[col.at(c.name)]);
-      rows.push_back(std::move(r));
-    } catch (const std::exception& e) {
-      throw InputError(fmt::format("'{}' line {}: malformed row ({})", path, line_no, e.what()));
+    const std::string where = fmt::format("{} line {}", quoted(path), line_no);
+    if (f.size() != header.size())
+      throw InputError(fmt::format("{}: malformed row ({} cells, expected {})", where, f.size(), header.size()));
+    Row r;
+    for (const auto& c : csv_columns()) {
+      if (!c.read) continue;
+      try {
+        c.read(r, f[col.at(c.name)]);
+      } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}, column {}: {}", where, c.name, e.what()));
+      }
     }
+    rows.push_back(std::move(r));
   }
   return rows;
 }

@@ -10,7 +10,9 @@
 #include <map>
 #include <sstream>
 
+#include "files.hpp"
 #include "image_io.hpp"
+#include "text.hpp"
 
 namespace fpstereo {
 namespace {
@@ -104,8 +106,13 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
   if (!fs::is_directory(dataset_dir, ec))
     throw InputError(fmt::format("dataset '{}': no such directory", dataset_dir));
   const std::string csv = (fs::path(dataset_dir) / "pairs.csv").string();
-  std::ifstream in(csv);
-  if (!in) throw InputError(fmt::format("dataset '{}': no readable pairs.csv", dataset_dir));
+  if (!fs::exists(csv, ec)) throw InputError(fmt::format("dataset '{}': no pairs.csv", dataset_dir));
+  std::istringstream in;
+  try {
+    in.str(read_regular_file(csv, "pairs file", kMaxTableBytes));
+  } catch (const FileError& e) {
+    throw InputError(e.what());
+  }
 
   std::string line;
   if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty file", csv));
@@ -119,7 +126,12 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
     if (fields.size() != index.size())
       throw InputError(fmt::format("{}: {} fields, expected {}", where, fields.size(), index.size()));
     std::map<std::string, std::string> by_name;
-    for (const auto& [name, i] : index) by_name[name] = fields[i];
+    for (const auto& [name, i] : index) {
+      const std::string& field = fields[i];
+      if (std::any_of(field.begin(), field.end(), [](char c) { return (unsigned char)c < 0x20 || c == 0x7f; }))
+        throw InputError(fmt::format("{}: column {}: {} holds a control character", where, name, quoted(field)));
+      by_name[name] = field;
+    }
     DatasetPair pair = pair_from_row(Row(std::move(by_name), where), dataset_dir);
     const bool duplicate =
         std::any_of(pairs.begin(), pairs.end(), [&](const DatasetPair& p) { return p.name == pair.name; });

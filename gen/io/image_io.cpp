@@ -2,17 +2,24 @@
 
 #include <fmt/core.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "files.hpp"
+#include "text.hpp"
 #include "widths.hpp"
 
 namespace fpstereo {
@@ -21,34 +28,62 @@ namespace {
 std::string size_text(int width, int height) { return fmt::format("{}x{}", width, height); }
 
 // Reads the whole file ourselves (instead of cv::imread) so that "missing" and "not an image"
-// get distinct messages and OpenCV never logs warnings about the path.
+// get distinct messages, OpenCV never logs warnings about the path, and a device or a pipe
+// (/dev/zero) is refused instead of read forever.
 std::vector<uchar> read_bytes(const std::string& path, const std::string& role) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{} '{}': no such file", role, path));
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(fmt::format("{} '{}': is a directory, expected a file", role, path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{} '{}': cannot be read ({})", role, path, std::strerror(errno)));
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  try {
+    const std::string bytes = read_regular_file(path, role, kMaxImageBytes);
+    return {bytes.begin(), bytes.end()};
+  } catch (const FileError& e) {
+    throw InputError(e.what());
+  }
 }
 
-void write_bytes(const std::string& path, const void* data, size_t size) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (out) out.write(static_cast<const char*>(data), std::streamsize(size));
-  if (out) out.close();
-  if (!out) throw InputError(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+void write_bytes(const std::string& path, const std::vector<uchar>& bytes) {
+  try {
+    write_file_atomically(path, bytes.data(), bytes.size());
+  } catch (const FileError& e) {
+    throw InputError(e.what());
+  }
 }
 
-void write_png(const cv::Mat& image, const std::string& path) {
+std::vector<uchar> encode_png(const cv::Mat& image) {
   std::vector<uchar> encoded;
   cv::imencode(".png", image, encoded);
-  write_bytes(path, encoded.data(), encoded.size());
+  return encoded;
+}
+
+// Runs f with file descriptor 2 pointed at /dev/null: the codecs OpenCV uses (libpng's default
+// handlers, libjpeg's) print their own lines about corrupt data on stderr, and ours must be the
+// only one. Serialised, since the descriptor is the process's; other threads' stderr output is
+// lost for the duration of one decode.
+template <class F>
+void without_stderr(F&& f) {
+  static std::mutex mutex;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::fflush(stderr);
+  const int saved = ::dup(STDERR_FILENO);
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+  if (null >= 0) ::close(null);
+  const auto restore = [saved] {
+    if (saved < 0) return;
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+  };
+  try {
+    f();
+  } catch (...) {
+    restore();
+    throw;
+  }
+  restore();
 }
 
 cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const std::string& role) {
   cv::Mat image;
   try {
-    if (!bytes.empty()) image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+    if (!bytes.empty()) without_stderr([&] { image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED); });
   } catch (const cv::Exception&) {
     image.release();  // a decoder that throws on corrupt data: same answer as one returning empty
   }
@@ -272,7 +307,7 @@ cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cf
   return disp;
 }
 
-void write_kitti_png(const cv::Mat1f& disp, const std::string& path) {
+std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp) {
   cv::Mat_<uint16_t> stored(disp.size());
   for (int y = 0; y < disp.rows; ++y)
     for (int x = 0; x < disp.cols; ++x) {
@@ -280,17 +315,17 @@ void write_kitti_png(const cv::Mat1f& disp, const std::string& path) {
       // 0 is the invalid code, so a valid disparity that would round to 0 is stored as 1.
       stored(y, x) = std::isfinite(d) ? uint16_t(std::clamp(std::lround(d * 256.0f), 1L, 65535L)) : 0;
     }
-  write_png(stored, path);
+  return encode_png(stored);
 }
 
-void write_pgm(const GrayImage& image, const std::string& path) {
+std::vector<uchar> encode_pgm(const GrayImage& image) {
   const std::string header = fmt::format("P5\n{} {}\n255\n", image.width, image.height);
   std::vector<uchar> bytes(header.begin(), header.end());
   bytes.insert(bytes.end(), image.pixels.begin(), image.pixels.end());
-  write_bytes(path, bytes.data(), bytes.size());
+  return bytes;
 }
 
-void write_pfm(const cv::Mat1f& disp, const std::string& path) {
+std::vector<uchar> encode_pfm(const cv::Mat1f& disp) {
   const std::string header = fmt::format("Pf\n{} {}\n-1\n", disp.cols, disp.rows);
   std::vector<uchar> bytes(header.begin(), header.end());
   bytes.reserve(bytes.size() + disp.total() * 4);
@@ -299,18 +334,28 @@ void write_pfm(const cv::Mat1f& disp, const std::string& path) {
       const float d = disp(y, x);
       append_le_float(bytes, std::isfinite(d) ? d : INFINITY);
     }
-  write_bytes(path, bytes.data(), bytes.size());
+  return bytes;
 }
 
-void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path) {
-  if (!(max_disp > 0))
-    throw InputError(fmt::format("colour map for '{}': the disparity range must be positive", path));
+std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float max_disp) {
+  if (!(max_disp > 0)) throw InputError("colour map: the disparity range must be positive");
   const cv::Mat3b colour = colourise(disp, max_disp);
   cv::Mat3b canvas(std::max(disp.rows, kMinCanvasHeight), disp.cols + kLegendWidth);
   canvas.setTo(kLegendBackground);
   colour.copyTo(canvas(cv::Rect(0, 0, disp.cols, disp.rows)));
   draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), max_disp);
-  write_png(canvas, path);
+  return encode_png(canvas);
+}
+
+void write_kitti_png(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_kitti_png(disp)); }
+void write_pgm(const GrayImage& image, const std::string& path) { write_bytes(path, encode_pgm(image)); }
+void write_pfm(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_pfm(disp)); }
+void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path) {
+  write_bytes(path, encode_colour_png(disp, max_disp));
+}
+
+void write_outputs(const std::vector<OutputBytes>& outputs) {
+  for (const auto& out : outputs) write_bytes(out.path, out.bytes);
 }
 
 cv::Mat1f read_disparity(const std::string& path, double scale, const std::string& invalid_spec) {

@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "config.hpp"
 #include "image.hpp"
@@ -28,6 +29,20 @@ void check_pair(const GrayImage& left, const GrayImage& right, const StereoConfi
 // Output words (docs/semantics.md, "Output word") to disparities in pixels, NaN where invalid.
 cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cfg);
 
+// The files below as bytes, so that a command can compute every output before writing any.
+std::vector<uchar> encode_pgm(const GrayImage& image);
+std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp);
+std::vector<uchar> encode_pfm(const cv::Mat1f& disp);
+std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float max_disp);
+// A file to write and its content. write_outputs writes each to a temporary file renamed into
+// place (write_file_atomically): a reader or a run cut off never sees half a file.
+struct OutputBytes {
+  std::string path;
+  std::vector<uchar> bytes;
+};
+void write_outputs(const std::vector<OutputBytes>& outputs);
+
+// The write_* functions write atomically too; they throw InputError naming the path.
 // Binary 8-bit PGM (P5): the input format of the generated HLS test bench and host program.
 void write_pgm(const GrayImage& image, const std::string& path);
 

@@ -9,6 +9,8 @@
 namespace fpstereo {
 namespace {
 
+constexpr int kMaxSgbmBlock = 255;
+
 int opencv_mode(const std::string& mode) {
   if (mode == "sgbm") return cv::StereoSGBM::MODE_SGBM;
   if (mode == "3way") return cv::StereoSGBM::MODE_SGBM_3WAY;
@@ -35,8 +37,9 @@ cv::Mat1b to_mat(const GrayImage& image) {
 
 void validate(const SgbmOptions& o) {
   opencv_mode(o.mode);
-  if (o.block < 1 || o.block % 2 == 0)
-    throw InputError(fmt::format("sgbm-block = {}: must be an odd number, at least 1", o.block));
+  // OpenCV needs an odd block; 255 bounds 32 * block^2 (the default P2) well inside an int.
+  if (o.block < 1 || o.block > kMaxSgbmBlock || o.block % 2 == 0)
+    throw InputError(fmt::format("sgbm-block = {}: must be an odd number from 1 to {}", o.block, kMaxSgbmBlock));
   check_at_least("sgbm-p1", o.p1, -1);
   check_at_least("sgbm-p2", o.p2, -1);
   // OpenCV would silently raise P2 to P1 + 1; an explicit error is clearer.

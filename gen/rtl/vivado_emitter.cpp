@@ -93,13 +93,6 @@ std::string banner(const RtlDesign& d, const std::string& title, const std::vect
   return os.str();
 }
 
-std::string clock_period_ns(double clock_mhz) {
-  // Also rejects NaN and infinity; XDC periods have 3 decimals, so 0.000 is no period either.
-  if (!(clock_mhz > 0 && 1000.0 / clock_mhz >= 0.0005))
-    throw std::invalid_argument(fmt::format("clock-mhz = {}: expected a positive frequency", clock_mhz));
-  return fmt::format("{:.3f}", 1000.0 / clock_mhz);
-}
-
 // ---- XDC -------------------------------------------------------------------------------------
 
 // A port in get_ports: the whole bus for tdata.
@@ -482,6 +475,13 @@ puts "block_design: block design system and its wrapper in [file join $here bd_p
 )tcl";
 
 }  // namespace
+
+std::string clock_period_ns(double clock_mhz) {
+  // Also rejects NaN and infinity; XDC periods have 3 decimals, so 0.000 is no period either.
+  if (!(clock_mhz > 0 && 1000.0 / clock_mhz >= 0.0005))
+    throw std::invalid_argument(fmt::format("clock-mhz = {}: expected a positive frequency", clock_mhz));
+  return fmt::format("{:.3f}", 1000.0 / clock_mhz);
+}
 
 std::string emit_xdc(const RtlDesign& d, double clock_mhz) {
   const std::string period = clock_period_ns(clock_mhz);

@@ -16,6 +16,9 @@ inline constexpr const char* kDefaultPart = "xczu9eg-ffvb1156-2-e";
 // Constraints for the core out of context: the aclk clock at clock_mhz, the stream ports and the
 // reset timed against it. Throws std::invalid_argument unless clock_mhz is positive and finite.
 std::string emit_xdc(const RtlDesign& d, double clock_mhz);
+// The clock period in ns as the XDC writes it; throws std::invalid_argument, one line, unless
+// clock_mhz is positive and finite.
+std::string clock_period_ns(double clock_mhz);
 
 // `vivado -mode batch -source package_ip.tcl [-tclargs PART]` in the output directory: packages the
 // top and `files` (emit()'s file names) with the XDC as an IP in ip/.

@@ -1,5 +1,8 @@
 #include "config_cli.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace fpstereo {
@@ -7,7 +10,8 @@ namespace fpstereo {
 void ConfigFlags::add_to(CLI::App& app) {
   std::string presets;
   for (const auto& n : preset_names()) presets += (presets.empty() ? "" : ", ") + n;
-  app.add_option("--preset", preset_, "start from a named configuration: " + presets);
+  app.add_option_function<std::string>(
+      "--preset", [this](const std::string& v) { preset_ = v; }, "start from a named configuration: " + presets);
   app.add_option("--config", config_file_, "JSON or TOML file with parameter names as keys");
   for (const auto& spec : param_specs()) {
     const StereoConfig defaults;
@@ -19,9 +23,7 @@ void ConfigFlags::add_to(CLI::App& app) {
 }
 
 StereoConfig ConfigFlags::resolve() const {
-  StereoConfig cfg = preset_.empty() ? StereoConfig{} : preset(preset_);
-  if (!config_file_.empty()) apply_config_file(cfg, config_file_);
-  for (const auto& [name, value] : values_) set_param(cfg, name, value);
+  StereoConfig cfg = compose_config(preset_, config_file_, values_);
   validate(cfg);
   return cfg;
 }
@@ -32,8 +34,23 @@ int report_error(const std::string& tool, const std::string& message) {
 }
 
 int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseError& e) {
-  if (e.get_exit_code() == 0) return app.exit(e);
+  if (e.get_exit_code() == 0) return finish_stdout(tool, app.exit(e));
   return report_error(tool, std::string(e.what()) + " (see --help)");
+}
+
+}  // namespace fpstereo
+
+namespace fpstereo {
+
+int finish_stdout(const std::string& tool, int exit_code) {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (!failed) return exit_code;
+  const int error = errno;
+  std::clearerr(stdout);
+  return report_error(tool, std::string("cannot write to standard output") +
+                                (error ? std::string(": ") + std::strerror(error) : std::string()));
 }
 
 }  // namespace fpstereo

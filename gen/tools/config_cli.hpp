@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "config.hpp"
@@ -19,7 +20,7 @@ class ConfigFlags {
   StereoConfig resolve() const;
 
  private:
-  std::string preset_;
+  std::optional<std::string> preset_;
   std::string config_file_;
   std::map<std::string, std::string> values_;  // flags given on the command line
 };
@@ -30,5 +31,9 @@ int report_error(const std::string& tool, const std::string& message);
 // A command-line parse error: --help prints and exits 0; anything else is one line,
 // "<tool>: <message> (see --help)", and kExitBadInput.
 int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseError& e);
+// Every tool's last step: flushes standard output and checks it, so output that did not arrive
+// (a full disk, /dev/full) is never a success. Returns exit_code, or reports the write error as
+// one line and returns kExitBadInput.
+int finish_stdout(const std::string& tool, int exit_code);
 
 }  // namespace fpstereo

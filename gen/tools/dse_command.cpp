@@ -41,7 +41,8 @@ struct OutputOptions {
 struct DseOptions {
   dse::SpaceText space;
   std::vector<std::string> datasets;
-  std::string preset, config_file, cache, shard;
+  std::optional<std::string> preset;
+  std::string config_file, cache, shard;
   std::map<std::string, std::string> fixed;
   int jobs = 2;
   double clock_mhz = 200;
@@ -66,11 +67,11 @@ dse::Constraints constraints(const OutputOptions& o) {
   return c;
 }
 
-// Opened before any work so that a bad path fails before minutes of computation.
-std::unique_ptr<std::ofstream> open_output(const std::string& path) {
-  auto f = std::make_unique<std::ofstream>(path, std::ios::trunc);
-  if (!*f) throw InputError(fmt::format("cannot write '{}'", path));
-  return f;
+// Checked before any work so that a bad path fails before minutes of computation; written only
+// at the end (write_file_atomically), so a failing run leaves the previous files untouched.
+void check_outputs(const OutputOptions& o) {
+  check_writable(o.csv);
+  if (!o.html.empty()) check_writable(o.html);
 }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -92,7 +93,7 @@ std::string sweep_command(const DseOptions& o) {
                                                                             {"refine", &t.refine},
                                                                             {"median", &t.median}})
     s += fmt::format(" --{} {}", flag, join(*values, ","));
-  if (!o.preset.empty()) s += " --preset " + o.preset;
+  if (o.preset) s += " --preset " + *o.preset;
   if (!o.config_file.empty()) s += " --config " + o.config_file;
   for (const auto& [name, value] : o.fixed) s += fmt::format(" --{} {}", name, value);
   return s + fmt::format(" --part {} --clock-mhz {:g}", o.out.part, o.clock_mhz);
@@ -157,30 +158,20 @@ void print_recommendations(const std::vector<dse::Row>& rows, const dse::Constra
   }
 }
 
-void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info,
-                   std::ofstream& csv, std::ofstream* html) {
+void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info) {
   if (o.yosys_front) run_yosys_front(rows, o);
-  csv << dse::to_csv(rows) << std::flush;
-  if (!csv) throw InputError(fmt::format("cannot write '{}'", o.csv));
-  if (html) {
-    info.constraints = constraints(o);
-    *html << dse::to_html(rows, info) << std::flush;
-    if (!*html) throw InputError(fmt::format("cannot write '{}'", o.html));
-  }
+  info.constraints = constraints(o);
+  const std::string csv = dse::to_csv(rows);
+  const std::string html = o.html.empty() ? "" : dse::to_html(rows, info);
+  write_file_atomically(o.csv, csv);
+  if (!o.html.empty()) write_file_atomically(o.html, html);
   print_recommendations(rows, constraints(o));
-}
-
-StereoConfig base_config(const DseOptions& o) {
-  StereoConfig cfg = o.preset.empty() ? StereoConfig{} : preset(o.preset);
-  if (!o.config_file.empty()) apply_config_file(cfg, o.config_file);
-  for (const auto& [name, value] : o.fixed) set_param(cfg, name, value);
-  return cfg;
 }
 
 void run_sweep(const DseOptions& o, const std::string& command) {
   dse::SweepOptions s;
   s.space = dse::parse_space(o.space);
-  s.base = base_config(o);
+  s.base = compose_config(o.preset, o.config_file, o.fixed);
   s.datasets = o.datasets;
   s.cache_dir = o.cache;
   if (!o.shard.empty()) std::tie(s.shard_index, s.shard_count) = dse::parse_shard(o.shard);
@@ -194,10 +185,12 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   constraints(o.out);  // bad constraints fail before the sweep
   if (s.datasets.empty())
     throw InputError("dse: no dataset (give a folder with pairs.csv, or one of such folders)");
-  auto csv = open_output(o.out.csv);
-  auto html = o.out.html.empty() ? nullptr : open_output(o.out.html);
+  check_outputs(o.out);
 
   dse::SweepResult r = dse::sweep(s);
+  if (r.rows.empty() && !r.skipped.empty())
+    throw InputError(fmt::format("dse: every configuration is invalid ({} skipped; the first: {}); nothing written",
+                                 r.skipped.size(), r.skipped.front().reason));
   std::cerr << fmt::format(
       "fpstereo dse: {} configurations{}, {} accuracy-distinct ({} evaluated, {} cached), {} skipped as "
       "invalid, "
@@ -212,7 +205,7 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   info.clock_mhz = s.clock_mhz;
   info.sweep_seconds = r.seconds;
   info.skipped = int(r.skipped.size());
-  write_outputs(r.rows, o.out, info, *csv, html.get());
+  write_outputs(r.rows, o.out, info);
   fmt::print("wrote {}{}\n", o.out.csv, o.out.html.empty() ? "" : " and " + o.out.html);
 }
 
@@ -231,8 +224,7 @@ void run_merge(const MergeOptions& o, const std::string& command) {
   std::string part = rows.empty() ? o.out.part : rows.front().part;
   for (const auto& r : rows)
     if (r.part != part) throw InputError(fmt::format("dse merge: rows for parts {} and {}", part, r.part));
-  auto csv = open_output(o.out.csv);
-  auto html = o.out.html.empty() ? nullptr : open_output(o.out.html);
+  check_outputs(o.out);
   dse::mark_pareto(rows);
   dse::ReportInfo info;
   info.dataset = fmt::format("merged from {} CSV files", o.inputs.size());
@@ -241,7 +233,7 @@ void run_merge(const MergeOptions& o, const std::string& command) {
   info.clock_mhz = rows.empty() ? 0 : rows.front().clock_mhz;
   OutputOptions out = o.out;
   out.part = part;
-  write_outputs(rows, out, info, *csv, html.get());
+  write_outputs(rows, out, info);
   fmt::print("merged {} configurations; wrote {}{}\n", rows.size(), o.out.csv,
              o.out.html.empty() ? "" : " and " + o.out.html);
 }
@@ -308,7 +300,9 @@ void register_dse_command(CLI::App& app, int& exit_code) {
   axis("--refine", o->space.refine, "left-right check: none, lr1, lr2");
   axis("--median", o->space.median, "median filter: off or a side (3, 5, 7)");
   const std::string base = "Fixed parameters (every configuration)";
-  sub->add_option("--preset", o->preset, "start from a named configuration")->group(base);
+  sub->add_option_function<std::string>(
+         "--preset", [o](const std::string& v) { o->preset = v; }, "start from a named configuration")
+      ->group(base);
   sub->add_option("--config", o->config_file, "JSON or TOML file with parameter names as keys")->group(base);
   for (const auto& spec : param_specs()) {
     if (is_axis_param(spec.name)) continue;

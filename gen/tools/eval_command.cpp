@@ -15,6 +15,7 @@
 
 #include "config_cli.hpp"
 #include "dataset.hpp"
+#include "files.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
 #include "metrics.hpp"
@@ -265,25 +266,34 @@ std::string format_csv(const std::vector<PairResult>& results) {
   return out;
 }
 
-// A result file named on the command line, "-" for stdout. Opened before any work so that a bad
-// path fails before minutes of computation.
+// A result file named on the command line, "-" for stdout. Its path is checked before any work
+// so that a bad one fails before minutes of computation; the file is only written at the end,
+// atomically, so a failing run leaves the previous one untouched.
 class OutputFile {
  public:
   explicit OutputFile(const std::string& path) : path_(path) {
     if (path_.empty() || path_ == "-") return;
-    file_.open(path_, std::ios::trunc);
-    if (!file_) throw InputError(fmt::format("cannot write '{}': {}", path_, std::strerror(errno)));
+    try {
+      check_writable(path_);
+    } catch (const FileError& e) {
+      throw InputError(e.what());
+    }
   }
   bool wanted() const { return !path_.empty(); }
-  void write(const std::string& text) {
-    std::ostream& out = path_ == "-" ? std::cout : file_;
-    out << text << std::flush;
-    if (!out) throw InputError(fmt::format("cannot write '{}'", path_));
+  void write(const std::string& text) const {
+    if (path_ == "-") {
+      std::cout << text << std::flush;
+      return;
+    }
+    try {
+      write_file_atomically(path_, text);
+    } catch (const FileError& e) {
+      throw InputError(e.what());
+    }
   }
 
  private:
   std::string path_;
-  std::ofstream file_;
 };
 
 // ---- the command -----------------------------------------------------------------------------
@@ -310,9 +320,11 @@ void run(const EvalOptions& o) {
 
   // Machine-readable output on stdout moves the table to stderr, so stdout stays parseable.
   const bool stdout_taken = o.json_path == "-" || o.csv_path == "-";
+  const std::string json_text = json.wanted() ? format_json(o.dataset_dir, cfg, label, o, results) : "";
+  const std::string csv_text = csv.wanted() ? format_csv(results) : "";
   (stdout_taken ? std::cerr : std::cout) << format_table(o.dataset_dir, cfg, label, o, results) << std::flush;
-  if (json.wanted()) json.write(format_json(o.dataset_dir, cfg, label, o, results));
-  if (csv.wanted()) csv.write(format_csv(results));
+  if (json.wanted()) json.write(json_text);
+  if (csv.wanted()) csv.write(csv_text);
 }
 
 void add_sgbm_flags(CLI::App& sub, EvalOptions& o) {

@@ -8,6 +8,7 @@
 #include "config_cli.hpp"
 #include "dse_command.hpp"
 #include "eval_command.hpp"
+#include "files.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
 #include "synth_command.hpp"
@@ -22,23 +23,31 @@ struct RunOptions {
   ConfigFlags config;
 };
 
+// Every output is computed before any is written, and each is written to a temporary file
+// renamed into place: a failing run leaves every previous output untouched.
 int run_pair(const RunOptions& opt) {
   const StereoConfig cfg = opt.config.resolve();
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
-  if (!opt.gray_pgm.empty()) {
-    write_pgm(left, opt.gray_pgm[0]);
-    write_pgm(right, opt.gray_pgm[1]);
-  }
+  std::vector<std::string> paths = opt.gray_pgm;
+  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm})
+    if (!path->empty()) paths.push_back(*path);
+  for (const auto& path : paths) check_writable(path);  // before the long part
   const auto start = std::chrono::steady_clock::now();
   const DisparityImage words = run_golden(cfg, left, right);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(words, cfg);
-  if (!opt.output.empty()) write_kitti_png(disparity, opt.output);
-  if (!opt.colour.empty()) write_colour_png(disparity, float(cfg.dmax - 1), opt.colour);
-  if (!opt.pfm.empty()) write_pfm(disparity, opt.pfm);
+  std::vector<OutputBytes> outputs;
+  if (!opt.gray_pgm.empty()) {
+    outputs.push_back({opt.gray_pgm[0], encode_pgm(left)});
+    outputs.push_back({opt.gray_pgm[1], encode_pgm(right)});
+  }
+  if (!opt.output.empty()) outputs.push_back({opt.output, encode_kitti_png(disparity)});
+  if (!opt.colour.empty()) outputs.push_back({opt.colour, encode_colour_png(disparity, float(cfg.dmax - 1))});
+  if (!opt.pfm.empty()) outputs.push_back({opt.pfm, encode_pfm(disparity)});
+  write_outputs(outputs);
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
              100.0 * valid / double(disparity.total()));
@@ -99,6 +108,10 @@ int main(int argc, char** argv) {
     return report_error("fpstereo", std::string("invalid config: ") + e.what());
   } catch (const InputError& e) {
     return report_error("fpstereo", e.what());
+  } catch (const FileError& e) {
+    return report_error("fpstereo", e.what());
+  } catch (const std::exception& e) {  // e.g. fmt::print's write error on stdout
+    return report_error("fpstereo", e.what());
   }
-  return exit_code;
+  return finish_stdout("fpstereo", exit_code);
 }

@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   try {
     app.parse(argc, argv);
+    rtl::clock_period_ns(clock_mhz);  // a bad clock is an error with or without -o
     if (emit != "verilog" && emit != "hls")
       return report_error("fpstereo-rtl", "--emit '" + emit + "': expected verilog or hls");
     if (emit == "hls") {
@@ -104,5 +105,5 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     return report_error("fpstereo-rtl", e.what());
   }
-  return 0;
+  return finish_stdout("fpstereo-rtl", 0);
 }

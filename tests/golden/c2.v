@@ -32,6 +32,7 @@
 //   disparity reorder                    0     1    0   lr
 //   median filter                        2     2   10   median
 //   output                               0     0    2
+/* verilator lint_off DECLFILENAME */
 
 `resetall
 `default_nettype none

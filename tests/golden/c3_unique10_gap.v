@@ -35,6 +35,7 @@
 //   median filter                        2     2   10   median
 //   gap interpolation                    1     0    3   gap-interp
 //   output                               0     0    2
+/* verilator lint_off DECLFILENAME */
 
 `resetall
 `default_nettype none

@@ -33,6 +33,7 @@
 //   disparity reorder                    2     1    0   lr
 //   left-right check                     0     0    1   lr, lr-threshold
 //   output                               0     0    2
+/* verilator lint_off DECLFILENAME */
 
 `resetall
 `default_nettype none
