@@ -24,6 +24,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 
+command -v yosys >/dev/null || die "yosys not found (Debian: apt-get install yosys)"
+
 # Part totals from the vendor product tables: Zynq UltraScale+ DS891 (xczu*), Kria K26 SOM DS987
 # (xck26, the ZU5EV die), Zynq-7000 DS190 (xc7z020), 7 series DS180 (xc7a100t). LUTRAM = LUTs in
 # SLICEMs (the "LUT as Memory" total Vivado reports). The first part of a family is its default, and
@@ -54,7 +56,6 @@ read -r part_family p_lut p_ff p_bram36 p_dsp p_lutram <<<"$row"
 [ -z "$family" ] || [ "$family" = "$part_family" ] || die "part $part is $part_family, not $family"
 family=$part_family
 
-command -v yosys >/dev/null || die "yosys not found (Debian: apt-get install yosys)"
 [ ${#files[@]} -gt 0 ] || die "no input files (try --help)"
 
 # Expands filelists; every source must be readable before Yosys starts.
