@@ -3,4 +3,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-ctest --test-dir build --output-on-failure -j "$(nproc)"
+# The long fuzz run (label fuzz) is opt-in: ctest --test-dir build -L fuzz
+ctest --test-dir build --output-on-failure -j "$(nproc)" -LE "^fuzz$"
