@@ -56,6 +56,7 @@ const std::vector<std::string> kFaults = {"early-eol", "late-eol",   "missing-so
 struct Options {
   std::string left, right;
   bool crop = false;
+  int upscale = 1;
   bool random = false;
   int shift = -1;  // --shifted; -1 when not given
   int levels = 256;
@@ -178,14 +179,18 @@ std::pair<std::vector<RegisterAccess>, StereoConfig> parse_settings(const std::v
   return {writes, after};
 }
 
-// The design takes frames of at most the configured size: an image file must have the frame's
-// size, or be at least that large with --crop (which takes the top-left region).
-GrayImage load_input(const std::string& path, const std::string& role, int width, int height, bool crop) {
+// The design takes frames of at most the configured size: an image file (enlarged --upscale
+// times) must have the frame's size, or be at least that large with --crop (which takes the
+// top-left region).
+GrayImage load_input(const std::string& path, const std::string& role, int width, int height, bool crop,
+                     int factor) {
   GrayImage img = load_gray(path, role);
+  if (factor > 1) img = upscale(img, factor);
   const bool exact = img.width == width && img.height == height;
   const bool croppable = img.width >= width && img.height >= height;
   if (exact || (crop && croppable)) return crop_top_left(img, width, height);
-  throw InputError(fmt::format("{} '{}' is {}x{}, the frames are {}x{}{}", role, path, img.width, img.height,
+  throw InputError(fmt::format("{} '{}' is {}x{}{}, the frames are {}x{}{}", role, path, img.width, img.height,
+                               factor > 1 ? fmt::format(" upscaled {}x", factor) : "",
                                width, height,
                                crop ? "" : " (--crop takes the top-left region of a larger image)"));
 }
@@ -195,8 +200,8 @@ GrayImage load_input(const std::string& path, const std::string& role, int width
 // different ones).
 std::vector<StereoPair> make_pairs(const Options& opt, int width, int height, uint32_t seed) {
   if (!opt.left.empty())
-    return {{load_input(opt.left, "left image", width, height, opt.crop),
-             load_input(opt.right, "right image", width, height, opt.crop)}};
+    return {{load_input(opt.left, "left image", width, height, opt.crop, opt.upscale),
+             load_input(opt.right, "right image", width, height, opt.crop, opt.upscale)}};
   std::mt19937 rng(seed);
   std::vector<StereoPair> pairs;
   for (int i = 0; i < std::max(opt.frames, 4); ++i)
@@ -207,7 +212,8 @@ std::vector<StereoPair> make_pairs(const Options& opt, int width, int height, ui
 
 std::string describe_input(const Options& opt) {
   if (!opt.left.empty())
-    return fmt::format("'{}' and '{}'{}", opt.left, opt.right, opt.crop ? ", cropped" : "");
+    return fmt::format("'{}' and '{}'{}{}", opt.left, opt.right,
+                       opt.upscale > 1 ? fmt::format(", upscaled {}x", opt.upscale) : "", opt.crop ? ", cropped" : "");
   const std::string kind =
       opt.shift >= 0 ? fmt::format("shifted pairs (disparity {})", opt.shift) : "random pairs";
   return fmt::format("{}, {} gray levels, seed {}", kind, opt.levels, opt.seed);
@@ -602,6 +608,8 @@ int main(int argc, char** argv) {
   auto* left = app.add_option("--left", opt.left, "left (base) image file");
   auto* right = app.add_option("--right", opt.right, "right (match) image file");
   auto* crop = app.add_flag("--crop", opt.crop, "take the top-left region of larger images");
+  auto* upscale = app.add_option("--upscale", opt.upscale, "enlarge the images N times (bilinear) first")
+                      ->check(CLI::Range(1, 16));
   auto* random =
       app.add_flag("--random", opt.random, "random texture pairs, a new one per frame (the default)");
   auto* shifted =
@@ -649,6 +657,7 @@ int main(int argc, char** argv) {
   left->needs(right);
   right->needs(left);
   crop->needs(left);
+  upscale->needs(left);
   left->excludes(random)->excludes(shifted)->excludes(levels);  // real images have their own levels
   shifted->excludes(random);
 

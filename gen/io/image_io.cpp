@@ -279,6 +279,15 @@ void draw_legend(cv::Mat3b panel, float max_disp) {
 
 }  // namespace
 
+GrayImage upscale(const GrayImage& image, int factor) {
+  const cv::Mat1b in(image.height, image.width, const_cast<uint8_t*>(&image.at(0, 0)));
+  cv::Mat1b out;
+  cv::resize(in, out, cv::Size(), factor, factor, cv::INTER_LINEAR);
+  GrayImage result(out.cols, out.rows);
+  for (int y = 0; y < out.rows; ++y) std::copy(out[y], out[y] + out.cols, &result.at(0, y));
+  return result;
+}
+
 GrayImage load_gray(const std::string& path, const std::string& role) {
   const cv::Mat1b gray = to_gray(decode(read_bytes(path, role), path, role), path, role);
   GrayImage image(gray.cols, gray.rows);

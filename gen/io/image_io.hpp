@@ -23,6 +23,10 @@ class InputError : public std::runtime_error {
 // converted with cv::cvtColor). `role` names the image in messages, e.g. "left image".
 GrayImage load_gray(const std::string& path, const std::string& role);
 
+// The image enlarged `factor` times in each direction (bilinear): large test frames (1080p, 4K)
+// from the real pairs at hand.
+GrayImage upscale(const GrayImage& image, int factor);
+
 // Throws InputError if the two images differ in size or exceed cfg.width x cfg.height.
 void check_pair(const GrayImage& left, const GrayImage& right, const StereoConfig& cfg);
 
