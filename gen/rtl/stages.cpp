@@ -430,7 +430,8 @@ std::vector<StageMemory> aggregator_memories(const RtlDesign& d, const std::stri
   return out;
 }
 
-Values aggregator_parameters(const RtlDesign& d, bool match_side) {
+// The aggregator's parameters but MATCH_SIDE, which the LR2 match side's module sets itself.
+Values aggregator_parameters(const RtlDesign& d) {
   const StereoConfig& c = d.cfg;
   return {{"W", num(c.width)},
           {"ROW_SLOTS", num(d.row_slots)},
@@ -443,7 +444,6 @@ Values aggregator_parameters(const RtlDesign& d, bool match_side) {
           {"PATH_W", num(d.widths.path_cost)},
           {"SUM_W", num(d.widths.aggregated)},
           {"PATHS", num(c.paths)},
-          {"MATCH_SIDE", match_side ? "1" : "0"},
           {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
           {"PATH_TREE_LAT", num(d.path_tree_latency)},
           {"OUT_ROWS", num(d.out_rows)},
@@ -478,7 +478,7 @@ class AggregationStage : public Stage {
                     wire(d.cfg.uf * d.widths.aggregated, "sum4") + wire(1, "active4") + wire(d.x_bits, "x4") +
                     wire(d.group_bits, "group4") + wire(d.out_row_bits, "slot4");
     v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "chain4"), "only LR1 follows the chains");
-    return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d, false),
+    return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + Values{{"MATCH_SIDE", "0"}},
                         frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
                          {"agg_on", "step >= AGG_START"},
@@ -592,8 +592,7 @@ class Lr2MatchStage : public Stage {
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const StereoConfig& c = d.cfg;
-    Values parameters = aggregator_parameters(d, true);
-    parameters.erase(parameters.begin() + 11);  // MATCH_SIDE: the module's own
+    Values parameters = aggregator_parameters(d);
     parameters.insert(parameters.end(), {{"DMAX", num(c.dmax)},
                                          {"DISP_W", num(d.widths.disparity)},
                                          {"WTA_TREE_LAT", num(d.wta_tree_latency)},

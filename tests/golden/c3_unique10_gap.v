@@ -293,8 +293,8 @@ module fps_census7_d128u32_796e15_sgm_core (
   wire chain4;
   fps_census7_d128u32_796e15_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
-    .SUM_W(10), .PATHS(15), .MATCH_SIDE(0), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4),
-    .OUT_K_W(2), .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1)
+    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_K_W(2), .COST_AW(14),
+    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),

@@ -299,8 +299,8 @@ module fps_sad5_d128u32_fa1add_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fa1add_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
-    .SUM_W(15), .PATHS(15), .MATCH_SIDE(0), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5),
-    .OUT_K_W(3), .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2)
+    .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_K_W(3), .COST_AW(14),
+    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),
