@@ -1,4 +1,5 @@
-// The helpers every tool shares: the hash of cache keys, the cache directory, the atomic write.
+// The helpers every tool shares: the hash of cache keys, the cache directory, the atomic write,
+// the escaping that keeps messages on one line.
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 
 #include "files.hpp"
 #include "hash.hpp"
+#include "text.hpp"
 
 using namespace fpstereo;
 namespace fs = std::filesystem;
@@ -100,4 +102,14 @@ TEST_CASE("write_file_atomically replaces the file whole and leaves nothing else
   CHECK_THROWS_WITH(write_file_atomically(dir / "missing" / "x.txt", "x"),
                     "cannot write '" + (dir / "missing" / "x.txt").string() + "': No such file or directory");
   fs::remove_all(dir);
+}
+
+TEST_CASE("one_line escapes control characters only; quoted also quotes and backslashes", "[tools]") {
+  const char raw[] = "a\nb\rc\td\001e\x7f\0f'g\\h\xc3\xa9";  // with a NUL and UTF-8 é
+  const std::string hostile(raw, sizeof raw - 1);
+  CHECK(one_line(hostile) == "a\\nb\\rc\\td\\x01e\\x7f\\x00f'g\\h\xc3\xa9");
+  CHECK(quoted(hostile) == "'a\\nb\\rc\\td\\x01e\\x7f\\x00f\\'g\\\\h\xc3\xa9'");
+  CHECK(one_line("plain text, 'quotes' kept") == "plain text, 'quotes' kept");
+  std::string non_const = "x\ny";  // must not pick std::quoted by argument-dependent lookup
+  CHECK(quoted(non_const) == "'x\\ny'");
 }

@@ -2,11 +2,19 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 namespace fpstereo {
 
-// 'value' with control characters, quotes and backslashes escaped (\n, \t, \x01, ...), so a
-// value or path holding a newline cannot break the one-line rule of error messages.
+// `text` with control characters escaped (\n, \r, \t, \x01, ...) and nothing else changed: the
+// last guard of the one-line rule, applied to every message printed on stderr.
+std::string one_line(const std::string& text);
+
+// 'value' escaped as one_line does, plus quotes and backslashes, so a value or path stays readable
+// and unambiguous whatever it holds.
 std::string quoted(const std::string& value);
+// For a non-const std::string, argument-dependent lookup would otherwise pick std::quoted (a
+// better match), which escapes no control characters.
+inline std::string quoted(std::string& value) { return quoted(std::as_const(value)); }
 
 }  // namespace fpstereo

@@ -24,6 +24,7 @@
 #include "image_io.hpp"
 #include "metrics.hpp"
 #include "rtl_emitter.hpp"
+#include "text.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,7 +58,7 @@ T axis_value(const std::string& flag, const std::string& param, const std::strin
     set_param(probe, param, value);
     check_alone(probe, param);
   } catch (const ConfigError& e) {
-    throw InputError(fmt::format("--{} '{}': {}", flag, value, e.what()));
+    throw InputError(fmt::format("--{} {}: {}", flag, quoted(value), e.what()));
   }
   return get(probe);
 }
@@ -65,7 +66,7 @@ T axis_value(const std::string& flag, const std::string& param, const std::strin
 std::pair<int, int> parse_resolution(const std::string& value) {
   const auto x = value.find('x');
   const auto bad = [&] {
-    return InputError(fmt::format("--resolution '{}': expected WIDTHxHEIGHT, e.g. 1242x374", value));
+    return InputError(fmt::format("--resolution {}: expected WIDTHxHEIGHT, e.g. 1242x374", quoted(value)));
   };
   if (x == std::string::npos) throw bad();
   StereoConfig probe;
@@ -74,7 +75,7 @@ std::pair<int, int> parse_resolution(const std::string& value) {
     set_param(probe, "height", value.substr(x + 1));
     check_alone(probe, "width");
   } catch (const ConfigError& e) {
-    throw InputError(fmt::format("--resolution '{}': {}", value, e.what()));
+    throw InputError(fmt::format("--resolution {}: {}", quoted(value), e.what()));
   }
   return {probe.width, probe.height};
 }
@@ -113,7 +114,7 @@ class AccuracyCache {
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec || ::access(dir_.c_str(), R_OK | W_OK | X_OK) != 0)
-      throw InputError(fmt::format("cache '{}': not a writable directory", dir_.string()));
+      throw InputError(fmt::format("cache {}: not a writable directory", quoted(dir_.string())));
   }
   fs::path path(const std::string& key, const std::string& dataset_id) const {
     const std::string text = key + '\0' + dataset_id + '\0' + FPSTEREO_VERSION;
@@ -123,11 +124,11 @@ class AccuracyCache {
   std::optional<Accuracy> load(const fs::path& p) const {
     if (!fs::exists(p)) return std::nullopt;
     std::ifstream in(p);
-    if (!in) throw InputError(fmt::format("cache '{}': cannot read", p.string()));
+    if (!in) throw InputError(fmt::format("cache {}: cannot read", quoted(p.string())));
     try {
       return accuracy_from_json(nlohmann::json::parse(in).at("accuracy"));
     } catch (const std::exception&) {
-      throw InputError(fmt::format("cache '{}': corrupt record (delete it to recompute)", p.string()));
+      throw InputError(fmt::format("cache {}: corrupt record (delete it to recompute)", quoted(p.string())));
     }
   }
   // Atomic: an interrupted sweep never leaves half a record.
@@ -242,7 +243,7 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
   probe.uf = 16;
   probe.width = probe.height = 8192;
   for (const auto& dir : dirs) {
-    if (!fs::is_directory(dir)) throw InputError(fmt::format("dataset '{}': not a directory", dir));
+    if (!fs::is_directory(dir)) throw InputError(fmt::format("dataset {}: not a directory", quoted(dir)));
     std::vector<fs::path> sets;
     if (fs::exists(fs::path(dir) / "pairs.csv")) {
       sets.push_back(dir);
@@ -251,7 +252,7 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
         if (e.is_directory() && fs::exists(e.path() / "pairs.csv")) sets.push_back(e.path());
       std::sort(sets.begin(), sets.end());
       if (sets.empty())
-        throw InputError(fmt::format("dataset '{}': no pairs.csv in it or in its subfolders", dir));
+        throw InputError(fmt::format("dataset {}: no pairs.csv in it or in its subfolders", quoted(dir)));
     }
     for (const auto& set : sets) {
       identity += read_file(set / "pairs.csv");
@@ -333,7 +334,7 @@ void mark_pareto(std::vector<Row>& rows) {
 
 std::pair<int, int> parse_shard(const std::string& text) {
   const auto bad = [&] {
-    return InputError(fmt::format("--shard '{}': expected i/N with 1 <= i <= N, e.g. 2/8", text));
+    return InputError(fmt::format("--shard {}: expected i/N with 1 <= i <= N, e.g. 2/8", quoted(text)));
   };
   const auto slash = text.find('/');
   if (slash == std::string::npos) throw bad();
@@ -438,7 +439,7 @@ double parse_percent(const std::string& flag, const std::string& text) {
     if (used == t.size() && v >= 0) return v;
   } catch (const std::logic_error&) {
   }
-  throw InputError(fmt::format("{} '{}': expected a percentage such as 30% or 30", flag, text));
+  throw InputError(fmt::format("{} {}: expected a percentage such as 30% or 30", flag, quoted(text)));
 }
 
 std::vector<Row> recommend(const std::vector<Row>& rows, const Constraints& c) {

@@ -361,13 +361,13 @@ std::vector<Row> read_csv(const std::string& path) {
     throw InputError(e.what());
   }
   std::string line;
-  if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty, expected a dse CSV", path));
+  if (!std::getline(in, line)) throw InputError(fmt::format("{}: empty, expected a dse CSV", quoted(path)));
   const std::vector<std::string> header = split_csv_line(line);
   std::map<std::string, size_t> col;
   for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
   for (const auto& c : csv_columns())
     if (!col.count(c.name))
-      throw InputError(fmt::format("'{}': not a dse CSV (no column '{}')", path, c.name));
+      throw InputError(fmt::format("{}: not a dse CSV (no column {})", quoted(path), quoted(c.name)));
   std::vector<Row> rows;
   int line_no = 1;
   while (std::getline(in, line)) {

@@ -10,6 +10,7 @@
 
 #include "hls_templates.hpp"
 #include "rtl_emitter.hpp"
+#include "text.hpp"
 #include "widths.hpp"
 
 namespace fpstereo::hls {
@@ -161,8 +162,8 @@ std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top";
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   validate(cfg);
   if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
-    throw std::invalid_argument("--part '" + options.part +
-                                "': expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");
+    throw std::invalid_argument("--part " + quoted(options.part) +
+                                ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");
   if (!(options.clock_mhz >= 10 && options.clock_mhz <= 1000))
     throw std::invalid_argument("--clock-mhz " + std::to_string(options.clock_mhz) + ": expected 10 .. 1000");
 

@@ -53,7 +53,7 @@ class Row {
     char* end = nullptr;
     const double v = std::strtod(text.c_str(), &end);
     if (text.empty() || *end != '\0' || !std::isfinite(v))
-      fail(fmt::format("{} '{}' is not a number", column, text));
+      fail(fmt::format("{} {} is not a number", column, quoted(text)));
     return v;
   }
 
@@ -67,10 +67,10 @@ std::map<std::string, size_t> header_columns(const std::string& line, const std:
   std::map<std::string, size_t> index;
   for (size_t i = 0; i < names.size(); ++i)
     if (!index.emplace(names[i], i).second)
-      throw InputError(fmt::format("'{}' line 1: column '{}' appears twice", csv, names[i]));
+      throw InputError(fmt::format("{} line 1: column {} appears twice", quoted(csv), quoted(names[i])));
   for (const auto& column : kColumns)
     if (!index.count(column))
-      throw InputError(fmt::format("'{}' line 1: no column '{}' in the header", csv, column));
+      throw InputError(fmt::format("{} line 1: no column {} in the header", quoted(csv), quoted(column)));
   return index;
 }
 
@@ -93,7 +93,7 @@ DatasetPair pair_from_row(const Row& row, const std::string& dir) {
     if (p.gt_scale <= 0) row.fail(fmt::format("gt_scale {} must be positive", p.gt_scale));
     p.gt_invalid = row["gt_invalid"];
     if (p.gt_invalid != "0" && p.gt_invalid != "inf" && p.gt_invalid != "none")
-      row.fail(fmt::format("gt_invalid '{}': expected 0, inf or none", p.gt_invalid));
+      row.fail(fmt::format("gt_invalid {}: expected 0, inf or none", quoted(p.gt_invalid)));
   }
   if (!row["max_disp_px"].empty()) p.max_disp_px = row.number("max_disp_px");
   return p;
@@ -104,9 +104,9 @@ DatasetPair pair_from_row(const Row& row, const std::string& dir) {
 std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
   std::error_code ec;
   if (!fs::is_directory(dataset_dir, ec))
-    throw InputError(fmt::format("dataset '{}': no such directory", dataset_dir));
+    throw InputError(fmt::format("dataset {}: no such directory", quoted(dataset_dir)));
   const std::string csv = (fs::path(dataset_dir) / "pairs.csv").string();
-  if (!fs::exists(csv, ec)) throw InputError(fmt::format("dataset '{}': no pairs.csv", dataset_dir));
+  if (!fs::exists(csv, ec)) throw InputError(fmt::format("dataset {}: no pairs.csv", quoted(dataset_dir)));
   std::istringstream in;
   try {
     in.str(read_regular_file(csv, "pairs file", kMaxTableBytes));
@@ -115,13 +115,13 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
   }
 
   std::string line;
-  if (!std::getline(in, line)) throw InputError(fmt::format("'{}': empty file", csv));
+  if (!std::getline(in, line)) throw InputError(fmt::format("{}: empty file", quoted(csv)));
   const auto index = header_columns(line, csv);
 
   std::vector<DatasetPair> pairs;
   for (int line_no = 2; std::getline(in, line); ++line_no) {
     if (trim(line).empty()) continue;
-    const std::string where = fmt::format("'{}' line {}", csv, line_no);
+    const std::string where = fmt::format("{} line {}", quoted(csv), line_no);
     const std::vector<std::string> fields = split_fields(line);
     if (fields.size() != index.size())
       throw InputError(fmt::format("{}: {} fields, expected {}", where, fields.size(), index.size()));
@@ -135,10 +135,10 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
     DatasetPair pair = pair_from_row(Row(std::move(by_name), where), dataset_dir);
     const bool duplicate =
         std::any_of(pairs.begin(), pairs.end(), [&](const DatasetPair& p) { return p.name == pair.name; });
-    if (duplicate) throw InputError(fmt::format("{}: pair '{}' appears twice", where, pair.name));
+    if (duplicate) throw InputError(fmt::format("{}: pair {} appears twice", where, quoted(pair.name)));
     pairs.push_back(std::move(pair));
   }
-  if (pairs.empty()) throw InputError(fmt::format("'{}': no pairs", csv));
+  if (pairs.empty()) throw InputError(fmt::format("{}: no pairs", quoted(csv)));
   return pairs;
 }
 

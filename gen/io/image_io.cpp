@@ -87,7 +87,7 @@ cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const s
   } catch (const cv::Exception&) {
     image.release();  // a decoder that throws on corrupt data: same answer as one returning empty
   }
-  if (image.empty()) throw InputError(fmt::format("{} '{}': not a decodable image", role, path));
+  if (image.empty()) throw InputError(fmt::format("{} {}: not a decodable image", role, quoted(path)));
   return image;
 }
 
@@ -112,7 +112,8 @@ std::string depth_text(int depth) {
 
 cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::string& role) {
   if (image.depth() != CV_8U)
-    throw InputError(fmt::format("{} '{}': {} image, expected 8-bit", role, path, depth_text(image.depth())));
+    throw InputError(
+        fmt::format("{} {}: {} image, expected 8-bit", role, quoted(path), depth_text(image.depth())));
   cv::Mat1b gray;
   switch (image.channels()) {
     case 1:
@@ -125,8 +126,8 @@ cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::stri
       cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
       break;
     default:
-      throw InputError(fmt::format("{} '{}': {} channels, expected gray, colour or colour with alpha", role,
-                                   path, image.channels()));
+      throw InputError(fmt::format("{} {}: {} channels, expected gray, colour or colour with alpha", role,
+                                   quoted(path), image.channels()));
   }
   return gray;
 }
@@ -159,7 +160,7 @@ int parse_dimension(const std::string& token, const std::string& path) {
   char* end = nullptr;
   const long v = std::strtol(token.c_str(), &end, 10);
   if (token.empty() || *end != '\0' || v < 1 || v > 65535)
-    throw InputError(fmt::format("PFM '{}': bad image size '{}' in the header", path, token));
+    throw InputError(fmt::format("PFM {}: bad image size {} in the header", quoted(path), quoted(token)));
   return int(v);
 }
 
@@ -175,12 +176,12 @@ cv::Mat1f parse_pfm(const std::vector<uchar>& bytes, const std::string& path) {
   char* end = nullptr;
   const double scale = std::strtod(scale_token.c_str(), &end);
   if (scale_token.empty() || *end != '\0' || scale == 0)
-    throw InputError(fmt::format("PFM '{}': bad scale '{}' in the header", path, scale_token));
+    throw InputError(fmt::format("PFM {}: bad scale {} in the header", quoted(path), quoted(scale_token)));
   ++pos;  // the single whitespace byte ending the header
   const size_t row_bytes = size_t(width) * size_t(channels) * 4;
   if (bytes.size() < pos + row_bytes * size_t(height))
     throw InputError(
-        fmt::format("PFM '{}': truncated, expected {}x{}x{} floats", path, width, height, channels));
+        fmt::format("PFM {}: truncated, expected {}x{}x{} floats", quoted(path), width, height, channels));
   const bool little_endian = scale < 0;
   cv::Mat1f values(height, width);
   for (int file_row = 0; file_row < height; ++file_row) {
@@ -204,18 +205,18 @@ void append_le_float(std::vector<uchar>& out, float value) {
 bool zero_means_invalid(const std::string& spec) {
   if (spec == "0") return true;
   if (spec == "inf" || spec == "none") return false;
-  throw InputError(fmt::format("ground-truth invalid value '{}': expected 0, inf or none", spec));
+  throw InputError(fmt::format("ground-truth invalid value {}: expected 0, inf or none", quoted(spec)));
 }
 
 cv::Mat1f stored_values(const std::vector<uchar>& bytes, const std::string& path) {
   if (has_pfm_magic(bytes)) return parse_pfm(bytes, path);
   const cv::Mat image = decode(bytes, path, "ground truth");
   if (image.channels() != 1)
-    throw InputError(fmt::format("ground truth '{}': {} channels, expected a single-channel image", path,
-                                 image.channels()));
+    throw InputError(fmt::format("ground truth {}: {} channels, expected a single-channel image",
+                                 quoted(path), image.channels()));
   if (image.depth() != CV_8U && image.depth() != CV_16U)
-    throw InputError(
-        fmt::format("ground truth '{}': {} image, expected 8- or 16-bit", path, depth_text(image.depth())));
+    throw InputError(fmt::format("ground truth {}: {} image, expected 8- or 16-bit", quoted(path),
+                                 depth_text(image.depth())));
   cv::Mat1f values;
   image.convertTo(values, CV_32F);
   return values;
@@ -370,7 +371,7 @@ void write_outputs(const std::vector<OutputBytes>& outputs) {
 cv::Mat1f read_disparity(const std::string& path, double scale, const std::string& invalid_spec) {
   const bool zero_invalid = zero_means_invalid(invalid_spec);
   if (!(scale > 0))
-    throw InputError(fmt::format("ground truth '{}': scale {} must be positive", path, scale));
+    throw InputError(fmt::format("ground truth {}: scale {} must be positive", quoted(path), scale));
   cv::Mat1f disp = stored_values(read_bytes(path, "ground truth"), path);
   for (auto& v : disp) {
     const bool no_value = !std::isfinite(v) || (zero_invalid && v == 0);

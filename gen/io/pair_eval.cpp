@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "image_io.hpp"
+#include "text.hpp"
 
 namespace fpstereo {
 namespace {
@@ -10,7 +11,7 @@ namespace {
 cv::Mat1f read_gt(const std::string& path, const PairInputs& in) {
   cv::Mat1f gt = read_disparity(path, in.pair.gt_scale, in.pair.gt_invalid);
   if (gt.cols != in.left.width || gt.rows != in.left.height)
-    throw InputError(fmt::format("ground truth '{}' is {}x{} but the images are {}x{}", path, gt.cols,
+    throw InputError(fmt::format("ground truth {} is {}x{} but the images are {}x{}", quoted(path), gt.cols,
                                  gt.rows, in.left.width, in.left.height));
   return gt;
 }
@@ -18,7 +19,7 @@ cv::Mat1f read_gt(const std::string& path, const PairInputs& in) {
 cv::Mat1b read_mask(const std::string& path, const PairInputs& in) {
   const GrayImage mask = load_gray(path, "noc mask");
   if (mask.width != in.left.width || mask.height != in.left.height)
-    throw InputError(fmt::format("noc mask '{}' is {}x{} but the images are {}x{}", path, mask.width,
+    throw InputError(fmt::format("noc mask {} is {}x{} but the images are {}x{}", quoted(path), mask.width,
                                  mask.height, in.left.width, in.left.height));
   return cv::Mat1b(mask.height, mask.width, const_cast<uint8_t*>(mask.pixels.data())).clone();
 }
@@ -38,7 +39,7 @@ StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in) {
     check_pair(in.left, in.right, run);
     validate(run);
   } catch (const std::runtime_error& e) {
-    throw InputError(fmt::format("pair '{}': {}", in.pair.name, e.what()));
+    throw InputError(fmt::format("pair {}: {}", quoted(in.pair.name), e.what()));
   }
   return run;
 }

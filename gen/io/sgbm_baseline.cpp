@@ -5,6 +5,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "image_io.hpp"
+#include "text.hpp"
 
 namespace fpstereo {
 namespace {
@@ -16,7 +17,7 @@ int opencv_mode(const std::string& mode) {
   if (mode == "3way") return cv::StereoSGBM::MODE_SGBM_3WAY;
   if (mode == "hh") return cv::StereoSGBM::MODE_HH;
   if (mode == "hh4") return cv::StereoSGBM::MODE_HH4;
-  throw InputError(fmt::format("sgbm-mode = '{}': expected sgbm, 3way, hh or hh4", mode));
+  throw InputError(fmt::format("sgbm-mode = {}: expected sgbm, 3way, hh or hh4", quoted(mode)));
 }
 
 // The defaults OpenCV's documentation recommends for one channel: 8 and 32 times the block area.

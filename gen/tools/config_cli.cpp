@@ -5,6 +5,8 @@
 #include <cstring>
 #include <iostream>
 
+#include "text.hpp"
+
 namespace fpstereo {
 
 void ConfigFlags::add_to(CLI::App& app) {
@@ -29,7 +31,8 @@ StereoConfig ConfigFlags::resolve() const {
 }
 
 int report_error(const std::string& tool, const std::string& message) {
-  std::cerr << tool << ": " << message << "\n";
+  // Any message, from any exception, with any input in it: one line.
+  std::cerr << tool << ": " << one_line(message) << "\n";
   return kExitBadInput;
 }
 

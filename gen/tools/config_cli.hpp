@@ -25,7 +25,8 @@ class ConfigFlags {
   std::map<std::string, std::string> values_;  // flags given on the command line
 };
 
-// Prints "fpstereo: <message>" to stderr; the exit status for bad input.
+// Prints "fpstereo: <message>" to stderr as one line (control characters escaped); the exit
+// status for bad input.
 constexpr int kExitBadInput = 2;
 int report_error(const std::string& tool, const std::string& message);
 // A command-line parse error: --help prints and exits 0; anything else is one line,

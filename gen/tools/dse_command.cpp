@@ -16,6 +16,7 @@
 #include "files.hpp"
 #include "image_io.hpp"
 #include "synth_command.hpp"
+#include "text.hpp"
 
 namespace fpstereo {
 namespace {
@@ -122,7 +123,10 @@ void run_yosys_front(std::vector<dse::Row>& rows, const OutputOptions& o) {
     char buf[4096];
     size_t got;
     while ((got = fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, got);
-    if (::pclose(p) != 0) throw InputError(fmt::format("--yosys-front: fpstereo synth failed: {}", text));
+    if (::pclose(p) != 0) {
+      while (!text.empty() && text.back() == '\n') text.pop_back();  // report_error escapes the rest
+      throw InputError(fmt::format("--yosys-front: fpstereo synth failed: {}", text));
+    }
     const SynthReport rep = parse_kv(text);
     r->yosys_lut = double(rep.lut);
     r->yosys_ff = double(rep.ff);
@@ -197,7 +201,8 @@ void run_sweep(const DseOptions& o, const std::string& command) {
       "{:.1f} s\n",
       r.rows.size(), s.shard_count > 1 ? fmt::format(" in shard {}/{}", s.shard_index, s.shard_count) : "",
       r.accuracy_configs, r.evaluated, r.cached, r.skipped.size(), r.seconds);
-  for (const auto& k : r.skipped) std::cerr << fmt::format("  skipped {}: {}\n", config_tag(k.cfg), k.reason);
+  for (const auto& k : r.skipped)
+    std::cerr << fmt::format("  skipped {}: {}\n", config_tag(k.cfg), one_line(k.reason));
   dse::ReportInfo info;
   info.dataset = r.dataset;
   info.part = s.part;

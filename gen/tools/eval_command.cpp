@@ -21,6 +21,7 @@
 #include "metrics.hpp"
 #include "pair_eval.hpp"
 #include "sgbm_baseline.hpp"
+#include "text.hpp"
 
 namespace fpstereo {
 namespace {
@@ -62,15 +63,15 @@ std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::v
     if (known) continue;
     std::string available;
     for (const auto& p : all) available += (available.empty() ? "" : ", ") + p.name;
-    throw InputError(fmt::format("--pairs: no pair '{}' in the dataset (it has {})", name, available));
+    throw InputError(fmt::format("--pairs: no pair {} in the dataset (it has {})", quoted(name), available));
   }
   return chosen;
 }
 
 void warn_if_out_of_range(const PairInputs& in) {
   if (in.pair.max_disp_px && *in.pair.max_disp_px > in.cfg.dmax - 1)
-    std::cerr << fmt::format("{}: warning: pair '{}' has disparities up to {} px, beyond dmax - 1 = {}\n",
-                             kTool, in.pair.name, *in.pair.max_disp_px, in.cfg.dmax - 1);
+    std::cerr << fmt::format("{}: warning: pair {} has disparities up to {} px, beyond dmax - 1 = {}\n",
+                             kTool, quoted(in.pair.name), *in.pair.max_disp_px, in.cfg.dmax - 1);
 }
 
 // ---- running ---------------------------------------------------------------------------------
@@ -170,7 +171,7 @@ std::string table_header() {
 
 std::string format_table(const std::string& dataset, const StereoConfig& cfg, const std::string& label,
                          const EvalOptions& o, const std::vector<PairResult>& results) {
-  std::string out = fmt::format("dataset {} ({})\n", dataset, pairs_text(results.size()));
+  std::string out = fmt::format("dataset {} ({})\n", one_line(dataset), pairs_text(results.size()));
   out += fmt::format("{}:{}\n", label, config_summary(cfg));
   if (!o.baseline.empty()) out += fmt::format("{}: {}\n", kSgbmName, describe(sgbm_options(o, cfg)));
   out +=
@@ -301,7 +302,7 @@ class OutputFile {
 void run(const EvalOptions& o) {
   const StereoConfig cfg = o.config.resolve();
   if (!o.baseline.empty() && o.baseline != kSgbmName)
-    throw InputError(fmt::format("--baseline '{}': expected {}", o.baseline, kSgbmName));
+    throw InputError(fmt::format("--baseline {}: expected {}", quoted(o.baseline), kSgbmName));
   if (!o.baseline.empty()) validate(o.sgbm);
   OutputFile json(o.json_path), csv(o.csv_path);
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "config.hpp"
+#include "text.hpp"
 
 #ifndef FPSTEREO_SOURCE_DIR
 #error "FPSTEREO_SOURCE_DIR must name the source tree, where scripts/synth-yosys.sh lives (CMakeLists.txt)"
@@ -36,7 +37,7 @@ const std::vector<Part>& parts() {
       if (line.empty() || line[0] == '#') continue;
       std::smatch m;
       if (!std::regex_match(line, m, row))
-        throw ConfigError(fmt::format("{}: malformed part row '{}'", path, line));
+        throw ConfigError(fmt::format("{}: malformed part row {}", path, quoted(line)));
       out.push_back({m[1], m[2], std::stoll(m[3]), std::stoll(m[4]), std::stoll(m[5]), std::stoll(m[6]),
                      std::stoll(m[7])});
     }
@@ -49,7 +50,7 @@ const std::vector<Part>& parts() {
 std::string default_part(const std::string& family) {
   for (const Part& p : parts())
     if (family.empty() || p.family == family) return p.name;
-  throw ConfigError(fmt::format("unknown family '{}'", family));
+  throw ConfigError(fmt::format("unknown family {}", quoted(family)));
 }
 
 Part find_part(const std::string& name) {
@@ -58,7 +59,7 @@ Part find_part(const std::string& name) {
     if (p.name == name) return p;
     known += (known.empty() ? "" : ", ") + p.name;
   }
-  throw ConfigError(fmt::format("--part '{}': unknown part (known: {})", name, known));
+  throw ConfigError(fmt::format("--part {}: unknown part (known: {})", quoted(name), known));
 }
 
 std::string part_list() {

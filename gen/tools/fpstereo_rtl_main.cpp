@@ -13,6 +13,7 @@
 #include "config_cli.hpp"
 #include "hls_emitter.hpp"
 #include "rtl_emitter.hpp"
+#include "text.hpp"
 #include "vivado_emitter.hpp"
 
 namespace fpstereo {
@@ -21,7 +22,7 @@ namespace {
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+  if (!out) throw std::runtime_error("cannot write " + quoted(path.string()));
 }
 
 void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& dir, double clock_mhz) {
@@ -32,7 +33,7 @@ void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& 
   const auto vivado = rtl::emit_vivado_files(design, names, clock_mhz);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
+  if (ec) throw std::runtime_error("cannot create directory " + quoted(dir.string()) + ": " + ec.message());
   std::string filelist;
   for (const auto& file : verilog) {
     write_file(dir / file.name, file.text);
@@ -51,7 +52,7 @@ void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options
   const auto files = hls::emit(cfg, options);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create directory '" + dir.string() + "': " + ec.message());
+  if (ec) throw std::runtime_error("cannot create directory " + quoted(dir.string()) + ": " + ec.message());
   for (const auto& file : files) write_file(dir / file.name, file.text);
 }
 
@@ -85,7 +86,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
     rtl::clock_period_ns(clock_mhz);  // a bad clock is an error with or without -o
     if (emit != "verilog" && emit != "hls")
-      return report_error("fpstereo-rtl", "--emit '" + emit + "': expected verilog or hls");
+      return report_error("fpstereo-rtl", "--emit " + quoted(emit) + ": expected verilog or hls");
     if (emit == "hls") {
       if (out_dir.empty()) return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
       hls_options.clock_mhz = clock_mhz;

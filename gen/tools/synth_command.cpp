@@ -25,6 +25,7 @@
 #include "fpga_parts.hpp"
 #include "hash.hpp"
 #include "rtl_emitter.hpp"
+#include "text.hpp"
 
 extern char** environ;
 
@@ -52,7 +53,7 @@ using KvMap = std::map<std::string, std::string>;
 
 const std::string& field(const KvMap& kv, const std::string& key) {
   const auto it = kv.find(key);
-  if (it == kv.end()) throw SynthError(fmt::format("synthesis report lacks '{}'", key));
+  if (it == kv.end()) throw SynthError(fmt::format("synthesis report lacks {}", quoted(key)));
   return it->second;
 }
 
@@ -62,7 +63,7 @@ T parse_number(const std::string& key, const std::string& value) {
   const char* end = value.data() + value.size();
   const auto [ptr, ec] = std::from_chars(value.data(), end, result);
   if (ec != std::errc() || ptr != end || value.empty())
-    throw SynthError(fmt::format("synthesis report: {} = '{}' is not a number", key, value));
+    throw SynthError(fmt::format("synthesis report: {} = {} is not a number", key, quoted(value)));
   return result;
 }
 
@@ -82,12 +83,13 @@ std::optional<int64_t> integer_or_na(const KvMap& kv, const std::string& key) {
 SynthMemory parse_memory(const std::string& name, const std::string& value) {
   const size_t colon = value.find(':');
   if (colon == std::string::npos)
-    throw SynthError(fmt::format("synthesis report: mem.{} = '{}'", name, value));
+    throw SynthError(fmt::format("synthesis report: mem.{} = {}", name, quoted(value)));
   SynthMemory mem{name, 0, 0, value.substr(colon + 1)};
   const std::string shape = value.substr(0, colon);
   if (shape == "?") return mem;
   const size_t x = shape.find('x');
-  if (x == std::string::npos) throw SynthError(fmt::format("synthesis report: mem.{} = '{}'", name, value));
+  if (x == std::string::npos)
+    throw SynthError(fmt::format("synthesis report: mem.{} = {}", name, quoted(value)));
   mem.words = parse_number<int64_t>("mem." + name, shape.substr(0, x));
   mem.bits = parse_number<int64_t>("mem." + name, shape.substr(x + 1));
   return mem;
@@ -176,13 +178,13 @@ std::optional<std::string> read_text(const fs::path& path) {
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
-  if (!out) throw SynthError(fmt::format("cannot write '{}'", path.string()));
+  if (!out) throw SynthError(fmt::format("cannot write {}", quoted(path.string())));
 }
 
 void make_directory(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) throw SynthError(fmt::format("cannot create directory '{}': {}", dir.string(), ec.message()));
+  if (ec) throw SynthError(fmt::format("cannot create directory {}: {}", quoted(dir.string()), ec.message()));
 }
 
 // Names and contents of every emitted file: what the cache key hashes.
@@ -209,8 +211,8 @@ class WorkDir {
     make_directory(parent);
     std::string pattern = (parent / (key + ".XXXXXX")).string();
     if (!mkdtemp(pattern.data()))
-      throw SynthError(
-          fmt::format("cannot create a work directory in '{}': {}", parent.string(), std::strerror(errno)));
+      throw SynthError(fmt::format("cannot create a work directory in {}: {}", quoted(parent.string()),
+                                   std::strerror(errno)));
     path_ = pattern;
   }
   ~WorkDir() {
@@ -306,7 +308,7 @@ void store_record(const fs::path& path, const std::string& text) {
   try {
     write_file_atomically(path, text);
   } catch (const FileError& e) {
-    std::cerr << fmt::format("{}: warning: cannot store the result: {}\n", kTool, e.what());
+    std::cerr << fmt::format("{}: warning: cannot store the result: {}\n", kTool, one_line(e.what()));
   }
 }
 
@@ -352,7 +354,8 @@ std::string kv_output(const Record& record, bool cached) {
 }
 
 void print(const Record& record, bool cached, bool kv) {
-  for (const auto& w : record.report.warnings) std::cerr << kScriptPrefix << "warning: " << w << "\n";
+  for (const auto& w : record.report.warnings)
+    std::cerr << kScriptPrefix << "warning: " << one_line(w) << "\n";
   std::cout << (kv ? kv_output(record, cached) : format_report(record.report, cached)) << std::flush;
 }
 
@@ -361,7 +364,7 @@ void run(const SynthOptions& o) {
   const std::vector<rtl::EmittedFile> files = rtl::emit(rtl::plan(cfg));
   const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
-  if (!script_text) throw SynthError(fmt::format("cannot read '{}'", script.string()));
+  if (!script_text) throw SynthError(fmt::format("cannot read {}", quoted(script.string())));
   const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
   const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
   const fs::path record_path = cache / (key + ".kv");
@@ -385,7 +388,7 @@ SynthReport parse_kv(const std::string& text) {
   for (const auto& line : lines_of(text)) {
     const size_t eq = line.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw SynthError(fmt::format("synthesis report: malformed line '{}'", line));
+      throw SynthError(fmt::format("synthesis report: malformed line {}", quoted(line)));
     const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
     if (key.rfind("mem.", 0) == 0)
       r.memories.push_back(parse_memory(key.substr(4), value));
