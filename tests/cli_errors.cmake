@@ -37,6 +37,9 @@ expect_error("uf = 32: must divide dmax (100)" run --dmax 100 ${L} ${R} -o ${WOR
 expect_error("window = 4: must be an odd window side" run --window 4 ${L} ${R})
 expect_error("preset = 'C7'" run --preset C7 ${L} ${R})
 expect_error("uf = 32: must divide dmax (100)" run --config ${WORK}/bad.json ${L} ${R})
+# The TOML parser's own message quotes the input up to a newline (found by fpstereo-fuzz).
+file(WRITE ${WORK}/bad_float.toml "window = n\np1 = 3\n")
+expect_error("not valid TOML" config --config ${WORK}/bad_float.toml)
 expect_error("cannot be read" run --config ${WORK}/none.toml ${L} ${R})
 expect_error("no such file" run ${WORK}/missing.png ${R})
 expect_error("not a decodable image" run ${L} ${WORK}/corrupt.png)

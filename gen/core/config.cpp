@@ -321,7 +321,7 @@ Entries json_entries(const std::string& text, const std::string& path) {
   try {
     j = nlohmann::json::parse(text, limit);
   } catch (const nlohmann::json::exception& e) {
-    throw ConfigError("config file " + quoted(path) + ": not valid JSON (" + e.what() + ")");
+    throw ConfigError("config file " + quoted(path) + ": not valid JSON (" + one_line(e.what()) + ")");
   }
   if (!j.is_object()) throw ConfigError("config file " + quoted(path) + ": expected a JSON object");
   Entries entries;
@@ -334,7 +334,7 @@ Entries toml_entries(const std::string& text, const std::string& path) {
   try {
     t = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    throw ConfigError("config file " + quoted(path) + ": not valid TOML (" + std::string(e.description()) + ")");
+    throw ConfigError("config file " + quoted(path) + ": not valid TOML (" + one_line(std::string(e.description())) + ")");
   }
   Entries entries;
   for (const auto& [key, value] : t) {
