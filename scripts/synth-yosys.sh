@@ -1,24 +1,27 @@
 #!/usr/bin/env bash
 # Synthesises Verilog with Yosys (synth_xilinx -abc9) and reports resources as a share of one part,
 # the abc9 logic delay and LUT levels, and which memories did not become block RAM.
-# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--top MODULE] [--log FILE] [--kv]
-#                               FILE.v|FILE.sv|filelist.f ...
+# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--top MODULE] [--log FILE]
+#                               [--netlist FILE.json] [--kv] FILE.v|FILE.sv|filelist.f ...
 # A filelist holds one path per line (relative to the filelist; '#' and '//' start comments).
+# --netlist writes the mapped netlist (Yosys JSON), which `fpstereo synth` reads for the paths.
 # Exit status: 0 done, 2 bad usage, missing input or Yosys failure (one line on stderr).
 set -euo pipefail
 
 die() { echo "synth-yosys: $*" >&2; exit 2; }
 
-family="" part="" top="" log="" kv=0
+family="" part="" top="" log="" netlist="" kv=0
 files=()
 while [ $# -gt 0 ]; do
   case "$1" in
-    --family|--part|--top|--log)
+    --family|--part|--top|--log|--netlist)
       [ $# -ge 2 ] || die "$1 needs a value"
-      case "$1" in --family) family=$2 ;; --part) part=$2 ;; --top) top=$2 ;; --log) log=$2 ;; esac
+      case "$1" in
+        --family) family=$2 ;; --part) part=$2 ;; --top) top=$2 ;; --log) log=$2 ;; --netlist) netlist=$2 ;;
+      esac
       shift 2 ;;
     --kv) kv=1; shift ;;
-    -h|--help) sed -n '2,7s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,8s/^# \{0,1\}//p' "$0"; exit 0 ;;
     -*) die "unknown option $1" ;;
     *) files+=("$1"); shift ;;
   esac
@@ -92,6 +95,7 @@ if [ -z "$log" ]; then
 else
   ( : >"$log" ) 2>/dev/null || die "cannot write log $log"; keep_log=1
 fi
+[ -z "$netlist" ] || ( : >"$netlist" ) 2>/dev/null || die "cannot write netlist $netlist"
 
 # -flatten: one netlist, so abc9 sees (and times) paths across module boundaries, as Vivado's
 # default flattening does. The run is split at 'coarse' only to list the memories (name, width,
@@ -109,6 +113,7 @@ synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
   echo "tee -q -o $tmp/mems.txt dump m:*"
   echo "$synth -run coarse:"
   echo "tee -q -o $tmp/stat.txt stat -tech xilinx"
+  [ -z "$netlist" ] || echo "write_json \"$netlist\""
 } >"$tmp/run.ys"
 
 if ! yosys -q -l "$log" -s "$tmp/run.ys" >/dev/null 2>&1; then

@@ -44,6 +44,14 @@ if(NOT first MATCHES "\n  LUT +([0-9]+) " OR CMAKE_MATCH_1 EQUAL 0)
   message(SEND_ERROR "no LUT count above 0 in the first run:\n${first}")
 endif()
 set(luts ${CMAKE_MATCH_1})
+# The mapped netlist's depth (at least one LUT level) and a path that deep.
+if(NOT first MATCHES "\n  logic depth +([0-9]+) LUT levels" OR CMAKE_MATCH_1 EQUAL 0)
+  message(SEND_ERROR "no logic depth above 0 in the first run:\n${first}")
+endif()
+set(depth ${CMAKE_MATCH_1})
+if(NOT first MATCHES "\n +${depth} +[0-9]+  [^ \n]+ -> [^ \n]+\n")
+  message(SEND_ERROR "no path of ${depth} LUT levels:\n${first}")
+endif()
 string(FIND "${first}" "(cached)" cached_first)
 if(NOT cached_first EQUAL -1)
   message(SEND_ERROR "the first run into an empty cache says (cached)")
@@ -61,8 +69,9 @@ if(cached_second EQUAL -1 OR NOT second_figures STREQUAL first)
 endif()
 
 synth(kv kv_err ${config} --cache ${cache} --kv)
-if(NOT kv MATCHES "\nlut=${luts}\n" OR NOT kv MATCHES "\ncached=1\n$")
-  message(SEND_ERROR "--kv should give lut=${luts} and cached=1; got:\n${kv}")
+if(NOT kv MATCHES "\nlut=${luts}\n" OR NOT kv MATCHES "\ncached=1\n$" OR NOT kv MATCHES "\ndepth_levels=${depth}\n"
+   OR NOT kv MATCHES "\npath\\.1=${depth} [0-9]+ [^ \n]+ [^ \n]+\n")
+  message(SEND_ERROR "--kv should give lut=${luts}, depth_levels=${depth}, path.1 and cached=1; got:\n${kv}")
 endif()
 
 # One record, no leftover temporary file or work directory.
@@ -86,6 +95,8 @@ endfunction()
 expect_error("invalid config: uf = 5: must divide dmax (16)"
              ${FPSTEREO} synth --width 32 --height 8 --dmax 16 --uf 5 --cache ${cache})
 expect_error("synth-yosys: unknown part 'xc9zz'" ${FPSTEREO} synth ${config} --part xc9zz --cache ${cache})
+expect_error("synth-yosys: cannot write netlist ${WORK}/missing/netlist.json"
+             ${FPSTEREO} synth ${config} --netlist ${WORK}/missing/netlist.json --cache ${cache})
 expect_error("synth-yosys: part xczu9eg is xcup, not xc7"
              ${FPSTEREO} synth ${config} --family xc7 --part xczu9eg --cache ${cache})
 # A PATH holding only bash: the script runs and finds no Yosys.

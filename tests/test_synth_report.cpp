@@ -197,6 +197,38 @@ TEST_CASE("format_report shows every figure with its share of the part", "[synth
   CHECK_THAT(format_report(no_abc9, false), Catch::Contains("n/a"));
 }
 
+TEST_CASE("parse_kv and format_report carry the netlist's logic depth and deepest paths", "[synth]") {
+  // The lines fpstereo synth adds after the script's (logic_depth.hpp).
+  const std::string record = kScriptKv +
+                             "depth_levels=8\n"
+                             "depth_levels_with_carry=13\n"
+                             "path.1=8 9 core.framing.width_q[1] core.left_slice.skid_q[0]/CE\n"
+                             "path.2=7 13 core.agg.addr_q[0] core.agg.path_q[28]/D\n"
+                             "carry_path=7 13 core.agg.addr_q[0] core.agg.path_q[28]/D\n";
+  const SynthReport r = parse_kv(record);
+  CHECK(r.depth_levels == 8);
+  CHECK(r.depth_levels_with_carry == 13);
+  REQUIRE(r.worst_paths.size() == 2);
+  CHECK(r.worst_paths[0].levels == 8);
+  CHECK(r.worst_paths[0].levels_with_carry == 9);
+  CHECK(r.worst_paths[0].start == "core.framing.width_q[1]");
+  CHECK(r.worst_paths[0].end == "core.left_slice.skid_q[0]/CE");
+  REQUIRE(r.worst_carry_path.has_value());
+  CHECK(r.worst_carry_path->levels_with_carry == 13);
+  const std::string table = format_report(r, false);
+  INFO(table);
+  CHECK_THAT(table, Catch::Contains("logic depth           8 LUT levels, 13 with carry/MUXF cells"));
+  CHECK_THAT(table, Catch::Contains("\n    8   9  core.framing.width_q[1] -> core.left_slice.skid_q[0]/CE\n"));
+  CHECK_THAT(table, Catch::Contains("deepest with carry/MUXF:\n    7  13  core.agg.addr_q[0] -> core.agg.path_q[28]/D\n"));
+
+  // The script alone adds no depth; an unanalysed netlist records na.
+  CHECK_FALSE(parse_kv(kScriptKv).depth_levels.has_value());
+  CHECK_THAT(format_report(parse_kv(kScriptKv), false), !Catch::Contains("logic depth"));
+  CHECK_FALSE(parse_kv(kScriptKv + "depth_levels=na\ndepth_levels_with_carry=na\n").depth_levels.has_value());
+  CHECK_THROWS_WITH(parse_kv(kScriptKv + "path.1=8 9 only_start\n"), Catch::Contains("path.1 = '8 9 only_start'"));
+  CHECK_THROWS_WITH(parse_kv(kScriptKv + "path.1=x 9 a b\n"), Catch::Contains("path.1 = 'x'"));
+}
+
 TEST_CASE("cache_key changes with everything that decides the result", "[synth]") {
   const StereoConfig cfg = tiny_config();
   const std::string verilog = "module top; endmodule\n", script = "#!/usr/bin/env bash\n";

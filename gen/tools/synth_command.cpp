@@ -24,6 +24,7 @@
 #include "files.hpp"
 #include "fpga_parts.hpp"
 #include "hash.hpp"
+#include "logic_depth.hpp"
 #include "rtl_emitter.hpp"
 #include "text.hpp"
 
@@ -39,10 +40,18 @@ constexpr const char* kScriptWarningPrefix = "synth-yosys: warning: ";
 // The delay is the same model for both families; it ranks designs, it does not predict timing.
 constexpr const char* kDelayNote =
     "  note: delay = Yosys' abc9 7-series model (LUTs, carry chains, no routing), for comparing designs\n";
+// abc9 restarts its count after every carry chain, SRL and LUTRAM; the netlist's depth does not.
+constexpr const char* kDepthNote =
+    "  note: logic depth = LUTs (INV and LUTRAM reads included) on the deepest register-to-register path\n"
+    "        of the mapped netlist, through carry chains, which abc9's levels restart after\n";
+// The deepest paths recorded, one per end register.
+constexpr size_t kWorstPaths = 10;
+// Hashed into the cache key: a change in how the netlist is analysed must not serve old records.
+constexpr const char* kLogicDepthModel = "logic-depth-1";
 
 struct SynthOptions {
   ConfigFlags config;
-  std::string family, part, cache_dir, log;
+  std::string family, part, cache_dir, log, netlist;
   bool no_cache = false;
   bool kv = false;
 };
@@ -77,6 +86,22 @@ std::optional<int64_t> integer_or_na(const KvMap& kv, const std::string& key) {
   const std::string& value = field(kv, key);
   if (value == "na") return std::nullopt;
   return parse_number<int64_t>(key, value);
+}
+
+// "path.N=LEVELS LEVELS_WITH_CARRY START END" (Yosys names hold no spaces).
+std::string path_value(const LogicPath& p) {
+  return fmt::format("{} {} {} {}", p.levels, p.levels_with_carry, p.start, p.end);
+}
+
+LogicPath parse_path(const std::string& key, const std::string& value) {
+  std::istringstream in(value);
+  std::string levels, with_carry, rest;
+  LogicPath p;
+  if (!(in >> levels >> with_carry >> p.start >> p.end) || (in >> rest))
+    throw SynthError(fmt::format("synthesis report: {} = '{}'", key, value));
+  p.levels = int(parse_number<int64_t>(key, levels));
+  p.levels_with_carry = int(parse_number<int64_t>(key, with_carry));
+  return p;
 }
 
 // "mem.NAME=WORDSxBITS:TARGET"; the shape is "?" for a memory Yosys created during mapping.
@@ -151,6 +176,22 @@ std::string abc9_rows(const SynthReport& r) {
                                               r.levels.value_or(0), r.levels_with_carry.value_or(0))
                                 : fmt::format("{:>9}      abc9 mapped no logic", "n/a");
   return fmt::format("  {:<13} {}\n", "abc9 delay", delay) + kDelayNote;
+}
+
+std::string path_row(const LogicPath& p) {
+  return fmt::format("  {:>3} {:>3}  {} -> {}\n", p.levels, p.levels_with_carry, p.start, p.end);
+}
+
+std::string depth_rows(const SynthReport& r) {
+  if (!r.depth_levels) return "";
+  std::string out = fmt::format("  {:<13} {:>9} LUT levels, {} with carry/MUXF cells\n", "logic depth",
+                                *r.depth_levels, r.depth_levels_with_carry.value_or(0));
+  out += kDepthNote;
+  if (r.worst_paths.empty()) return out;
+  out += "deepest paths (LUT levels, with carry/MUXF: start -> end), one per end register:\n";
+  for (const auto& p : r.worst_paths) out += path_row(p);
+  if (r.worst_carry_path) out += "deepest with carry/MUXF:\n" + path_row(*r.worst_carry_path);
+  return out;
 }
 
 std::string memory_rows(const std::vector<SynthMemory>& memories) {
@@ -284,6 +325,23 @@ std::string warning_lines(const std::string& stderr_text) {
   return out;
 }
 
+// The logic depth of the mapped netlist as record lines. Not analysing costs only these figures,
+// so a failure (a combinational loop, say) becomes a warning.
+std::string depth_lines(const fs::path& netlist) {
+  try {
+    const std::optional<std::string> json = read_text(netlist);
+    if (!json) throw LogicDepthError(fmt::format("cannot read '{}'", netlist.string()));
+    const LogicDepth d = analyse_logic_depth(*json, kWorstPaths);
+    std::string out = fmt::format("depth_levels={}\ndepth_levels_with_carry={}\n", d.levels, d.levels_with_carry);
+    for (size_t i = 0; i < d.worst.size(); ++i) out += fmt::format("path.{}={}\n", i + 1, path_value(d.worst[i]));
+    if (!d.worst.empty()) out += "carry_path=" + path_value(d.worst_with_carry) + "\n";
+    return out;
+  } catch (const LogicDepthError& e) {
+    return fmt::format("depth_levels=na\ndepth_levels_with_carry=na\nwarning=logic depth not analysed: {}\n",
+                       e.what());
+  }
+}
+
 // ---- the cache -------------------------------------------------------------------------------
 
 // A cache record is the script's --kv output plus config=, synth_seconds= and warning= lines.
@@ -314,9 +372,9 @@ void store_record(const fs::path& path, const std::string& text) {
 
 // ---- the command -----------------------------------------------------------------------------
 
-std::vector<std::string> script_args(const SynthOptions& o, const fs::path& script,
-                                     const fs::path& filelist) {
-  std::vector<std::string> args = {"bash", script.string(), "--kv"};
+std::vector<std::string> script_args(const SynthOptions& o, const fs::path& script, const fs::path& filelist,
+                                     const fs::path& netlist) {
+  std::vector<std::string> args = {"bash", script.string(), "--kv", "--netlist", netlist.string()};
   if (!o.family.empty()) args.insert(args.end(), {"--family", o.family});
   if (!o.part.empty()) args.insert(args.end(), {"--part", o.part});
   if (!o.log.empty()) args.insert(args.end(), {"--log", o.log});
@@ -333,15 +391,16 @@ Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vec
   const bool progress = isatty(STDERR_FILENO);
   if (progress) std::cerr << fmt::format("{} synth: {}: running Yosys...", kTool, tag) << std::flush;
   const auto start = std::chrono::steady_clock::now();
-  const int status =
-      run_process(script_args(o, script, filelist), work.path() / "synth.out", work.path() / "synth.err");
+  const fs::path netlist = o.netlist.empty() ? work.path() / "netlist.json" : fs::path(o.netlist);
+  const int status = run_process(script_args(o, script, filelist, netlist), work.path() / "synth.out",
+                                 work.path() / "synth.err");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (progress) std::cerr << fmt::format(" {:.1f} s\n", seconds);
   const std::string out = read_text(work.path() / "synth.out").value_or("");
   const std::string err = read_text(work.path() / "synth.err").value_or("");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw SynthError(failure_message(err, status));
-  const std::string text =
-      fmt::format("config={}\n{}synth_seconds={:.1f}\n{}", tag, out, seconds, warning_lines(err));
+  const std::string text = fmt::format("config={}\n{}synth_seconds={:.1f}\n{}{}", tag, out, seconds,
+                                       depth_lines(netlist), warning_lines(err));
   return Record{text, parse_kv(text)};
 }
 
@@ -369,9 +428,9 @@ void run(const SynthOptions& o) {
   const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
   const fs::path record_path = cache / (key + ".kv");
 
-  // A log exists only if Yosys runs, so asking for one bypasses the cache too.
+  // A log or netlist exists only if Yosys runs, so asking for one bypasses the cache too.
   std::optional<Record> record;
-  if (!o.no_cache && o.log.empty()) record = load_record(record_path);
+  if (!o.no_cache && o.log.empty() && o.netlist.empty()) record = load_record(record_path);
   const bool cached = record.has_value();
   if (!cached) {
     record = synthesise(o, cfg, files, script, cache, key);
@@ -392,6 +451,8 @@ SynthReport parse_kv(const std::string& text) {
     const std::string key = line.substr(0, eq), value = line.substr(eq + 1);
     if (key.rfind("mem.", 0) == 0)
       r.memories.push_back(parse_memory(key.substr(4), value));
+    else if (key.rfind("path.", 0) == 0)
+      r.worst_paths.push_back(parse_path(key, value));
     else if (key == "warning")
       r.warnings.push_back(value);
     else
@@ -403,6 +464,10 @@ SynthReport parse_kv(const std::string& text) {
   r.delay_ps = integer_or_na(kv, "delay_ps");
   r.levels = integer_or_na(kv, "levels");
   r.levels_with_carry = integer_or_na(kv, "levels_with_carry");
+  // Added by fpstereo after the script, so absent from the script's own output.
+  if (kv.count("depth_levels")) r.depth_levels = integer_or_na(kv, "depth_levels");
+  if (kv.count("depth_levels_with_carry")) r.depth_levels_with_carry = integer_or_na(kv, "depth_levels_with_carry");
+  if (kv.count("carry_path")) r.worst_carry_path = parse_path("carry_path", kv["carry_path"]);
   if (kv.count("config")) r.config = kv["config"];
   if (kv.count("synth_seconds")) r.synth_seconds = parse_number<double>("synth_seconds", kv["synth_seconds"]);
   return r;
@@ -426,14 +491,14 @@ std::string format_report(const SynthReport& r, bool cached) {
   out += resource_row("DSP", std::to_string(r.dsp), r.part_dsp, r.dsp_pct, "");
   out += resource_row("CARRY4 equiv", std::to_string(r.carry4_equiv), r.part_lut / 4, r.carry_pct,
                       fmt::format("CARRY4 {} + 2 x CARRY8 {}", r.carry4, r.carry8));
-  return out + abc9_rows(r) + memory_rows(r.memories);
+  return out + abc9_rows(r) + depth_rows(r) + memory_rows(r.memories);
 }
 
 std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
                       const std::string& verilog_text, const std::string& script_text) {
   // The configuration is hashed in full too: config_tag's own hash is only 24 bits.
-  const std::string decisive =
-      describe(cfg) + '\0' + family + '\0' + part + '\0' + verilog_text + '\0' + script_text;
+  const std::string decisive = describe(cfg) + '\0' + family + '\0' + part + '\0' + verilog_text + '\0' +
+                               script_text + '\0' + kLogicDepthModel;
   return fmt::format("{}-{}-{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
                      fnv1a64(decisive));
 }
@@ -443,7 +508,8 @@ void register_synth_command(CLI::App& app, int& exit_code) {
   CLI::App* sub = app.add_subcommand(
       "synth",
       "Synthesise the configuration's Verilog with Yosys (scripts/synth-yosys.sh) and report LUT, FF, "
-      "LUTRAM, BRAM, DSP and carry use on an FPGA part, with abc9's logic delay; results are cached");
+      "LUTRAM, BRAM, DSP and carry use on an FPGA part, with abc9's logic delay and the deepest "
+      "register-to-register paths of the mapped netlist; results are cached");
   o->config.add_to(*sub);
   sub->add_option("--family", o->family, "xcup (UltraScale+, the default) or xc7 (7 series)")
       ->type_name("NAME");
@@ -452,8 +518,12 @@ void register_synth_command(CLI::App& app, int& exit_code) {
       ->type_name("DIR");
   sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");
   sub->add_flag("--kv", o->kv,
-                "print key=value lines (synth-yosys.sh --kv, plus config, synth_seconds, cached)");
+                "print key=value lines (synth-yosys.sh --kv, plus config, synth_seconds, the logic depth and its "
+                "paths, cached)");
   sub->add_option("--log", o->log, "keep Yosys' log in FILE (runs Yosys even if a result is cached)")
+      ->type_name("FILE");
+  sub->add_option("--netlist", o->netlist,
+                  "keep the mapped netlist (Yosys JSON) in FILE (runs Yosys even if a result is cached)")
       ->type_name("FILE");
   sub->footer(
       "A result is cached under the configuration, family, part and a hash of the emitted Verilog and of the "

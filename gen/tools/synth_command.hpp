@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "config.hpp"
+#include "logic_depth.hpp"
 
 namespace fpstereo {
 
@@ -42,6 +43,11 @@ struct SynthReport {
   double bram18_pct = 0, bram36_pct = 0, bram36_equiv_pct = 0, dsp_pct = 0, carry_pct = 0;
   // abc9's logic delay and depth of the worst path; empty when abc9 did not run ("na").
   std::optional<int64_t> delay_ps, levels, levels_with_carry;
+  // Register-to-register depth of the mapped netlist (logic_depth.hpp; depth_levels,
+  // depth_levels_with_carry, path.N, carry_path); empty when not analysed.
+  std::optional<int64_t> depth_levels, depth_levels_with_carry;
+  std::vector<LogicPath> worst_paths;  // deepest first, one per end register
+  std::optional<LogicPath> worst_carry_path;
   int64_t part_lut = 0, part_ff = 0, part_bram36 = 0, part_dsp = 0, part_lutram = 0;
   std::vector<SynthMemory> memories;
   std::vector<std::string> warnings;    // the script's warnings, without its "synth-yosys: " prefix
@@ -53,7 +59,8 @@ struct SynthReport {
 SynthReport parse_kv(const std::string& text);
 
 // The human-readable table: every resource with its share of the part, the abc9 delay and
-// levels, and the memories with what they were mapped to.
+// levels, the netlist's logic depth and deepest paths, and the memories with what they were
+// mapped to.
 std::string format_report(const SynthReport& report, bool cached);
 
 // The cache file's stem: readable (tag, family, part) plus a hash of everything that decides the
