@@ -1,7 +1,8 @@
-// fpstereo-fuzz: a mutation fuzzer over the files users hand to fpstereo (images, ground-truth
-// disparities, JSON/TOML configurations, pairs.csv). Each input is a seed from the corpus with a
-// few random mutations. It is read in-process by the same functions the command line calls, and
-// every Nth input also goes through the real command line in a child process.
+// fpstereo-fuzz: a mutation fuzzer over what users hand to fpstereo and fpstereo-rtl: files
+// (images, ground-truth disparities, JSON/TOML configurations, pairs.csv) and command lines (the
+// args target: one argument per line). Each input is a seed from the corpus with a few random
+// mutations. Files are read in-process by the same functions the command line calls, and every
+// Nth one also goes through the real command line in a child process; command lines always do.
 //
 // A finding is a crash (signal, or a sanitizer report in a sanitizer build), a hang (the input
 // takes longer than --timeout), an exception other than the tools' own error types, an error
@@ -33,6 +34,7 @@
 #include "dataset.hpp"
 #include "files.hpp"
 #include "image_io.hpp"
+#include "text.hpp"
 
 namespace fs = std::filesystem;
 using Bytes = std::string;
@@ -47,34 +49,141 @@ struct Target {
   std::string name;
   std::vector<std::string> dictionary;  // tokens the mutator inserts
   std::function<void(const std::string& path)> read;
-  // The command line run on the input (argv after the program name); `dir` holds the input as
-  // named by `input_name(ext)` and the fixed files the command needs.
+  // The command line run on the input, the tool first ("fpstereo" or "fpstereo-rtl"); it runs in
+  // `dir`, which holds the input as named by `input_name(ext)` and the fixed files it needs.
   std::function<std::vector<std::string>(const std::string& dir, const std::string& input)> command;
   bool stderr_progress = false;  // the command reports progress on stderr: only its last line is the error
+  bool always_exec = false;      // every input runs through the command line, not every Nth
 };
 
-const std::vector<std::string> kSmallDesign = {"--width", "64", "--height", "64", "--dmax", "16", "--uf", "4"};
+const std::vector<std::string> kSmallDesign = {"--width", "64", "--height", "64",
+                                               "--dmax",  "16", "--uf",     "4"};
 
 std::vector<std::string> with_small_design(std::vector<std::string> args) {
   args.insert(args.end(), kSmallDesign.begin(), kSmallDesign.end());
   return args;
 }
 
+// An args input: one argument per line, the tool first.
+std::vector<std::string> command_line(const std::string& path) {
+  std::vector<std::string> args;
+  std::istringstream in(fpstereo::read_regular_file(path, "args", 1 << 20));
+  for (std::string line; std::getline(in, line);) args.push_back(line);
+  return args;
+}
+
+// A mutated command line must neither run for long nor write outside its folder: synth and dse
+// (Yosys, sweeps) become config, and an argument with a slash (a path) outside /dev loses its
+// slashes. Anything but fpstereo-rtl as the tool is fpstereo.
+std::vector<std::string> contained(std::vector<std::string> args) {
+  if (args.empty() || (args[0] != "fpstereo" && args[0] != "fpstereo-rtl"))
+    args.insert(args.begin(), "fpstereo");
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    std::string& a = args[i];
+    if (a == "synth" || a == "dse") a = "config";
+    const bool device = a.rfind("/dev/", 0) == 0 && a.find("..") == std::string::npos;
+    if (!device) std::replace(a.begin(), a.end(), '/', '_');
+  }
+  return args;
+}
+
 std::vector<Target> make_targets() {
-  const std::vector<std::string> image_tokens = {
-      "IHDR", "IDAT", "IEND", "PLTE", "tRNS", "iCCP", "P5\n", "P2\n", "P6\n", "65535", "4294967295",
-      "99999 99999", "0 0", "-1", "#", "\n", " ", "\xff\xff\xff\xff", "\x7f\xff\xff\xff", "\0\0\0\0"};
-  const std::vector<std::string> pfm_tokens = {"Pf\n", "PF\n", "-1.0", "1.0", "0", "-0", "nan", "inf",
-                                               "1e309", "-1e-45", "99999 99999", "2147483647 2", "\n"};
+  const std::vector<std::string> image_tokens = {"IHDR",
+                                                 "IDAT",
+                                                 "IEND",
+                                                 "PLTE",
+                                                 "tRNS",
+                                                 "iCCP",
+                                                 "P5\n",
+                                                 "P2\n",
+                                                 "P6\n",
+                                                 "65535",
+                                                 "4294967295",
+                                                 "99999 99999",
+                                                 "0 0",
+                                                 "-1",
+                                                 "#",
+                                                 "\n",
+                                                 " ",
+                                                 "\xff\xff\xff\xff",
+                                                 "\x7f\xff\xff\xff",
+                                                 "\0\0\0\0"};
+  const std::vector<std::string> pfm_tokens = {"Pf\n",        "PF\n",         "-1.0", "1.0",   "0",
+                                               "-0",          "nan",          "inf",  "1e309", "-1e-45",
+                                               "99999 99999", "2147483647 2", "\n"};
   const std::vector<std::string> config_tokens = {
-      "{", "}", "[", "]", "\"", ",", ":", "=", "\n", "\\u0000", "\\", "'''", "\"\"\"", "[[a]]", "[t]",
-      "preset", "\"C2\"", "\"\"", "dmax", "uf", "p1", "p2", "width", "height", "cost", "paths", "\"all\"",
-      "window", "median", "lr", "uniqueness", "gap-interp", "1e309", "-1", "18446744073709551609",
-      "2147483648", "0x10", "+64", " 64", "nan", "inf", "true", "null", "1.5", "2026-11-23", "#"};
-  const std::vector<std::string> csv_tokens = {",", "\n", "\r\n", "\"", "\0", "\t", "pair", "left", "right",
-                                               "gt_occ", "gt_noc", "noc_mask", "gt_scale", "gt_invalid",
-                                               "max_disp_px", "inf", "nan", "-1", "0", "none", "1e309",
-                                               "../", "/", "left.png", "gt.pfm", "p"};
+      "{",          "}",      "[",          "]",          "\"",    ",",       ":",
+      "=",          "\n",     "\\u0000",    "\\",         "'''",   "\"\"\"",  "[[a]]",
+      "[t]",        "preset", "\"C2\"",     "\"\"",       "dmax",  "uf",      "p1",
+      "p2",         "width",  "height",     "cost",       "paths", "\"all\"", "window",
+      "median",     "lr",     "uniqueness", "gap-interp", "1e309", "-1",      "18446744073709551609",
+      "2147483648", "0x10",   "+64",        " 64",        "nan",   "inf",     "true",
+      "null",       "1.5",    "2026-11-23", "#"};
+  const std::vector<std::string> csv_tokens = {
+      ",",      "\n",     "\r\n",     "\"",       "\0",         "\t",          "pair",   "left", "right",
+      "gt_occ", "gt_noc", "noc_mask", "gt_scale", "gt_invalid", "max_disp_px", "inf",    "nan",  "-1",
+      "0",      "none",   "1e309",    "../",      "/",          "left.png",    "gt.pfm", "p"};
+  const std::vector<std::string> args_tokens = {"\n--preset\n",
+                                                "\n--config\n",
+                                                "\n--width\n",
+                                                "\n--height\n",
+                                                "\n--cost\n",
+                                                "\n--window\n",
+                                                "\n--shd-window\n",
+                                                "\n--dmax\n",
+                                                "\n--uf\n",
+                                                "\n--paths\n",
+                                                "\n--p1\n",
+                                                "\n--p2\n",
+                                                "\n--lr\n",
+                                                "\n--lr-threshold\n",
+                                                "\n--uniqueness\n",
+                                                "\n--median\n",
+                                                "\n--gap-interp\n",
+                                                "\n-o\n",
+                                                "\n--colour\n",
+                                                "\n--pfm\n",
+                                                "\n--gray-pgm\n",
+                                                "\n--json\n",
+                                                "\n--csv\n",
+                                                "\n--pairs\n",
+                                                "\n--baseline\n",
+                                                "\n--sgbm-mode\n",
+                                                "\n--sgbm-block\n",
+                                                "\n--sgbm-p1\n",
+                                                "\n--emit\n",
+                                                "\n--part\n",
+                                                "\n--clock-mhz\n",
+                                                "\n--no-axi-lite\n",
+                                                "\n--help\n",
+                                                "\n--\n",
+                                                "\nrun\n",
+                                                "\neval\n",
+                                                "\nconfig\n",
+                                                "\nmerge\n",
+                                                "\n\n",
+                                                "0",
+                                                "-1",
+                                                "99999999999999999999",
+                                                "1e9",
+                                                "nan",
+                                                "0,",
+                                                "+64",
+                                                " 64",
+                                                "C2",
+                                                "all",
+                                                "hls",
+                                                "/dev/null",
+                                                "/dev/full",
+                                                "/dev/zero",
+                                                "left.png",
+                                                "gt.pfm",
+                                                "pairs.csv",
+                                                ".",
+                                                "..",
+                                                "\t",
+                                                "\x01",
+                                                "="};
   std::vector<Target> targets;
   targets.push_back({"image", image_tokens,
                      [](const std::string& path) {
@@ -84,8 +193,8 @@ std::vector<Target> make_targets() {
                        fpstereo::check_pair(image, image, cfg);
                      },
                      [](const std::string& dir, const std::string& input) {
-                       return with_small_design({"run", input, input, "-o", dir + "/out.png", "--pfm",
-                                                 dir + "/out.pfm"});
+                       return with_small_design({"fpstereo", "run", input, input, "-o", dir + "/out.png",
+                                                 "--pfm", dir + "/out.pfm"});
                      }});
   targets.push_back({"disparity", pfm_tokens,
                      [](const std::string& path) {
@@ -97,7 +206,7 @@ std::vector<Target> make_targets() {
                        std::ofstream(dir + "/pairs.csv")
                            << "pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\n"
                            << "p,left.png,right.png," << fs::path(input).filename().string() << ",,,256,0,\n";
-                       return with_small_design({"eval", dir});
+                       return with_small_design({"fpstereo", "eval", dir});
                      },
                      true});
   targets.push_back({"config", config_tokens,
@@ -108,12 +217,18 @@ std::vector<Target> make_targets() {
                        fpstereo::config_tag(cfg);
                      },
                      [](const std::string&, const std::string& input) {
-                       return std::vector<std::string>{"config", "--config", input};
+                       return std::vector<std::string>{"fpstereo", "config", "--config", input};
                      }});
   targets.push_back({"pairs", csv_tokens,
                      [](const std::string& path) { fpstereo::read_pairs_csv(fs::path(path).parent_path()); },
-                     [](const std::string& dir, const std::string&) { return with_small_design({"eval", dir}); },
+                     [](const std::string& dir, const std::string&) {
+                       return with_small_design({"fpstereo", "eval", dir});
+                     },
                      true});
+  targets.push_back(
+      {"args", args_tokens, [](const std::string& path) { command_line(path); },
+       [](const std::string&, const std::string& input) { return contained(command_line(input)); }, false,
+       true});
   return targets;
 }
 
@@ -128,7 +243,9 @@ class Mutator {
  public:
   explicit Mutator(std::uint64_t seed) : rng_(seed) {}
 
-  std::size_t below(std::size_t n) { return n ? std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_) : 0; }
+  std::size_t below(std::size_t n) {
+    return n ? std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_) : 0;
+  }
   bool one_in(std::size_t n) { return below(n) == 0; }
 
   // 1 to 8 stacked mutations; `other` is another seed of the same target, for splicing.
@@ -296,28 +413,38 @@ Outcome read_in_process(const Target& target, const std::string& path) {
 }
 
 std::string with_command(const std::string& what, const std::vector<std::string>& args) {
-  std::string text = what + " [fpstereo";
-  for (const auto& a : args) text += " " + a;
+  std::string text = what + " [";
+  for (const auto& a : args)  // the saved input has it whole
+    text +=
+        (&a == &args.front() ? "" : " ") + fpstereo::quoted(a.size() > 200 ? a.substr(0, 200) + "..." : a);
   return text + "]";
 }
 
-// Runs the command line in a child process; returns a finding or "". With `must_accept` (seeds),
-// a proper rejection (exit 2) is a finding too.
-std::string run_command(const std::string& program, const std::vector<std::string>& args, bool progress_on_stderr,
-                        const fs::path& err_file, int timeout_s, bool must_accept = false) {
+// The child's exit status when the kernel refuses the arguments (an argument over 128 KiB).
+constexpr int kArgsTooLong = 125;
+
+// Runs the command line in a child process: accepted is exit 0. With `must_accept` (seeds), a
+// proper rejection (exit 2) is a finding too.
+Outcome run_command(const fs::path& tools_dir, const std::vector<std::string>& args, const fs::path& cwd,
+                    bool progress_on_stderr, const fs::path& err_file, int timeout_s,
+                    bool must_accept = false) {
+  const std::string program = (tools_dir / args.at(0)).string();
   const pid_t pid = fork();
-  if (pid < 0) return std::string("fork failed: ") + std::strerror(errno);
+  if (pid < 0) return {false, std::string("fork failed: ") + std::strerror(errno)};
   if (pid == 0) {
+    const int in = open("/dev/null", O_RDONLY);
     const int null = open("/dev/null", O_WRONLY);
     const int err = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(in, STDIN_FILENO);
     dup2(null, STDOUT_FILENO);
     dup2(err, STDERR_FILENO);
     alarm(0);
+    if (chdir(cwd.c_str()) != 0) _exit(126);
     std::vector<char*> argv{const_cast<char*>(program.c_str())};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    for (std::size_t i = 1; i < args.size(); ++i) argv.push_back(const_cast<char*>(args[i].c_str()));
     argv.push_back(nullptr);
     execv(program.c_str(), argv.data());
-    _exit(127);
+    _exit(errno == E2BIG ? kArgsTooLong : 127);
   }
   int status = 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_s);
@@ -325,21 +452,26 @@ std::string run_command(const std::string& program, const std::vector<std::strin
     if (std::chrono::steady_clock::now() > deadline) {
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
-      return with_command("hang: command did not finish in " + std::to_string(timeout_s) + " s", args);
+      return Outcome{
+          false, with_command("hang: command did not finish in " + std::to_string(timeout_s) + " s", args)};
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   std::string err = fpstereo::read_regular_file(err_file.string(), "stderr", 1 << 20);
   while (!err.empty() && err.back() == '\n') err.pop_back();
-  if (progress_on_stderr) err = err.substr(err.find_last_of('\n') == std::string::npos ? 0 : err.find_last_of('\n') + 1);
-  if (WIFSIGNALED(status)) return with_command(std::string("killed by ") + strsignal(WTERMSIG(status)) + ": " + err, args);
+  if (progress_on_stderr)
+    err = err.substr(err.find_last_of('\n') == std::string::npos ? 0 : err.find_last_of('\n') + 1);
+  if (WIFSIGNALED(status))
+    return Outcome{false,
+                   with_command(std::string("killed by ") + strsignal(WTERMSIG(status)) + ": " + err, args)};
   const int code = WEXITSTATUS(status);
-  if (code == 0) return "";
-  if (code != 2) return with_command("exit status " + std::to_string(code) + ": " + err, args);
-  if (must_accept) return with_command("rejected: " + err, args);
-  return is_one_line(err) ? "" : with_command("rejection is not one line: " + err, args);
+  if (code == 0) return {true, ""};
+  if (code == kArgsTooLong && !must_accept) return {};  // the kernel's limit, not ours
+  if (code != 2)
+    return Outcome{false, with_command("exit status " + std::to_string(code) + ": " + err, args)};
+  if (must_accept) return Outcome{false, with_command("rejected: " + err, args)};
+  return {false, is_one_line(err) ? "" : with_command("rejection is not one line: " + err, args)};
 }
-
 
 struct Seed {
   fs::path path;
@@ -349,6 +481,7 @@ struct Seed {
 struct Options {
   std::string corpus, work = "fuzz-work", program;
   std::size_t runs = 10000, exec_every = 0;
+  std::vector<std::string> targets;  // empty: all
   std::uint64_t seed = 1;
   double max_seconds = 0;
   int timeout_s = 10;
@@ -363,7 +496,8 @@ void write_file(const fs::path& path, const Bytes& bytes) {
 }
 
 // Seeds of every target: CORPUS/<target>/*, sorted so that a run is reproducible from --seed.
-std::map<std::string, std::vector<Seed>> load_corpus(const std::string& corpus, const std::vector<Target>& targets) {
+std::map<std::string, std::vector<Seed>> load_corpus(const std::string& corpus,
+                                                     const std::vector<Target>& targets) {
   std::map<std::string, std::vector<Seed>> seeds;
   for (const auto& t : targets) {
     const fs::path dir = fs::path(corpus) / t.name;
@@ -381,14 +515,25 @@ std::map<std::string, std::vector<Seed>> load_corpus(const std::string& corpus, 
 // pairs.csv may name.
 void write_fixed_files(const fs::path& dir, const std::string& corpus) {
   const Bytes image = read_file(fs::path(corpus) / "image/gray8.png");
-  for (const char* name : {"left.png", "right.png", "l.png", "r.png", "mask.png"}) write_file(dir / name, image);
+  for (const char* name : {"left.png", "right.png", "l.png", "r.png", "mask.png"})
+    write_file(dir / name, image);
   write_file(dir / "gt.png", read_file(fs::path(corpus) / "disparity/kitti16.png"));
   write_file(dir / "gt.pfm", read_file(fs::path(corpus) / "disparity/le.pfm"));
+  write_file(dir / "pairs.csv", read_file(fs::path(corpus) / "pairs/full.csv"));
+  write_file(dir / "cfg.json", read_file(fs::path(corpus) / "config/c2.json"));
+}
+
+std::vector<Target> selected_targets(const std::vector<std::string>& names) {
+  std::vector<Target> all = make_targets(), chosen;
+  for (auto& t : all)
+    if (names.empty() || std::find(names.begin(), names.end(), t.name) != names.end())
+      chosen.push_back(std::move(t));
+  return chosen;
 }
 
 class Fuzzer {
  public:
-  explicit Fuzzer(Options o) : o_(std::move(o)), targets_(make_targets()), mutator_(o_.seed) {
+  explicit Fuzzer(Options o) : o_(std::move(o)), targets_(selected_targets(o_.targets)), mutator_(o_.seed) {
     seeds_ = load_corpus(o_.corpus, targets_);
     fs::remove_all(o_.work);
     fs::create_directories(fs::path(o_.work) / "findings");
@@ -438,12 +583,16 @@ class Fuzzer {
       alarm(static_cast<unsigned>(o_.timeout_s));
       const Outcome outcome = read_in_process(t, path.string());
       std::string finding = outcome.finding;
-      accepted[t.name] += outcome.accepted;
+      if (!t.always_exec) accepted[t.name] += outcome.accepted;
       alarm(0);
-      if (finding.empty() && !o_.program.empty() && done % o_.exec_every == 0) {
+      if (finding.empty() && !o_.program.empty() && (t.always_exec || done % o_.exec_every == 0)) {
         ++executed;
-        finding = run_command(o_.program, t.command(dir(t).string(), path.string()), t.stderr_progress,
-                              fs::path(o_.work) / "stderr.txt", o_.timeout_s * 3);
+        const auto command = t.command(dir(t).string(), path.string());
+        const bool progress = t.stderr_progress || std::count(command.begin(), command.end(), "eval");
+        const Outcome run = run_command(tools_dir(), command, dir(t), progress,
+                                        fs::path(o_.work) / "stderr.txt", o_.timeout_s * 3);
+        finding = run.finding;
+        if (t.always_exec) accepted[t.name] += run.accepted;  // in-process reading says nothing
       }
       if (!finding.empty()) record(t, done, extension, input, finding);
     }
@@ -460,7 +609,8 @@ class Fuzzer {
   }
 
  private:
-  fs::path dir(const Target& t) const { return fs::path(o_.work) / t.name; }
+  fs::path dir(const Target& t) const { return fs::absolute(fs::path(o_.work) / t.name); }
+  fs::path tools_dir() const { return fs::path(o_.program).parent_path(); }
 
   std::string accepted_in_process(const Target& t, const std::string& path) {
     try {
@@ -472,14 +622,16 @@ class Fuzzer {
   }
 
   std::string accepted_by_command(const Target& t, const std::string& path) {
-    return run_command(o_.program, t.command(dir(t).string(), path), t.stderr_progress,
-                       fs::path(o_.work) / "stderr.txt", 60, true);
+    return run_command(tools_dir(), t.command(dir(t).string(), path), dir(t), t.stderr_progress,
+                       fs::path(o_.work) / "stderr.txt", 60, true)
+        .finding;
   }
 
   void record(const Target& t, std::size_t index, const std::string& extension, const Bytes& input,
               const std::string& what) {
     ++findings_;
-    const fs::path saved = fs::path(o_.work) / "findings" / (t.name + "-" + std::to_string(index) + extension);
+    const fs::path saved =
+        fs::path(o_.work) / "findings" / (t.name + "-" + std::to_string(index) + extension);
     write_file(saved, input);
     std::cerr << "fpstereo-fuzz: FINDING: " << t.name << " input " << index << ": " << what << " (saved as "
               << saved.string() << ")\n";
@@ -503,14 +655,21 @@ int main(int argc, char** argv) {
   app.add_option("--runs", o.runs, "number of inputs")->capture_default_str();
   app.add_option("--seed", o.seed, "random seed: the same seed and corpus give the same inputs")
       ->capture_default_str();
-  app.add_option("--max-seconds", o.max_seconds, "stop after this long even if --runs are not done (0: no limit)")
+  app.add_option("--max-seconds", o.max_seconds,
+                 "stop after this long even if --runs are not done (0: no limit)")
       ->capture_default_str();
   app.add_option("--timeout", o.timeout_s, "seconds one input may take in-process before it counts as a hang")
       ->capture_default_str()
       ->check(CLI::Range(1, 3600));
-  app.add_option("--exec", o.program, "the fpstereo program: every --exec-every-th input also runs through it")
+  app.add_option("--exec", o.program,
+                 "the fpstereo program (fpstereo-rtl is taken from its folder): every --exec-every-th input, "
+                 "and every "
+                 "args input, also runs through the command line")
       ->check(CLI::ExistingFile);
   app.add_option("--exec-every", o.exec_every, "see --exec")->check(CLI::Range(1, 1 << 30));
+  app.add_option("--targets", o.targets, "the targets to fuzz, in turn (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"image", "disparity", "config", "pairs", "args"}));
   try {
     app.parse(argc, argv);
     if (!o.program.empty() && o.exec_every == 0) o.exec_every = 100;
