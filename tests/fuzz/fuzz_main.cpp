@@ -7,8 +7,8 @@
 // A finding is a crash (signal, or a sanitizer report in a sanitizer build), a hang (the input
 // takes longer than --timeout), an exception other than the tools' own error types, an error
 // message that is not one line, or a command-line exit status other than 0 and 2. Findings are
-// saved under WORK/findings; the input being read is always at WORK/current.* so a crash can be
-// replayed. Exit status: 0 without findings, 1 with findings, 2 on bad usage.
+// saved under WORK/findings; the input being read is in WORK/<target>/ (current.* or pairs.csv)
+// so a crash can be replayed. Exit status: 0 without findings, 1 with findings, 2 on bad usage.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
