@@ -65,7 +65,19 @@ module fpstereo_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  assign in_due  = slot_end && si < frame_width && ti < frame_height;
+  // Whether the slot's column and the row lie inside the frame, as registers updated with the
+  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
+  // least one row and one column.
+  reg col_in, row_in;
+  always @(posedge clk)
+    if (restart) begin
+      col_in <= 1'b1;
+      row_in <= 1'b1;
+    end else if (shift) begin
+      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
+      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+    end
+  assign in_due  = slot_end && col_in && row_in;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;

@@ -2,7 +2,7 @@
 `default_nettype none
 // Median filter stage (docs/semantics.md, section 6): the stream's word of each slot (the invalid
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
-// the median of the window's valid words (fpstereo_median_select, WORD_W steps), and leaves with
+// the median of the window's valid words (fpstereo_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
 // interpolation), with its word.
 module fpstereo_median #(
@@ -80,7 +80,7 @@ module fpstereo_median #(
   wire           done_m;
   wire [X_W-1:0] x_m;
   wire [Y_W-1:0] y_m;
-  fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(DISP_W + 1)) median_delay (
+  fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1))) median_delay (
     .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
     .out({done_m, x_m, y_m}));
   always @(posedge clk)

@@ -16,15 +16,15 @@
 // candidates with bit b = 0. All candidates agree on the bits above b, so in sorted order those z
 // come first: if r < z the answer has bit b = 0 and the candidates with a 1 drop out; otherwise
 // it has bit b = 1, the candidates with a 0 drop out and r becomes r - z. After bit 0 the decided
-// bits are the answer (equal words need no tie-break). A stage is one N-input population count, a
-// compare and a subtract, the same depth for every stage; the words travel down the pipeline
-// losing their decided bit at each stage (shift registers, SRL16E on Xilinx). This takes far
-// less logic than sorting the N keys: for M = 5, WORD_W = 8, Yosys synth_xilinx -abc9 maps a
-// pipelined Batcher odd-even merge sort (3 compare-exchange levels per stage) to 2876 LUTs and
-// 847 FFs at 6.9 ns (abc9 delay), this to about 600 LUTs, 129 SRL16Es and 300 FFs at 5.0-5.4 ns.
+// bits are the answer (equal words need no tie-break). A stage is one N-input population count
+// (the rows' counts in one register step, their sum in the next), then a compare and a subtract in
+// a third step, the same depth for every stage; the words travel down the pipeline losing their decided bit at each
+// stage (shift registers, SRL16E on Xilinx). This takes far less logic than sorting the N keys:
+// for M = 5, WORD_W = 8, Yosys synth_xilinx -abc9 maps a pipelined Batcher odd-even merge sort
+// (3 compare-exchange levels per stage) to 2876 LUTs and 847 FFs at 6.9 ns (abc9 delay).
 //
-// Latency (en-high steps from window to median): LATENCY = WORD_W = DISP_W + 1 (the count stage
-// and one stage per disparity bit, the last one holding the output), whatever M.
+// Latency (en-high steps from window to median): LATENCY = 3 * WORD_W (three steps for the count
+// stage and for each disparity bit, the last one holding the output), whatever M.
 module fpstereo_median_select #(
   // window side (3, 5 or 7)
   parameter M = 5,
@@ -58,27 +58,32 @@ module fpstereo_median_select #(
   localparam ROW_CNT_W = $clog2(M + 1);
   localparam [WORD_W-1:0] INVALID = {1'b1, {DISP_W{1'b0}}};
 
-  // Population count of an N-bit mask, row by row and then across the rows, so that synthesis
-  // sees small adders in a tree rather than one long chain.
-  function [CNT_W-1:0] count_of(input [N-1:0] mask);
+  // Population count of an N-bit mask in two register stages: the count of each window row, then
+  // the sum of the rows, so that neither stage holds more than a few LUT levels.
+  localparam ROWS_W = M * ROW_CNT_W;
+  function [ROWS_W-1:0] row_counts(input [N-1:0] mask);
     integer i, j;
-    reg [ROW_CNT_W-1:0] row;
     begin
-      count_of = {CNT_W{1'b0}};
-      for (i = 0; i < M; i = i + 1) begin
-        row = {ROW_CNT_W{1'b0}};
+      row_counts = {ROWS_W{1'b0}};
+      for (i = 0; i < M; i = i + 1)
         for (j = 0; j < M; j = j + 1)
-          row = row + {{(ROW_CNT_W - 1){1'b0}}, mask[i*M + j]};
-        count_of = count_of + {{(CNT_W - ROW_CNT_W){1'b0}}, row};
-      end
+          row_counts[i*ROW_CNT_W +: ROW_CNT_W] = row_counts[i*ROW_CNT_W +: ROW_CNT_W] + {{(ROW_CNT_W - 1){1'b0}}, mask[i*M + j]};
+    end
+  endfunction
+  function [CNT_W-1:0] sum_of_rows(input [ROWS_W-1:0] rows);
+    integer i;
+    begin
+      sum_of_rows = {CNT_W{1'b0}};
+      for (i = 0; i < M; i = i + 1)
+        sum_of_rows = sum_of_rows + {{(CNT_W - ROW_CNT_W){1'b0}}, rows[i*ROW_CNT_W +: ROW_CNT_W]};
     end
   endfunction
 
-  // Count stage: used words (the centre by its flag alone), the rank sought, the disparities.
+  // Count stage, first step: used words (the centre by its flag alone), the row counts of the
+  // used words besides the centre, the disparities.
   wire [N-1:0]        used;
   wire [N-1:0]        used_besides_centre;
   wire [N*DISP_W-1:0] values;
-  wire [CNT_W-1:0]    others = count_of(used_besides_centre);
 
   genvar e, s;
   generate
@@ -95,20 +100,43 @@ module fpstereo_median_select #(
     end
   endgenerate
 
+  reg [N-1:0]        rows_cand_q;
+  reg [ROWS_W-1:0]   rows_others_q;
+  reg [N*DISP_W-1:0] rows_values_q;
+  reg                rows_invalid_q;
+  always @(posedge clk)
+    if (en) begin
+      rows_cand_q    <= used;
+      rows_others_q  <= row_counts(used_besides_centre);
+      rows_values_q  <= values;
+      rows_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+    end
+
+  // Count stage, second and third steps: the number of used words besides the centre, and the
+  // rank sought (a step of its own, so that the count stage takes as long as a bit stage).
+  reg [N-1:0]        sum_cand_q;
+  reg [CNT_W-1:0]    sum_others_q;
+  reg [N*DISP_W-1:0] sum_values_q;
+  reg                sum_invalid_q;
   reg [N-1:0]        count_cand_q;
   reg [CNT_W-1:0]    count_rank_q;
   reg [N*DISP_W-1:0] count_values_q;
   reg                count_invalid_q;
   always @(posedge clk)
     if (en) begin
-      count_cand_q    <= used;
-      count_rank_q    <= others >> 1;
-      count_values_q  <= values;
-      count_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+      sum_cand_q      <= rows_cand_q;
+      sum_others_q    <= sum_of_rows(rows_others_q);
+      sum_values_q    <= rows_values_q;
+      sum_invalid_q   <= rows_invalid_q;
+      count_cand_q    <= sum_cand_q;
+      count_rank_q    <= sum_others_q >> 1;
+      count_values_q  <= sum_values_q;
+      count_invalid_q <= sum_invalid_q;
     end
 
   // Bit stages: stage s decides bit B = DISP_W-1-s and receives bits B .. 0 of every word, word i
-  // at vals[i*(B+1) +: B+1]. (The genvar counts up: some tools reject a genvar that goes negative.)
+  // at vals[i*(B+1) +: B+1]. Its first step counts the candidates with bit B = 0 per row, its
+  // second sums the rows, its third decides. (The genvar counts up: some tools reject a genvar that goes negative.)
   reg [WORD_W-1:0] median_q;
   assign median = median_q;
 
@@ -139,10 +167,48 @@ module fpstereo_median_select #(
       for (e = 0; e < N; e = e + 1) begin : position
         assign bit_here[e] = vals[e*(B+1) + B];
       end
-      wire [CNT_W-1:0]  zeros = count_of(cand & ~bit_here);
-      wire              high = rank >= zeros;
+      reg [N-1:0]        cand_h;
+      reg [N-1:0]        bit_h;
+      reg [N*(B+1)-1:0]  vals_h;
+      reg [ROWS_W-1:0]   zeros_h;
+      reg [CNT_W-1:0]    rank_h;
+      reg [DISP_W-1:0]   upper_h;
+      reg                invalid_h;
+      always @(posedge clk)
+        if (en) begin
+          cand_h    <= cand;
+          bit_h     <= bit_here;
+          zeros_h   <= row_counts(cand & ~bit_here);
+          rank_h    <= rank;
+          vals_h    <= vals;
+          upper_h   <= upper;
+          invalid_h <= invalid;
+        end
+
+      // The sum of the rows' counts, registered before the decision.
+      /* verilator lint_off UNUSEDSIGNAL */  // the last stage needs only the decision
+      reg [N-1:0]        cand_z;
+      reg [N-1:0]        bit_z;
+      reg [N*(B+1)-1:0]  vals_z;
+      /* verilator lint_on UNUSEDSIGNAL */
+      reg [CNT_W-1:0]    zeros;
+      reg [CNT_W-1:0]    rank_z;
+      reg [DISP_W-1:0]   upper_z;
+      reg                invalid_z;
+      always @(posedge clk)
+        if (en) begin
+          cand_z    <= cand_h;
+          bit_z     <= bit_h;
+          zeros     <= sum_of_rows(zeros_h);
+          rank_z    <= rank_h;
+          vals_z    <= vals_h;
+          upper_z   <= upper_h;
+          invalid_z <= invalid_h;
+        end
+
+      wire              high = rank_z >= zeros;
       localparam [DISP_W-1:0] BIT = 1 << B;
-      wire [DISP_W-1:0] answer = high ? upper | BIT : upper;
+      wire [DISP_W-1:0] answer = high ? upper_z | BIT : upper_z;
 
       if (B > 0) begin : step
         reg [N-1:0]      cand_q;
@@ -154,15 +220,15 @@ module fpstereo_median_select #(
         always @(posedge clk)
           if (en) begin
             // Candidates whose bit B differs from the answer's drop out.
-            cand_q    <= cand & (high ? bit_here : ~bit_here);
-            rank_q    <= high ? rank - zeros : rank;
-            for (i = 0; i < N; i = i + 1) vals_q[i*B +: B] <= vals[i*(B+1) +: B];
+            cand_q    <= cand_z & (high ? bit_z : ~bit_z);
+            rank_q    <= high ? rank_z - zeros : rank_z;
+            for (i = 0; i < N; i = i + 1) vals_q[i*B +: B] <= vals_z[i*(B+1) +: B];
             upper_q   <= answer;
-            invalid_q <= invalid;
+            invalid_q <= invalid_z;
           end
       end else begin : last
         always @(posedge clk)
-          if (en) median_q <= invalid ? INVALID : {1'b0, answer};
+          if (en) median_q <= invalid_z ? INVALID : {1'b0, answer};
       end
     end
   endgenerate

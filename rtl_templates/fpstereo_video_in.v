@@ -3,6 +3,8 @@
 // Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
 // the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
 // tlast on each row's last.
+// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
+// larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -46,8 +48,8 @@ module fpstereo_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 1 || Y_W < 2) begin : invalid
-      fpstereo_invalid_parameters_video_in_X_W_below_1_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2) begin : invalid
+      fpstereo_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -59,9 +61,12 @@ module fpstereo_video_in #(
   wire left_user = left[9], left_last = left[8];
   wire right_user = right[9], right_last = right[8];
   wire both = left_valid && right_valid;
-  wire row_end = x == frame_width - 1'b1;
-  wire frame_end = row_end && y == frame_height - 1'b1;
-  wire first = x == 0 && y == 0;
+  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
+  // on the path from the streams to the core.
+  reg  first, row_end, last_row;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  wire frame_end = row_end && last_row;
   wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
 
   // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
@@ -126,9 +131,17 @@ module fpstereo_video_in #(
     if (rst || core_start) begin
       x <= 0;
       y <= 0;
+      first <= 1'b1;
+      row_end <= 1'b0;
+      last_row <= 1'b0;
     end else if (in_take) begin
       x <= row_end ? {X_W{1'b0}} : x + 1'b1;
-      if (row_end) y <= y + 1'b1;
+      first <= 1'b0;
+      row_end <= !row_end && x == frame_width - TWO_X;
+      if (row_end) begin
+        y <= y + 1'b1;
+        last_row <= y == frame_height - TWO_Y;
+      end
     end
 endmodule
 `resetall

@@ -170,14 +170,22 @@ std::string top_module(const RtlDesign& d) {
   }
   os << fmt::format(
       "\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n"
-      "  wire core_valid, take;\n  wire [7:0] core_left, core_right;\n"
-      "  {}_video_in #(.X_W({}), .Y_W({})) framing (\n"
+      "  wire framed_valid, framed_ready;\n  wire [7:0] framed_left, framed_right;\n"
+      "  {0}_video_in #(.X_W({1}), .Y_W({2})) framing (\n"
       "    .clk(aclk), .rst(rst), .enable(enable),\n"
       "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
       "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
       "    .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),\n"
-      "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
-      "    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n",
+      "    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),\n"
+      "    .in_take(framed_valid && framed_ready),\n"
+      "    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n"
+      "\n  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the\n"
+      "  // framing checks through the core's enable.\n"
+      "  wire core_valid, take;\n  wire [7:0] core_left, core_right;\n"
+      "  {0}_axis_skid #(.DATA_W(16)) pixel_slice (\n"
+      "    .clk(aclk), .rst(rst),\n"
+      "    .s_data({{framed_left, framed_right}}), .s_valid(framed_valid), .s_ready(framed_ready),\n"
+      "    .m_data({{core_left, core_right}}), .m_valid(core_valid), .m_ready(take));\n",
       d.prefix, d.x_bits, d.y_bits);
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
      << fmt::format("  wire [{}:0] out_word;\n", w.disparity);
@@ -281,13 +289,14 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
       d.start_steps[stage->start_parameter()] = at + stage->start_offset(d).in_steps(R, G);
     at += stage->latency(d).in_steps(R, G);
   }
-  // The output stage is the last: its input is the push of pixel (0, 0).
-  const int64_t push_first = at - d.stages.back()->latency(d).in_steps(R, G);
+  // The output stage is the last: its latency ends with the kStepsAfterPush from the push of
+  // pixel (0, 0) on.
+  const int64_t push_first = at - kStepsAfterPush;
   const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
   d.cycles_per_frame = at + last_pixel * G;
   // At the ports: the input register slice, the cycle in which the framing stage starts the core
-  // (its step 0 follows), and the output register slice.
-  d.first_output_latency = push_first + 3;
+  // and the one in which the sequencer starts (step 0 follows), and the output register slice.
+  d.first_output_latency = push_first + 4;
   d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
   d.x_bits = bits_for(uint64_t(R));

@@ -824,14 +824,14 @@ class LrCheckStage : public Stage {
 };
 
 // Median filter: its window's newest word is rm rows and rm slots past the centre; the
-// selection takes one step per word bit, and a step each for the window and the result.
+// selection takes three steps per word bit, and a step each for the window and the result.
 class MedianStage : public Stage {
  public:
   std::string title() const override { return "median filter"; }
   std::vector<std::string> knobs() const override { return {"median"}; }
   Latency latency(const RtlDesign& d) const override {
     const int rm = d.cfg.median / 2;
-    return {rm, rm, 2 + d.widths.output_word};
+    return {rm, rm, 2 + 3 * d.widths.output_word};
   }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.median.line_window.line_buffer.mem", d.row_slots,
@@ -907,26 +907,44 @@ class GapStage : public Stage {
   int hls_fill_rows(const RtlDesign&) const override { return 1; }
 };
 
-// Output: each pixel's word is pushed in the step its stream event is due (the sequencer stalls
-// while the output register slice is full); the frame ends with its last pixel, and the core
-// is idle for one cycle before the next frame starts.
+// Output: one register stage, so that what the sequencer's enable depends on (out_due,
+// frame_done) comes from flip-flops; each pixel's word is pushed in the step after its stream
+// event (the sequencer stalls while the output register slice is full). The frame ends with its
+// last pixel; the core is idle for one cycle, and the next frame's step 0 comes two cycles after
+// its start (fpstereo_sequencer).
 class OutputStage : public Stage {
  public:
   std::string title() const override { return "output"; }
   std::vector<std::string> knobs() const override { return {}; }
-  Latency latency(const RtlDesign&) const override { return {0, 0, 2}; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, 1 + kStepsAfterPush}; }
   std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_axis_skid"}; }
-  std::string core_verilog(const RtlDesign&, PixelStream& stream) const override {
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     return fmt::format(
-        "\n  // Output.\n"
-        "  assign out_due    = {0};\n"
-        "  assign out_push   = adv && {0};\n"
-        "  assign out_word   = {3};\n"
-        "  assign out_first  = {1} == 0 && {2} == 0;\n"
-        "  assign out_last   = {1} == frame_width - 1'b1;\n"
-        "  assign frame_done = {0} && out_last && {2} == frame_height - 1'b1;\n"
+        "\n  // Output: registered, so that the sequencer's inputs are flip-flops.\n"
+        "  reg out_event_q, out_first_q, out_last_q, frame_done_q;\n"
+        "  reg [{4}:0] out_word_q;\n"
+        "  always @(posedge clk)\n"
+        "    if (restart) begin\n"
+        "      out_event_q <= 1'b0;\n"
+        "      frame_done_q <= 1'b0;\n"
+        "    end else if (adv) begin\n"
+        "      out_event_q <= {0};\n"
+        "      frame_done_q <= {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1;\n"
+        "    end\n"
+        "  always @(posedge clk)\n"
+        "    if (adv) begin\n"
+        "      out_word_q <= {3};\n"
+        "      out_first_q <= {1} == 0 && {2} == 0;\n"
+        "      out_last_q <= {1} == frame_width - 1'b1;\n"
+        "    end\n"
+        "  assign out_due    = out_event_q;\n"
+        "  assign out_push   = adv && out_event_q;\n"
+        "  assign out_word   = out_word_q;\n"
+        "  assign out_first  = out_first_q;\n"
+        "  assign out_last   = out_last_q;\n"
+        "  assign frame_done = frame_done_q;\n"
         "  assign frame_end  = adv && frame_done;\n",
-        stream.event, stream.x, stream.y, stream.word);
+        stream.event, stream.x, stream.y, stream.word, d.widths.disparity);
   }
 
   // ---- HLS: the words into the output video stream.

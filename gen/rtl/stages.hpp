@@ -22,6 +22,11 @@ struct Latency {
   int64_t in_steps(int64_t row_slots, int64_t groups) const { return (rows * row_slots + slots) * groups + steps; }
 };
 
+// Cycles from the step that pushes a frame's last pixel to the next frame's step 0 when the next
+// frame is waiting: the push itself, the cycle in which the idle core is started and the one in
+// which the sequencer starts (fpstereo_sequencer). The output stage's latency ends with them.
+constexpr int64_t kStepsAfterPush = 3;
+
 // A RAM a stage instantiates: its name as Yosys gives it after flattening the top
 // ("core.cost_reorder.cost_ram.mem"), its shape and whether its read is registered (block RAM)
 // or asynchronous (distributed RAM).

@@ -3,7 +3,7 @@
 // to 7 x 3 (X_W 3, Y_W 2). The environment (assumed): both input streams obey AXI4-Stream (no
 // TVALID in reset or in the cycle after it, held until TREADY with {tuser, tlast, tdata} stable),
 // with any tuser/tlast (framing faults included); the core takes a pixel only while one is
-// offered, and its frame size (at least 1 x 1) holds from the cycle after core_start until the
+// offered, and its frame size (at least 2 x 2, as the unit requires) holds from the cycle after core_start until the
 // frame's last pixel is taken. The unit (asserted):
 //   - an input beat is taken only while its TVALID is high;
 //   - during a frame the streams are taken only in pairs, each pair as the pixel the core takes;
@@ -16,6 +16,9 @@
 // formal-probe: probe_state dut.state
 // formal-probe: probe_x dut.x
 // formal-probe: probe_y dut.y
+// formal-probe: probe_first dut.first
+// formal-probe: probe_row_end dut.row_end
+// formal-probe: probe_last_row dut.last_row
 module video_in_props (
   input wire       clk,
   input wire       rst,
@@ -46,6 +49,7 @@ module video_in_props (
   (* keep *) wire [1:0] probe_state;
   (* keep *) wire [X_W-1:0] probe_x;
   (* keep *) wire [Y_W-1:0] probe_y;
+  (* keep *) wire           probe_first, probe_row_end, probe_last_row;
 
   reg past_valid = 1'b0, past_rst = 1'b1;
   always @(posedge clk) begin
@@ -76,7 +80,7 @@ module video_in_props (
 
   // ---- The environment.
   always @* begin
-    assume(frame_width != 0 && frame_height != 0);
+    assume(frame_width >= 2 && frame_height >= 2);
     if (in_take) assume(in_valid);
     if (in_frame) assume(frame_width == w && frame_height == h);
   end
@@ -123,6 +127,7 @@ module video_in_props (
         end
         // the unit's position is the frame's
         assert(probe_x == x && probe_y == y && x < w && y < h);
+        assert(probe_first == (x == 0 && y == 0) && probe_row_end == row_last && probe_last_row == (y == h - 1'b1));
       end
       assert(in_frame == (probe_state != 2'd0) && probe_state != 2'd3);
     end

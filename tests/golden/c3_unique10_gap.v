@@ -20,8 +20,8 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902801 = W*H*dmax/uf (1863000) + 39801
-// Latency without stalls from the first input handshake to the first output handshake: 39806 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902819 = W*H*dmax/uf (1863000) + 39819
+// Latency without stalls from the first input handshake to the first output handshake: 39824 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
@@ -32,9 +32,9 @@
 //   winner-take-all with uniqueness      0     0    3   uniqueness
 //   disparity reorder                    1     1    0   lr
 //   left-right check                     0     0    1   lr, lr-threshold
-//   median filter                        2     2   10   median
+//   median filter                        2     2   26   median
 //   gap interpolation                    1     0    3   gap-interp
-//   output                               0     0    2
+//   output                               0     0    4
 /* verilator lint_off DECLFILENAME */
 
 `resetall
@@ -112,7 +112,7 @@ module fps_census7_d128u32_796e15_top (
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(1), .UNIQUENESS_INIT(10),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00796e15),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902801, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902819, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -138,15 +138,25 @@ module fps_census7_d128u32_796e15_top (
     .frame_truncated(frame_truncated), .protocol_error(protocol_error));
 
   // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.
-  wire core_valid, take;
-  wire [7:0] core_left, core_right;
+  wire framed_valid, framed_ready;
+  wire [7:0] framed_left, framed_right;
   fps_census7_d128u32_796e15_video_in #(.X_W(11), .Y_W(9)) framing (
     .clk(aclk), .rst(rst), .enable(enable),
     .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
     .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
     .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),
-    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
+    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
+    .in_take(framed_valid && framed_ready),
     .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));
+
+  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the
+  // framing checks through the core's enable.
+  wire core_valid, take;
+  wire [7:0] core_left, core_right;
+  fps_census7_d128u32_796e15_axis_skid #(.DATA_W(16)) pixel_slice (
+    .clk(aclk), .rst(rst),
+    .s_data({framed_left, framed_right}), .s_valid(framed_valid), .s_ready(framed_ready),
+    .m_data({core_left, core_right}), .m_valid(core_valid), .m_ready(take));
 
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
@@ -394,13 +404,29 @@ module fps_census7_d128u32_796e15_sgm_core (
     .in_event(median_event), .in_x(median_x), .in_y(median_y), .in_word(median_word), .out_event(gap_event),
     .out_x(gap_x), .out_y(gap_y), .out_word(gap_word));
 
-  // Output.
-  assign out_due    = gap_event;
-  assign out_push   = adv && gap_event;
-  assign out_word   = gap_word;
-  assign out_first  = gap_x == 0 && gap_y == 0;
-  assign out_last   = gap_x == frame_width - 1'b1;
-  assign frame_done = gap_event && out_last && gap_y == frame_height - 1'b1;
+  // Output: registered, so that the sequencer's inputs are flip-flops.
+  reg out_event_q, out_first_q, out_last_q, frame_done_q;
+  reg [7:0] out_word_q;
+  always @(posedge clk)
+    if (restart) begin
+      out_event_q <= 1'b0;
+      frame_done_q <= 1'b0;
+    end else if (adv) begin
+      out_event_q <= gap_event;
+      frame_done_q <= gap_event && gap_x == frame_width - 1'b1 && gap_y == frame_height - 1'b1;
+    end
+  always @(posedge clk)
+    if (adv) begin
+      out_word_q <= gap_word;
+      out_first_q <= gap_x == 0 && gap_y == 0;
+      out_last_q <= gap_x == frame_width - 1'b1;
+    end
+  assign out_due    = out_event_q;
+  assign out_push   = adv && out_event_q;
+  assign out_word   = out_word_q;
+  assign out_first  = out_first_q;
+  assign out_last   = out_last_q;
+  assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
 endmodule
 `resetall
@@ -408,7 +434,8 @@ endmodule
 `resetall
 `default_nettype none
 // Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
-// a frame; from then on the step counter advances in every cycle where adv is high, and adv is
+// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has
+// its first pixel by then); from then on the step counter advances in every cycle where adv is high, and adv is
 // the one enable of every stage, so the whole pipeline stalls together. adv is low while a stage
 // is due to take an input pixel that is not there (in_due) or to push an output word that cannot
 // leave (out_due). The frame ends in the step that pushes its last word (frame_done); restart
@@ -435,13 +462,18 @@ module fps_census7_d128u32_796e15_sequencer #(
       fps_census7_d128u32_796e15_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
-  reg in_frame;
+  reg starting, in_frame;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   always @(posedge clk)
-    if (rst) in_frame <= 1'b0;
-    else if (!in_frame) in_frame <= start;
-    else if (adv && frame_done) in_frame <= 1'b0;
-  assign idle = !in_frame;
+    if (rst) begin
+      starting <= 1'b0;
+      in_frame <= 1'b0;
+    end else begin
+      starting <= start && idle;
+      if (!in_frame) in_frame <= starting;
+      else if (adv && frame_done) in_frame <= 1'b0;
+    end
+  assign idle = !in_frame && !starting;
   always @(posedge clk)
     if (rst) step <= 0;
     else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
@@ -506,6 +538,8 @@ endmodule
 // Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
 // the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
 // tlast on each row's last.
+// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
+// larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -549,8 +583,8 @@ module fps_census7_d128u32_796e15_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 1 || Y_W < 2) begin : invalid
-      fps_census7_d128u32_796e15_invalid_parameters_video_in_X_W_below_1_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2) begin : invalid
+      fps_census7_d128u32_796e15_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -562,9 +596,12 @@ module fps_census7_d128u32_796e15_video_in #(
   wire left_user = left[9], left_last = left[8];
   wire right_user = right[9], right_last = right[8];
   wire both = left_valid && right_valid;
-  wire row_end = x == frame_width - 1'b1;
-  wire frame_end = row_end && y == frame_height - 1'b1;
-  wire first = x == 0 && y == 0;
+  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
+  // on the path from the streams to the core.
+  reg  first, row_end, last_row;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  wire frame_end = row_end && last_row;
   wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
 
   // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
@@ -629,9 +666,17 @@ module fps_census7_d128u32_796e15_video_in #(
     if (rst || core_start) begin
       x <= 0;
       y <= 0;
+      first <= 1'b1;
+      row_end <= 1'b0;
+      last_row <= 1'b0;
     end else if (in_take) begin
       x <= row_end ? {X_W{1'b0}} : x + 1'b1;
-      if (row_end) y <= y + 1'b1;
+      first <= 1'b0;
+      row_end <= !row_end && x == frame_width - TWO_X;
+      if (row_end) begin
+        y <= y + 1'b1;
+        last_row <= y == frame_height - TWO_Y;
+      end
     end
 endmodule
 `resetall
@@ -912,7 +957,19 @@ module fps_census7_d128u32_796e15_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  assign in_due  = slot_end && si < frame_width && ti < frame_height;
+  // Whether the slot's column and the row lie inside the frame, as registers updated with the
+  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
+  // least one row and one column.
+  reg col_in, row_in;
+  always @(posedge clk)
+    if (restart) begin
+      col_in <= 1'b1;
+      row_in <= 1'b1;
+    end else if (shift) begin
+      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
+      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+    end
+  assign in_due  = slot_end && col_in && row_in;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
@@ -2625,7 +2682,7 @@ endmodule
 `default_nettype none
 // Median filter stage (docs/semantics.md, section 6): the stream's word of each slot (the invalid
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
-// the median of the window's valid words (fps_census7_d128u32_796e15_median_select, WORD_W steps), and leaves with
+// the median of the window's valid words (fps_census7_d128u32_796e15_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
 // interpolation), with its word.
 module fps_census7_d128u32_796e15_median #(
@@ -2703,7 +2760,7 @@ module fps_census7_d128u32_796e15_median #(
   wire           done_m;
   wire [X_W-1:0] x_m;
   wire [Y_W-1:0] y_m;
-  fps_census7_d128u32_796e15_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(DISP_W + 1)) median_delay (
+  fps_census7_d128u32_796e15_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1))) median_delay (
     .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
     .out({done_m, x_m, y_m}));
   always @(posedge clk)
@@ -2737,15 +2794,15 @@ endmodule
 // candidates with bit b = 0. All candidates agree on the bits above b, so in sorted order those z
 // come first: if r < z the answer has bit b = 0 and the candidates with a 1 drop out; otherwise
 // it has bit b = 1, the candidates with a 0 drop out and r becomes r - z. After bit 0 the decided
-// bits are the answer (equal words need no tie-break). A stage is one N-input population count, a
-// compare and a subtract, the same depth for every stage; the words travel down the pipeline
-// losing their decided bit at each stage (shift registers, SRL16E on Xilinx). This takes far
-// less logic than sorting the N keys: for M = 5, WORD_W = 8, Yosys synth_xilinx -abc9 maps a
-// pipelined Batcher odd-even merge sort (3 compare-exchange levels per stage) to 2876 LUTs and
-// 847 FFs at 6.9 ns (abc9 delay), this to about 600 LUTs, 129 SRL16Es and 300 FFs at 5.0-5.4 ns.
+// bits are the answer (equal words need no tie-break). A stage is one N-input population count
+// (the rows' counts in one register step, their sum in the next), then a compare and a subtract in
+// a third step, the same depth for every stage; the words travel down the pipeline losing their decided bit at each
+// stage (shift registers, SRL16E on Xilinx). This takes far less logic than sorting the N keys:
+// for M = 5, WORD_W = 8, Yosys synth_xilinx -abc9 maps a pipelined Batcher odd-even merge sort
+// (3 compare-exchange levels per stage) to 2876 LUTs and 847 FFs at 6.9 ns (abc9 delay).
 //
-// Latency (en-high steps from window to median): LATENCY = WORD_W = DISP_W + 1 (the count stage
-// and one stage per disparity bit, the last one holding the output), whatever M.
+// Latency (en-high steps from window to median): LATENCY = 3 * WORD_W (three steps for the count
+// stage and for each disparity bit, the last one holding the output), whatever M.
 module fps_census7_d128u32_796e15_median_select #(
   // window side (3, 5 or 7)
   parameter M = 5,
@@ -2779,27 +2836,32 @@ module fps_census7_d128u32_796e15_median_select #(
   localparam ROW_CNT_W = $clog2(M + 1);
   localparam [WORD_W-1:0] INVALID = {1'b1, {DISP_W{1'b0}}};
 
-  // Population count of an N-bit mask, row by row and then across the rows, so that synthesis
-  // sees small adders in a tree rather than one long chain.
-  function [CNT_W-1:0] count_of(input [N-1:0] mask);
+  // Population count of an N-bit mask in two register stages: the count of each window row, then
+  // the sum of the rows, so that neither stage holds more than a few LUT levels.
+  localparam ROWS_W = M * ROW_CNT_W;
+  function [ROWS_W-1:0] row_counts(input [N-1:0] mask);
     integer i, j;
-    reg [ROW_CNT_W-1:0] row;
     begin
-      count_of = {CNT_W{1'b0}};
-      for (i = 0; i < M; i = i + 1) begin
-        row = {ROW_CNT_W{1'b0}};
+      row_counts = {ROWS_W{1'b0}};
+      for (i = 0; i < M; i = i + 1)
         for (j = 0; j < M; j = j + 1)
-          row = row + {{(ROW_CNT_W - 1){1'b0}}, mask[i*M + j]};
-        count_of = count_of + {{(CNT_W - ROW_CNT_W){1'b0}}, row};
-      end
+          row_counts[i*ROW_CNT_W +: ROW_CNT_W] = row_counts[i*ROW_CNT_W +: ROW_CNT_W] + {{(ROW_CNT_W - 1){1'b0}}, mask[i*M + j]};
+    end
+  endfunction
+  function [CNT_W-1:0] sum_of_rows(input [ROWS_W-1:0] rows);
+    integer i;
+    begin
+      sum_of_rows = {CNT_W{1'b0}};
+      for (i = 0; i < M; i = i + 1)
+        sum_of_rows = sum_of_rows + {{(CNT_W - ROW_CNT_W){1'b0}}, rows[i*ROW_CNT_W +: ROW_CNT_W]};
     end
   endfunction
 
-  // Count stage: used words (the centre by its flag alone), the rank sought, the disparities.
+  // Count stage, first step: used words (the centre by its flag alone), the row counts of the
+  // used words besides the centre, the disparities.
   wire [N-1:0]        used;
   wire [N-1:0]        used_besides_centre;
   wire [N*DISP_W-1:0] values;
-  wire [CNT_W-1:0]    others = count_of(used_besides_centre);
 
   genvar e, s;
   generate
@@ -2816,20 +2878,43 @@ module fps_census7_d128u32_796e15_median_select #(
     end
   endgenerate
 
+  reg [N-1:0]        rows_cand_q;
+  reg [ROWS_W-1:0]   rows_others_q;
+  reg [N*DISP_W-1:0] rows_values_q;
+  reg                rows_invalid_q;
+  always @(posedge clk)
+    if (en) begin
+      rows_cand_q    <= used;
+      rows_others_q  <= row_counts(used_besides_centre);
+      rows_values_q  <= values;
+      rows_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+    end
+
+  // Count stage, second and third steps: the number of used words besides the centre, and the
+  // rank sought (a step of its own, so that the count stage takes as long as a bit stage).
+  reg [N-1:0]        sum_cand_q;
+  reg [CNT_W-1:0]    sum_others_q;
+  reg [N*DISP_W-1:0] sum_values_q;
+  reg                sum_invalid_q;
   reg [N-1:0]        count_cand_q;
   reg [CNT_W-1:0]    count_rank_q;
   reg [N*DISP_W-1:0] count_values_q;
   reg                count_invalid_q;
   always @(posedge clk)
     if (en) begin
-      count_cand_q    <= used;
-      count_rank_q    <= others >> 1;
-      count_values_q  <= values;
-      count_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+      sum_cand_q      <= rows_cand_q;
+      sum_others_q    <= sum_of_rows(rows_others_q);
+      sum_values_q    <= rows_values_q;
+      sum_invalid_q   <= rows_invalid_q;
+      count_cand_q    <= sum_cand_q;
+      count_rank_q    <= sum_others_q >> 1;
+      count_values_q  <= sum_values_q;
+      count_invalid_q <= sum_invalid_q;
     end
 
   // Bit stages: stage s decides bit B = DISP_W-1-s and receives bits B .. 0 of every word, word i
-  // at vals[i*(B+1) +: B+1]. (The genvar counts up: some tools reject a genvar that goes negative.)
+  // at vals[i*(B+1) +: B+1]. Its first step counts the candidates with bit B = 0 per row, its
+  // second sums the rows, its third decides. (The genvar counts up: some tools reject a genvar that goes negative.)
   reg [WORD_W-1:0] median_q;
   assign median = median_q;
 
@@ -2860,10 +2945,48 @@ module fps_census7_d128u32_796e15_median_select #(
       for (e = 0; e < N; e = e + 1) begin : position
         assign bit_here[e] = vals[e*(B+1) + B];
       end
-      wire [CNT_W-1:0]  zeros = count_of(cand & ~bit_here);
-      wire              high = rank >= zeros;
+      reg [N-1:0]        cand_h;
+      reg [N-1:0]        bit_h;
+      reg [N*(B+1)-1:0]  vals_h;
+      reg [ROWS_W-1:0]   zeros_h;
+      reg [CNT_W-1:0]    rank_h;
+      reg [DISP_W-1:0]   upper_h;
+      reg                invalid_h;
+      always @(posedge clk)
+        if (en) begin
+          cand_h    <= cand;
+          bit_h     <= bit_here;
+          zeros_h   <= row_counts(cand & ~bit_here);
+          rank_h    <= rank;
+          vals_h    <= vals;
+          upper_h   <= upper;
+          invalid_h <= invalid;
+        end
+
+      // The sum of the rows' counts, registered before the decision.
+      /* verilator lint_off UNUSEDSIGNAL */  // the last stage needs only the decision
+      reg [N-1:0]        cand_z;
+      reg [N-1:0]        bit_z;
+      reg [N*(B+1)-1:0]  vals_z;
+      /* verilator lint_on UNUSEDSIGNAL */
+      reg [CNT_W-1:0]    zeros;
+      reg [CNT_W-1:0]    rank_z;
+      reg [DISP_W-1:0]   upper_z;
+      reg                invalid_z;
+      always @(posedge clk)
+        if (en) begin
+          cand_z    <= cand_h;
+          bit_z     <= bit_h;
+          zeros     <= sum_of_rows(zeros_h);
+          rank_z    <= rank_h;
+          vals_z    <= vals_h;
+          upper_z   <= upper_h;
+          invalid_z <= invalid_h;
+        end
+
+      wire              high = rank_z >= zeros;
       localparam [DISP_W-1:0] BIT = 1 << B;
-      wire [DISP_W-1:0] answer = high ? upper | BIT : upper;
+      wire [DISP_W-1:0] answer = high ? upper_z | BIT : upper_z;
 
       if (B > 0) begin : step
         reg [N-1:0]      cand_q;
@@ -2875,15 +2998,15 @@ module fps_census7_d128u32_796e15_median_select #(
         always @(posedge clk)
           if (en) begin
             // Candidates whose bit B differs from the answer's drop out.
-            cand_q    <= cand & (high ? bit_here : ~bit_here);
-            rank_q    <= high ? rank - zeros : rank;
-            for (i = 0; i < N; i = i + 1) vals_q[i*B +: B] <= vals[i*(B+1) +: B];
+            cand_q    <= cand_z & (high ? bit_z : ~bit_z);
+            rank_q    <= high ? rank_z - zeros : rank_z;
+            for (i = 0; i < N; i = i + 1) vals_q[i*B +: B] <= vals_z[i*(B+1) +: B];
             upper_q   <= answer;
-            invalid_q <= invalid;
+            invalid_q <= invalid_z;
           end
       end else begin : last
         always @(posedge clk)
-          if (en) median_q <= invalid ? INVALID : {1'b0, answer};
+          if (en) median_q <= invalid_z ? INVALID : {1'b0, answer};
       end
     end
   endgenerate

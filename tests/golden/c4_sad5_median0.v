@@ -20,8 +20,8 @@
 //
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887873 = W*H*dmax/uf (1863000) + 24873
-// Latency without stalls from the first input handshake to the first output handshake: 24878 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887875 = W*H*dmax/uf (1863000) + 24875
+// Latency without stalls from the first input handshake to the first output handshake: 24880 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
@@ -32,7 +32,7 @@
 //   winner-take-all                      0     0    3   uniqueness
 //   disparity reorder                    2     1    0   lr
 //   left-right check                     0     0    1   lr, lr-threshold
-//   output                               0     0    2
+//   output                               0     0    4
 /* verilator lint_off DECLFILENAME */
 
 `resetall
@@ -110,7 +110,7 @@ module fps_sad5_d128u32_fa1add_top (
     .X_W(11), .Y_W(9), .PATH_W(13), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00fa1add),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887873, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887875, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -136,15 +136,25 @@ module fps_sad5_d128u32_fa1add_top (
     .frame_truncated(frame_truncated), .protocol_error(protocol_error));
 
   // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.
-  wire core_valid, take;
-  wire [7:0] core_left, core_right;
+  wire framed_valid, framed_ready;
+  wire [7:0] framed_left, framed_right;
   fps_sad5_d128u32_fa1add_video_in #(.X_W(11), .Y_W(9)) framing (
     .clk(aclk), .rst(rst), .enable(enable),
     .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
     .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
     .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),
-    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
+    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
+    .in_take(framed_valid && framed_ready),
     .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));
+
+  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the
+  // framing checks through the core's enable.
+  wire core_valid, take;
+  wire [7:0] core_left, core_right;
+  fps_sad5_d128u32_fa1add_axis_skid #(.DATA_W(16)) pixel_slice (
+    .clk(aclk), .rst(rst),
+    .s_data({framed_left, framed_right}), .s_valid(framed_valid), .s_ready(framed_ready),
+    .m_data({core_left, core_right}), .m_valid(core_valid), .m_ready(take));
 
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
@@ -356,13 +366,29 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .read_word(read_word), .checked_done(checked_done), .checked_event(checked_event), .checked_x(checked_x),
     .checked_y(checked_y), .checked_word(checked_word));
 
-  // Output.
-  assign out_due    = checked_event;
-  assign out_push   = adv && checked_event;
-  assign out_word   = checked_word;
-  assign out_first  = checked_x == 0 && checked_y == 0;
-  assign out_last   = checked_x == frame_width - 1'b1;
-  assign frame_done = checked_event && out_last && checked_y == frame_height - 1'b1;
+  // Output: registered, so that the sequencer's inputs are flip-flops.
+  reg out_event_q, out_first_q, out_last_q, frame_done_q;
+  reg [7:0] out_word_q;
+  always @(posedge clk)
+    if (restart) begin
+      out_event_q <= 1'b0;
+      frame_done_q <= 1'b0;
+    end else if (adv) begin
+      out_event_q <= checked_event;
+      frame_done_q <= checked_event && checked_x == frame_width - 1'b1 && checked_y == frame_height - 1'b1;
+    end
+  always @(posedge clk)
+    if (adv) begin
+      out_word_q <= checked_word;
+      out_first_q <= checked_x == 0 && checked_y == 0;
+      out_last_q <= checked_x == frame_width - 1'b1;
+    end
+  assign out_due    = out_event_q;
+  assign out_push   = adv && out_event_q;
+  assign out_word   = out_word_q;
+  assign out_first  = out_first_q;
+  assign out_last   = out_last_q;
+  assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
 endmodule
 `resetall
@@ -370,7 +396,8 @@ endmodule
 `resetall
 `default_nettype none
 // Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
-// a frame; from then on the step counter advances in every cycle where adv is high, and adv is
+// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has
+// its first pixel by then); from then on the step counter advances in every cycle where adv is high, and adv is
 // the one enable of every stage, so the whole pipeline stalls together. adv is low while a stage
 // is due to take an input pixel that is not there (in_due) or to push an output word that cannot
 // leave (out_due). The frame ends in the step that pushes its last word (frame_done); restart
@@ -397,13 +424,18 @@ module fps_sad5_d128u32_fa1add_sequencer #(
       fps_sad5_d128u32_fa1add_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
-  reg in_frame;
+  reg starting, in_frame;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   always @(posedge clk)
-    if (rst) in_frame <= 1'b0;
-    else if (!in_frame) in_frame <= start;
-    else if (adv && frame_done) in_frame <= 1'b0;
-  assign idle = !in_frame;
+    if (rst) begin
+      starting <= 1'b0;
+      in_frame <= 1'b0;
+    end else begin
+      starting <= start && idle;
+      if (!in_frame) in_frame <= starting;
+      else if (adv && frame_done) in_frame <= 1'b0;
+    end
+  assign idle = !in_frame && !starting;
   always @(posedge clk)
     if (rst) step <= 0;
     else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
@@ -468,6 +500,8 @@ endmodule
 // Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
 // the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
 // tlast on each row's last.
+// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
+// larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -511,8 +545,8 @@ module fps_sad5_d128u32_fa1add_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 1 || Y_W < 2) begin : invalid
-      fps_sad5_d128u32_fa1add_invalid_parameters_video_in_X_W_below_1_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2) begin : invalid
+      fps_sad5_d128u32_fa1add_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -524,9 +558,12 @@ module fps_sad5_d128u32_fa1add_video_in #(
   wire left_user = left[9], left_last = left[8];
   wire right_user = right[9], right_last = right[8];
   wire both = left_valid && right_valid;
-  wire row_end = x == frame_width - 1'b1;
-  wire frame_end = row_end && y == frame_height - 1'b1;
-  wire first = x == 0 && y == 0;
+  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
+  // on the path from the streams to the core.
+  reg  first, row_end, last_row;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  wire frame_end = row_end && last_row;
   wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
 
   // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
@@ -591,9 +628,17 @@ module fps_sad5_d128u32_fa1add_video_in #(
     if (rst || core_start) begin
       x <= 0;
       y <= 0;
+      first <= 1'b1;
+      row_end <= 1'b0;
+      last_row <= 1'b0;
     end else if (in_take) begin
       x <= row_end ? {X_W{1'b0}} : x + 1'b1;
-      if (row_end) y <= y + 1'b1;
+      first <= 1'b0;
+      row_end <= !row_end && x == frame_width - TWO_X;
+      if (row_end) begin
+        y <= y + 1'b1;
+        last_row <= y == frame_height - TWO_Y;
+      end
     end
 endmodule
 `resetall
@@ -874,7 +919,19 @@ module fps_sad5_d128u32_fa1add_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  assign in_due  = slot_end && si < frame_width && ti < frame_height;
+  // Whether the slot's column and the row lie inside the frame, as registers updated with the
+  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
+  // least one row and one column.
+  reg col_in, row_in;
+  always @(posedge clk)
+    if (restart) begin
+      col_in <= 1'b1;
+      row_in <= 1'b1;
+    end else if (shift) begin
+      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
+      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+    end
+  assign in_due  = slot_end && col_in && row_in;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;

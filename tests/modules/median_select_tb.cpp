@@ -2,7 +2,7 @@
 // section 6, words as in section 8). Reference: an invalid centre gives the invalid word
 // 1 << DISP_W; otherwise the used words (centre by its flag; others inside the image by
 // row_valid / col_valid and with flag 0) are sorted and v_((k-1)/2) is the result. Latency
-// WORD_W enabled steps; en low holds.
+// 3 * WORD_W enabled steps; en low holds.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -26,7 +26,7 @@ int run_median_select(const char* name, const MedianParams& p, const modtb::Opti
   modtb::Checker check(name);
   const int n = p.M * p.M, disp_w = p.WORD_W - 1, centre = (p.M / 2) * p.M + p.M / 2;
   const uint64_t invalid = uint64_t{1} << disp_w;
-  modtb::EnabledPipe<uint64_t> pipe(p.WORD_W);
+  modtb::EnabledPipe<uint64_t> pipe(3 * p.WORD_W);
   std::vector<uint64_t> words(n), used;
   long enabled = 0, invalid_centres = 0;
   m.clk = 0;
@@ -71,7 +71,7 @@ int run_median_select(const char* name, const MedianParams& p, const modtb::Opti
   }
   return check.finish("M=" + std::to_string(p.M) + " WORD_W=" + std::to_string(p.WORD_W) +
                       ": lower median of the used words, invalid centre -> invalid word, latency " +
-                      std::to_string(p.WORD_W) + ", hold while en low; " + std::to_string(o.cycles) + " cycles, " +
+                      std::to_string(3 * p.WORD_W) + ", hold while en low; " + std::to_string(o.cycles) + " cycles, " +
                       std::to_string(enabled) + " enabled (" + std::to_string(invalid_centres) + " invalid centres)");
 }
 
