@@ -46,20 +46,21 @@ module fpstereo_aggregator #(
   input  wire                 agg_on,
   output wire [COST_AW-1:0]   cost_raddr,
   input  wire [UF*COST_W-1:0] cost_q,
-  // the sums of one group of one pixel (S4), and where they belong
-  output reg  [UF*SUM_W-1:0]  sum4,
-  output wire                 active4,
-  output wire [X_W-1:0]       x4,
-  output wire [G_W-1:0]       group4,
-  output wire [K_W-1:0]       chain4,
-  output wire [OUT_K_W-1:0]   slot4
+  // the sums of one group of one pixel (S5), and where they belong
+  output reg  [UF*SUM_W-1:0]  sums,
+  output wire                 sums_active,
+  output wire [X_W-1:0]       sums_x,
+  output wire [G_W-1:0]       sums_group,
+  output wire [K_W-1:0]       sums_chain,
+  output wire [OUT_K_W-1:0]   sums_slot
 );
+  localparam LANES_LAT = 2;  // steps of fpstereo_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
       fpstereo_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
     end
-    if ((K - 1) * G < PATH_TREE_LAT + 1) begin : invalid_chains
+    if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fpstereo_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
@@ -137,21 +138,24 @@ module fpstereo_aggregator #(
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
-  // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
+  // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
+  // -> S5 (sums).
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
-  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
+  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
       tag2 <= {TAG_W{1'b0}};
       tag3 <= {TAG_W{1'b0}};
       tag4 <= {TAG_W{1'b0}};
+      tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
       tag1 <= tag0;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
+      tag5 <= tag4;
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
@@ -173,11 +177,11 @@ module fpstereo_aggregator #(
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
-  wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
-  wire             active3 = `FPS_TAG_ACTIVE(tag3);
+  wire [X_W-1:0]   x4 = `FPS_TAG_X(tag4);
+  wire [G_W-1:0]   g4 = `FPS_TAG_GROUP(tag4);
+  wire             active4 = `FPS_TAG_ACTIVE(tag4);
   /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
+  wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
@@ -196,7 +200,7 @@ module fpstereo_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag3), .out(tag_m));
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -210,7 +214,7 @@ module fpstereo_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active3), .waddr(`FPS_TAG_CHAIN(tag3) * G + g3), .wdata(path_0),
+        .clk(clk), .we(adv && active4), .waddr(`FPS_TAG_CHAIN(tag4) * G + g4), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
@@ -241,7 +245,7 @@ module fpstereo_aggregator #(
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
       fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-        .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_45),
+        .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
       fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
@@ -284,7 +288,7 @@ module fpstereo_aggregator #(
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
         fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-          .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_out),
+          .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
         fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
@@ -315,7 +319,7 @@ module fpstereo_aggregator #(
     end
   endgenerate
 
-  // ---- Sum over the paths (S3 -> S4).
+  // ---- Sum over the paths (S4 -> S5).
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane_sum
@@ -324,15 +328,15 @@ module fpstereo_aggregator #(
                          + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
       always @(posedge clk)
-        if (adv) sum4[l*SUM_W +: SUM_W] <= s;
+        if (adv) sums[l*SUM_W +: SUM_W] <= s;
     end
   endgenerate
 
-  assign active4 = `FPS_TAG_ACTIVE(tag4);
-  assign x4 = `FPS_TAG_X(tag4);
-  assign group4 = `FPS_TAG_GROUP(tag4);
-  assign chain4 = `FPS_TAG_CHAIN(tag4);
-  assign slot4 = `FPS_TAG_SLOT(tag4);
+  assign sums_active = `FPS_TAG_ACTIVE(tag5);
+  assign sums_x = `FPS_TAG_X(tag5);
+  assign sums_group = `FPS_TAG_GROUP(tag5);
+  assign sums_chain = `FPS_TAG_CHAIN(tag5);
+  assign sums_slot = `FPS_TAG_SLOT(tag5);
   // verilator lint_on WIDTH
 
   `undef FPS_TAG_ACTIVE

@@ -94,16 +94,30 @@ module fpstereo_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time.
-  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid;
+  // ---- Writes: address and data together, one response at a time. A write is taken into
+  // registers and checked and applied in the next cycle, its response following it, so that no
+  // logic lies between the bus and the range checks.
+  reg         request;
+  reg [7:0]   request_addr;
+  reg [31:0]  v;
+  reg [3:0]   request_strb;
+  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
-  wire [31:0] v = s_axi_wdata;
+  always @(posedge clk)
+    if (rst) request <= 1'b0;
+    else request <= write;
+  always @(posedge clk)
+    if (write) begin
+      request_addr <= s_axi_awaddr;
+      v <= s_axi_wdata;
+      request_strb <= s_axi_wstrb;
+    end
   wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
   wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
   reg accepted;
   always @* begin
-    case (s_axi_awaddr)
+    case (request_addr)
       A_CONTROL:      accepted = 1'b1;
       // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
       A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
@@ -114,7 +128,7 @@ module fpstereo_control #(
       A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase
-    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+    if (request_strb != 4'hF) accepted = 1'b0;
   end
 
   always @(posedge clk)
@@ -127,11 +141,11 @@ module fpstereo_control #(
       p2_q <= P2_INIT[PATH_W-1:0];
       uniqueness_q <= UNIQUENESS_INIT[6:0];
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
-    end else if (write) begin
+    end else if (request) begin
       s_axi_bvalid <= 1'b1;
       s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
       if (accepted)
-        case (s_axi_awaddr)
+        case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
           A_P2:           p2_q <= v[PATH_W-1:0];
@@ -163,7 +177,7 @@ module fpstereo_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (write && !accepted) rejected <= rejected + 1'b1;
+      if (request && !accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;

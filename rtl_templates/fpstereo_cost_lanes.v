@@ -2,7 +2,9 @@
 `default_nettype none
 // UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
 // of the codes; rank: absolute difference. Where the match pixel lies left of the image
-// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). One register stage.
+// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
+// then their sum and the border's COST_MAX.
 module fpstereo_cost_lanes #(
   // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
   parameter HAMMING = 1,
@@ -36,26 +38,47 @@ module fpstereo_cost_lanes #(
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
+  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
+  localparam CHUNKS = (CODE_W + 5) / 6;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
       wire [D_W-1:0]    d = group_base + l[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies left
+      // of the image.
+      reg  [PART_W-1:0] part;
+      reg               beyond;
       wire [COST_W-1:0] cost;
       if (HAMMING) begin : hamming
-        reg [COST_W-1:0] count;
-        integer b;
+        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
+        reg  [PART_W-1:0]   counts;
+        reg  [COST_W-1:0]   total;
+        integer k, b;
         always @* begin
-          count = 0;
-          for (b = 0; b < CODE_W; b = b + 1) count = count + {{(COST_W-1){1'b0}}, base_code[b] ^ m[b]};
+          for (k = 0; k < CHUNKS; k = k + 1) begin
+            counts[k*3 +: 3] = 3'd0;
+            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
+          end
+          total = 0;
+          for (k = 0; k < CHUNKS; k = k + 1) total = total + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
         end
-        assign cost = count;
+        always @(posedge clk)
+          if (en) part <= counts;
+        assign cost = total;
       end else begin : absolute_difference
         // rank values and costs have the same width
-        assign cost = base_code > m ? base_code - m : m - base_code;
+        always @(posedge clk)
+          if (en) part <= base_code > m ? base_code - m : m - base_code;
+        assign cost = part;
       end
       always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= (x_wide < d) ? COST_MAX[COST_W-1:0] : cost;
+        if (en) beyond <= x_wide < d;
+      // Step 2: the cost.
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;
     end
   endgenerate
 endmodule

@@ -90,8 +90,8 @@ module fpstereo_lr2_match #(
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sum4(sums),
-    .active4(active), .x4(x), .group4(group), .chain4(chain), .slot4(slot));
+    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
+    .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
   wire              active_w;
   wire [X_W-1:0]    x_w;
   wire [OUT_K_W-1:0] slot_w;

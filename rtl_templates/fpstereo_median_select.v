@@ -79,8 +79,18 @@ module fpstereo_median_select #(
     end
   endfunction
 
-  // Count stage, first step: used words (the centre by its flag alone), the row counts of the
-  // used words besides the centre, the disparities.
+  // Count stage, first step: the window and its masks (compares with the frame size) registered.
+  reg [M*M*WORD_W-1:0] window_q;
+  reg [M-1:0]          row_valid_q, col_valid_q;
+  always @(posedge clk)
+    if (en) begin
+      window_q    <= window;
+      row_valid_q <= row_valid;
+      col_valid_q <= col_valid;
+    end
+
+  // Second step: used words (the centre by its flag alone), the row counts of the used words
+  // besides the centre, the disparities.
   wire [N-1:0]        used;
   wire [N-1:0]        used_besides_centre;
   wire [N*DISP_W-1:0] values;
@@ -88,13 +98,13 @@ module fpstereo_median_select #(
   genvar e, s;
   generate
     for (e = 0; e < N; e = e + 1) begin : position
-      wire flag = window[e*WORD_W + DISP_W];
-      assign values[e*DISP_W +: DISP_W] = window[e*WORD_W +: DISP_W];
+      wire flag = window_q[e*WORD_W + DISP_W];
+      assign values[e*DISP_W +: DISP_W] = window_q[e*WORD_W +: DISP_W];
       if (e == CENTRE) begin : centre
         assign used[e] = !flag;
         assign used_besides_centre[e] = 1'b0;
       end else begin : neighbour
-        assign used[e] = row_valid[e / M] && col_valid[e % M] && !flag;
+        assign used[e] = row_valid_q[e / M] && col_valid_q[e % M] && !flag;
         assign used_besides_centre[e] = used[e];
       end
     end
@@ -109,29 +119,20 @@ module fpstereo_median_select #(
       rows_cand_q    <= used;
       rows_others_q  <= row_counts(used_besides_centre);
       rows_values_q  <= values;
-      rows_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+      rows_invalid_q <= window_q[CENTRE*WORD_W + DISP_W];
     end
 
-  // Count stage, second and third steps: the number of used words besides the centre, and the
-  // rank sought (a step of its own, so that the count stage takes as long as a bit stage).
-  reg [N-1:0]        sum_cand_q;
-  reg [CNT_W-1:0]    sum_others_q;
-  reg [N*DISP_W-1:0] sum_values_q;
-  reg                sum_invalid_q;
+  // Third step: the rank sought, half the used words besides the centre.
   reg [N-1:0]        count_cand_q;
   reg [CNT_W-1:0]    count_rank_q;
   reg [N*DISP_W-1:0] count_values_q;
   reg                count_invalid_q;
   always @(posedge clk)
     if (en) begin
-      sum_cand_q      <= rows_cand_q;
-      sum_others_q    <= sum_of_rows(rows_others_q);
-      sum_values_q    <= rows_values_q;
-      sum_invalid_q   <= rows_invalid_q;
-      count_cand_q    <= sum_cand_q;
-      count_rank_q    <= sum_others_q >> 1;
-      count_values_q  <= sum_values_q;
-      count_invalid_q <= sum_invalid_q;
+      count_cand_q    <= rows_cand_q;
+      count_rank_q    <= sum_of_rows(rows_others_q) >> 1;
+      count_values_q  <= rows_values_q;
+      count_invalid_q <= rows_invalid_q;
     end
 
   // Bit stages: stage s decides bit B = DISP_W-1-s and receives bits B .. 0 of every word, word i

@@ -4,7 +4,8 @@
 //   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
 // where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
+// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
+// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
 module fpstereo_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
@@ -34,22 +35,39 @@ module fpstereo_path_lanes #(
   wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
   wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
 
+  // Step 1 also keeps what step 2 needs besides the candidates.
+  reg [UF*COST_W-1:0] cost_q;
+  reg [PATH_W-1:0]    prev_min_q;
+  reg                 has_pred_q;
+  always @(posedge clk)
+    if (en) begin
+      cost_q <= cost;
+      prev_min_q <= prev_min;
+      has_pred_q <= has_pred;
+    end
+
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
-      wire [EXT_W-1:0] stay = same < jump ? same : jump;
+      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
+      reg  [EXT_W-1:0] neighbour, stay;
+      always @(posedge clk)
+        if (en) begin
+          neighbour <= (below < above ? below : above) + {1'b0, p1};
+          stay <= same < jump ? same : jump;
+        end
+      // Step 2: the best, and the path cost.
       wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
       // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
       /* verilator lint_on UNUSEDSIGNAL */
       always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
     end
   endgenerate
 endmodule

@@ -259,9 +259,7 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.prefix = config_tag(cfg);
   d.window_radius = cfg.window / 2;
   d.groups = cfg.dmax / cfg.uf;
-  const bool shd = cfg.cost == CostFunction::Shd && cfg.shd_window > 1;
-  const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad || shd;
-  d.cost_latency = windowed_cost ? 2 : 1;
+  d.cost_latency = 2;  // fpstereo_cost_lanes and fpstereo_window_cost_lanes: two register steps
   d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
   std::tie(d.mean_mul, d.mean_shift) =
@@ -269,9 +267,12 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.path_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   d.wta_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
-  // tree and the running minimum take G + latency + 1 steps; K chains give it K * G.
-  d.chains = std::max(2, 1 + ceil_div(d.path_tree_latency + 1, d.groups));
-  // Segments need at least 3 pixels (docs/architecture.md); K <= 5 and width >= dmax >= 16 give it.
+  // path lanes (two steps, fpstereo_path_lanes), the tree and the running minimum take
+  // G - 1 + 2 + latency + 1 steps; K chains give it K * G (fpstereo_aggregator checks it).
+  constexpr int kPathLanesLatency = 2;
+  d.chains = std::max(2, 1 + ceil_div(d.path_tree_latency + kPathLanesLatency, d.groups));
+  // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
+  // where dmax < 128 (width >= 16) and K <= 6 otherwise.
   d.segment = ceil_div(cfg.width, d.chains);
   d.row_slots = d.chains * d.segment;
   const int lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;

@@ -458,13 +458,13 @@ Values aggregator_parameters(const RtlDesign& d) {
 }
 
 // Aggregation in K interleaved chains; a row's last chain runs K - 1 row-times after its first,
-// and the sums leave the aggregator's four register stages (S0 .. S4).
+// and the sums leave the aggregator's five register stages (S0 .. S5).
 class AggregationStage : public Stage {
  public:
   std::string title() const override { return "aggregation"; }
   std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "dmax", "uf"}; }
   std::string start_parameter() const override { return "AGG_START"; }
-  Latency latency(const RtlDesign& d) const override { return {d.chains - 1, 0, 4}; }
+  Latency latency(const RtlDesign& d) const override { return {d.chains - 1, 0, 5}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return aggregator_memories(d, "core.aggregation");
   }
@@ -475,21 +475,21 @@ class AggregationStage : public Stage {
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     std::string v = "\n  // Aggregation in K interleaved chains, from step AGG_START.\n" +
                     start_localparam(d, *this) +
-                    wire(d.cfg.uf * d.widths.aggregated, "sum4") + wire(1, "active4") + wire(d.x_bits, "x4") +
-                    wire(d.group_bits, "group4") + wire(d.out_row_bits, "slot4");
-    v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "chain4"), "only LR1 follows the chains");
+                    wire(d.cfg.uf * d.widths.aggregated, "agg_sums") + wire(1, "agg_active") + wire(d.x_bits, "agg_x") +
+                    wire(d.group_bits, "agg_group") + wire(d.out_row_bits, "agg_slot");
+    v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "agg_chain"), "only LR1 follows the chains");
     return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + Values{{"MATCH_SIDE", "0"}},
                         frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
                          {"agg_on", "step >= AGG_START"},
                          {"cost_raddr", "cost_raddr"},
                          {"cost_q", "cost_q"},
-                         {"sum4", "sum4"},
-                         {"active4", "active4"},
-                         {"x4", "x4"},
-                         {"group4", "group4"},
-                         {"chain4", "chain4"},
-                         {"slot4", "slot4"}});
+                         {"sums", "agg_sums"},
+                         {"sums_active", "agg_active"},
+                         {"sums_x", "agg_x"},
+                         {"sums_group", "agg_group"},
+                         {"sums_chain", "agg_chain"},
+                         {"sums_slot", "agg_slot"}});
   }
 
   // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which
@@ -548,12 +548,12 @@ class Lr1MatchStage : public Stage {
                     {{"clk", "clk"},
                      {"adv", "adv"},
                      {"frame_width", "frame_width"},
-                     {"sums", "sum4"},
-                     {"active", "active4"},
-                     {"x", "x4"},
-                     {"group", "group4"},
-                     {"chain", "chain4"},
-                     {"slot", "slot4"},
+                     {"sums", "agg_sums"},
+                     {"active", "agg_active"},
+                     {"x", "agg_x"},
+                     {"group", "agg_group"},
+                     {"chain", "agg_chain"},
+                     {"slot", "agg_slot"},
                      {"completed_we", "completed_we"},
                      {"completed_waddr", "completed_waddr"},
                      {"completed_wdata", "completed_wdata"},
@@ -647,9 +647,9 @@ class WtaStage : public Stage {
     Values ports = {{"clk", "clk"},
                     {"restart", "restart"},
                     {"adv", "adv"},
-                    {"sums", "sum4"},
-                    {"group", "group4"},
-                    {"tag", "{active4, x4, slot4}"}};
+                    {"sums", "agg_sums"},
+                    {"group", "agg_group"},
+                    {"tag", "{agg_active, agg_x, agg_slot}"}};
     if (unique_) ports.push_back({"uniqueness", "uniqueness"});
     ports.insert(ports.end(),
                  {{"group_out", "wta_group"}, {"tag_out", "{wta_active, wta_x, wta_slot}"}, {"word", "wta_word"}});

@@ -6,7 +6,8 @@
 // unit's (asserted):
 //   - BVALID/RVALID low after reset, held until BREADY/RREADY with BRESP/RDATA/RRESP stable;
 //   - one response per request: a response only for a request accepted and not yet answered,
-//     at most one outstanding of each kind, and each accepted request's response presented;
+//     at most one outstanding of each kind, and each accepted request's response presented (a
+//     write's in the cycle after the one that takes it, when the write takes effect);
 //   - BRESP as the README's register map says: OKAY for a full-strobe write in range to a
 //     writable register, SLVERR out of range, to a read-only register (STATUS, VERSION,
 //     CONFIG_ID, UNIQUENESS when not generated, the counters, INFO) or with partial strobes;
@@ -117,6 +118,19 @@ module control_props (
   wire aw_take = awvalid && awready, w_take = wvalid && wready, b_take = bvalid && bready;
   wire ar_take = arvalid && arready, r_take = rvalid && rready;
   reg [1:0] aw_open, w_open, ar_open;
+  // the write taken in the previous cycle, which takes effect now
+  reg        w_taken;
+  reg [7:0]  w_addr;
+  reg [31:0] w_data;
+  reg [3:0]  w_strb;
+  always @(posedge clk) begin
+    w_taken <= !rst && aw_take && w_take;
+    if (aw_take && w_take) begin
+      w_addr <= awaddr;
+      w_data <= wdata;
+      w_strb <= wstrb;
+    end
+  end
   always @(posedge clk)
     if (rst) begin
       aw_open <= 2'd0;
@@ -133,7 +147,7 @@ module control_props (
       assert(awready == wready && aw_open == w_open);
       // one outstanding at a time, answered: a response exactly while a request is open
       assert(aw_open <= 2'd1 && w_open <= 2'd1 && ar_open <= 2'd1);
-      assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1));
+      assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1 && !w_taken));
       assert(rvalid == (ar_open == 2'd1));
       // a response is taken only when one was offered (no new one in the cycle it is taken)
       if (b_take) assert(!aw_take && !w_take);
@@ -143,25 +157,25 @@ module control_props (
   // ---- The register map (README), modelled.
   reg        m_enable;
   reg [31:0] m_width, m_height, m_p1, m_p2, m_lr;
-  reg        good;     // the write being taken is accepted
+  reg        good;     // the write taking effect is accepted
   reg        writable; // its address is a writable register
   always @* begin
     writable = 1'b1;
     good = 1'b0;
-    case (awaddr)
+    case (w_addr)
       8'h00: good = 1'b1;
-      8'h10: good = wdata <= m_p2 && wdata <= 32'd255;
-      8'h14: good = wdata >= m_p1 && wdata <= P2_MAX;
-      8'h1C: good = wdata <= 32'd15;
-      8'h20: good = wdata >= MIN_WIDTH && wdata <= MAX_WIDTH;
-      8'h24: good = wdata >= MIN_HEIGHT && wdata <= MAX_HEIGHT;
+      8'h10: good = w_data <= m_p2 && w_data <= 32'd255;
+      8'h14: good = w_data >= m_p1 && w_data <= P2_MAX;
+      8'h1C: good = w_data <= 32'd15;
+      8'h20: good = w_data >= MIN_WIDTH && w_data <= MAX_WIDTH;
+      8'h24: good = w_data >= MIN_HEIGHT && w_data <= MAX_HEIGHT;
       default: writable = 1'b0;
     endcase
-    if (wstrb != 4'hF) good = 1'b0;
+    if (w_strb != 4'hF) good = 1'b0;
   end
   // read-only registers of the map (uniqueness: not generated here)
-  wire read_only = awaddr == 8'h04 || awaddr == 8'h08 || awaddr == 8'h0C || awaddr == 8'h18 ||
-                   awaddr == 8'h28 || (awaddr >= 8'h30 && awaddr <= 8'h7C && awaddr[1:0] == 2'b00);
+  wire read_only = w_addr == 8'h04 || w_addr == 8'h08 || w_addr == 8'h0C || w_addr == 8'h18 ||
+                   w_addr == 8'h28 || (w_addr >= 8'h30 && w_addr <= 8'h7C && w_addr[1:0] == 2'b00);
 
   reg       b_check;  // the open write's response is classified
   reg [1:0] b_expect;
@@ -173,17 +187,17 @@ module control_props (
       m_p1 <= P1_INIT;
       m_p2 <= P2_INIT;
       m_lr <= LR_THRESHOLD_INIT;
-    end else if (aw_take && w_take) begin
-      b_check <= writable || read_only || wstrb != 4'hF;
+    end else if (w_taken) begin
+      b_check <= writable || read_only || w_strb != 4'hF;
       b_expect <= good ? OKAY : SLVERR;
       if (good)
-        case (awaddr)
-          8'h00: m_enable <= wdata[0];
-          8'h10: m_p1 <= wdata;
-          8'h14: m_p2 <= wdata;
-          8'h1C: m_lr <= wdata;
-          8'h20: m_width <= wdata;
-          8'h24: m_height <= wdata;
+        case (w_addr)
+          8'h00: m_enable <= w_data[0];
+          8'h10: m_p1 <= w_data;
+          8'h14: m_p2 <= w_data;
+          8'h1C: m_lr <= w_data;
+          8'h20: m_width <= w_data;
+          8'h24: m_height <= w_data;
           default: ;
         endcase
     end

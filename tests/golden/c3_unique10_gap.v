@@ -20,14 +20,14 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902819 = W*H*dmax/uf (1863000) + 39819
-// Latency without stalls from the first input handshake to the first output handshake: 39824 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902821 = W*H*dmax/uf (1863000) + 39821
+// Latency without stalls from the first input handshake to the first output handshake: 39826 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
-//   cost                                 0     1    1   cost, window, shd-window, dmax, uf
+//   cost                                 0     1    2   cost, window, shd-window, dmax, uf
 //   cost reorder                         0     0    1   uf
-//   aggregation                          1     0    4   paths, p1, p2, dmax, uf
+//   aggregation                          1     0    5   paths, p1, p2, dmax, uf
 //   LR1 match side                       0     0    0   lr
 //   winner-take-all with uniqueness      0     0    3   uniqueness
 //   disparity reorder                    1     1    0   lr
@@ -112,7 +112,7 @@ module fps_census7_d128u32_796e15_top (
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(1), .UNIQUENESS_INIT(10),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00796e15),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902819, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902821, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -285,7 +285,7 @@ module fps_census7_d128u32_796e15_sgm_core (
   wire [13:0] cost_raddr;
   wire [191:0] cost_q;
   fps_census7_d128u32_796e15_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(1), .COST_ROWS(2), .COST_K_W(1), .COST_AW(14),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_K_W(1), .COST_AW(14),
     .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -294,21 +294,22 @@ module fps_census7_d128u32_796e15_sgm_core (
     .cost_raddr(cost_raddr), .cost_q(cost_q));
 
   // Aggregation in K interleaved chains, from step AGG_START.
-  localparam AGG_START = 14930;
-  wire [319:0] sum4;
-  wire active4;
-  wire [10:0] x4;
-  wire [1:0] group4;
-  wire [1:0] slot4;
-  wire chain4;
+  localparam AGG_START = 14931;
+  wire [319:0] agg_sums;
+  wire agg_active;
+  wire [10:0] agg_x;
+  wire [1:0] agg_group;
+  wire [1:0] agg_slot;
+  wire agg_chain;
   fps_census7_d128u32_796e15_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_K_W(2), .COST_AW(14),
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),
-    .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
+    .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
+    .sums_slot(agg_slot));
 
   // LR1 match side: Dm(x') from the base side's sums.
   wire completed_we;
@@ -321,10 +322,10 @@ module fps_census7_d128u32_796e15_sgm_core (
     .K(2), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_K_W(2), .DISP_AW(13),
     .END_AW(4), .X_W(11), .G_W(2), .K_W(1)
   ) lr1_match (
-    .clk(clk), .adv(adv), .frame_width(frame_width), .sums(sum4), .active(active4), .x(x4), .group(group4),
-    .chain(chain4), .slot(slot4), .completed_we(completed_we), .completed_waddr(completed_waddr),
-    .completed_wdata(completed_wdata), .row_end_we(row_end_we), .row_end_waddr(row_end_waddr),
-    .row_end_wdata(row_end_wdata));
+    .clk(clk), .adv(adv), .frame_width(frame_width), .sums(agg_sums), .active(agg_active), .x(agg_x),
+    .group(agg_group), .chain(agg_chain), .slot(agg_slot), .completed_we(completed_we),
+    .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
+    .row_end_waddr(row_end_waddr), .row_end_wdata(row_end_wdata));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] wta_group;
@@ -335,11 +336,12 @@ module fps_census7_d128u32_796e15_sgm_core (
   fps_census7_d128u32_796e15_wta_unique #(
     .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
   ) wta (
-    .clk(clk), .restart(restart), .adv(adv), .sums(sum4), .group(group4), .tag({active4, x4, slot4}),
-    .uniqueness(uniqueness), .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}), .word(wta_word));
+    .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
+    .tag({agg_active, agg_x, agg_slot}), .uniqueness(uniqueness), .group_out(wta_group),
+    .tag_out({wta_active, wta_x, wta_slot}), .word(wta_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24873;
+  localparam OUT_START = 24875;
   /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
   wire read_event;
@@ -777,16 +779,30 @@ module fps_census7_d128u32_796e15_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time.
-  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid;
+  // ---- Writes: address and data together, one response at a time. A write is taken into
+  // registers and checked and applied in the next cycle, its response following it, so that no
+  // logic lies between the bus and the range checks.
+  reg         request;
+  reg [7:0]   request_addr;
+  reg [31:0]  v;
+  reg [3:0]   request_strb;
+  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
-  wire [31:0] v = s_axi_wdata;
+  always @(posedge clk)
+    if (rst) request <= 1'b0;
+    else request <= write;
+  always @(posedge clk)
+    if (write) begin
+      request_addr <= s_axi_awaddr;
+      v <= s_axi_wdata;
+      request_strb <= s_axi_wstrb;
+    end
   wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
   wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
   reg accepted;
   always @* begin
-    case (s_axi_awaddr)
+    case (request_addr)
       A_CONTROL:      accepted = 1'b1;
       // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
       A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
@@ -797,7 +813,7 @@ module fps_census7_d128u32_796e15_control #(
       A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase
-    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+    if (request_strb != 4'hF) accepted = 1'b0;
   end
 
   always @(posedge clk)
@@ -810,11 +826,11 @@ module fps_census7_d128u32_796e15_control #(
       p2_q <= P2_INIT[PATH_W-1:0];
       uniqueness_q <= UNIQUENESS_INIT[6:0];
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
-    end else if (write) begin
+    end else if (request) begin
       s_axi_bvalid <= 1'b1;
       s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
       if (accepted)
-        case (s_axi_awaddr)
+        case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
           A_P2:           p2_q <= v[PATH_W-1:0];
@@ -846,7 +862,7 @@ module fps_census7_d128u32_796e15_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (write && !accepted) rejected <= rejected + 1'b1;
+      if (request && !accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;
@@ -1426,7 +1442,9 @@ endmodule
 `default_nettype none
 // UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
 // of the codes; rank: absolute difference. Where the match pixel lies left of the image
-// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). One register stage.
+// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
+// then their sum and the border's COST_MAX.
 module fps_census7_d128u32_796e15_cost_lanes #(
   // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
   parameter HAMMING = 1,
@@ -1460,26 +1478,47 @@ module fps_census7_d128u32_796e15_cost_lanes #(
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
+  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
+  localparam CHUNKS = (CODE_W + 5) / 6;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
       wire [D_W-1:0]    d = group_base + l[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies left
+      // of the image.
+      reg  [PART_W-1:0] part;
+      reg               beyond;
       wire [COST_W-1:0] cost;
       if (HAMMING) begin : hamming
-        reg [COST_W-1:0] count;
-        integer b;
+        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
+        reg  [PART_W-1:0]   counts;
+        reg  [COST_W-1:0]   total;
+        integer k, b;
         always @* begin
-          count = 0;
-          for (b = 0; b < CODE_W; b = b + 1) count = count + {{(COST_W-1){1'b0}}, base_code[b] ^ m[b]};
+          for (k = 0; k < CHUNKS; k = k + 1) begin
+            counts[k*3 +: 3] = 3'd0;
+            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
+          end
+          total = 0;
+          for (k = 0; k < CHUNKS; k = k + 1) total = total + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
         end
-        assign cost = count;
+        always @(posedge clk)
+          if (en) part <= counts;
+        assign cost = total;
       end else begin : absolute_difference
         // rank values and costs have the same width
-        assign cost = base_code > m ? base_code - m : m - base_code;
+        always @(posedge clk)
+          if (en) part <= base_code > m ? base_code - m : m - base_code;
+        assign cost = part;
       end
       always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= (x_wide < d) ? COST_MAX[COST_W-1:0] : cost;
+        if (en) beyond <= x_wide < d;
+      // Step 2: the cost.
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;
     end
   endgenerate
 endmodule
@@ -1668,20 +1707,21 @@ module fps_census7_d128u32_796e15_aggregator #(
   input  wire                 agg_on,
   output wire [COST_AW-1:0]   cost_raddr,
   input  wire [UF*COST_W-1:0] cost_q,
-  // the sums of one group of one pixel (S4), and where they belong
-  output reg  [UF*SUM_W-1:0]  sum4,
-  output wire                 active4,
-  output wire [X_W-1:0]       x4,
-  output wire [G_W-1:0]       group4,
-  output wire [K_W-1:0]       chain4,
-  output wire [OUT_K_W-1:0]   slot4
+  // the sums of one group of one pixel (S5), and where they belong
+  output reg  [UF*SUM_W-1:0]  sums,
+  output wire                 sums_active,
+  output wire [X_W-1:0]       sums_x,
+  output wire [G_W-1:0]       sums_group,
+  output wire [K_W-1:0]       sums_chain,
+  output wire [OUT_K_W-1:0]   sums_slot
 );
+  localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_796e15_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
       fps_census7_d128u32_796e15_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
     end
-    if ((K - 1) * G < PATH_TREE_LAT + 1) begin : invalid_chains
+    if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_census7_d128u32_796e15_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
@@ -1759,21 +1799,24 @@ module fps_census7_d128u32_796e15_aggregator #(
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
-  // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
+  // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
+  // -> S5 (sums).
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
-  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
+  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
       tag2 <= {TAG_W{1'b0}};
       tag3 <= {TAG_W{1'b0}};
       tag4 <= {TAG_W{1'b0}};
+      tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
       tag1 <= tag0;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
+      tag5 <= tag4;
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
@@ -1795,11 +1838,11 @@ module fps_census7_d128u32_796e15_aggregator #(
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
-  wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
-  wire             active3 = `FPS_TAG_ACTIVE(tag3);
+  wire [X_W-1:0]   x4 = `FPS_TAG_X(tag4);
+  wire [G_W-1:0]   g4 = `FPS_TAG_GROUP(tag4);
+  wire             active4 = `FPS_TAG_ACTIVE(tag4);
   /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
+  wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
@@ -1818,7 +1861,7 @@ module fps_census7_d128u32_796e15_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_census7_d128u32_796e15_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag3), .out(tag_m));
+  fps_census7_d128u32_796e15_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1832,7 +1875,7 @@ module fps_census7_d128u32_796e15_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       fps_census7_d128u32_796e15_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active3), .waddr(`FPS_TAG_CHAIN(tag3) * G + g3), .wdata(path_0),
+        .clk(clk), .we(adv && active4), .waddr(`FPS_TAG_CHAIN(tag4) * G + g4), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
@@ -1863,7 +1906,7 @@ module fps_census7_d128u32_796e15_aggregator #(
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
       fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-        .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_45),
+        .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
       fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
@@ -1906,7 +1949,7 @@ module fps_census7_d128u32_796e15_aggregator #(
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
         fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-          .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_out),
+          .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
         fps_census7_d128u32_796e15_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
@@ -1937,7 +1980,7 @@ module fps_census7_d128u32_796e15_aggregator #(
     end
   endgenerate
 
-  // ---- Sum over the paths (S3 -> S4).
+  // ---- Sum over the paths (S4 -> S5).
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane_sum
@@ -1946,15 +1989,15 @@ module fps_census7_d128u32_796e15_aggregator #(
                          + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
       always @(posedge clk)
-        if (adv) sum4[l*SUM_W +: SUM_W] <= s;
+        if (adv) sums[l*SUM_W +: SUM_W] <= s;
     end
   endgenerate
 
-  assign active4 = `FPS_TAG_ACTIVE(tag4);
-  assign x4 = `FPS_TAG_X(tag4);
-  assign group4 = `FPS_TAG_GROUP(tag4);
-  assign chain4 = `FPS_TAG_CHAIN(tag4);
-  assign slot4 = `FPS_TAG_SLOT(tag4);
+  assign sums_active = `FPS_TAG_ACTIVE(tag5);
+  assign sums_x = `FPS_TAG_X(tag5);
+  assign sums_group = `FPS_TAG_GROUP(tag5);
+  assign sums_chain = `FPS_TAG_CHAIN(tag5);
+  assign sums_slot = `FPS_TAG_SLOT(tag5);
   // verilator lint_on WIDTH
 
   `undef FPS_TAG_ACTIVE
@@ -1972,7 +2015,8 @@ endmodule
 //   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
 // where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
+// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
+// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
 module fps_census7_d128u32_796e15_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
@@ -2002,22 +2046,39 @@ module fps_census7_d128u32_796e15_path_lanes #(
   wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
   wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
 
+  // Step 1 also keeps what step 2 needs besides the candidates.
+  reg [UF*COST_W-1:0] cost_q;
+  reg [PATH_W-1:0]    prev_min_q;
+  reg                 has_pred_q;
+  always @(posedge clk)
+    if (en) begin
+      cost_q <= cost;
+      prev_min_q <= prev_min;
+      has_pred_q <= has_pred;
+    end
+
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
-      wire [EXT_W-1:0] stay = same < jump ? same : jump;
+      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
+      reg  [EXT_W-1:0] neighbour, stay;
+      always @(posedge clk)
+        if (en) begin
+          neighbour <= (below < above ? below : above) + {1'b0, p1};
+          stay <= same < jump ? same : jump;
+        end
+      // Step 2: the best, and the path cost.
       wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
       // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
       /* verilator lint_on UNUSEDSIGNAL */
       always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
     end
   endgenerate
 endmodule
@@ -2857,8 +2918,18 @@ module fps_census7_d128u32_796e15_median_select #(
     end
   endfunction
 
-  // Count stage, first step: used words (the centre by its flag alone), the row counts of the
-  // used words besides the centre, the disparities.
+  // Count stage, first step: the window and its masks (compares with the frame size) registered.
+  reg [M*M*WORD_W-1:0] window_q;
+  reg [M-1:0]          row_valid_q, col_valid_q;
+  always @(posedge clk)
+    if (en) begin
+      window_q    <= window;
+      row_valid_q <= row_valid;
+      col_valid_q <= col_valid;
+    end
+
+  // Second step: used words (the centre by its flag alone), the row counts of the used words
+  // besides the centre, the disparities.
   wire [N-1:0]        used;
   wire [N-1:0]        used_besides_centre;
   wire [N*DISP_W-1:0] values;
@@ -2866,13 +2937,13 @@ module fps_census7_d128u32_796e15_median_select #(
   genvar e, s;
   generate
     for (e = 0; e < N; e = e + 1) begin : position
-      wire flag = window[e*WORD_W + DISP_W];
-      assign values[e*DISP_W +: DISP_W] = window[e*WORD_W +: DISP_W];
+      wire flag = window_q[e*WORD_W + DISP_W];
+      assign values[e*DISP_W +: DISP_W] = window_q[e*WORD_W +: DISP_W];
       if (e == CENTRE) begin : centre
         assign used[e] = !flag;
         assign used_besides_centre[e] = 1'b0;
       end else begin : neighbour
-        assign used[e] = row_valid[e / M] && col_valid[e % M] && !flag;
+        assign used[e] = row_valid_q[e / M] && col_valid_q[e % M] && !flag;
         assign used_besides_centre[e] = used[e];
       end
     end
@@ -2887,29 +2958,20 @@ module fps_census7_d128u32_796e15_median_select #(
       rows_cand_q    <= used;
       rows_others_q  <= row_counts(used_besides_centre);
       rows_values_q  <= values;
-      rows_invalid_q <= window[CENTRE*WORD_W + DISP_W];
+      rows_invalid_q <= window_q[CENTRE*WORD_W + DISP_W];
     end
 
-  // Count stage, second and third steps: the number of used words besides the centre, and the
-  // rank sought (a step of its own, so that the count stage takes as long as a bit stage).
-  reg [N-1:0]        sum_cand_q;
-  reg [CNT_W-1:0]    sum_others_q;
-  reg [N*DISP_W-1:0] sum_values_q;
-  reg                sum_invalid_q;
+  // Third step: the rank sought, half the used words besides the centre.
   reg [N-1:0]        count_cand_q;
   reg [CNT_W-1:0]    count_rank_q;
   reg [N*DISP_W-1:0] count_values_q;
   reg                count_invalid_q;
   always @(posedge clk)
     if (en) begin
-      sum_cand_q      <= rows_cand_q;
-      sum_others_q    <= sum_of_rows(rows_others_q);
-      sum_values_q    <= rows_values_q;
-      sum_invalid_q   <= rows_invalid_q;
-      count_cand_q    <= sum_cand_q;
-      count_rank_q    <= sum_others_q >> 1;
-      count_values_q  <= sum_values_q;
-      count_invalid_q <= sum_invalid_q;
+      count_cand_q    <= rows_cand_q;
+      count_rank_q    <= sum_of_rows(rows_others_q) >> 1;
+      count_values_q  <= rows_values_q;
+      count_invalid_q <= rows_invalid_q;
     end
 
   // Bit stages: stage s decides bit B = DISP_W-1-s and receives bits B .. 0 of every word, word i

@@ -20,15 +20,15 @@
 //
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887875 = W*H*dmax/uf (1863000) + 24875
-// Latency without stalls from the first input handshake to the first output handshake: 24880 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887876 = W*H*dmax/uf (1863000) + 24876
+// Latency without stalls from the first input handshake to the first output handshake: 24881 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
 //   cost                                 0     1    2   cost, window, shd-window, dmax, uf
 //   cost reorder                         0     0    1   uf
 //   LR2 match side                       0     0    0   lr, paths, p1, p2
-//   aggregation                          1     0    4   paths, p1, p2, dmax, uf
+//   aggregation                          1     0    5   paths, p1, p2, dmax, uf
 //   winner-take-all                      0     0    3   uniqueness
 //   disparity reorder                    2     1    0   lr
 //   left-right check                     0     0    1   lr, lr-threshold
@@ -110,7 +110,7 @@ module fps_sad5_d128u32_fa1add_top (
     .X_W(11), .Y_W(9), .PATH_W(13), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00fa1add),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887875, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887876, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -299,13 +299,13 @@ module fps_sad5_d128u32_fa1add_sgm_core (
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 9959;
-  wire [479:0] sum4;
-  wire active4;
-  wire [10:0] x4;
-  wire [1:0] group4;
-  wire [2:0] slot4;
+  wire [479:0] agg_sums;
+  wire agg_active;
+  wire [10:0] agg_x;
+  wire [1:0] agg_group;
+  wire [2:0] agg_slot;
   /* verilator lint_off UNUSEDSIGNAL */  // only LR1 follows the chains
-  wire chain4;
+  wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fa1add_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
@@ -313,8 +313,9 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sum4(sum4),
-    .active4(active4), .x4(x4), .group4(group4), .chain4(chain4), .slot4(slot4));
+    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
+    .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
+    .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] wta_group;
@@ -325,11 +326,12 @@ module fps_sad5_d128u32_fa1add_sgm_core (
   fps_sad5_d128u32_fa1add_wta #(
     .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
   ) wta (
-    .clk(clk), .restart(restart), .adv(adv), .sums(sum4), .group(group4), .tag({active4, x4, slot4}),
-    .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}), .word(wta_word));
+    .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
+    .tag({agg_active, agg_x, agg_slot}), .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}),
+    .word(wta_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24870;
+  localparam OUT_START = 24871;
   /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
   wire read_event;
@@ -739,16 +741,30 @@ module fps_sad5_d128u32_fa1add_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time.
-  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid;
+  // ---- Writes: address and data together, one response at a time. A write is taken into
+  // registers and checked and applied in the next cycle, its response following it, so that no
+  // logic lies between the bus and the range checks.
+  reg         request;
+  reg [7:0]   request_addr;
+  reg [31:0]  v;
+  reg [3:0]   request_strb;
+  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
-  wire [31:0] v = s_axi_wdata;
+  always @(posedge clk)
+    if (rst) request <= 1'b0;
+    else request <= write;
+  always @(posedge clk)
+    if (write) begin
+      request_addr <= s_axi_awaddr;
+      v <= s_axi_wdata;
+      request_strb <= s_axi_wstrb;
+    end
   wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
   wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
   reg accepted;
   always @* begin
-    case (s_axi_awaddr)
+    case (request_addr)
       A_CONTROL:      accepted = 1'b1;
       // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
       A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
@@ -759,7 +775,7 @@ module fps_sad5_d128u32_fa1add_control #(
       A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase
-    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+    if (request_strb != 4'hF) accepted = 1'b0;
   end
 
   always @(posedge clk)
@@ -772,11 +788,11 @@ module fps_sad5_d128u32_fa1add_control #(
       p2_q <= P2_INIT[PATH_W-1:0];
       uniqueness_q <= UNIQUENESS_INIT[6:0];
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
-    end else if (write) begin
+    end else if (request) begin
       s_axi_bvalid <= 1'b1;
       s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
       if (accepted)
-        case (s_axi_awaddr)
+        case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
           A_P2:           p2_q <= v[PATH_W-1:0];
@@ -808,7 +824,7 @@ module fps_sad5_d128u32_fa1add_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (write && !accepted) rejected <= rejected + 1'b1;
+      if (request && !accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;
@@ -1746,8 +1762,8 @@ module fps_sad5_d128u32_fa1add_lr2_match #(
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sum4(sums),
-    .active4(active), .x4(x), .group4(group), .chain4(chain), .slot4(slot));
+    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
+    .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
   wire              active_w;
   wire [X_W-1:0]    x_w;
   wire [OUT_K_W-1:0] slot_w;
@@ -1814,20 +1830,21 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   input  wire                 agg_on,
   output wire [COST_AW-1:0]   cost_raddr,
   input  wire [UF*COST_W-1:0] cost_q,
-  // the sums of one group of one pixel (S4), and where they belong
-  output reg  [UF*SUM_W-1:0]  sum4,
-  output wire                 active4,
-  output wire [X_W-1:0]       x4,
-  output wire [G_W-1:0]       group4,
-  output wire [K_W-1:0]       chain4,
-  output wire [OUT_K_W-1:0]   slot4
+  // the sums of one group of one pixel (S5), and where they belong
+  output reg  [UF*SUM_W-1:0]  sums,
+  output wire                 sums_active,
+  output wire [X_W-1:0]       sums_x,
+  output wire [G_W-1:0]       sums_group,
+  output wire [K_W-1:0]       sums_chain,
+  output wire [OUT_K_W-1:0]   sums_slot
 );
+  localparam LANES_LAT = 2;  // steps of fps_sad5_d128u32_fa1add_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
       fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
     end
-    if ((K - 1) * G < PATH_TREE_LAT + 1) begin : invalid_chains
+    if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_sad5_d128u32_fa1add_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
@@ -1905,21 +1922,24 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
-  // Tags travel with the data: S0 -> S1 -> S2 (compute) -> S3 (path costs) -> S4 (sums).
+  // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
+  // -> S5 (sums).
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
-  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4;
+  reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
       tag2 <= {TAG_W{1'b0}};
       tag3 <= {TAG_W{1'b0}};
       tag4 <= {TAG_W{1'b0}};
+      tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
       tag1 <= tag0;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
+      tag5 <= tag4;
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
@@ -1941,11 +1961,11 @@ module fps_sad5_d128u32_fa1add_aggregator #(
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  wire [X_W-1:0]   x3 = `FPS_TAG_X(tag3);
-  wire [G_W-1:0]   g3 = `FPS_TAG_GROUP(tag3);
-  wire             active3 = `FPS_TAG_ACTIVE(tag3);
+  wire [X_W-1:0]   x4 = `FPS_TAG_X(tag4);
+  wire [G_W-1:0]   g4 = `FPS_TAG_GROUP(tag4);
+  wire             active4 = `FPS_TAG_ACTIVE(tag4);
   /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr3 = x3 * G + g3;
+  wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
@@ -1964,7 +1984,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_sad5_d128u32_fa1add_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag3), .out(tag_m));
+  fps_sad5_d128u32_fa1add_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1978,7 +1998,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       fps_sad5_d128u32_fa1add_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active3), .waddr(`FPS_TAG_CHAIN(tag3) * G + g3), .wdata(path_0),
+        .clk(clk), .we(adv && active4), .waddr(`FPS_TAG_CHAIN(tag4) * G + g4), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
@@ -2009,7 +2029,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
       fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-        .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_45),
+        .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
       fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
@@ -2052,7 +2072,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
         fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-          .clk(clk), .we(adv && active3), .waddr(row_waddr3), .wdata(path_out),
+          .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
         fps_sad5_d128u32_fa1add_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
@@ -2083,7 +2103,7 @@ module fps_sad5_d128u32_fa1add_aggregator #(
     end
   endgenerate
 
-  // ---- Sum over the paths (S3 -> S4).
+  // ---- Sum over the paths (S4 -> S5).
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane_sum
@@ -2092,15 +2112,15 @@ module fps_sad5_d128u32_fa1add_aggregator #(
                          + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
       always @(posedge clk)
-        if (adv) sum4[l*SUM_W +: SUM_W] <= s;
+        if (adv) sums[l*SUM_W +: SUM_W] <= s;
     end
   endgenerate
 
-  assign active4 = `FPS_TAG_ACTIVE(tag4);
-  assign x4 = `FPS_TAG_X(tag4);
-  assign group4 = `FPS_TAG_GROUP(tag4);
-  assign chain4 = `FPS_TAG_CHAIN(tag4);
-  assign slot4 = `FPS_TAG_SLOT(tag4);
+  assign sums_active = `FPS_TAG_ACTIVE(tag5);
+  assign sums_x = `FPS_TAG_X(tag5);
+  assign sums_group = `FPS_TAG_GROUP(tag5);
+  assign sums_chain = `FPS_TAG_CHAIN(tag5);
+  assign sums_slot = `FPS_TAG_SLOT(tag5);
   // verilator lint_on WIDTH
 
   `undef FPS_TAG_ACTIVE
@@ -2260,7 +2280,8 @@ endmodule
 //   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
 // where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. One register stage.
+// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
+// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
 module fps_sad5_d128u32_fa1add_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
@@ -2290,22 +2311,39 @@ module fps_sad5_d128u32_fa1add_path_lanes #(
   wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
   wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
 
+  // Step 1 also keeps what step 2 needs besides the candidates.
+  reg [UF*COST_W-1:0] cost_q;
+  reg [PATH_W-1:0]    prev_min_q;
+  reg                 has_pred_q;
+  always @(posedge clk)
+    if (en) begin
+      cost_q <= cost;
+      prev_min_q <= prev_min;
+      has_pred_q <= has_pred;
+    end
+
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
       wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] neighbour = (below < above ? below : above) + {1'b0, p1};
-      wire [EXT_W-1:0] stay = same < jump ? same : jump;
+      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
+      reg  [EXT_W-1:0] neighbour, stay;
+      always @(posedge clk)
+        if (en) begin
+          neighbour <= (below < above ? below : above) + {1'b0, p1};
+          stay <= same < jump ? same : jump;
+        end
+      // Step 2: the best, and the path cost.
       wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost[l*COST_W +: COST_W]};
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
       // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
       /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min};
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
       /* verilator lint_on UNUSEDSIGNAL */
       always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
     end
   endgenerate
 endmodule

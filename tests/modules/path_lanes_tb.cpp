@@ -27,7 +27,7 @@ int run_path_lanes(const char* name, const PathLanesParams& p, const modtb::Opti
   modtb::Checker check(name);
   const uint64_t cmax = modtb::mask_of(p.COST_W), ones = modtb::mask_of(p.PATH_W);
   const uint64_t penalty_max = ones - cmax;
-  modtb::EnabledPipe<std::vector<uint64_t>> pipe(1);
+  modtb::EnabledPipe<std::vector<uint64_t>> pipe(2);
   std::vector<uint64_t> cost(p.UF), prev(p.UF), want(p.UF);
   uint64_t p1 = 0, p2 = 0;
   long enabled = 0, without_pred = 0, missing_neighbour = 0;
@@ -92,7 +92,7 @@ int run_path_lanes(const char* name, const PathLanesParams& p, const modtb::Opti
         check.expect(cycle, "lane " + std::to_string(l), (*w)[l], modtb::get_bits(m.path, l * p.PATH_W, p.PATH_W));
   }
   return check.finish("UF=" + std::to_string(p.UF) + " COST_W=" + std::to_string(p.COST_W) + " PATH_W=" +
-                      std::to_string(p.PATH_W) + ": L(d) per lane, latency 1, hold while en low; " +
+                      std::to_string(p.PATH_W) + ": L(d) per lane, latency 2, hold while en low; " +
                       std::to_string(o.cycles) + " cycles, " + std::to_string(enabled) + " enabled (" +
                       std::to_string(without_pred) + " without predecessor, " + std::to_string(missing_neighbour) +
                       " with a missing neighbour)");
