@@ -19,7 +19,9 @@ module fpstereo_code_window_cost #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter YS_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
+  parameter LAT = 3
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -117,7 +119,7 @@ module fpstereo_code_window_cost #(
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(0), .HAMMING(1), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W)) lanes (
+                               .COLSUM_W(COLSUM_W), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule

@@ -94,42 +94,45 @@ module fpstereo_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time. A write is taken into
-  // registers and checked and applied in the next cycle, its response following it, so that no
-  // logic lies between the bus and the range checks.
-  reg         request;
+  // ---- Writes: address and data together, one response at a time. A write is checked as it is
+  // taken and applied in the next cycle, its response following it, so that the range checks and
+  // the register updates lie in different cycles (no other write comes between them).
+  // the widest setting
+  localparam V_W = X_W > Y_W ? (X_W > PATH_W ? (X_W > 7 ? X_W : 7) : (PATH_W > 7 ? PATH_W : 7))
+                             : (Y_W > PATH_W ? (Y_W > 7 ? Y_W : 7) : (PATH_W > 7 ? PATH_W : 7));
+  reg         request, request_accepted;
   reg [7:0]   request_addr;
-  reg [31:0]  v;
-  reg [3:0]   request_strb;
+  reg [V_W-1:0] v;
   wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  wire [31:0] w = s_axi_wdata;
+  reg accepted;
+  always @* begin
+    case (s_axi_awaddr)
+      A_CONTROL:      accepted = 1'b1;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      A_P1:           accepted = w <= P1_MAX_V && w <= p2_now;
+      A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
+      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
+      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      default:        accepted = 1'b0;
+    endcase
+    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+  end
   always @(posedge clk)
     if (rst) request <= 1'b0;
     else request <= write;
   always @(posedge clk)
     if (write) begin
       request_addr <= s_axi_awaddr;
-      v <= s_axi_wdata;
-      request_strb <= s_axi_wstrb;
+      v <= s_axi_wdata[V_W-1:0];
+      request_accepted <= accepted;
     end
-  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
-  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
-  reg accepted;
-  always @* begin
-    case (request_addr)
-      A_CONTROL:      accepted = 1'b1;
-      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
-      A_P2:           accepted = v <= P2_MAX_V && v >= p1_now;
-      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && v <= 32'd99;
-      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && v <= 32'd15;
-      A_WIDTH:        accepted = v >= MIN_WIDTH_V && v <= MAX_WIDTH_V;
-      A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
-      default:        accepted = 1'b0;
-    endcase
-    if (request_strb != 4'hF) accepted = 1'b0;
-  end
 
   always @(posedge clk)
     if (rst) begin
@@ -143,8 +146,8 @@ module fpstereo_control #(
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
     end else if (request) begin
       s_axi_bvalid <= 1'b1;
-      s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
-      if (accepted)
+      s_axi_bresp <= request_accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
+      if (request_accepted)
         case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
@@ -177,7 +180,7 @@ module fpstereo_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (request && !accepted) rejected <= rejected + 1'b1;
+      if (request && !request_accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;

@@ -14,7 +14,9 @@ module fpstereo_cost_lanes #(
   parameter COST_MAX = 48,
   // bits of the group index and of the x coordinate
   parameter GROUP_W = 2,
-  parameter X_W = 11
+  parameter X_W = 11,
+  // the latency the instantiating stage plans with (checked: 2)
+  parameter LAT = 2
 ) (
   input  wire                 clk,
   input  wire                 en,
@@ -31,6 +33,9 @@ module fpstereo_cost_lanes #(
     end
     if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
       fpstereo_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+    end
+    if (LAT != 2) begin : invalid_LAT
+      fpstereo_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   // wide enough for x and for any disparity, plus one bit so both zero-extend

@@ -65,19 +65,34 @@ module fpstereo_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  // Whether the slot's column and the row lie inside the frame, as registers updated with the
-  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
-  // least one row and one column.
-  reg col_in, row_in;
+  // in_due is a register, set for the next step (the sequencer's enable depends on it), with
+  // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
+  // column 0 of row 0, inside every frame.
+  localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
+  localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
+  // The frame's last column and row as registers: the frame size holds from the cycle before
+  // step 0 (fpstereo_sequencer) to the frame's end.
+  reg  [X_W-1:0] last_col;
+  reg  [Y_W-1:0] last_row;
+  always @(posedge clk) begin
+    last_col <= frame_width - 1'b1;
+    last_row <= frame_height - 1'b1;
+  end
+  reg  col_in, row_in, in_due_q;
+  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
+  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin
       col_in <= 1'b1;
       row_in <= 1'b1;
-    end else if (shift) begin
-      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
-      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+      in_due_q <= G == 1;
+    end else if (adv) begin
+      col_in <= col_in_next;
+      row_in <= row_in_next;
+      in_due_q <= slot_end_next && col_in_next && row_in_next;
     end
-  assign in_due  = slot_end && col_in && row_in;
+  assign in_due  = in_due_q;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
@@ -90,6 +105,8 @@ module fpstereo_front_end #(
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
   // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   wire [X_W-1:0] centre_x;
   wire signed [YS_W-1:0] centre_y;
   wire [COST_K_W-1:0] centre_slot;
@@ -100,31 +117,37 @@ module fpstereo_front_end #(
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
-  reg  newest_in_row;
-  reg  signed [YS_W-1:0] newest_y;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      newest_in_row <= {1'b0, si} < width_x;
-      newest_y <= $signed({2'b00, ti}) - R_Y;
       transform_x <= window_x;
       transform_y <= window_y;
       transform_slot <= window_slot;
     end
 
-  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  wire [N-1:0] newest_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is newest_in_row
+  // The bounds of the window that forms in this shift are registered with its position, so that
+  // the compares with the frame size and the transform lie in different steps.
+  wire [N-1:0] centre_rows, centre_columns, newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own bound is si < width
   wire [N-1:0] newest_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
+    .col_valid(centre_columns));
   fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .x(centre_x), .y($signed({2'b00, ti}) - R_Y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(newest_unused_columns));
-  assign newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
+  reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
+  always @(posedge clk)
+    if (shift) begin
+      row_valid_q <= centre_rows;
+      col_valid_q <= centre_columns;
+      newest_row_valid_q <= {1'b0, si} < width_x ? newest_rows : {N{1'b0}};
+    end
+  assign row_valid = row_valid_q;
+  assign col_valid = col_valid_q;
+  assign newest_row_valid = newest_row_valid_q;
 endmodule
 `resetall

@@ -168,44 +168,27 @@ module fpstereo_median_select #(
       for (e = 0; e < N; e = e + 1) begin : position
         assign bit_here[e] = vals[e*(B+1) + B];
       end
-      reg [N-1:0]        cand_h;
-      reg [N-1:0]        bit_h;
-      reg [N*(B+1)-1:0]  vals_h;
-      reg [ROWS_W-1:0]   zeros_h;
-      reg [CNT_W-1:0]    rank_h;
-      reg [DISP_W-1:0]   upper_h;
-      reg                invalid_h;
+      // What the decision needs travels two steps beside the count: the rows' counts of the
+      // candidates with bit B = 0, then their sum.
+      localparam ALONG_W = 2 * N + N * (B + 1) + CNT_W + DISP_W + 1;
+      reg  [ALONG_W-1:0] along_h, along_z;
+      reg  [ROWS_W-1:0]  zeros_h;
+      reg  [CNT_W-1:0]   zeros;
       always @(posedge clk)
         if (en) begin
-          cand_h    <= cand;
-          bit_h     <= bit_here;
-          zeros_h   <= row_counts(cand & ~bit_here);
-          rank_h    <= rank;
-          vals_h    <= vals;
-          upper_h   <= upper;
-          invalid_h <= invalid;
+          along_h <= {cand, bit_here, vals, rank, upper, invalid};
+          zeros_h <= row_counts(cand & ~bit_here);
+          along_z <= along_h;
+          zeros   <= sum_of_rows(zeros_h);
         end
-
-      // The sum of the rows' counts, registered before the decision.
       /* verilator lint_off UNUSEDSIGNAL */  // the last stage needs only the decision
-      reg [N-1:0]        cand_z;
-      reg [N-1:0]        bit_z;
-      reg [N*(B+1)-1:0]  vals_z;
+      wire [N-1:0]       cand_z, bit_z;
+      wire [N*(B+1)-1:0] vals_z;
       /* verilator lint_on UNUSEDSIGNAL */
-      reg [CNT_W-1:0]    zeros;
-      reg [CNT_W-1:0]    rank_z;
-      reg [DISP_W-1:0]   upper_z;
-      reg                invalid_z;
-      always @(posedge clk)
-        if (en) begin
-          cand_z    <= cand_h;
-          bit_z     <= bit_h;
-          zeros     <= sum_of_rows(zeros_h);
-          rank_z    <= rank_h;
-          vals_z    <= vals_h;
-          upper_z   <= upper_h;
-          invalid_z <= invalid_h;
-        end
+      wire [CNT_W-1:0]   rank_z;
+      wire [DISP_W-1:0]  upper_z;
+      wire               invalid_z;
+      assign {cand_z, bit_z, vals_z, rank_z, upper_z, invalid_z} = along_z;
 
       wire              high = rank_z >= zeros;
       localparam [DISP_W-1:0] BIT = 1 << B;

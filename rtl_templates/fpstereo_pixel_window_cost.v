@@ -19,7 +19,9 @@ module fpstereo_pixel_window_cost #(
   parameter COST_K_W = 1,
   parameter X_W = 7,
   parameter YS_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
+  parameter LAT = 3
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -95,7 +97,7 @@ module fpstereo_pixel_window_cost #(
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
+                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule

@@ -15,7 +15,9 @@ module fpstereo_point_cost #(
   parameter COST_K_W = 1,
   parameter X_W = 7,
   parameter YS_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // the cost lanes' latency the stage plans with (fpstereo_cost_lanes checks it)
+  parameter LAT = 2
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -50,7 +52,7 @@ module fpstereo_point_cost #(
   fpstereo_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match), .view(match_lanes));
   fpstereo_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W)) lanes (
+                        .GROUP_W(G_W), .X_W(X_W), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
     .x(history_x), .costs(costs));
 endmodule

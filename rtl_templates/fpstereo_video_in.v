@@ -74,10 +74,12 @@ module fpstereo_video_in #(
   wire skip_left = state == SEEK && left_valid && !left_user;
   wire skip_right = state == SEEK && right_valid && !right_user;
   // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  // The comparison is a register, made with the counts it will see (the frame height changes
+  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
   reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] left_rows_next, right_rows_next;
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
-  wire left_stale = left_rows + half <= right_rows;
-  wire right_stale = right_rows + half <= left_rows;
+  reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
@@ -118,14 +120,17 @@ module fpstereo_video_in #(
     end
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
-  always @(posedge clk)
-    if (rst || core_start || drop) begin
-      left_rows <= 0;
-      right_rows <= 0;
-    end else begin
-      if (skip_left && left_last && left_rows != ROWS_MAX) left_rows <= left_rows + 1'b1;
-      if (skip_right && right_last && right_rows != ROWS_MAX) right_rows <= right_rows + 1'b1;
-    end
+  wire restart_rows = rst || core_start || drop;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  always @(posedge clk) begin
+    left_rows <= left_rows_next;
+    right_rows <= right_rows_next;
+    left_stale <= !rst && left_rows_next + half <= right_rows_next;
+    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+  end
 
   always @(posedge clk)
     if (rst || core_start) begin

@@ -49,8 +49,18 @@ std::string unused_unless(bool used, const std::string& declarations, const std:
   return used ? declarations : maybe_unused(declarations, why);
 }
 
-std::string start_localparam(const RtlDesign& d, const Stage& stage) {
-  return fmt::format("  localparam {} = {};\n", stage.start_parameter(), d.start_steps.at(stage.start_parameter()));
+// The stage's first step as a localparam, and `flag`, a register high from that step on (a
+// compare with the step counter would lie on the path to every enable the flag gates).
+std::string start_flag(const RtlDesign& d, const Stage& stage, const std::string& flag) {
+  const std::string start = stage.start_parameter();
+  const int64_t step = d.start_steps.at(start);
+  return fmt::format(
+      "  localparam {0} = {1};\n"
+      "  reg {2};\n"
+      "  always @(posedge clk)\n"
+      "    if (restart) {2} <= 1'b{3};\n"
+      "    else if (adv && step == {0} - 1) {2} <= 1'b1;\n",
+      start, step, flag, step == 0 ? 1 : 0);
 }
 
 // The ports every stage module has: the clock, the frame's restart and the pipeline's advance,
@@ -297,7 +307,8 @@ class CostStage : public Stage {
     Values common = {{"DMAX", num(c.dmax)},          {"UF", num(c.uf)},
                      {"COST_W", num(w.cost)},        {"COST_MAX", num(int64_t(w.cost_max))},
                      {"COST_K_W", num(d.cost_row_bits)}, {"X_W", num(d.x_bits)},
-                     {"YS_W", num(d.signed_y_bits)}, {"G_W", num(d.group_bits)}};
+                     {"YS_W", num(d.signed_y_bits)}, {"G_W", num(d.group_bits)},
+                     {"LAT", num(d.cost_latency)}};
     Values ports = {{"clk", "clk"}, {"adv", "adv"}, {"slot_end", "slot_end"}, {"shift", "shift"}, {"group", "group"}};
     Values position = {{"transform_x", "transform_x"},   {"transform_y", "transform_y"},
                        {"transform_slot", "transform_slot"}, {"history_x", "history_x"},
@@ -474,14 +485,14 @@ class AggregationStage : public Stage {
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     std::string v = "\n  // Aggregation in K interleaved chains, from step AGG_START.\n" +
-                    start_localparam(d, *this) +
+                    start_flag(d, *this, "agg_on") +
                     wire(d.cfg.uf * d.widths.aggregated, "agg_sums") + wire(1, "agg_active") + wire(d.x_bits, "agg_x") +
                     wire(d.group_bits, "agg_group") + wire(d.out_row_bits, "agg_slot");
     v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "agg_chain"), "only LR1 follows the chains");
     return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + Values{{"MATCH_SIDE", "0"}},
                         frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
-                         {"agg_on", "step >= AGG_START"},
+                         {"agg_on", "agg_on"},
                          {"cost_raddr", "cost_raddr"},
                          {"cost_q", "cost_q"},
                          {"sums", "agg_sums"},
@@ -599,9 +610,9 @@ class Lr2MatchStage : public Stage {
                                          {"DISP_AW", num(d.disp_addr_bits)},
                                          {"LANE_W", num(d.lane_bits)}});
     return "\n  // LR2 match side: second cost volume, aggregation and winner-take-all.\n" +
-           start_localparam(d, *this) + completed_wires(d) +
+           start_flag(d, *this, "match_on") + completed_wires(d) +
            instance("fpstereo_lr2_match", "lr2_match", parameters,
-                    frame_ports() + Values{{"match_on", "step >= MATCH_START"},
+                    frame_ports() + Values{{"match_on", "match_on"},
                                           {"p1", "p1"},
                      {"p2", "p2"},
                      {"cost_valid", "cost_valid"},
@@ -705,7 +716,7 @@ class DisparityReorderStage : public Stage {
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     stream = {"read_done", "read_event", "read_x", "read_y", "read_word"};
     return "\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n" +
-           start_localparam(d, *this) + stream_wires(d, stream) +
+           start_flag(d, *this, "out_on") + stream_wires(d, stream) +
            unused_unless(d.cfg.lr != LrCheck::None, wire(d.out_row_bits, "read_slot_row"), "the left-right check reads with it") +
            instance("fpstereo_disparity_reorder", "disparity_reorder",
                     {{"ROW_SLOTS", num(d.row_slots)},
@@ -721,7 +732,7 @@ class DisparityReorderStage : public Stage {
                     {{"clk", "clk"},
                      {"restart", "restart"},
                      {"adv", "adv"},
-                     {"out_on", "step >= OUT_START"},
+                     {"out_on", "out_on"},
                      {"frame_width", "frame_width"},
                      {"frame_height", "frame_height"},
                      {"active", "wta_active"},

@@ -264,7 +264,7 @@ module fps_census7_d128u32_816da4_sgm_core (
   wire [191:0] costs;
   fps_census7_d128u32_816da4_point_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_K_W(1), .X_W(11),
-    .YS_W(11), .G_W(2)
+    .YS_W(11), .G_W(2), .LAT(2)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .code_base(code_base),
     .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
@@ -291,6 +291,10 @@ module fps_census7_d128u32_816da4_sgm_core (
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 14931;
+  reg agg_on;
+  always @(posedge clk)
+    if (restart) agg_on <= 1'b0;
+    else if (adv && step == AGG_START - 1) agg_on <= 1'b1;
   wire [319:0] agg_sums;
   wire agg_active;
   wire [10:0] agg_x;
@@ -305,7 +309,7 @@ module fps_census7_d128u32_816da4_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
+    .p2(p2), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
     .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
     .sums_slot(agg_slot));
 
@@ -324,6 +328,10 @@ module fps_census7_d128u32_816da4_sgm_core (
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
   localparam OUT_START = 19907;
+  reg out_on;
+  always @(posedge clk)
+    if (restart) out_on <= 1'b0;
+    else if (adv && step == OUT_START - 1) out_on <= 1'b1;
   /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
   wire read_event;
@@ -338,7 +346,7 @@ module fps_census7_d128u32_816da4_sgm_core (
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(3), .OUT_K_W(2), .DISP_AW(12), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
-    .clk(clk), .restart(restart), .adv(adv), .out_on(step >= OUT_START), .frame_width(frame_width),
+    .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .frame_width(frame_width),
     .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
     .word(wta_word), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
     .read_slot_row(read_slot_row), .read_word(read_word));
@@ -562,10 +570,12 @@ module fps_census7_d128u32_816da4_video_in #(
   wire skip_left = state == SEEK && left_valid && !left_user;
   wire skip_right = state == SEEK && right_valid && !right_user;
   // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  // The comparison is a register, made with the counts it will see (the frame height changes
+  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
   reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] left_rows_next, right_rows_next;
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
-  wire left_stale = left_rows + half <= right_rows;
-  wire right_stale = right_rows + half <= left_rows;
+  reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
@@ -606,14 +616,17 @@ module fps_census7_d128u32_816da4_video_in #(
     end
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
-  always @(posedge clk)
-    if (rst || core_start || drop) begin
-      left_rows <= 0;
-      right_rows <= 0;
-    end else begin
-      if (skip_left && left_last && left_rows != ROWS_MAX) left_rows <= left_rows + 1'b1;
-      if (skip_right && right_last && right_rows != ROWS_MAX) right_rows <= right_rows + 1'b1;
-    end
+  wire restart_rows = rst || core_start || drop;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  always @(posedge clk) begin
+    left_rows <= left_rows_next;
+    right_rows <= right_rows_next;
+    left_stale <= !rst && left_rows_next + half <= right_rows_next;
+    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+  end
 
   always @(posedge clk)
     if (rst || core_start) begin
@@ -730,42 +743,45 @@ module fps_census7_d128u32_816da4_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time. A write is taken into
-  // registers and checked and applied in the next cycle, its response following it, so that no
-  // logic lies between the bus and the range checks.
-  reg         request;
+  // ---- Writes: address and data together, one response at a time. A write is checked as it is
+  // taken and applied in the next cycle, its response following it, so that the range checks and
+  // the register updates lie in different cycles (no other write comes between them).
+  // the widest setting
+  localparam V_W = X_W > Y_W ? (X_W > PATH_W ? (X_W > 7 ? X_W : 7) : (PATH_W > 7 ? PATH_W : 7))
+                             : (Y_W > PATH_W ? (Y_W > 7 ? Y_W : 7) : (PATH_W > 7 ? PATH_W : 7));
+  reg         request, request_accepted;
   reg [7:0]   request_addr;
-  reg [31:0]  v;
-  reg [3:0]   request_strb;
+  reg [V_W-1:0] v;
   wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  wire [31:0] w = s_axi_wdata;
+  reg accepted;
+  always @* begin
+    case (s_axi_awaddr)
+      A_CONTROL:      accepted = 1'b1;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      A_P1:           accepted = w <= P1_MAX_V && w <= p2_now;
+      A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
+      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
+      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      default:        accepted = 1'b0;
+    endcase
+    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+  end
   always @(posedge clk)
     if (rst) request <= 1'b0;
     else request <= write;
   always @(posedge clk)
     if (write) begin
       request_addr <= s_axi_awaddr;
-      v <= s_axi_wdata;
-      request_strb <= s_axi_wstrb;
+      v <= s_axi_wdata[V_W-1:0];
+      request_accepted <= accepted;
     end
-  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
-  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
-  reg accepted;
-  always @* begin
-    case (request_addr)
-      A_CONTROL:      accepted = 1'b1;
-      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
-      A_P2:           accepted = v <= P2_MAX_V && v >= p1_now;
-      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && v <= 32'd99;
-      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && v <= 32'd15;
-      A_WIDTH:        accepted = v >= MIN_WIDTH_V && v <= MAX_WIDTH_V;
-      A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
-      default:        accepted = 1'b0;
-    endcase
-    if (request_strb != 4'hF) accepted = 1'b0;
-  end
 
   always @(posedge clk)
     if (rst) begin
@@ -779,8 +795,8 @@ module fps_census7_d128u32_816da4_control #(
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
     end else if (request) begin
       s_axi_bvalid <= 1'b1;
-      s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
-      if (accepted)
+      s_axi_bresp <= request_accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
+      if (request_accepted)
         case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
@@ -813,7 +829,7 @@ module fps_census7_d128u32_816da4_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (request && !accepted) rejected <= rejected + 1'b1;
+      if (request && !request_accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;
@@ -924,19 +940,34 @@ module fps_census7_d128u32_816da4_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  // Whether the slot's column and the row lie inside the frame, as registers updated with the
-  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
-  // least one row and one column.
-  reg col_in, row_in;
+  // in_due is a register, set for the next step (the sequencer's enable depends on it), with
+  // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
+  // column 0 of row 0, inside every frame.
+  localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
+  localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
+  // The frame's last column and row as registers: the frame size holds from the cycle before
+  // step 0 (fps_census7_d128u32_816da4_sequencer) to the frame's end.
+  reg  [X_W-1:0] last_col;
+  reg  [Y_W-1:0] last_row;
+  always @(posedge clk) begin
+    last_col <= frame_width - 1'b1;
+    last_row <= frame_height - 1'b1;
+  end
+  reg  col_in, row_in, in_due_q;
+  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
+  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin
       col_in <= 1'b1;
       row_in <= 1'b1;
-    end else if (shift) begin
-      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
-      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+      in_due_q <= G == 1;
+    end else if (adv) begin
+      col_in <= col_in_next;
+      row_in <= row_in_next;
+      in_due_q <= slot_end_next && col_in_next && row_in_next;
     end
-  assign in_due  = slot_end && col_in && row_in;
+  assign in_due  = in_due_q;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
@@ -949,6 +980,8 @@ module fps_census7_d128u32_816da4_front_end #(
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
   // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   wire [X_W-1:0] centre_x;
   wire signed [YS_W-1:0] centre_y;
   wire [COST_K_W-1:0] centre_slot;
@@ -959,32 +992,38 @@ module fps_census7_d128u32_816da4_front_end #(
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
-  reg  newest_in_row;
-  reg  signed [YS_W-1:0] newest_y;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      newest_in_row <= {1'b0, si} < width_x;
-      newest_y <= $signed({2'b00, ti}) - R_Y;
       transform_x <= window_x;
       transform_y <= window_y;
       transform_slot <= window_slot;
     end
 
-  fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  wire [N-1:0] newest_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is newest_in_row
+  // The bounds of the window that forms in this shift are registered with its position, so that
+  // the compares with the frame size and the transform lie in different steps.
+  wire [N-1:0] centre_rows, centre_columns, newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own bound is si < width
   wire [N-1:0] newest_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
+  fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
+    .col_valid(centre_columns));
   fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .x(centre_x), .y($signed({2'b00, ti}) - R_Y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(newest_unused_columns));
-  assign newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
+  reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
+  always @(posedge clk)
+    if (shift) begin
+      row_valid_q <= centre_rows;
+      col_valid_q <= centre_columns;
+      newest_row_valid_q <= {1'b0, si} < width_x ? newest_rows : {N{1'b0}};
+    end
+  assign row_valid = row_valid_q;
+  assign col_valid = col_valid_q;
+  assign newest_row_valid = newest_row_valid_q;
 endmodule
 `resetall
 
@@ -1300,7 +1339,9 @@ module fps_census7_d128u32_816da4_point_cost #(
   parameter COST_K_W = 1,
   parameter X_W = 7,
   parameter YS_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // the cost lanes' latency the stage plans with (fps_census7_d128u32_816da4_cost_lanes checks it)
+  parameter LAT = 2
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -1335,7 +1376,7 @@ module fps_census7_d128u32_816da4_point_cost #(
   fps_census7_d128u32_816da4_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match), .view(match_lanes));
   fps_census7_d128u32_816da4_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W)) lanes (
+                        .GROUP_W(G_W), .X_W(X_W), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
     .x(history_x), .costs(costs));
 endmodule
@@ -1405,7 +1446,9 @@ module fps_census7_d128u32_816da4_cost_lanes #(
   parameter COST_MAX = 48,
   // bits of the group index and of the x coordinate
   parameter GROUP_W = 2,
-  parameter X_W = 11
+  parameter X_W = 11,
+  // the latency the instantiating stage plans with (checked: 2)
+  parameter LAT = 2
 ) (
   input  wire                 clk,
   input  wire                 en,
@@ -1422,6 +1465,9 @@ module fps_census7_d128u32_816da4_cost_lanes #(
     end
     if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
       fps_census7_d128u32_816da4_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+    end
+    if (LAT != 2) begin : invalid_LAT
+      fps_census7_d128u32_816da4_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   // wide enough for x and for any disparity, plus one bit so both zero-extend
@@ -2613,44 +2659,27 @@ module fps_census7_d128u32_816da4_median_select #(
       for (e = 0; e < N; e = e + 1) begin : position
         assign bit_here[e] = vals[e*(B+1) + B];
       end
-      reg [N-1:0]        cand_h;
-      reg [N-1:0]        bit_h;
-      reg [N*(B+1)-1:0]  vals_h;
-      reg [ROWS_W-1:0]   zeros_h;
-      reg [CNT_W-1:0]    rank_h;
-      reg [DISP_W-1:0]   upper_h;
-      reg                invalid_h;
+      // What the decision needs travels two steps beside the count: the rows' counts of the
+      // candidates with bit B = 0, then their sum.
+      localparam ALONG_W = 2 * N + N * (B + 1) + CNT_W + DISP_W + 1;
+      reg  [ALONG_W-1:0] along_h, along_z;
+      reg  [ROWS_W-1:0]  zeros_h;
+      reg  [CNT_W-1:0]   zeros;
       always @(posedge clk)
         if (en) begin
-          cand_h    <= cand;
-          bit_h     <= bit_here;
-          zeros_h   <= row_counts(cand & ~bit_here);
-          rank_h    <= rank;
-          vals_h    <= vals;
-          upper_h   <= upper;
-          invalid_h <= invalid;
+          along_h <= {cand, bit_here, vals, rank, upper, invalid};
+          zeros_h <= row_counts(cand & ~bit_here);
+          along_z <= along_h;
+          zeros   <= sum_of_rows(zeros_h);
         end
-
-      // The sum of the rows' counts, registered before the decision.
       /* verilator lint_off UNUSEDSIGNAL */  // the last stage needs only the decision
-      reg [N-1:0]        cand_z;
-      reg [N-1:0]        bit_z;
-      reg [N*(B+1)-1:0]  vals_z;
+      wire [N-1:0]       cand_z, bit_z;
+      wire [N*(B+1)-1:0] vals_z;
       /* verilator lint_on UNUSEDSIGNAL */
-      reg [CNT_W-1:0]    zeros;
-      reg [CNT_W-1:0]    rank_z;
-      reg [DISP_W-1:0]   upper_z;
-      reg                invalid_z;
-      always @(posedge clk)
-        if (en) begin
-          cand_z    <= cand_h;
-          bit_z     <= bit_h;
-          zeros     <= sum_of_rows(zeros_h);
-          rank_z    <= rank_h;
-          vals_z    <= vals_h;
-          upper_z   <= upper_h;
-          invalid_z <= invalid_h;
-        end
+      wire [CNT_W-1:0]   rank_z;
+      wire [DISP_W-1:0]  upper_z;
+      wire               invalid_z;
+      assign {cand_z, bit_z, vals_z, rank_z, upper_z, invalid_z} = along_z;
 
       wire              high = rank_z >= zeros;
       localparam [DISP_W-1:0] BIT = 1 << B;

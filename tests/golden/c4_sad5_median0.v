@@ -20,12 +20,12 @@
 //
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887876 = W*H*dmax/uf (1863000) + 24876
-// Latency without stalls from the first input handshake to the first output handshake: 24881 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1887877 = W*H*dmax/uf (1863000) + 24877
+// Latency without stalls from the first input handshake to the first output handshake: 24882 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
-//   cost                                 0     1    2   cost, window, shd-window, dmax, uf
+//   cost                                 0     1    3   cost, window, shd-window, dmax, uf
 //   cost reorder                         0     0    1   uf
 //   LR2 match side                       0     0    0   lr, paths, p1, p2
 //   aggregation                          1     0    5   paths, p1, p2, dmax, uf
@@ -110,7 +110,7 @@ module fps_sad5_d128u32_fa1add_top (
     .X_W(11), .Y_W(9), .PATH_W(13), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00fa1add),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887876, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1887877, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -257,7 +257,7 @@ module fps_sad5_d128u32_fa1add_sgm_core (
   wire [415:0] costs;
   fps_sad5_d128u32_fa1add_pixel_window_cost #(
     .N(5), .ZERO_MEAN(0), .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
-    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2)
+    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .LAT(3)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
@@ -273,7 +273,7 @@ module fps_sad5_d128u32_fa1add_sgm_core (
   wire [13:0] cost_raddr;
   wire [415:0] cost_q;
   fps_sad5_d128u32_fa1add_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(2), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(3), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
     .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -282,7 +282,11 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .cost_raddr(cost_raddr), .cost_q(cost_q));
 
   // LR2 match side: second cost volume, aggregation and winner-take-all.
-  localparam MATCH_START = 10479;
+  localparam MATCH_START = 10480;
+  reg match_on;
+  always @(posedge clk)
+    if (restart) match_on <= 1'b0;
+    else if (adv && step == MATCH_START - 1) match_on <= 1'b1;
   wire completed_we;
   wire [12:0] completed_waddr;
   wire [6:0] completed_wdata;
@@ -293,12 +297,16 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .match_on(step >= MATCH_START), .p1(p1), .p2(p2), .cost_valid(cost_valid), .cost_x(cost_x),
+    .match_on(match_on), .p1(p1), .p2(p2), .cost_valid(cost_valid), .cost_x(cost_x),
     .cost_row_slot(cost_row_slot), .cost_group(cost_group), .costs(costs), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata));
 
   // Aggregation in K interleaved chains, from step AGG_START.
-  localparam AGG_START = 9959;
+  localparam AGG_START = 9960;
+  reg agg_on;
+  always @(posedge clk)
+    if (restart) agg_on <= 1'b0;
+    else if (adv && step == AGG_START - 1) agg_on <= 1'b1;
   wire [479:0] agg_sums;
   wire agg_active;
   wire [10:0] agg_x;
@@ -313,7 +321,7 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(step >= AGG_START), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
+    .p2(p2), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
     .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
     .sums_slot(agg_slot));
 
@@ -331,7 +339,11 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .word(wta_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24871;
+  localparam OUT_START = 24872;
+  reg out_on;
+  always @(posedge clk)
+    if (restart) out_on <= 1'b0;
+    else if (adv && step == OUT_START - 1) out_on <= 1'b1;
   /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
   wire read_event;
@@ -344,7 +356,7 @@ module fps_sad5_d128u32_fa1add_sgm_core (
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_K_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
-    .clk(clk), .restart(restart), .adv(adv), .out_on(step >= OUT_START), .frame_width(frame_width),
+    .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .frame_width(frame_width),
     .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
     .word(wta_word), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
     .read_slot_row(read_slot_row), .read_word(read_word));
@@ -573,10 +585,12 @@ module fps_sad5_d128u32_fa1add_video_in #(
   wire skip_left = state == SEEK && left_valid && !left_user;
   wire skip_right = state == SEEK && right_valid && !right_user;
   // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  // The comparison is a register, made with the counts it will see (the frame height changes
+  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
   reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] left_rows_next, right_rows_next;
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
-  wire left_stale = left_rows + half <= right_rows;
-  wire right_stale = right_rows + half <= left_rows;
+  reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
@@ -617,14 +631,17 @@ module fps_sad5_d128u32_fa1add_video_in #(
     end
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
-  always @(posedge clk)
-    if (rst || core_start || drop) begin
-      left_rows <= 0;
-      right_rows <= 0;
-    end else begin
-      if (skip_left && left_last && left_rows != ROWS_MAX) left_rows <= left_rows + 1'b1;
-      if (skip_right && right_last && right_rows != ROWS_MAX) right_rows <= right_rows + 1'b1;
-    end
+  wire restart_rows = rst || core_start || drop;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
+                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  always @(posedge clk) begin
+    left_rows <= left_rows_next;
+    right_rows <= right_rows_next;
+    left_stale <= !rst && left_rows_next + half <= right_rows_next;
+    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+  end
 
   always @(posedge clk)
     if (rst || core_start) begin
@@ -741,42 +758,45 @@ module fps_sad5_d128u32_fa1add_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time. A write is taken into
-  // registers and checked and applied in the next cycle, its response following it, so that no
-  // logic lies between the bus and the range checks.
-  reg         request;
+  // ---- Writes: address and data together, one response at a time. A write is checked as it is
+  // taken and applied in the next cycle, its response following it, so that the range checks and
+  // the register updates lie in different cycles (no other write comes between them).
+  // the widest setting
+  localparam V_W = X_W > Y_W ? (X_W > PATH_W ? (X_W > 7 ? X_W : 7) : (PATH_W > 7 ? PATH_W : 7))
+                             : (Y_W > PATH_W ? (Y_W > 7 ? Y_W : 7) : (PATH_W > 7 ? PATH_W : 7));
+  reg         request, request_accepted;
   reg [7:0]   request_addr;
-  reg [31:0]  v;
-  reg [3:0]   request_strb;
+  reg [V_W-1:0] v;
   wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  wire [31:0] w = s_axi_wdata;
+  reg accepted;
+  always @* begin
+    case (s_axi_awaddr)
+      A_CONTROL:      accepted = 1'b1;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      A_P1:           accepted = w <= P1_MAX_V && w <= p2_now;
+      A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
+      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
+      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      default:        accepted = 1'b0;
+    endcase
+    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
+  end
   always @(posedge clk)
     if (rst) request <= 1'b0;
     else request <= write;
   always @(posedge clk)
     if (write) begin
       request_addr <= s_axi_awaddr;
-      v <= s_axi_wdata;
-      request_strb <= s_axi_wstrb;
+      v <= s_axi_wdata[V_W-1:0];
+      request_accepted <= accepted;
     end
-  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
-  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
-  reg accepted;
-  always @* begin
-    case (request_addr)
-      A_CONTROL:      accepted = 1'b1;
-      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           accepted = v <= P1_MAX_V && v <= p2_now;
-      A_P2:           accepted = v <= P2_MAX_V && v >= p1_now;
-      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && v <= 32'd99;
-      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && v <= 32'd15;
-      A_WIDTH:        accepted = v >= MIN_WIDTH_V && v <= MAX_WIDTH_V;
-      A_HEIGHT:       accepted = v >= MIN_HEIGHT_V && v <= MAX_HEIGHT_V;
-      default:        accepted = 1'b0;
-    endcase
-    if (request_strb != 4'hF) accepted = 1'b0;
-  end
 
   always @(posedge clk)
     if (rst) begin
@@ -790,8 +810,8 @@ module fps_sad5_d128u32_fa1add_control #(
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
     end else if (request) begin
       s_axi_bvalid <= 1'b1;
-      s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
-      if (accepted)
+      s_axi_bresp <= request_accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
+      if (request_accepted)
         case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
@@ -824,7 +844,7 @@ module fps_sad5_d128u32_fa1add_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (request && !accepted) rejected <= rejected + 1'b1;
+      if (request && !request_accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;
@@ -935,19 +955,34 @@ module fps_sad5_d128u32_fa1add_front_end #(
                             .K_W(COST_K_W))
     input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
                     .slot_end(slot_end));
-  // Whether the slot's column and the row lie inside the frame, as registers updated with the
-  // counter (the sequencer's enable depends on in_due): both start inside, and a frame has at
-  // least one row and one column.
-  reg col_in, row_in;
+  // in_due is a register, set for the next step (the sequencer's enable depends on it), with
+  // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
+  // column 0 of row 0, inside every frame.
+  localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
+  localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
+  // The frame's last column and row as registers: the frame size holds from the cycle before
+  // step 0 (fps_sad5_d128u32_fa1add_sequencer) to the frame's end.
+  reg  [X_W-1:0] last_col;
+  reg  [Y_W-1:0] last_row;
+  always @(posedge clk) begin
+    last_col <= frame_width - 1'b1;
+    last_row <= frame_height - 1'b1;
+  end
+  reg  col_in, row_in, in_due_q;
+  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
+  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin
       col_in <= 1'b1;
       row_in <= 1'b1;
-    end else if (shift) begin
-      col_in <= si == LAST_SLOT || (col_in && si != frame_width - 1'b1);
-      if (si == LAST_SLOT) row_in <= row_in && ti != frame_height - 1'b1;
+      in_due_q <= G == 1;
+    end else if (adv) begin
+      col_in <= col_in_next;
+      row_in <= row_in_next;
+      in_due_q <= slot_end_next && col_in_next && row_in_next;
     end
-  assign in_due  = slot_end && col_in && row_in;
+  assign in_due  = in_due_q;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
@@ -960,6 +995,8 @@ module fps_sad5_d128u32_fa1add_front_end #(
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
   // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
+  // The window's newest column is the input column itself: in the image if the input column is,
+  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   wire [X_W-1:0] centre_x;
   wire signed [YS_W-1:0] centre_y;
   wire [COST_K_W-1:0] centre_slot;
@@ -970,32 +1007,38 @@ module fps_sad5_d128u32_fa1add_front_end #(
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
-  reg  newest_in_row;
-  reg  signed [YS_W-1:0] newest_y;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      newest_in_row <= {1'b0, si} < width_x;
-      newest_y <= $signed({2'b00, ti}) - R_Y;
       transform_x <= window_x;
       transform_y <= window_y;
       transform_slot <= window_slot;
     end
 
-  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(window_x), .y(window_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  wire [N-1:0] newest_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is newest_in_row
+  // The bounds of the window that forms in this shift are registered with its position, so that
+  // the compares with the frame size and the transform lie in different steps.
+  wire [N-1:0] centre_rows, centre_columns, newest_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own bound is si < width
   wire [N-1:0] newest_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+    .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
+    .col_valid(centre_columns));
   fps_sad5_d128u32_fa1add_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(window_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .x(centre_x), .y($signed({2'b00, ti}) - R_Y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(newest_unused_columns));
-  assign newest_row_valid = newest_in_row ? newest_rows : {N{1'b0}};
+  reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
+  always @(posedge clk)
+    if (shift) begin
+      row_valid_q <= centre_rows;
+      col_valid_q <= centre_columns;
+      newest_row_valid_q <= {1'b0, si} < width_x ? newest_rows : {N{1'b0}};
+    end
+  assign row_valid = row_valid_q;
+  assign col_valid = col_valid_q;
+  assign newest_row_valid = newest_row_valid_q;
 endmodule
 `resetall
 
@@ -1229,7 +1272,9 @@ module fps_sad5_d128u32_fa1add_pixel_window_cost #(
   parameter COST_K_W = 1,
   parameter X_W = 7,
   parameter YS_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // the cost lanes' latency the stage plans with (fps_sad5_d128u32_fa1add_window_cost_lanes checks it)
+  parameter LAT = 3
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -1305,7 +1350,7 @@ module fps_sad5_d128u32_fa1add_pixel_window_cost #(
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
   fps_sad5_d128u32_fa1add_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) lanes (
+                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
@@ -1400,8 +1445,9 @@ endmodule
 // b is the (already zero-extended) base window; the match window of lane l is view columns
 // l .. l + SPAN - 1 (fps_sad5_d128u32_fa1add_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
-// Where the match centre lies left of the image (x < d) the cost is COST_MAX. Two register
-// stages: per-row sums, then the total.
+// Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
+// (LAT): the column masks and the border flag; ZSAD: the match window's sum, then its mean;
+// the row sums of the elements' terms; the total.
 module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -1417,7 +1463,9 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
-  parameter MEAN_SHIFT = 0
+  parameter MEAN_SHIFT = 0,
+  // the latency the instantiating stage plans with (checked: 3, ZSAD 5)
+  parameter LAT = 3
 ) (
   input  wire                                clk,
   input  wire                                en,
@@ -1446,6 +1494,9 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
+    if (LAT != (ZERO_MEAN != 0 ? 5 : 3)) begin : invalid_LAT
+      fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
+    end
   endgenerate
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
@@ -1456,11 +1507,28 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
+  // The elements' terms: |(b - m) - delta| of pixels, or the Hamming distance of codes.
+  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W;
+  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 2 : 0;
+
+  // The windows wait for the masks (and the ZSAD means): 1 + MEAN_STEPS steps.
+  wire [SPAN*SPAN*ELEM_W-1:0]        base_d;
+  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0] view_d;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [7:0]                         base_mean_d;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fps_sad5_d128u32_fa1add_delay #(.WIDTH(SPAN*SPAN*ELEM_W + (UF+SPAN-1)*SPAN*ELEM_W + 8), .DEPTH(1 + MEAN_STEPS)) windows_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in({base, view, base_mean}), .out({base_d, view_d, base_mean_d}));
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  reg [(UF+SPAN-1)*COLSUM_W-1:0] view_sums_q;
+  /* verilator lint_on UNUSEDSIGNAL */
+  always @(posedge clk)
+    if (en) view_sums_q <= view_sums;
+
   genvar l, i, j;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [D_W-1:0] d = group_base + l[D_W-1:0];
-      wire outside = x_wide < d;
       // Window column j (left to right) is view column l + SPAN - 1 - j; it lies inside the
       // image where 0 <= x - d + (j - R) < width.
       wire [SPAN-1:0] column_valid;
@@ -1469,7 +1537,26 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
         assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + {{(D_W-X_W){1'b0}}, width};
       end
 
-      // ZSAD: the match window's mean from its column sums.
+      // Step 1: the masks and the border flag, which wait with the windows.
+      reg  [SPAN-1:0] column_valid_q;
+      reg             outside_q;
+      always @(posedge clk)
+        if (en) begin
+          column_valid_q <= column_valid;
+          outside_q <= x_wide < d;
+        end
+      wire [SPAN-1:0] valid_d;
+      wire            outside_d;
+      if (MEAN_STEPS > 0) begin : valid_wait
+        fps_sad5_d128u32_fa1add_delay #(.WIDTH(SPAN), .DEPTH(MEAN_STEPS)) masks (
+          .clk(clk), .rst(1'b0), .en(en), .in(column_valid_q), .out(valid_d));
+      end else begin : valid_now
+        assign valid_d = column_valid_q;
+      end
+      fps_sad5_d128u32_fa1add_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
+
+      // ZSAD, steps 2 and 3: the match window's sum from its column sums, then its mean.
       wire signed [9:0] delta;
       if (ZERO_MEAN) begin : zero_mean
         reg [WINSUM_W-1:0] match_sum;
@@ -1477,51 +1564,60 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
         always @* begin
           match_sum = 0;
           for (c = 0; c < SPAN; c = c + 1)
-            if (column_valid[c])
-              match_sum = match_sum + {{(WINSUM_W-COLSUM_W){1'b0}}, view_sums[(l + SPAN - 1 - c)*COLSUM_W +: COLSUM_W]};
+            if (column_valid_q[c])
+              match_sum = match_sum + {{(WINSUM_W-COLSUM_W){1'b0}}, view_sums_q[(l + SPAN - 1 - c)*COLSUM_W +: COLSUM_W]};
         end
-        /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-        wire [7:0] match_mean = (match_sum * MEAN_MUL) >> MEAN_SHIFT;
-        /* verilator lint_on WIDTH */
-        assign delta = $signed({2'b00, base_mean}) - $signed({2'b00, match_mean});
+        reg [WINSUM_W-1:0] match_sum_q;
+        reg [7:0]          match_mean_q;
+        always @(posedge clk)
+          if (en) begin
+            match_sum_q <= match_sum;
+            /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+            match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
+            /* verilator lint_on WIDTH */
+          end
+        assign delta = $signed({2'b00, base_mean_d}) - $signed({2'b00, match_mean_q});
       end else begin : no_mean
         assign delta = 10'sd0;
       end
 
-      // Per-row sums (register stage 1).
+      // The per-row sums of the elements' terms.
       wire [SPAN*COST_W-1:0] row_sums;
       for (i = 0; i < SPAN; i = i + 1) begin : row
-        reg [COST_W-1:0] row_sum;
+        reg [SPAN*MAG_W-1:0] terms;
         integer k, b2;
         reg [ELEM_W-1:0] bv, mv;
         reg signed [TERM_W-1:0] diff;
-        reg [TERM_W-1:0] magnitude;  // its own assignment: in the sum, -diff would widen first
+        reg [MAG_W-1:0] magnitude;  // its own assignment: in the sum, -diff would widen first
         always @* begin
-          row_sum = 0;
           for (k = 0; k < SPAN; k = k + 1) begin
-            bv = base[(i*SPAN + k)*ELEM_W +: ELEM_W];
-            mv = column_valid[k] ? view[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
+            bv = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
+            mv = valid_d[k] ? view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
+            magnitude = 0;
             if (HAMMING) begin
-              for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) row_sum = row_sum + {{(COST_W-1){1'b0}}, bv[b2] ^ mv[b2]};
+              for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) magnitude = magnitude + {{(MAG_W-1){1'b0}}, bv[b2] ^ mv[b2]};
             end else begin
               /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference
               diff = $signed({3'b000, bv}) - $signed({3'b000, mv}) - delta;
               magnitude = diff < 0 ? -diff : diff;
-              row_sum = row_sum + magnitude;
               /* verilator lint_on WIDTH */
             end
+            terms[k*MAG_W +: MAG_W] = magnitude;
           end
+        end
+        reg [COST_W-1:0] row_sum;
+        integer t;
+        always @* begin
+          row_sum = 0;
+          for (t = 0; t < SPAN; t = t + 1) row_sum = row_sum + {{(COST_W-MAG_W){1'b0}}, terms[t*MAG_W +: MAG_W]};
         end
         reg [COST_W-1:0] row_sum_q;
         always @(posedge clk)
           if (en) row_sum_q <= row_sum;
         assign row_sums[i*COST_W +: COST_W] = row_sum_q;
       end
-      reg outside_q;
-      always @(posedge clk)
-        if (en) outside_q <= outside;
 
-      // Total (register stage 2).
+      // The total.
       reg [COST_W-1:0] total;
       integer t;
       always @* begin
@@ -1529,7 +1625,7 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
         for (t = 0; t < SPAN; t = t + 1) total = total + row_sums[t*COST_W +: COST_W];
       end
       always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= outside_q ? COST_MAX[COST_W-1:0] : total;
+        if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
     end
   endgenerate
 endmodule
