@@ -70,17 +70,32 @@ module fpstereo_front_end #(
   // column 0 of row 0, inside every frame.
   localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
-  // The frame's last column and row as registers: the frame size holds from the cycle before
-  // step 0 (fpstereo_sequencer) to the frame's end.
-  reg  [X_W-1:0] last_col;
-  reg  [Y_W-1:0] last_row;
+  // Whether the slot is the row-time's last, the frame's last column and last row, as registers
+  // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
+  // before step 0 (fpstereo_sequencer) to the frame's end.
+  localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  reg  [X_W-1:0] col_before_last;
+  reg  [Y_W-1:0] row_before_last;
   always @(posedge clk) begin
-    last_col <= frame_width - 1'b1;
-    last_row <= frame_height - 1'b1;
+    col_before_last <= frame_width - TWO_X;
+    row_before_last <= frame_height - TWO_Y;
   end
+  reg  at_last_slot, at_last_col, at_last_row;
+  always @(posedge clk)
+    if (restart) begin
+      at_last_slot <= 1'b0;
+      at_last_col <= 1'b0;
+      at_last_row <= 1'b0;
+    end else if (shift) begin
+      at_last_slot <= si == SLOT_BEFORE_LAST;
+      at_last_col <= !at_last_slot && si == col_before_last;
+      if (at_last_slot) at_last_row <= ti == row_before_last;
+    end
   reg  col_in, row_in, in_due_q;
-  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
-  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire col_in_next = slot_end ? at_last_slot || (col_in && !at_last_col) : col_in;
+  wire row_in_next = slot_end && at_last_slot ? row_in && !at_last_row : row_in;
   wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin

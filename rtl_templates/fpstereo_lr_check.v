@@ -1,10 +1,11 @@
 `resetall
 `default_nettype none
-// Left-right check (docs/semantics.md, section 5), one step: the match side writes Dm(x') of its
+// Left-right check (docs/semantics.md, section 5), two steps: the match side writes Dm(x') of its
 // completed pixels (and, with ROW_END, as LR1 does, the last DMAX - 1 of each row into the
 // row-end RAM, one word of UF per group); for the read stream's pixel x with disparity D, Dm of
 // x' = x - D is read, and the word becomes invalid where x' lies outside the image or
-// |D - Dm(x')| > lr_threshold. The stream leaves one step later.
+// |D - Dm(x')| > lr_threshold. The RAMs are read in the first step, Dm is registered in the
+// second, and the stream leaves two steps later.
 module fpstereo_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -65,16 +66,18 @@ module fpstereo_lr_check #(
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
   reg [DISP_W:0] word_c;
-  reg            outside_c;
+  reg            outside_c, done_c, event_c;
+  reg [X_W-1:0]  x_c;
+  reg [Y_W-1:0]  y_c;
   always @(posedge clk)
     if (restart) begin
-      checked_done <= 1'b0;
-      checked_event <= 1'b0;
+      done_c <= 1'b0;
+      event_c <= 1'b0;
     end else if (adv) begin
-      checked_done <= read_done;
-      checked_event <= read_event;
-      checked_x <= read_x;
-      checked_y <= read_y;
+      done_c <= read_done;
+      event_c <= read_event;
+      x_c <= read_x;
+      y_c <= read_y;
       word_c <= read_word;
       outside_c <= outside;
     end
@@ -100,9 +103,27 @@ module fpstereo_lr_check #(
       assign dm = match_q;
     end
   endgenerate
-  wire [DISP_W-1:0] db = word_c[DISP_W-1:0];
-  wire [DISP_W-1:0] difference = db > dm ? db - dm : dm - db;
-  assign checked_word = (outside_c || difference > lr_threshold) ? INVALID_WORD : word_c;
+  // Second step: Dm registered with the stream, so that the RAM reads and the check lie in
+  // different steps.
+  reg [DISP_W-1:0] dm_q;
+  reg [DISP_W:0]   word_q;
+  reg              outside_q;
+  always @(posedge clk)
+    if (restart) begin
+      checked_done <= 1'b0;
+      checked_event <= 1'b0;
+    end else if (adv) begin
+      checked_done <= done_c;
+      checked_event <= event_c;
+      checked_x <= x_c;
+      checked_y <= y_c;
+      word_q <= word_c;
+      outside_q <= outside_c;
+      dm_q <= dm;
+    end
+  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
+  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
+  assign checked_word = (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
   // verilator lint_on WIDTH
 endmodule
 `resetall

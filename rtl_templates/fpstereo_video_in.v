@@ -14,6 +14,7 @@
 //         not ends the frame early: it is left for SEEK (it may start the next frame).
 //   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
 //         frame is complete and well-formed and nothing waits for input that will not come.
+//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
 module fpstereo_video_in #(
@@ -84,10 +85,12 @@ module fpstereo_video_in #(
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
 
-  // RUN and PAD: the core's pixel stream.
-  wire fault = state == RUN && both && !flags_match;
-  wire passing = state == RUN && both && flags_match;
-  assign in_valid = passing || state == PAD;
+  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
+  // returns to SEEK in the next cycle, so that the state does not wait for the take).
+  reg  done;
+  wire fault = state == RUN && !done && both && !flags_match;
+  wire passing = state == RUN && !done && both && flags_match;
+  assign in_valid = passing || (state == PAD && !done);
   assign in_left = passing ? left[7:0] : 8'd0;
   assign in_right = passing ? right[7:0] : 8'd0;
   wire pass_take = passing && in_take;
@@ -110,26 +113,42 @@ module fpstereo_video_in #(
             quiet <= 1'b0;
           end else if (drop || skip_left || skip_right) quiet <= 1'b1;
         RUN:
-          if (fault) begin
+          if (done) state <= SEEK;
+          else if (fault) begin
             state <= PAD;
             quiet <= 1'b1;
-          end else if (in_take && frame_end) state <= SEEK;
+          end
         default:  // PAD
-          if (in_take && frame_end) state <= SEEK;
+          if (done) state <= SEEK;
       endcase
     end
+  always @(posedge clk)
+    if (rst || done) done <= 1'b0;
+    else done <= in_take && frame_end;
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
   wire restart_rows = rst || core_start || drop;
-  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
-  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
+  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
+  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
+  // the three cases compared in parallel from the registers and then chosen.
+  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
+  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
+  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
   always @(posedge clk) begin
     left_rows <= left_rows_next;
     right_rows <= right_rows_next;
-    left_stale <= !rst && left_rows_next + half <= right_rows_next;
-    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+    if (restart_rows) begin
+      left_stale <= !rst && half == 0;
+      right_stale <= !rst && half == 0;
+    end else begin
+      left_stale <= left_inc == right_inc ? left_reach <= right_wide
+                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
+      right_stale <= left_inc == right_inc ? right_reach <= left_wide
+                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
+    end
   end
 
   always @(posedge clk)

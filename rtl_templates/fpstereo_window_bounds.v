@@ -22,18 +22,19 @@ module fpstereo_window_bounds #(
     end
   endgenerate
   localparam LAG = SIDE / 2;
-  localparam [X_W:0] LAG_X = LAG;
-  localparam signed [YS_W-1:0] LAG_Y = LAG;
 
+  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
+  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
   genvar v;
   generate
     for (v = 0; v < SIDE; v = v + 1) begin : position
-      localparam [X_W:0] V_X = v;
-      localparam signed [YS_W-1:0] V_Y = v;
-      wire [X_W:0] column = {1'b0, x} + V_X;  // image column + LAG
-      wire signed [YS_W-1:0] row = y + V_Y;   // image row + LAG
-      assign col_valid[v] = column >= LAG_X && column < width + LAG_X;
-      assign row_valid[v] = row >= LAG_Y && row < height + LAG_Y;
+      localparam signed [31:0] OFFSET = LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      wire signed [X_W+2:0] column = $signed({3'b000, x});
+      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule

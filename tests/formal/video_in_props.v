@@ -19,6 +19,7 @@
 // formal-probe: probe_first dut.first
 // formal-probe: probe_row_end dut.row_end
 // formal-probe: probe_last_row dut.last_row
+// formal-probe: probe_done dut.done
 module video_in_props (
   input wire       clk,
   input wire       rst,
@@ -49,7 +50,7 @@ module video_in_props (
   (* keep *) wire [1:0] probe_state;
   (* keep *) wire [X_W-1:0] probe_x;
   (* keep *) wire [Y_W-1:0] probe_y;
-  (* keep *) wire           probe_first, probe_row_end, probe_last_row;
+  (* keep *) wire           probe_first, probe_row_end, probe_last_row, probe_done;
 
   reg past_valid = 1'b0, past_rst = 1'b1;
   always @(posedge clk) begin
@@ -129,7 +130,7 @@ module video_in_props (
         assert(probe_x == x && probe_y == y && x < w && y < h);
         assert(probe_first == (x == 0 && y == 0) && probe_row_end == row_last && probe_last_row == (y == h - 1'b1));
       end
-      assert(in_frame == (probe_state != 2'd0) && probe_state != 2'd3);
+      assert(in_frame == (probe_state != 2'd0 && !probe_done) && probe_state != 2'd3);
     end
   // offered until taken (or reset), unchanged
   always @(posedge clk)

@@ -510,6 +510,7 @@ endmodule
 //         not ends the frame early: it is left for SEEK (it may start the next frame).
 //   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
 //         frame is complete and well-formed and nothing waits for input that will not come.
+//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
 module fps_census7_d128u32_816da4_video_in #(
@@ -580,10 +581,12 @@ module fps_census7_d128u32_816da4_video_in #(
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
 
-  // RUN and PAD: the core's pixel stream.
-  wire fault = state == RUN && both && !flags_match;
-  wire passing = state == RUN && both && flags_match;
-  assign in_valid = passing || state == PAD;
+  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
+  // returns to SEEK in the next cycle, so that the state does not wait for the take).
+  reg  done;
+  wire fault = state == RUN && !done && both && !flags_match;
+  wire passing = state == RUN && !done && both && flags_match;
+  assign in_valid = passing || (state == PAD && !done);
   assign in_left = passing ? left[7:0] : 8'd0;
   assign in_right = passing ? right[7:0] : 8'd0;
   wire pass_take = passing && in_take;
@@ -606,26 +609,42 @@ module fps_census7_d128u32_816da4_video_in #(
             quiet <= 1'b0;
           end else if (drop || skip_left || skip_right) quiet <= 1'b1;
         RUN:
-          if (fault) begin
+          if (done) state <= SEEK;
+          else if (fault) begin
             state <= PAD;
             quiet <= 1'b1;
-          end else if (in_take && frame_end) state <= SEEK;
+          end
         default:  // PAD
-          if (in_take && frame_end) state <= SEEK;
+          if (done) state <= SEEK;
       endcase
     end
+  always @(posedge clk)
+    if (rst || done) done <= 1'b0;
+    else done <= in_take && frame_end;
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
   wire restart_rows = rst || core_start || drop;
-  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
-  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
+  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
+  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
+  // the three cases compared in parallel from the registers and then chosen.
+  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
+  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
+  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
   always @(posedge clk) begin
     left_rows <= left_rows_next;
     right_rows <= right_rows_next;
-    left_stale <= !rst && left_rows_next + half <= right_rows_next;
-    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+    if (restart_rows) begin
+      left_stale <= !rst && half == 0;
+      right_stale <= !rst && half == 0;
+    end else begin
+      left_stale <= left_inc == right_inc ? left_reach <= right_wide
+                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
+      right_stale <= left_inc == right_inc ? right_reach <= left_wide
+                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
+    end
   end
 
   always @(posedge clk)
@@ -945,17 +964,32 @@ module fps_census7_d128u32_816da4_front_end #(
   // column 0 of row 0, inside every frame.
   localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
-  // The frame's last column and row as registers: the frame size holds from the cycle before
-  // step 0 (fps_census7_d128u32_816da4_sequencer) to the frame's end.
-  reg  [X_W-1:0] last_col;
-  reg  [Y_W-1:0] last_row;
+  // Whether the slot is the row-time's last, the frame's last column and last row, as registers
+  // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
+  // before step 0 (fps_census7_d128u32_816da4_sequencer) to the frame's end.
+  localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  reg  [X_W-1:0] col_before_last;
+  reg  [Y_W-1:0] row_before_last;
   always @(posedge clk) begin
-    last_col <= frame_width - 1'b1;
-    last_row <= frame_height - 1'b1;
+    col_before_last <= frame_width - TWO_X;
+    row_before_last <= frame_height - TWO_Y;
   end
+  reg  at_last_slot, at_last_col, at_last_row;
+  always @(posedge clk)
+    if (restart) begin
+      at_last_slot <= 1'b0;
+      at_last_col <= 1'b0;
+      at_last_row <= 1'b0;
+    end else if (shift) begin
+      at_last_slot <= si == SLOT_BEFORE_LAST;
+      at_last_col <= !at_last_slot && si == col_before_last;
+      if (at_last_slot) at_last_row <= ti == row_before_last;
+    end
   reg  col_in, row_in, in_due_q;
-  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
-  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire col_in_next = slot_end ? at_last_slot || (col_in && !at_last_col) : col_in;
+  wire row_in_next = slot_end && at_last_slot ? row_in && !at_last_row : row_in;
   wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin
@@ -1219,18 +1253,19 @@ module fps_census7_d128u32_816da4_window_bounds #(
     end
   endgenerate
   localparam LAG = SIDE / 2;
-  localparam [X_W:0] LAG_X = LAG;
-  localparam signed [YS_W-1:0] LAG_Y = LAG;
 
+  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
+  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
   genvar v;
   generate
     for (v = 0; v < SIDE; v = v + 1) begin : position
-      localparam [X_W:0] V_X = v;
-      localparam signed [YS_W-1:0] V_Y = v;
-      wire [X_W:0] column = {1'b0, x} + V_X;  // image column + LAG
-      wire signed [YS_W-1:0] row = y + V_Y;   // image row + LAG
-      assign col_valid[v] = column >= LAG_X && column < width + LAG_X;
-      assign row_valid[v] = row >= LAG_Y && row < height + LAG_Y;
+      localparam signed [31:0] OFFSET = LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      wire signed [X_W+2:0] column = $signed({3'b000, x});
+      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule

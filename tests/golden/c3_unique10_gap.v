@@ -20,8 +20,8 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902821 = W*H*dmax/uf (1863000) + 39821
-// Latency without stalls from the first input handshake to the first output handshake: 39826 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1902822 = W*H*dmax/uf (1863000) + 39822
+// Latency without stalls from the first input handshake to the first output handshake: 39827 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
@@ -31,7 +31,7 @@
 //   LR1 match side                       0     0    0   lr
 //   winner-take-all with uniqueness      0     0    3   uniqueness
 //   disparity reorder                    1     1    0   lr
-//   left-right check                     0     0    1   lr, lr-threshold
+//   left-right check                     0     0    2   lr, lr-threshold
 //   median filter                        2     2   26   median
 //   gap interpolation                    1     0    3   gap-interp
 //   output                               0     0    4
@@ -112,7 +112,7 @@ module fps_census7_d128u32_796e15_top (
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(1), .UNIQUENESS_INIT(10),
     .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00796e15),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902821, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1902822, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -559,6 +559,7 @@ endmodule
 //         not ends the frame early: it is left for SEEK (it may start the next frame).
 //   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
 //         frame is complete and well-formed and nothing waits for input that will not come.
+//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
 module fps_census7_d128u32_796e15_video_in #(
@@ -629,10 +630,12 @@ module fps_census7_d128u32_796e15_video_in #(
   assign core_start = starts && aligned && core_idle && enable;
   wire drop = starts && aligned && core_idle && !enable;
 
-  // RUN and PAD: the core's pixel stream.
-  wire fault = state == RUN && both && !flags_match;
-  wire passing = state == RUN && both && flags_match;
-  assign in_valid = passing || state == PAD;
+  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
+  // returns to SEEK in the next cycle, so that the state does not wait for the take).
+  reg  done;
+  wire fault = state == RUN && !done && both && !flags_match;
+  wire passing = state == RUN && !done && both && flags_match;
+  assign in_valid = passing || (state == PAD && !done);
   assign in_left = passing ? left[7:0] : 8'd0;
   assign in_right = passing ? right[7:0] : 8'd0;
   wire pass_take = passing && in_take;
@@ -655,26 +658,42 @@ module fps_census7_d128u32_796e15_video_in #(
             quiet <= 1'b0;
           end else if (drop || skip_left || skip_right) quiet <= 1'b1;
         RUN:
-          if (fault) begin
+          if (done) state <= SEEK;
+          else if (fault) begin
             state <= PAD;
             quiet <= 1'b1;
-          end else if (in_take && frame_end) state <= SEEK;
+          end
         default:  // PAD
-          if (in_take && frame_end) state <= SEEK;
+          if (done) state <= SEEK;
       endcase
     end
+  always @(posedge clk)
+    if (rst || done) done <= 1'b0;
+    else done <= in_take && frame_end;
 
   localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
   wire restart_rows = rst || core_start || drop;
-  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                        : left_rows + {{Y_W{1'b0}}, skip_left && left_last && left_rows != ROWS_MAX};
-  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}}
-                         : right_rows + {{Y_W{1'b0}}, skip_right && right_last && right_rows != ROWS_MAX};
+  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
+  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
+  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
+  // the three cases compared in parallel from the registers and then chosen.
+  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
+  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
+  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
   always @(posedge clk) begin
     left_rows <= left_rows_next;
     right_rows <= right_rows_next;
-    left_stale <= !rst && left_rows_next + half <= right_rows_next;
-    right_stale <= !rst && right_rows_next + half <= left_rows_next;
+    if (restart_rows) begin
+      left_stale <= !rst && half == 0;
+      right_stale <= !rst && half == 0;
+    end else begin
+      left_stale <= left_inc == right_inc ? left_reach <= right_wide
+                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
+      right_stale <= left_inc == right_inc ? right_reach <= left_wide
+                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
+    end
   end
 
   always @(posedge clk)
@@ -994,17 +1013,32 @@ module fps_census7_d128u32_796e15_front_end #(
   // column 0 of row 0, inside every frame.
   localparam integer BEFORE_LAST_I = G > 1 ? G - 2 : 0;
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
-  // The frame's last column and row as registers: the frame size holds from the cycle before
-  // step 0 (fps_census7_d128u32_796e15_sequencer) to the frame's end.
-  reg  [X_W-1:0] last_col;
-  reg  [Y_W-1:0] last_row;
+  // Whether the slot is the row-time's last, the frame's last column and last row, as registers
+  // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
+  // before step 0 (fps_census7_d128u32_796e15_sequencer) to the frame's end.
+  localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  reg  [X_W-1:0] col_before_last;
+  reg  [Y_W-1:0] row_before_last;
   always @(posedge clk) begin
-    last_col <= frame_width - 1'b1;
-    last_row <= frame_height - 1'b1;
+    col_before_last <= frame_width - TWO_X;
+    row_before_last <= frame_height - TWO_Y;
   end
+  reg  at_last_slot, at_last_col, at_last_row;
+  always @(posedge clk)
+    if (restart) begin
+      at_last_slot <= 1'b0;
+      at_last_col <= 1'b0;
+      at_last_row <= 1'b0;
+    end else if (shift) begin
+      at_last_slot <= si == SLOT_BEFORE_LAST;
+      at_last_col <= !at_last_slot && si == col_before_last;
+      if (at_last_slot) at_last_row <= ti == row_before_last;
+    end
   reg  col_in, row_in, in_due_q;
-  wire col_in_next = slot_end ? si == LAST_SLOT || (col_in && si != last_col) : col_in;
-  wire row_in_next = slot_end && si == LAST_SLOT ? row_in && ti != last_row : row_in;
+  wire col_in_next = slot_end ? at_last_slot || (col_in && !at_last_col) : col_in;
+  wire row_in_next = slot_end && at_last_slot ? row_in && !at_last_row : row_in;
   wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
   always @(posedge clk)
     if (restart) begin
@@ -1268,18 +1302,19 @@ module fps_census7_d128u32_796e15_window_bounds #(
     end
   endgenerate
   localparam LAG = SIDE / 2;
-  localparam [X_W:0] LAG_X = LAG;
-  localparam signed [YS_W-1:0] LAG_Y = LAG;
 
+  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
+  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
   genvar v;
   generate
     for (v = 0; v < SIDE; v = v + 1) begin : position
-      localparam [X_W:0] V_X = v;
-      localparam signed [YS_W-1:0] V_Y = v;
-      wire [X_W:0] column = {1'b0, x} + V_X;  // image column + LAG
-      wire signed [YS_W-1:0] row = y + V_Y;   // image row + LAG
-      assign col_valid[v] = column >= LAG_X && column < width + LAG_X;
-      assign row_valid[v] = row >= LAG_Y && row < height + LAG_Y;
+      localparam signed [31:0] OFFSET = LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      wire signed [X_W+2:0] column = $signed({3'b000, x});
+      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule
@@ -2678,11 +2713,12 @@ endmodule
 
 `resetall
 `default_nettype none
-// Left-right check (docs/semantics.md, section 5), one step: the match side writes Dm(x') of its
+// Left-right check (docs/semantics.md, section 5), two steps: the match side writes Dm(x') of its
 // completed pixels (and, with ROW_END, as LR1 does, the last DMAX - 1 of each row into the
 // row-end RAM, one word of UF per group); for the read stream's pixel x with disparity D, Dm of
 // x' = x - D is read, and the word becomes invalid where x' lies outside the image or
-// |D - Dm(x')| > lr_threshold. The stream leaves one step later.
+// |D - Dm(x')| > lr_threshold. The RAMs are read in the first step, Dm is registered in the
+// second, and the stream leaves two steps later.
 module fps_census7_d128u32_796e15_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -2743,16 +2779,18 @@ module fps_census7_d128u32_796e15_lr_check #(
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
   reg [DISP_W:0] word_c;
-  reg            outside_c;
+  reg            outside_c, done_c, event_c;
+  reg [X_W-1:0]  x_c;
+  reg [Y_W-1:0]  y_c;
   always @(posedge clk)
     if (restart) begin
-      checked_done <= 1'b0;
-      checked_event <= 1'b0;
+      done_c <= 1'b0;
+      event_c <= 1'b0;
     end else if (adv) begin
-      checked_done <= read_done;
-      checked_event <= read_event;
-      checked_x <= read_x;
-      checked_y <= read_y;
+      done_c <= read_done;
+      event_c <= read_event;
+      x_c <= read_x;
+      y_c <= read_y;
       word_c <= read_word;
       outside_c <= outside;
     end
@@ -2778,9 +2816,27 @@ module fps_census7_d128u32_796e15_lr_check #(
       assign dm = match_q;
     end
   endgenerate
-  wire [DISP_W-1:0] db = word_c[DISP_W-1:0];
-  wire [DISP_W-1:0] difference = db > dm ? db - dm : dm - db;
-  assign checked_word = (outside_c || difference > lr_threshold) ? INVALID_WORD : word_c;
+  // Second step: Dm registered with the stream, so that the RAM reads and the check lie in
+  // different steps.
+  reg [DISP_W-1:0] dm_q;
+  reg [DISP_W:0]   word_q;
+  reg              outside_q;
+  always @(posedge clk)
+    if (restart) begin
+      checked_done <= 1'b0;
+      checked_event <= 1'b0;
+    end else if (adv) begin
+      checked_done <= done_c;
+      checked_event <= event_c;
+      checked_x <= x_c;
+      checked_y <= y_c;
+      word_q <= word_c;
+      outside_q <= outside_c;
+      dm_q <= dm;
+    end
+  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
+  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
+  assign checked_word = (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
   // verilator lint_on WIDTH
 endmodule
 `resetall
