@@ -70,22 +70,25 @@ module fpstereo_pixel_window_cost #(
     end
     for (e = 0; e < N * N; e = e + 1) base_sum = base_sum + {{COLSUM_W{1'b0}}, base_masked[e*8 +: 8]};
   end
-  /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-  wire [7:0] base_mean = (base_sum * MEAN_MUL) >> MEAN_SHIFT;
-  /* verilator lint_on WIDTH */
+  // ZSAD: the base window's sum is registered with the window, its mean (a constant multiply)
+  // with the next shift.
   reg [N*N*8-1:0]    base_t, base_h;
   reg [N*8-1:0]      column_t;
   reg [COLSUM_W-1:0] column_sum_t;
-  reg [7:0]          base_mean_t, base_mean_h;
+  reg [COLSUM_W+7:0] base_sum_t;
+  reg [7:0]          base_mean_h;
+  /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+  wire [7:0] base_mean = (base_sum_t * MEAN_MUL) >> MEAN_SHIFT;
+  /* verilator lint_on WIDTH */
   always @(posedge clk)
     if (shift) begin
       history_slot <= transform_slot;
       base_t       <= base_masked;
       column_t     <= newest_column;
       column_sum_t <= newest_sum;
-      base_mean_t  <= base_mean;
+      base_sum_t   <= base_sum;
       base_h       <= base_t;
-      base_mean_h  <= base_mean_t;
+      base_mean_h  <= base_mean;
       history_x    <= transform_x;
       history_y    <= transform_y;
     end
