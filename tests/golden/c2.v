@@ -2615,8 +2615,7 @@ module fps_census7_d128u32_816da4_median_select #(
       col_valid_q <= col_valid;
     end
 
-  // Second step: used words (the centre by its flag alone), the row counts of the used words
-  // besides the centre, the disparities.
+  // Used words (the centre by its flag alone) and the disparities.
   wire [N-1:0]        used;
   wire [N-1:0]        used_besides_centre;
   wire [N*DISP_W-1:0] values;
@@ -2636,30 +2635,22 @@ module fps_census7_d128u32_816da4_median_select #(
     end
   endgenerate
 
-  reg [N-1:0]        rows_cand_q;
-  reg [ROWS_W-1:0]   rows_others_q;
-  reg [N*DISP_W-1:0] rows_values_q;
-  reg                rows_invalid_q;
+  // Second and third steps: the row counts of the used words besides the centre, then the rank
+  // sought (half their sum); the candidates, the disparities and the centre's flag travel beside.
+  reg [N + N*DISP_W:0] rows_along, count_along;
+  reg [ROWS_W-1:0]     rows_others_q;
+  reg [CNT_W-1:0]      count_rank_q;
   always @(posedge clk)
     if (en) begin
-      rows_cand_q    <= used;
-      rows_others_q  <= row_counts(used_besides_centre);
-      rows_values_q  <= values;
-      rows_invalid_q <= window_q[CENTRE*WORD_W + DISP_W];
+      rows_along    <= {used, values, window_q[CENTRE*WORD_W + DISP_W]};
+      rows_others_q <= row_counts(used_besides_centre);
+      count_along   <= rows_along;
+      count_rank_q  <= sum_of_rows(rows_others_q) >> 1;
     end
-
-  // Third step: the rank sought, half the used words besides the centre.
-  reg [N-1:0]        count_cand_q;
-  reg [CNT_W-1:0]    count_rank_q;
-  reg [N*DISP_W-1:0] count_values_q;
-  reg                count_invalid_q;
-  always @(posedge clk)
-    if (en) begin
-      count_cand_q    <= rows_cand_q;
-      count_rank_q    <= sum_of_rows(rows_others_q) >> 1;
-      count_values_q  <= rows_values_q;
-      count_invalid_q <= rows_invalid_q;
-    end
+  wire [N-1:0]        count_cand_q;
+  wire [N*DISP_W-1:0] count_values_q;
+  wire                count_invalid_q;
+  assign {count_cand_q, count_values_q, count_invalid_q} = count_along;
 
   // Bit stages: stage s decides bit B = DISP_W-1-s and receives bits B .. 0 of every word, word i
   // at vals[i*(B+1) +: B+1]. Its first step counts the candidates with bit B = 0 per row, its
