@@ -44,6 +44,10 @@ module fpstereo_aggregator #(
   input  wire [PATH_W-1:0]    p2,
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
+  // back-to-back frames (fpstereo_front_end): the row-times wrap after the frame's last row, and
+  // once wrapped, the rows above row 0 are the previous frame's
+  input  wire                 overlap,
+  input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
   input  wire [UF*COST_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
@@ -105,13 +109,17 @@ module fpstereo_aggregator #(
   reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
   reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
-  reg [Y_W-1:0] ta;
+  wire [Y_W-1:0] ta;
+  wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
+  /* verilator lint_off PINCONNECTEMPTY */
+  fpstereo_frame_row #(.Y_W(Y_W)) row_time (
+    .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
     if (restart) begin
       ga <= 0;
       ka <= 0;
       ja <= 0;
-      ta <= 0;
       base <= 0;
       ta_slot <= 0;
       ta_out_slot <= 0;
@@ -122,7 +130,6 @@ module fpstereo_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta <= ta + 1'b1;
             ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
             ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
@@ -131,7 +138,9 @@ module fpstereo_aggregator #(
       end
     end
   wire [X_W-1:0] x0 = ka * SLEN + ja;
-  wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
+  // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
+  wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
+  wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;

@@ -30,6 +30,8 @@ module fpstereo_code_window_cost #(
   input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         frame_width,
   input  wire [Y_W-1:0]         frame_height,
+  // back-to-back frames: once wrapped, the rows above row 0 are the previous frame's
+  input  wire                   wrapped,
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
@@ -53,7 +55,6 @@ module fpstereo_code_window_cost #(
     end
   endgenerate
   localparam RS = SHD_K / 2;
-  localparam signed [YS_W-1:0] RS_Y = RS;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
@@ -69,10 +70,11 @@ module fpstereo_code_window_cost #(
   wire [X_W-1:0] codes_centre_x;
   wire signed [YS_W-1:0] codes_centre_y;
   wire [COST_K_W-1:0] codes_slot_next;
+  wire signed [YS_W-1:0] code_newest_y_next;
   fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
                            .SLOT_W(COST_K_W)) codes_centre (
-    .x(transform_x), .y(transform_y), .slot(transform_slot), .centre_x(codes_centre_x),
-    .centre_y(codes_centre_y), .centre_slot(codes_slot_next));
+    .x(transform_x), .y(transform_y), .slot(transform_slot), .wrapped(wrapped), .height(height_y),
+    .centre_x(codes_centre_x), .centre_y(codes_centre_y), .centre_slot(codes_slot_next), .row_y(code_newest_y_next));
   reg [X_W-1:0] codes_x;
   reg signed [YS_W-1:0] codes_y;
   reg [COST_K_W-1:0] codes_slot;
@@ -81,7 +83,7 @@ module fpstereo_code_window_cost #(
   always @(posedge clk)
     if (shift) begin
       code_newest_in_row <= {1'b0, transform_x} < width_x;
-      code_newest_y <= transform_y - RS_Y;
+      code_newest_y <= code_newest_y_next;
       codes_x <= codes_centre_x;
       codes_y <= codes_centre_y;
       codes_slot <= codes_slot_next;

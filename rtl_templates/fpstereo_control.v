@@ -56,6 +56,9 @@ module fpstereo_control #(
   output reg  [PATH_W-1:0] frame_p2,
   output reg  [6:0]        frame_uniqueness,
   output reg  [3:0]        frame_lr_threshold,
+  // the settings written equal the frame's: a next frame may follow on with them (a register,
+  // low from the cycle after a write is taken until the compare sees the written value)
+  output reg               settings_held,
   // event pulses
   input  wire              frame_done,
   input  wire              frame_dropped,
@@ -170,6 +173,10 @@ module fpstereo_control #(
       frame_uniqueness <= rst ? UNIQUENESS_INIT[6:0] : uniqueness_q;
       frame_lr_threshold <= rst ? LR_THRESHOLD_INIT[3:0] : lr_threshold_q;
     end
+
+  always @(posedge clk)
+    settings_held <= !write && !request && width_q == frame_width && height_q == frame_height && p1_q == frame_p1 &&
+                     p2_q == frame_p2 && uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
 
   // ---- Counters (wrap at 2^32).
   always @(posedge clk)

@@ -24,6 +24,9 @@ module fpstereo_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
+  // back-to-back frames (fpstereo_front_end): the read rows wrap after the frame's last, and the
+  // next frame's rows stand in for the rows below the image
+  input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
   input  wire [Y_W-1:0]     frame_height,
   // the winner-take-all's pixel: written in its last group's step
@@ -62,8 +65,8 @@ module fpstereo_disparity_reorder #(
   wire slot_end;
   fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(OUT_K_W))
-    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
-                     .row_slot(to_slot), .slot_end(slot_end));
+    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
+                     .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
   wire read_slot = out_on && slot_end;
   wire read_now = read_slot && so < frame_width && to < event_rows;

@@ -6,6 +6,11 @@
 // (semantics section 1). Outside the frame (bubble slots, rows below the image) the windows take
 // zeros. transform_x / transform_y / transform_slot are the centre of the windows of the
 // previous shift: the position of what the transform (or the SAD/ZSAD window registers) holds.
+// Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
+// the frame's last row. If the next frame has begun by the step that would take its first pixel
+// (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
+// rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
+// rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
 module fpstereo_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
@@ -24,6 +29,12 @@ module fpstereo_front_end #(
   input  wire                   adv,
   input  wire [X_W-1:0]         frame_width,
   input  wire [Y_W-1:0]         frame_height,
+  input  wire                   overlap,
+  input  wire                   next_frame,
+  output wire                   next_taken,
+  output wire                   follow_open,
+  output reg                    continuing,
+  output reg                    wrapped,
   // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
   output wire                   in_due,
   output wire                   in_take,
@@ -54,7 +65,6 @@ module fpstereo_front_end #(
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  localparam signed [YS_W-1:0] R_Y = R;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
 
@@ -63,8 +73,8 @@ module fpstereo_front_end #(
   wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
   fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(COST_K_W))
-    input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
-                    .slot_end(slot_end));
+    input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
+                    .slot(si), .row(ti), .row_slot(ti_slot), .slot_end(slot_end));
   // in_due is a register, set for the next step (the sequencer's enable depends on it), with
   // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
   // column 0 of row 0, inside every frame.
@@ -95,17 +105,35 @@ module fpstereo_front_end #(
     end
   reg  col_in, row_in, in_due_q;
   wire col_in_next = slot_end ? at_last_slot || (col_in && !at_last_col) : col_in;
-  wire row_in_next = slot_end && at_last_slot ? row_in && !at_last_row : row_in;
   wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
+  // After the frame's last row, the next frame may begin (open) until the step that predicts
+  // whether its first pixel is due (deadline); `closed` once it did not.
+  reg  awaiting, closed;
+  wire rows_end = slot_end && at_last_slot && at_last_row;
+  wire open = !closed && (awaiting || (rows_end && overlap && row_in));
+  wire deadline = slot_end_next && col_in_next;
+  wire row_in_next = open ? next_frame : slot_end && at_last_slot ? row_in && !at_last_row : row_in;
+  assign next_taken = adv && open && next_frame;
+  assign follow_open = overlap && !closed;
   always @(posedge clk)
     if (restart) begin
       col_in <= 1'b1;
       row_in <= 1'b1;
       in_due_q <= G == 1;
+      awaiting <= 1'b0;
+      closed <= 1'b0;
+      continuing <= 1'b0;
+      wrapped <= 1'b0;
     end else if (adv) begin
       col_in <= col_in_next;
       row_in <= row_in_next;
       in_due_q <= slot_end_next && col_in_next && row_in_next;
+      if (open) begin
+        continuing <= next_frame;
+        awaiting <= !next_frame && !deadline;
+        closed <= !next_frame && deadline;
+      end
+      if (rows_end && overlap) wrapped <= 1'b1;
     end
   assign in_due  = in_due_q;
   assign in_take = adv && in_due;
@@ -123,12 +151,12 @@ module fpstereo_front_end #(
   // The window's newest column is the input column itself: in the image if the input column is,
   // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
+  wire signed [YS_W-1:0] centre_y, newest_y;
   wire [COST_K_W-1:0] centre_slot;
   fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
                            .SLOT_W(COST_K_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
-    .centre_slot(centre_slot));
+    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
+    .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
@@ -152,7 +180,7 @@ module fpstereo_front_end #(
     .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
     .col_valid(centre_columns));
   fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(centre_x), .y($signed({2'b00, ti}) - R_Y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(newest_unused_columns));
   reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
   always @(posedge clk)

@@ -8,7 +8,10 @@
 //   Writing row y: each word is stored with the start of the invalid run it belongs to; when a run
 //   ends, its right neighbour (or "none" at the row end) is stored under the run's start.
 //   Reading row y - 1: the left neighbour is the last valid word read; the right one is fetched
-//   by the run start stored with the word. Two rows of each (ping-pong by row parity).
+//   by the run start stored with the word. Two rows of each (ping-pong by row parity, counted
+//   from the rows' first words so that it alternates across back-to-back frames too).
+// Once wrapped (back-to-back frames), the next frame's row 0 brings the result of this frame's
+// last row, in place of the dummy row.
 // Latency: the result for (x, y - 1) leaves 3 adv-steps after the event of (x, y).
 module fpstereo_gap_fill #(
   // the largest image width (the RAMs hold two rows of it)
@@ -24,6 +27,7 @@ module fpstereo_gap_fill #(
   // the frame's size
   input  wire [X_W-1:0]    frame_width,
   input  wire [Y_W-1:0]    frame_height,
+  input  wire              wrapped,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
@@ -49,6 +53,13 @@ module fpstereo_gap_fill #(
     // verilator lint_on WIDTH
   endfunction
 
+  // The row's half of the RAMs.
+  reg  parity_q;
+  wire parity = in_x == 0 ? !parity_q : parity_q;
+  always @(posedge clk)
+    if (restart) parity_q <= 1'b1;
+    else if (adv && in_event) parity_q <= parity;
+
   // ---- Writing row in_y.
   wire writing = in_event && in_y < frame_height;
   wire word_invalid = in_word[WORD_W-1];
@@ -64,30 +75,32 @@ module fpstereo_gap_fill #(
     end
   // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
   wire side_we = adv && writing && (word_invalid ? in_x == last_x : continues);
-  wire [ADDR_W-1:0] side_waddr = address(in_y[0], word_invalid ? start : run_start);
+  wire [ADDR_W-1:0] side_waddr = address(parity, word_invalid ? start : run_start);
 
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
-  wire reading = in_event && in_y != 0;
+  wire reading = in_event && (in_y != 0 || wrapped);
   wire [WORD_W+X_W-1:0] stored;
   fpstereo_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
-    .clk(clk), .we(adv && writing), .waddr(address(in_y[0], in_x)), .wdata({in_word, start}),
-    .re(adv), .raddr(address(!in_y[0], in_x)), .rdata(stored));
+    .clk(clk), .we(adv && writing), .waddr(address(parity, in_x)), .wdata({in_word, start}),
+    .re(adv), .raddr(address(!parity, in_x)), .rdata(stored));
   reg           event1;
   reg [X_W-1:0] x1;
   reg [Y_W-1:0] y1;
+  reg           parity1;
   always @(posedge clk)
     if (restart) event1 <= 1'b0;
     else if (adv) begin
       event1 <= reading;
       x1 <= in_x;
-      y1 <= in_y - 1'b1;
+      y1 <= in_y == 0 ? frame_height - 1'b1 : in_y - 1'b1;
+      parity1 <= !parity;
     end
   wire [WORD_W-1:0] word1 = stored[WORD_W+X_W-1 -: WORD_W];
   wire [X_W-1:0]    start1 = stored[X_W-1:0];
   wire [WORD_W-1:0] right2;
   fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
     .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
-    .re(adv), .raddr(address(y1[0], start1)), .rdata(right2));
+    .re(adv), .raddr(address(parity1, start1)), .rdata(right2));
 
   reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
   wire [WORD_W-1:0] left_before = x1 == 0 ? INVALID : left;

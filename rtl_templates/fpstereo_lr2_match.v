@@ -38,6 +38,9 @@ module fpstereo_lr2_match #(
   input  wire                 restart,
   input  wire                 adv,
   input  wire                 match_on,
+  // back-to-back frames, as fpstereo_aggregator takes them
+  input  wire                 overlap,
+  input  wire                 wrapped,
   input  wire [X_W-1:0]       frame_width,
   input  wire [Y_W-1:0]       frame_height,
   input  wire [PATH_W-1:0]    p1,
@@ -90,7 +93,7 @@ module fpstereo_lr2_match #(
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(match_on), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
+    .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
     .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
   wire              active_w;
   wire [X_W-1:0]    x_w;

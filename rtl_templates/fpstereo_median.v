@@ -19,6 +19,8 @@ module fpstereo_median #(
   input  wire             adv,
   input  wire [X_W-1:0]   frame_width,
   input  wire [Y_W-1:0]   frame_height,
+  // back-to-back frames: once wrapped, the rows above row 0 are the previous frame's
+  input  wire             wrapped,
   input  wire             in_done,
   input  wire [X_W-1:0]   in_x,
   input  wire [Y_W-1:0]   in_y,
@@ -50,10 +52,11 @@ module fpstereo_median #(
   wire signed [YS_W-1:0] centre_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
   wire centre_slot;
+  wire signed [YS_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
   fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
-    .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .centre_x(centre_x), .centre_y(centre_y),
-    .centre_slot(centre_slot));
+    .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
+    .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
   reg signed [YS_W-1:0] median_y;
   reg           fresh;     // high in the step after a shift: one result per slot

@@ -1,7 +1,9 @@
 `resetall
 `default_nettype none
 // Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
-// row-time `row`, and row mod K (which row of a K-row reorder RAM the row uses).
+// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
+// row-time returns to 0 after the frame's last (fpstereo_frame_row); the RAM row counts on modulo
+// K regardless, so that the next frame's rows take the RAM rows that follow.
 module fpstereo_raster_counter #(
   parameter G = 4,
   parameter ROW_SLOTS = 64,
@@ -14,9 +16,11 @@ module fpstereo_raster_counter #(
   input  wire           clk,
   input  wire           restart,
   input  wire           en,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
   output reg  [G_W-1:0] group,
   output reg  [X_W-1:0] slot,
-  output reg  [Y_W-1:0] row,
+  output wire [Y_W-1:0] row,
   output reg  [K_W-1:0] row_slot,
   output wire           slot_end
 );
@@ -40,17 +44,19 @@ module fpstereo_raster_counter #(
     if (restart) begin
       group <= 0;
       slot <= 0;
-      row <= 0;
       row_slot <= 0;
     end else if (en) begin
       group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
       if (slot_end) begin
         slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
-        if (slot == LAST_SLOT) begin
-          row <= row + 1'b1;
+        if (slot == LAST_SLOT)
           row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
-        end
       end
     end
+  /* verilator lint_off PINCONNECTEMPTY */
+  fpstereo_frame_row #(.Y_W(Y_W)) frame_row (
+    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
+    .row(row), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
 endmodule
 `resetall

@@ -2,9 +2,11 @@
 `default_nettype none
 // The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
 // and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
-// Rows are signed: a centre may lie above the image. The centre's row modulo ROWS (its slot in
-// a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
-// would be slow logic).
+// Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
+// earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
+// above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
+// in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
+// would be slow logic). row_y is the centre row of the entering column (no borrow).
 module fpstereo_window_centre #(
   parameter LAG = 2,
   parameter ROW_SLOTS = 64,
@@ -18,9 +20,12 @@ module fpstereo_window_centre #(
   input  wire [X_W-1:0]         x,
   input  wire signed [YS_W-1:0] y,
   input  wire [SLOT_W-1:0]      slot,
+  input  wire                   wrapped,
+  input  wire signed [YS_W-1:0] height,
   output wire [X_W-1:0]         centre_x,
   output wire signed [YS_W-1:0] centre_y,
-  output wire [SLOT_W-1:0]      centre_slot
+  output wire [SLOT_W-1:0]      centre_slot,
+  output wire signed [YS_W-1:0] row_y
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -41,7 +46,13 @@ module fpstereo_window_centre #(
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
-  assign centre_y = y - LAG_Y - (borrow ? 1 : 0);
+  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  // Both rows and their wrapped forms in parallel, then chosen.
+  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
+  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
   assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
   /* verilator lint_on WIDTH */

@@ -43,7 +43,7 @@ endfunction()
 check_module(aggregator
   "-GW=60 -GPATHS=5 -GUF=4" "-GW=60 -GPATHS=5 -GUF=4 -GSLEN=29"
   aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W
-  path_lanes path_minimum min_tree delay ram_sdp ram_async)
+  frame_row path_lanes path_minimum min_tree delay ram_sdp ram_async)
 check_module(window "-GN=3 -GROW_SLOTS=40 -GADDR_W=6" "-GN=3 -GROW_SLOTS=40 -GADDR_W=5"
   window_ADDR_W_below_clog2_ROW_SLOTS ram_sdp)
 check_module(min_tree "-GN=5 -GIDX_W=3" "-GN=9 -GIDX_W=3" min_tree_IDX_W_does_not_hold_N_minus_1)

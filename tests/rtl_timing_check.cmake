@@ -70,7 +70,7 @@ set(expected
     "FAIL: measured a first-output latency of ${latency} cycles, the design states ${wrong_latency}\n"
     "registers: VERSION="
     " CYCLES_PER_FRAME=${wrong_cycles} WIDTH="  # read back from the altered INFO word, no error
-    "FAIL: 2 frames compared, 0 mismatching pixels, 0 protocol errors, 0 register errors, 2 timing errors\n")
+    "FAIL: 4 frames compared, 0 mismatching pixels, 0 protocol errors, 0 register errors, 2 timing errors\n")
 foreach(line IN LISTS expected)
   string(FIND "${out}" "${line}" at)
   if(at EQUAL -1)

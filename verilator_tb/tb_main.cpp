@@ -1,14 +1,15 @@
 // fpstereo-tb: streams stereo pairs through the Verilated pipeline and checks every output pixel
 // against the golden model, the output stream's protocol, the throughput and the status registers.
 //
-// Runs, each from reset: a throughput run (2 frames, no idle cycles, no backpressure) that
-// measures latency and cycles per frame, fails unless they are exactly what the design states in
-// its banner (check_timing), and tries writes the control interface must refuse;
+// Runs, each from reset: a throughput run (4 frames back to back, no idle cycles, no backpressure)
+// that measures latency and cycles per frame, fails unless they are exactly what the design states
+// in its banner (check_timing), and tries writes the control interface must refuse;
 // the checked run with the requested idle and backpressure probabilities and run-time settings
 // (--set, written during frame 0, in effect from frame 1); then one run per framing fault
 // (--fault). Every frame a fault does not truncate is compared pixel for pixel.
 // Exit status: 0 pass, 1 mismatch, protocol, register or timing error, 2 bad input, 3 timeout.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -256,12 +257,14 @@ void expect_counters(Run& run, uint32_t done, uint32_t dropped, uint32_t truncat
 #endif
 }
 
-// Two clean frames. With the control interface, also writes the design must refuse (out of
-// range, breaking P1 <= P2, read-only), and reads of what the design says it is.
+// Frames of the throughput run: the steady state is measured over the last three.
+constexpr int kThroughputFrames = 4;
+
+// Clean frames back to back. With the control interface, also writes the design must refuse (out
+// of range, breaking P1 <= P2, read-only), and reads of what the design says it is.
 Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs) {
   Run run{"throughput run, no idle, no backpressure"};
-  add_frame(run, pairs[0], cfg);
-  add_frame(run, pairs[1 % pairs.size()], cfg);
+  for (int i = 0; i < kThroughputFrames; ++i) add_frame(run, pairs[i % pairs.size()], cfg);
   uint32_t refused = 0;
 #ifdef FPSTEREO_TB_CONTROL
   const std::vector<RegisterAccess> bad = {{FPS_REG(WIDTH), uint32_t(cfg.width) + 1},
@@ -282,7 +285,7 @@ Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs
   expect_register(run, "WIDTH", FPS_REG(WIDTH), uint32_t(cfg.width));
   expect_register(run, "P2", FPS_REG(P2), uint32_t(cfg.p2));
 #endif
-  expect_counters(run, 2, 0, 0, 0, refused);
+  expect_counters(run, kThroughputFrames, 0, 0, 0, refused);
   return run;
 }
 
@@ -379,9 +382,10 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
     errors = 1;
   } else if (fault == "reset") {
-    // aresetn in the middle of F: its output is cut short, the counters start again, the rest
-    // of F is skipped (one error), B and C follow.
-    run.plan.actions.push_back({a_beats + f_beats / 2, {}, true});
+    // aresetn as F's last row begins: F's output is cut short, the counters start again, the
+    // rest of F is skipped (one error), B and C follow. A is complete by then even where F
+    // follows A on: frames overlap only where the drain is at least two rows shorter than a frame.
+    run.plan.actions.push_back({a_beats + f_beats - size_t(w), {}, true});
     done = 2;
     errors = 1;
   } else if (fault == "disable") {
@@ -471,39 +475,46 @@ uint64_t ideal_cycles_per_frame(const StereoConfig& cfg) {
 }
 
 // Prints the throughput run's timing and checks it against what the design states, exactly:
-//   cycles per frame: between the last output handshakes of frames 0 and 1 (steady state; the
-//     sources never withhold a pixel and the sink is always ready, so the design alone sets it),
-//     equal to the banner's "expected cycles per frame without stalls";
+//   cycles per frame: between the last output handshakes of consecutive frames, each of the three
+//     intervals of the four frames (steady state; the sources never withhold a pixel and the sink
+//     is always ready, so the design alone sets it), equal to the banner's "expected cycles per
+//     frame without stalls";
 //   first-output latency: from the cycle of the first input handshake (either stream; cycles
 //     counted at the rising edge) to the cycle of frame 0's first output handshake, equal to the
 //     banner's "Latency from the first input handshake to the first output handshake".
 // Returns the number of timing errors, each printed as a FAIL line.
 size_t check_timing(const StreamRun& run, const StereoConfig& cfg, const StatedTiming& stated) {
-  if (run.frame_start_cycle.size() < 2 || run.frame_end_cycle.size() < 2) {
-    fmt::print("FAIL: the throughput run did not complete two frames, nothing to measure\n");
+  const size_t frames = kThroughputFrames;
+  if (run.frame_start_cycle.size() < frames || run.frame_end_cycle.size() < frames) {
+    fmt::print("FAIL: the throughput run did not complete {} frames, nothing to measure\n", frames);
     return 1;
   }
   const uint64_t first_output = run.frame_start_cycle[0] - run.first_input_cycle;
   const uint64_t latency = run.frame_end_cycle[0] - run.first_input_cycle;
-  const uint64_t per_frame = run.frame_end_cycle[1] - run.frame_end_cycle[0];
+  std::vector<uint64_t> intervals;
+  for (size_t i = 1; i < frames; ++i) intervals.push_back(run.frame_end_cycle[i] - run.frame_end_cycle[i - 1]);
+  const uint64_t per_frame = (run.frame_end_cycle[frames - 1] - run.frame_end_cycle[0]) / (frames - 1);
   const uint64_t ideal = ideal_cycles_per_frame(cfg);
   fmt::print("first output: {} cycles (first input handshake to the first frame's first output pixel)\n",
              first_output);
   fmt::print("latency: {} cycles (first input handshake to the first frame's last output pixel)\n", latency);
-  fmt::print("steady state: {} cycles per frame (between the last output pixels of frames 0 and 1)\n",
-             per_frame);
-  fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.3f}\n", ideal, cfg.width,
+  fmt::print("steady state: {} cycles per frame over frames 0 to {} (intervals {})\n", per_frame, frames - 1,
+             fmt::join(intervals, ", "));
+  fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.4f}\n", ideal, cfg.width,
              cfg.height, cfg.dmax, cfg.uf, double(per_frame) / double(ideal));
   size_t errors = 0;
+  const bool uniform = std::all_of(intervals.begin(), intervals.end(), [&](uint64_t i) { return i == per_frame; });
   if (!stated.cycles_per_frame) {
     fmt::print(
         "FAIL: the design does not state its cycles per frame (no 'expected cycles per frame without "
         "stalls: N' in the banner of {})\n",
         FPSTEREO_TB_TOP_FILE);
     ++errors;
+  } else if (!uniform) {
+    fmt::print("FAIL: the frames ended {} cycles apart, not at one steady interval\n", fmt::join(intervals, ", "));
+    ++errors;
   } else if (per_frame != *stated.cycles_per_frame) {
-    fmt::print("FAIL: measured {} cycles per frame, the design states {}\n", per_frame,
-               *stated.cycles_per_frame);
+    fmt::print("FAIL: measured {} cycles per frame, the design states {}\n", per_frame, *stated.cycles_per_frame);
     ++errors;
   }
   if (!stated.first_output_latency) {
@@ -571,9 +582,9 @@ int run_bench(const Options& opt) {
   }
   totals.timing_errors += check_timing(measured, cfg, stated);
 
-  // With neither idle cycles nor backpressure, up to two plain frames repeat the throughput run.
+  // With neither idle cycles nor backpressure, up to four plain frames repeat the throughput run.
   std::vector<Run> runs;
-  if (opt.idle > 0 || opt.backpressure > 0 || opt.frames > 2 || !writes.empty())
+  if (opt.idle > 0 || opt.backpressure > 0 || opt.frames > kThroughputFrames || !writes.empty())
     runs.push_back(checked_run(opt, cfg, pairs, writes, after, pairs_after));
   for (const auto& fault : faults) runs.push_back(fault_run(fault, opt, cfg, pairs));
   settings.idle = opt.idle;

@@ -61,8 +61,10 @@ std::string banner(const RtlDesign& d) {
      << " interleaved chains of " << d.segment << " pixels, " << d.row_slots << " slots per row-time\n"
      << "// Initiation interval: " << d.groups
      << " cycles per pixel; expected cycles per frame without stalls: " << d.cycles_per_frame
-     << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.latency_cycles
-     << "\n"
+     << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.extra_cycles
+     << (d.cycles_per_frame < d.lone_frame_cycles ? " (frames back to back)" : " (each frame drains first)")
+     << "; a lone frame: " << d.lone_frame_cycles << "; frames follow on from " << d.overlap_height
+     << " rows\n"
      << "// Latency without stalls from the first input handshake to the first output handshake: "
      << d.first_output_latency << " cycles\n"
      << "// Stages in data order, their latency (row-times, slots, steps) and the settings they own:\n";
@@ -132,7 +134,7 @@ std::string top_module(const RtlDesign& d) {
         side, d.prefix);
   os << fmt::format(
       "\n  // The frame's settings, fixed while the core runs it.\n"
-      "  wire enable, core_idle, core_start, frame_done;\n"
+      "  wire enable, core_idle, core_follow, settings_held, core_start, frame_done;\n"
       "  wire frame_dropped, frame_truncated, protocol_error;\n"
       "  wire [{}:0] frame_width;\n  wire [{}:0] frame_height;\n  wire [{}:0] p1, p2;\n"
       "  wire [6:0] uniqueness;\n  wire [3:0] lr_threshold;\n",
@@ -158,10 +160,10 @@ std::string top_module(const RtlDesign& d) {
     os << "    .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),\n"
        << "    .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),\n"
        << "    .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),\n"
-       << "    .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n";
+       << "    .frame_truncated(frame_truncated), .protocol_error(protocol_error), .settings_held(settings_held));\n";
   } else {
     os << fmt::format(
-        "  assign enable = 1'b1;\n  assign frame_width = {}'d{};\n  assign frame_height = {}'d{};\n"
+        "  assign enable = 1'b1;\n  assign settings_held = 1'b1;\n  assign frame_width = {}'d{};\n  assign frame_height = {}'d{};\n"
         "  assign p1 = {}'d{};\n  assign p2 = {}'d{};\n  assign uniqueness = 7'd{};\n  assign lr_threshold = 4'd{};\n"
         "  // Without a control interface there is nothing to count into.\n"
         "  wire unused_events = &{{1'b0, frame_done, frame_dropped, frame_truncated, protocol_error}};\n",
@@ -175,7 +177,8 @@ std::string top_module(const RtlDesign& d) {
       "    .clk(aclk), .rst(rst), .enable(enable),\n"
       "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
       "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
-      "    .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),\n"
+      "    .core_idle(core_idle || (core_follow && settings_held)), .core_start(core_start), .frame_width(frame_width),\n"
+      "    .frame_height(frame_height),\n"
       "    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),\n"
       "    .in_take(framed_valid && framed_ready),\n"
       "    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n"
@@ -191,7 +194,7 @@ std::string top_module(const RtlDesign& d) {
      << fmt::format("  wire [{}:0] out_word;\n", w.disparity);
   os << fmt::format(
       "  {}_sgm_core core (\n"
-      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle),\n"
+      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),\n"
       "    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),\n"
       "    .lr_threshold(lr_threshold),\n"
       "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
@@ -221,8 +224,9 @@ std::string core_module(const RtlDesign& d) {
   for (const auto& stage : d.stages) os << "//   " << stage->title() << "\n";
   os << "module " << d.prefix << "_sgm_core (\n"
      << "  input  wire clk,\n  input  wire rst,\n"
-     << "  // Frames: while idle, start begins one; the settings hold until the core is idle again.\n"
-     << "  input  wire start,\n  output wire idle,\n"
+     << "  // Frames: while idle, start begins one; the settings hold until the core is idle again. While\n"
+     << "  // follow is high, start begins the next frame with the same settings, to follow on.\n"
+     << "  input  wire start,\n  output wire idle,\n  output wire follow,\n"
      << fmt::format("  input  wire [{}:0] frame_width,\n  input  wire [{}:0] frame_height,\n", d.x_bits - 1,
                     d.y_bits - 1)
      << fmt::format("  input  wire [{0}:0] p1,\n  input  wire [{0}:0] p2,\n", w.path_cost - 1);
@@ -277,7 +281,7 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.chains = std::max(2, 1 + ceil_div(d.path_tree_latency + kPathLanesLatency, d.groups));
   // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
   // where dmax < 128 (width >= 16) and K <= 6 otherwise.
-  d.segment = ceil_div(cfg.width, d.chains);
+  d.segment = ceil_div(cfg.width + (d.groups == 1 ? kFollowBubbles : 0), d.chains);
   d.row_slots = d.chains * d.segment;
   const int lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
   d.cost_rows = d.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
@@ -298,19 +302,24 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // pixel (0, 0) on.
   const int64_t push_first = at - kStepsAfterPush;
   const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
-  d.cycles_per_frame = at + last_pixel * G;
+  d.lone_frame_cycles = at + last_pixel * G;
+  // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
+  // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
+  // and a frame is done before the one after the next begins).
+  d.overlap_height = int(ceil_div(push_first, R * G) + 2);
+  d.cycles_per_frame = cfg.height >= d.overlap_height ? int64_t(cfg.height) * R * G : d.lone_frame_cycles;
   // At the ports: the input register slice, the cycle in which the framing stage starts the core
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
   d.first_output_latency = push_first + 4;
-  d.latency_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
+  d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
   d.x_bits = bits_for(uint64_t(R));
-  d.y_bits = bits_for(uint64_t(ceil_div(d.cycles_per_frame, R * G) + 2));
+  d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
   d.signed_y_bits = d.y_bits + 2;
   d.group_bits = bits_for(uint64_t(G - 1));
   d.chain_bits = bits_for(uint64_t(d.chains - 1));
   d.lane_bits = std::max(1, clog2(cfg.uf));
-  d.step_bits = bits_for(uint64_t(d.cycles_per_frame + 16));
+  d.step_bits = bits_for(uint64_t(d.lone_frame_cycles + 16));
   d.cost_row_bits = clog2(d.cost_rows);
   d.out_row_bits = clog2(d.out_rows);
   d.cost_addr_bits = clog2(d.cost_depth());

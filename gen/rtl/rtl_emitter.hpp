@@ -47,8 +47,10 @@ struct RtlDesign {
   // steps from a frame's first step to the start of each stage with a schedule of its own, by
   // its start parameter (AGG_START: aggregation, MATCH_START: LR2's match side, OUT_START: output)
   std::map<std::string, int64_t> start_steps;
-  int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls
-  int64_t latency_cycles = 0;        // cycles_per_frame - W * H * G
+  int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls, back to back
+  int64_t lone_frame_cycles = 0;     // the same when the next frame waits for this one to drain
+  int overlap_height = 0;            // the smallest frame height at which frames follow on
+  int64_t extra_cycles = 0;          // cycles_per_frame - W * H * G: bubble slots, or the drain
   int64_t first_output_latency = 0;  // cycles from the first input handshake to the first output one
   int output_bits = 0;               // tdata width of m_axis_disp (8 or 16)
   // the range of the run-time image size (the configured size is the largest)

@@ -133,11 +133,25 @@ class FramingStage : public Stage {
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     return "  // Frame sequencing: adv is every stage's enable.\n" + wire(1, "adv") + wire(1, "restart") +
            wire(1, "in_due") + wire(1, "out_due") + wire(1, "frame_done") + wire(d.step_bits, "step") +
+           wire(1, "follow_open") + wire(1, "next_frame") + wire(1, "next_taken") + wire(1, "continuing") +
+           wire(1, "wrapped") +
+           fmt::format(
+               "  // Frames follow on (docs/architecture.md, \"Back-to-back frames\") when they are taller\n"
+               "  // than the pipeline's drain.\n"
+               "  localparam OVERLAP_HEIGHT = {};\n"
+               "  reg overlap;\n"
+               "  always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;\n",
+               d.overlap_height) +
            instance("fpstereo_sequencer", "sequencer", {{"STEP_W", num(d.step_bits)}},
                     {{"clk", "clk"},
                      {"rst", "rst"},
                      {"start", "start"},
                      {"idle", "idle"},
+                     {"follow_open", "follow_open"},
+                     {"follow", "follow"},
+                     {"next_frame", "next_frame"},
+                     {"next_taken", "next_taken"},
+                     {"continuing", "continuing"},
                      {"in_due", "in_due"},
                      {"in_valid", "in_valid"},
                      {"out_due", "out_due"},
@@ -174,8 +188,8 @@ class WindowStage : public Stage {
             {"core.front_end.right_window.line_buffer.mem", d.row_slots, bits}};
   }
   std::vector<std::string> modules(const RtlDesign& d) const override {
-    std::vector<std::string> m = {"fpstereo_front_end", "fpstereo_raster_counter", "fpstereo_window",
-                                  "fpstereo_window_centre", "fpstereo_window_bounds"};
+    std::vector<std::string> m = {"fpstereo_front_end", "fpstereo_raster_counter", "fpstereo_frame_row",
+                                  "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds"};
     if (transform_)
       m.insert(m.end(), {"fpstereo_transform", d.cfg.cost == CostFunction::Rank ? "fpstereo_rank" : "fpstereo_census"});
     return m;
@@ -198,7 +212,13 @@ class WindowStage : public Stage {
                    {"Y_W", num(d.y_bits)},
                    {"YS_W", num(d.signed_y_bits)},
                    {"G_W", num(d.group_bits)}},
-                  frame_ports() + Values{{"in_due", "in_due"},
+                  frame_ports() + Values{{"overlap", "overlap"},
+                   {"next_frame", "next_frame"},
+                   {"next_taken", "next_taken"},
+                   {"follow_open", "follow_open"},
+                   {"continuing", "continuing"},
+                   {"wrapped", "wrapped"},
+                   {"in_due", "in_due"},
                    {"in_take", "in_take"},
                    {"in_left", "in_left"},
                    {"in_right", "in_right"},
@@ -345,6 +365,7 @@ class CostStage : public Stage {
                       {"COST_ROWS", num(d.cost_rows)},  {"Y_W", num(d.y_bits)}};
         ports.insert(ports.end(), {{"frame_width", "frame_width"},
                                    {"frame_height", "frame_height"},
+                                   {"wrapped", "wrapped"},
                                    {"code_base", "code_base"},
                                    {"code_match", "code_match"}});
         break;
@@ -480,8 +501,8 @@ class AggregationStage : public Stage {
     return aggregator_memories(d, "core.aggregation");
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
-    return {"fpstereo_aggregator", "fpstereo_path_lanes", "fpstereo_path_minimum", "fpstereo_min_tree",
-            "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"};
+    return {"fpstereo_aggregator", "fpstereo_frame_row", "fpstereo_path_lanes", "fpstereo_path_minimum",
+            "fpstereo_min_tree", "fpstereo_delay", "fpstereo_ram_sdp", "fpstereo_ram_async"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     std::string v = "\n  // Aggregation in K interleaved chains, from step AGG_START.\n" +
@@ -493,6 +514,8 @@ class AggregationStage : public Stage {
                         frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
                          {"agg_on", "agg_on"},
+                         {"overlap", "overlap"},
+                         {"wrapped", "wrapped"},
                          {"cost_raddr", "cost_raddr"},
                          {"cost_q", "cost_q"},
                          {"sums", "agg_sums"},
@@ -598,8 +621,8 @@ class Lr2MatchStage : public Stage {
     return out;
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
-    return {"fpstereo_lr2_match", "fpstereo_ram_sdp", "fpstereo_aggregator", "fpstereo_wta", "fpstereo_min_tree",
-            "fpstereo_delay"};
+    return {"fpstereo_lr2_match", "fpstereo_ram_sdp", "fpstereo_aggregator", "fpstereo_frame_row", "fpstereo_wta",
+            "fpstereo_min_tree", "fpstereo_delay"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const StereoConfig& c = d.cfg;
@@ -613,7 +636,9 @@ class Lr2MatchStage : public Stage {
            start_flag(d, *this, "match_on") + completed_wires(d) +
            instance("fpstereo_lr2_match", "lr2_match", parameters,
                     frame_ports() + Values{{"match_on", "match_on"},
-                                          {"p1", "p1"},
+                     {"overlap", "overlap"},
+                     {"wrapped", "wrapped"},
+                     {"p1", "p1"},
                      {"p2", "p2"},
                      {"cost_valid", "cost_valid"},
                      {"cost_x", "cost_x"},
@@ -711,7 +736,7 @@ class DisparityReorderStage : public Stage {
     return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), d.widths.disparity + 1}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
-    return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_ram_sdp"};
+    return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_frame_row", "fpstereo_ram_sdp"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     stream = {"read_done", "read_event", "read_x", "read_y", "read_word"};
@@ -733,6 +758,7 @@ class DisparityReorderStage : public Stage {
                      {"restart", "restart"},
                      {"adv", "adv"},
                      {"out_on", "out_on"},
+                     {"overlap", "overlap"},
                      {"frame_width", "frame_width"},
                      {"frame_height", "frame_height"},
                      {"active", "wta_active"},
@@ -864,7 +890,7 @@ class MedianStage : public Stage {
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)},
                      {"YS_W", num(d.signed_y_bits)}},
-                    frame_ports() + Values{{"in_done", in.done}} + stream_ports(in, stream));
+                    frame_ports() + Values{{"wrapped", "wrapped"}, {"in_done", in.done}} + stream_ports(in, stream));
   }
 
   // ---- HLS: the median window (positions outside the image invalid) and the selection.
@@ -905,7 +931,7 @@ class GapStage : public Stage {
                      {"WORD_W", num(d.widths.disparity + 1)},
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)}},
-                    frame_ports() + Values{{"in_event", in.event}} + stream_ports(in, stream));
+                    frame_ports() + Values{{"wrapped", "wrapped"}, {"in_event", in.event}} + stream_ports(in, stream));
   }
 
   // ---- HLS: one row behind its input.

@@ -27,6 +27,12 @@ struct Latency {
 // which the sequencer starts (fpstereo_sequencer). The output stage's latency ends with them.
 constexpr int64_t kStepsAfterPush = 3;
 
+// Bubble slots a row-time keeps at its end when G = 1, so that a frame that follows on finds its
+// first pixel there when due: it reaches the core three cycles after the core took the frame
+// before's last (the framing stage rests a cycle, starts the frame, then passes the pixel through
+// the pixel register slice). With G >= 2 that slice runs a pixel ahead, which covers it.
+constexpr int kFollowBubbles = 2;
+
 // A RAM a stage instantiates: its name as Yosys gives it after flattening the top
 // ("core.cost_reorder.cost_ram.mem"), its shape and whether its read is registered (block RAM)
 // or asynchronous (distributed RAM).

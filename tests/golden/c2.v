@@ -20,7 +20,7 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1892881 = W*H*dmax/uf (1863000) + 29881
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892881; frames follow on from 9 rows
 // Latency without stalls from the first input handshake to the first output handshake: 29886 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
@@ -98,7 +98,7 @@ module fps_census7_d128u32_816da4_top (
     .m_data(right_beat), .m_valid(right_valid), .m_ready(right_ready));
 
   // The frame's settings, fixed while the core runs it.
-  wire enable, core_idle, core_start, frame_done;
+  wire enable, core_idle, core_follow, settings_held, core_start, frame_done;
   wire frame_dropped, frame_truncated, protocol_error;
   wire [10:0] frame_width;
   wire [8:0] frame_height;
@@ -109,7 +109,7 @@ module fps_census7_d128u32_816da4_top (
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
     .LR_SETTABLE(0), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00816da4),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1892881, 32'd4, 32'd128, 32'd526343, 32'd80, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
+    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd80, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst),
     .s_axi_awaddr(s_axi_ctrl_awaddr),
@@ -132,7 +132,7 @@ module fps_census7_d128u32_816da4_top (
     .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),
     .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),
-    .frame_truncated(frame_truncated), .protocol_error(protocol_error));
+    .frame_truncated(frame_truncated), .protocol_error(protocol_error), .settings_held(settings_held));
 
   // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.
   wire framed_valid, framed_ready;
@@ -141,7 +141,8 @@ module fps_census7_d128u32_816da4_top (
     .clk(aclk), .rst(rst), .enable(enable),
     .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
     .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
-    .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width), .frame_height(frame_height),
+    .core_idle(core_idle || (core_follow && settings_held)), .core_start(core_start), .frame_width(frame_width),
+    .frame_height(frame_height),
     .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
     .in_take(framed_valid && framed_ready),
     .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));
@@ -158,7 +159,7 @@ module fps_census7_d128u32_816da4_top (
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
   fps_census7_d128u32_816da4_sgm_core core (
-    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle),
+    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),
     .lr_threshold(lr_threshold),
     .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
@@ -189,9 +190,11 @@ endmodule
 module fps_census7_d128u32_816da4_sgm_core (
   input  wire clk,
   input  wire rst,
-  // Frames: while idle, start begins one; the settings hold until the core is idle again.
+  // Frames: while idle, start begins one; the settings hold until the core is idle again. While
+  // follow is high, start begins the next frame with the same settings, to follow on.
   input  wire start,
   output wire idle,
+  output wire follow,
   input  wire [10:0] frame_width,
   input  wire [8:0] frame_height,
   input  wire [7:0] p1,
@@ -221,11 +224,23 @@ module fps_census7_d128u32_816da4_sgm_core (
   wire out_due;
   wire frame_done;
   wire [20:0] step;
+  wire follow_open;
+  wire next_frame;
+  wire next_taken;
+  wire continuing;
+  wire wrapped;
+  // Frames follow on (docs/architecture.md, "Back-to-back frames") when they are taller
+  // than the pipeline's drain.
+  localparam OVERLAP_HEIGHT = 9;
+  reg overlap;
+  always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
   fps_census7_d128u32_816da4_sequencer #(
     .STEP_W(21)
   ) sequencer (
-    .clk(clk), .rst(rst), .start(start), .idle(idle), .in_due(in_due), .in_valid(in_valid), .out_due(out_due),
-    .out_ready(out_ready), .frame_done(frame_done), .adv(adv), .step(step), .restart(restart));
+    .clk(clk), .rst(rst), .start(start), .idle(idle), .follow_open(follow_open), .follow(follow),
+    .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing), .in_due(in_due),
+    .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .frame_done(frame_done), .adv(adv),
+    .step(step), .restart(restart));
 
   // Window stage: line buffers, windows, their bounds and centres.
   wire shift;
@@ -245,10 +260,12 @@ module fps_census7_d128u32_816da4_sgm_core (
     .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_K_W(1), .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .in_due(in_due), .in_take(in_take), .in_left(in_left), .in_right(in_right), .group(group),
-    .slot_end(slot_end), .shift(shift), .window_left(window_left), .window_right(window_right),
-    .row_valid(row_valid), .col_valid(col_valid), .newest_row_valid(newest_row_valid),
-    .transform_x(transform_x), .transform_y(transform_y), .transform_slot(transform_slot));
+    .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
+    .continuing(continuing), .wrapped(wrapped), .in_due(in_due), .in_take(in_take), .in_left(in_left),
+    .in_right(in_right), .group(group), .slot_end(slot_end), .shift(shift), .window_left(window_left),
+    .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
+    .newest_row_valid(newest_row_valid), .transform_x(transform_x), .transform_y(transform_y),
+    .transform_slot(transform_slot));
   wire [47:0] code_base;
   wire [47:0] code_match;
   fps_census7_d128u32_816da4_transform #(
@@ -309,8 +326,8 @@ module fps_census7_d128u32_816da4_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(agg_on), .cost_raddr(cost_raddr), .cost_q(cost_q), .sums(agg_sums),
-    .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
+    .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
+    .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
     .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
@@ -346,7 +363,7 @@ module fps_census7_d128u32_816da4_sgm_core (
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(3), .OUT_K_W(2), .DISP_AW(12), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
-    .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .frame_width(frame_width),
+    .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
     .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
     .word(wta_word), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
     .read_slot_row(read_slot_row), .read_word(read_word));
@@ -362,8 +379,8 @@ module fps_census7_d128u32_816da4_sgm_core (
     .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(0), .X_W(11), .Y_W(9), .YS_W(11)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .in_done(read_done), .in_x(read_x), .in_y(read_y), .in_word(read_word), .out_event(median_event),
-    .out_x(median_x), .out_y(median_y), .out_word(median_word));
+    .wrapped(wrapped), .in_done(read_done), .in_x(read_x), .in_y(read_y), .in_word(read_word),
+    .out_event(median_event), .out_x(median_x), .out_y(median_y), .out_word(median_word));
 
   // Output: registered, so that the sequencer's inputs are flip-flops.
   reg out_event_q, out_first_q, out_last_q, frame_done_q;
@@ -395,12 +412,15 @@ endmodule
 `resetall
 `default_nettype none
 // Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
-// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has
-// its first pixel by then); from then on the step counter advances in every cycle where adv is high, and adv is
-// the one enable of every stage, so the whole pipeline stalls together. adv is low while a stage
-// is due to take an input pixel that is not there (in_due) or to push an output word that cannot
-// leave (out_due). The frame ends in the step that pushes its last word (frame_done); restart
-// clears the stages' valid flags then and at reset.
+// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has its
+// first pixel by then); from then on the step counter advances in every cycle where adv is high,
+// and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
+// while a stage is due to take an input pixel that is not there (in_due) or to push an output word
+// that cannot leave (out_due). While a frame runs and the window stage can still take a following
+// one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
+// frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
+// last word (frame_done); unless the next frame follows on (continuing), restart clears the
+// stages' valid flags then, as at reset.
 module fps_census7_d128u32_816da4_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -408,6 +428,11 @@ module fps_census7_d128u32_816da4_sequencer #(
   input  wire              rst,
   input  wire              start,
   output wire              idle,
+  input  wire              follow_open,
+  output wire              follow,
+  output wire              next_frame,
+  input  wire              next_taken,
+  input  wire              continuing,
   input  wire              in_due,
   input  wire              in_valid,
   input  wire              out_due,
@@ -423,8 +448,9 @@ module fps_census7_d128u32_816da4_sequencer #(
       fps_census7_d128u32_816da4_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
-  reg starting, in_frame;
+  reg starting, in_frame, pending;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
+  wire ends = adv && frame_done && !continuing;
   always @(posedge clk)
     if (rst) begin
       starting <= 1'b0;
@@ -432,13 +458,19 @@ module fps_census7_d128u32_816da4_sequencer #(
     end else begin
       starting <= start && idle;
       if (!in_frame) in_frame <= starting;
-      else if (adv && frame_done) in_frame <= 1'b0;
+      else if (ends) in_frame <= 1'b0;
     end
   assign idle = !in_frame && !starting;
+  assign follow = in_frame && follow_open && !pending;
+  assign next_frame = pending;
+  always @(posedge clk)
+    if (restart || next_taken) pending <= 1'b0;
+    else if (start && follow) pending <= 1'b1;
+  // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
   always @(posedge clk)
     if (rst) step <= 0;
-    else if (adv) step <= frame_done ? {STEP_W{1'b0}} : step + 1'b1;
-  assign restart = rst || (adv && frame_done);
+    else if (adv) step <= ends ? {STEP_W{1'b0}} : step + 1'b1;
+  assign restart = rst || ends;
 endmodule
 `resetall
 
@@ -724,6 +756,9 @@ module fps_census7_d128u32_816da4_control #(
   output reg  [PATH_W-1:0] frame_p2,
   output reg  [6:0]        frame_uniqueness,
   output reg  [3:0]        frame_lr_threshold,
+  // the settings written equal the frame's: a next frame may follow on with them (a register,
+  // low from the cycle after a write is taken until the compare sees the written value)
+  output reg               settings_held,
   // event pulses
   input  wire              frame_done,
   input  wire              frame_dropped,
@@ -839,6 +874,10 @@ module fps_census7_d128u32_816da4_control #(
       frame_lr_threshold <= rst ? LR_THRESHOLD_INIT[3:0] : lr_threshold_q;
     end
 
+  always @(posedge clk)
+    settings_held <= !write && !request && width_q == frame_width && height_q == frame_height && p1_q == frame_p1 &&
+                     p2_q == frame_p2 && uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
+
   // ---- Counters (wrap at 2^32).
   always @(posedge clk)
     if (rst) begin
@@ -900,6 +939,11 @@ endmodule
 // (semantics section 1). Outside the frame (bubble slots, rows below the image) the windows take
 // zeros. transform_x / transform_y / transform_slot are the centre of the windows of the
 // previous shift: the position of what the transform (or the SAD/ZSAD window registers) holds.
+// Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
+// the frame's last row. If the next frame has begun by the step that would take its first pixel
+// (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
+// rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
+// rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
 module fps_census7_d128u32_816da4_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
@@ -918,6 +962,12 @@ module fps_census7_d128u32_816da4_front_end #(
   input  wire                   adv,
   input  wire [X_W-1:0]         frame_width,
   input  wire [Y_W-1:0]         frame_height,
+  input  wire                   overlap,
+  input  wire                   next_frame,
+  output wire                   next_taken,
+  output wire                   follow_open,
+  output reg                    continuing,
+  output reg                    wrapped,
   // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
   output wire                   in_due,
   output wire                   in_take,
@@ -948,7 +998,6 @@ module fps_census7_d128u32_816da4_front_end #(
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-  localparam signed [YS_W-1:0] R_Y = R;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
 
@@ -957,8 +1006,8 @@ module fps_census7_d128u32_816da4_front_end #(
   wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
   fps_census7_d128u32_816da4_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(COST_K_W))
-    input_position (.clk(clk), .restart(restart), .en(adv), .group(group), .slot(si), .row(ti), .row_slot(ti_slot),
-                    .slot_end(slot_end));
+    input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
+                    .slot(si), .row(ti), .row_slot(ti_slot), .slot_end(slot_end));
   // in_due is a register, set for the next step (the sequencer's enable depends on it), with
   // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
   // column 0 of row 0, inside every frame.
@@ -989,17 +1038,35 @@ module fps_census7_d128u32_816da4_front_end #(
     end
   reg  col_in, row_in, in_due_q;
   wire col_in_next = slot_end ? at_last_slot || (col_in && !at_last_col) : col_in;
-  wire row_in_next = slot_end && at_last_slot ? row_in && !at_last_row : row_in;
   wire slot_end_next = G == 1 || group == GROUP_BEFORE_LAST;
+  // After the frame's last row, the next frame may begin (open) until the step that predicts
+  // whether its first pixel is due (deadline); `closed` once it did not.
+  reg  awaiting, closed;
+  wire rows_end = slot_end && at_last_slot && at_last_row;
+  wire open = !closed && (awaiting || (rows_end && overlap && row_in));
+  wire deadline = slot_end_next && col_in_next;
+  wire row_in_next = open ? next_frame : slot_end && at_last_slot ? row_in && !at_last_row : row_in;
+  assign next_taken = adv && open && next_frame;
+  assign follow_open = overlap && !closed;
   always @(posedge clk)
     if (restart) begin
       col_in <= 1'b1;
       row_in <= 1'b1;
       in_due_q <= G == 1;
+      awaiting <= 1'b0;
+      closed <= 1'b0;
+      continuing <= 1'b0;
+      wrapped <= 1'b0;
     end else if (adv) begin
       col_in <= col_in_next;
       row_in <= row_in_next;
       in_due_q <= slot_end_next && col_in_next && row_in_next;
+      if (open) begin
+        continuing <= next_frame;
+        awaiting <= !next_frame && !deadline;
+        closed <= !next_frame && deadline;
+      end
+      if (rows_end && overlap) wrapped <= 1'b1;
     end
   assign in_due  = in_due_q;
   assign in_take = adv && in_due;
@@ -1017,12 +1084,12 @@ module fps_census7_d128u32_816da4_front_end #(
   // The window's newest column is the input column itself: in the image if the input column is,
   // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
+  wire signed [YS_W-1:0] centre_y, newest_y;
   wire [COST_K_W-1:0] centre_slot;
   fps_census7_d128u32_816da4_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
                            .SLOT_W(COST_K_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .centre_x(centre_x), .centre_y(centre_y),
-    .centre_slot(centre_slot));
+    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
+    .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
@@ -1046,7 +1113,7 @@ module fps_census7_d128u32_816da4_front_end #(
     .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
     .col_valid(centre_columns));
   fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
-    .x(centre_x), .y($signed({2'b00, ti}) - R_Y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(newest_unused_columns));
   reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
   always @(posedge clk)
@@ -1064,7 +1131,9 @@ endmodule
 `resetall
 `default_nettype none
 // Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
-// row-time `row`, and row mod K (which row of a K-row reorder RAM the row uses).
+// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
+// row-time returns to 0 after the frame's last (fps_census7_d128u32_816da4_frame_row); the RAM row counts on modulo
+// K regardless, so that the next frame's rows take the RAM rows that follow.
 module fps_census7_d128u32_816da4_raster_counter #(
   parameter G = 4,
   parameter ROW_SLOTS = 64,
@@ -1077,9 +1146,11 @@ module fps_census7_d128u32_816da4_raster_counter #(
   input  wire           clk,
   input  wire           restart,
   input  wire           en,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
   output reg  [G_W-1:0] group,
   output reg  [X_W-1:0] slot,
-  output reg  [Y_W-1:0] row,
+  output wire [Y_W-1:0] row,
   output reg  [K_W-1:0] row_slot,
   output wire           slot_end
 );
@@ -1103,17 +1174,52 @@ module fps_census7_d128u32_816da4_raster_counter #(
     if (restart) begin
       group <= 0;
       slot <= 0;
-      row <= 0;
       row_slot <= 0;
     end else if (en) begin
       group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
       if (slot_end) begin
         slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
-        if (slot == LAST_SLOT) begin
-          row <= row + 1'b1;
+        if (slot == LAST_SLOT)
           row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
-        end
       end
+    end
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_census7_d128u32_816da4_frame_row #(.Y_W(Y_W)) frame_row (
+    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
+    .row(row), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// A stage's row-time counter (docs/architecture.md, "Back-to-back frames"): it advances by one at
+// each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
+// so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
+// past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
+// as a register (frames are at least 2 rows high).
+module fps_census7_d128u32_816da4_frame_row #(
+  parameter Y_W = 6
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           next,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
+  output reg  [Y_W-1:0] row,
+  output reg            last
+);
+  localparam [Y_W-1:0] TWO = 2;
+  reg [Y_W-1:0] before_last;
+  always @(posedge clk) before_last <= height - TWO;
+  wire wraps = wrap && last;
+  always @(posedge clk)
+    if (restart) begin
+      row <= 0;
+      last <= 1'b0;
+    end else if (next) begin
+      row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
+      last <= !wraps && row == before_last;
     end
 endmodule
 `resetall
@@ -1183,9 +1289,11 @@ endmodule
 `default_nettype none
 // The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
 // and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
-// Rows are signed: a centre may lie above the image. The centre's row modulo ROWS (its slot in
-// a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
-// would be slow logic).
+// Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
+// earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
+// above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
+// in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
+// would be slow logic). row_y is the centre row of the entering column (no borrow).
 module fps_census7_d128u32_816da4_window_centre #(
   parameter LAG = 2,
   parameter ROW_SLOTS = 64,
@@ -1199,9 +1307,12 @@ module fps_census7_d128u32_816da4_window_centre #(
   input  wire [X_W-1:0]         x,
   input  wire signed [YS_W-1:0] y,
   input  wire [SLOT_W-1:0]      slot,
+  input  wire                   wrapped,
+  input  wire signed [YS_W-1:0] height,
   output wire [X_W-1:0]         centre_x,
   output wire signed [YS_W-1:0] centre_y,
-  output wire [SLOT_W-1:0]      centre_slot
+  output wire [SLOT_W-1:0]      centre_slot,
+  output wire signed [YS_W-1:0] row_y
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1222,7 +1333,13 @@ module fps_census7_d128u32_816da4_window_centre #(
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
-  assign centre_y = y - LAG_Y - (borrow ? 1 : 0);
+  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  // Both rows and their wrapped forms in parallel, then chosen.
+  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
+  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
   assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
   /* verilator lint_on WIDTH */
@@ -1737,6 +1854,10 @@ module fps_census7_d128u32_816da4_aggregator #(
   input  wire [PATH_W-1:0]    p2,
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
+  // back-to-back frames (fps_census7_d128u32_816da4_front_end): the row-times wrap after the frame's last row, and
+  // once wrapped, the rows above row 0 are the previous frame's
+  input  wire                 overlap,
+  input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
   input  wire [UF*COST_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
@@ -1798,13 +1919,17 @@ module fps_census7_d128u32_816da4_aggregator #(
   reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
   reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
-  reg [Y_W-1:0] ta;
+  wire [Y_W-1:0] ta;
+  wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_census7_d128u32_816da4_frame_row #(.Y_W(Y_W)) row_time (
+    .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
     if (restart) begin
       ga <= 0;
       ka <= 0;
       ja <= 0;
-      ta <= 0;
       base <= 0;
       ta_slot <= 0;
       ta_out_slot <= 0;
@@ -1815,7 +1940,6 @@ module fps_census7_d128u32_816da4_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta <= ta + 1'b1;
             ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
             ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
@@ -1824,7 +1948,9 @@ module fps_census7_d128u32_816da4_aggregator #(
       end
     end
   wire [X_W-1:0] x0 = ka * SLEN + ja;
-  wire [Y_W:0]   row0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};  // negative: no row yet
+  // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
+  wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
+  wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
@@ -2359,6 +2485,9 @@ module fps_census7_d128u32_816da4_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
+  // back-to-back frames (fps_census7_d128u32_816da4_front_end): the read rows wrap after the frame's last, and the
+  // next frame's rows stand in for the rows below the image
+  input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
   input  wire [Y_W-1:0]     frame_height,
   // the winner-take-all's pixel: written in its last group's step
@@ -2397,8 +2526,8 @@ module fps_census7_d128u32_816da4_disparity_reorder #(
   wire slot_end;
   fps_census7_d128u32_816da4_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(OUT_K_W))
-    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .group(go), .slot(so), .row(to),
-                     .row_slot(to_slot), .slot_end(slot_end));
+    output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
+                     .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
   wire read_slot = out_on && slot_end;
   wire read_now = read_slot && so < frame_width && to < event_rows;
@@ -2447,6 +2576,8 @@ module fps_census7_d128u32_816da4_median #(
   input  wire             adv,
   input  wire [X_W-1:0]   frame_width,
   input  wire [Y_W-1:0]   frame_height,
+  // back-to-back frames: once wrapped, the rows above row 0 are the previous frame's
+  input  wire             wrapped,
   input  wire             in_done,
   input  wire [X_W-1:0]   in_x,
   input  wire [Y_W-1:0]   in_y,
@@ -2478,10 +2609,11 @@ module fps_census7_d128u32_816da4_median #(
   wire signed [YS_W-1:0] centre_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
   wire centre_slot;
+  wire signed [YS_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_816da4_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
-    .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .centre_x(centre_x), .centre_y(centre_y),
-    .centre_slot(centre_slot));
+    .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
+    .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
   reg signed [YS_W-1:0] median_y;
   reg           fresh;     // high in the step after a shift: one result per slot
