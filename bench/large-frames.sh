@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Large frames through the RTL, bit for bit against the golden model: census 7x7, dmax 128,
 # uf 128 at 1920x1080 and at 3840x2160, on Middlebury 2005 Reindeer (a real pair) enlarged 3x and
-# 6x (bilinear) and cropped to the frame. Each run streams two frames without stalls (cycles per
-# frame, steady state) and one with 10 % idle and backpressure. About 2 and 12 minutes of
-# simulation on an idle 2-core machine; needs ../shared/data/stereo.
+# 6x (bilinear) and cropped to the frame. Each run streams four frames back to back without stalls
+# (cycles per frame, steady state) and one with 10 % idle and backpressure. About 4 and 20 minutes
+# of simulation on an idle 2-core machine; needs ../shared/data/stereo.
 #   bench/large-frames.sh [--build-dir B] [1080p|4k ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

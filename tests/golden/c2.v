@@ -1082,14 +1082,33 @@ module fps_census7_d128u32_816da4_front_end #(
 
   // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
   // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (no borrow, unlike the centre at a row's start).
+  // and its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
+  // start, which lies in the previous row-time, newest_prev_y). Both rows are counters, so that
+  // the bounds compare registers; the column and the RAM slot come from fps_census7_d128u32_816da4_window_centre.
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y, newest_y;
   wire [COST_K_W-1:0] centre_slot;
+  /* verilator lint_off UNUSEDSIGNAL */  // the counters below give the rows
+  wire signed [YS_W-1:0] arithmetic_centre_y, arithmetic_newest_y;
+  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_816da4_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
                            .SLOT_W(COST_K_W)) centre (
     .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
-    .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
+    .centre_y(arithmetic_centre_y), .centre_slot(centre_slot), .row_y(arithmetic_newest_y));
+  wire signed [YS_W-1:0] newest_y;
+  reg  signed [YS_W-1:0] newest_prev_y;
+  localparam integer PREV_START_I = -R - 1;
+  localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
+  localparam [X_W-1:0] R_X = R;
+  wire input_row_ends = shift && at_last_slot;
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_census7_d128u32_816da4_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
+    .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
+  always @(posedge clk)
+    if (restart) newest_prev_y <= PREV_START;
+    else if (input_row_ends) newest_prev_y <= newest_y;
+  wire borrow = si < R_X;
+  wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
@@ -1104,17 +1123,19 @@ module fps_census7_d128u32_816da4_front_end #(
     end
 
   // The bounds of the window that forms in this shift are registered with its position, so that
-  // the compares with the frame size and the transform lie in different steps.
-  wire [N-1:0] centre_rows, centre_columns, newest_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own bound is si < width
-  wire [N-1:0] newest_unused_columns;
+  // the compares with the frame size and the transform lie in different steps. Its rows' bounds
+  // are those of one of the two counted rows.
+  wire [N-1:0] centre_columns, newest_rows, prev_rows;
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
+  wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
-    .x(centre_x), .y(centre_y), .width(width_x), .height(height_y), .row_valid(centre_rows),
-    .col_valid(centre_columns));
-  fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) newest_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
-    .col_valid(newest_unused_columns));
+    .col_valid(centre_columns));
+  fps_census7_d128u32_816da4_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) prev_bounds (
+    .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
+    .col_valid(prev_unused_columns));
+  wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
   always @(posedge clk)
     if (shift) begin
@@ -1197,9 +1218,11 @@ endmodule
 // each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
 // so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
 // past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
-// as a register (frames are at least 2 rows high).
+// as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
+// starts at START < 0 (two's complement: rows above the first frame).
 module fps_census7_d128u32_816da4_frame_row #(
-  parameter Y_W = 6
+  parameter Y_W = 6,
+  parameter START = 0
 ) (
   input  wire           clk,
   input  wire           restart,
@@ -1213,9 +1236,11 @@ module fps_census7_d128u32_816da4_frame_row #(
   reg [Y_W-1:0] before_last;
   always @(posedge clk) before_last <= height - TWO;
   wire wraps = wrap && last;
+  localparam integer START_I = START;
+  localparam [Y_W-1:0] FIRST = START_I[Y_W-1:0];
   always @(posedge clk)
     if (restart) begin
-      row <= 0;
+      row <= FIRST;
       last <= 1'b0;
     end else if (next) begin
       row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
