@@ -4,6 +4,8 @@
 // column, which enters the match ring (plus, for ZSAD, the base window's mean and the column's
 // sum). The ring serves later centres too, so the column is zero-extended by its own position.
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
+// ZSAD spreads the base window's mean over three shifts (its row sums, their total, the constant
+// multiply), so the window, its position and the match column wait a shift longer than for SAD.
 module fpstereo_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -37,9 +39,9 @@ module fpstereo_pixel_window_cost #(
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [YS_W-1:0] transform_y,
   input  wire [COST_K_W-1:0]    transform_slot,
-  output reg  [X_W-1:0]         history_x,
-  output reg  signed [YS_W-1:0] history_y,
-  output reg  [COST_K_W-1:0]    history_slot,
+  output wire [X_W-1:0]         history_x,
+  output wire signed [YS_W-1:0] history_y,
+  output wire [COST_K_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -57,51 +59,78 @@ module fpstereo_pixel_window_cost #(
   wire [N*N*8-1:0] base_masked;
   fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
-  reg [N*8-1:0]      newest_column;
-  reg [COLSUM_W-1:0] newest_sum;
-  reg [COLSUM_W+7:0] base_sum;
-  integer e;
+  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
+  reg [N*8-1:0]        newest_column;
+  reg [COLSUM_W-1:0]   newest_sum;
+  reg [N*COLSUM_W-1:0] base_row_sums;
+  integer e, k;
   always @* begin
     newest_sum = 0;
-    base_sum = 0;
     for (e = 0; e < N; e = e + 1) begin
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
       newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
+      base_row_sums[e*COLSUM_W +: COLSUM_W] = 0;
+      for (k = 0; k < N; k = k + 1)
+        base_row_sums[e*COLSUM_W +: COLSUM_W] = base_row_sums[e*COLSUM_W +: COLSUM_W] +
+                                                 {{(COLSUM_W-8){1'b0}}, base_masked[(e*N + k)*8 +: 8]};
     end
-    for (e = 0; e < N * N; e = e + 1) base_sum = base_sum + {{COLSUM_W{1'b0}}, base_masked[e*8 +: 8]};
   end
-  // ZSAD: the base window's sum is registered with the window, its mean (a constant multiply)
-  // with the next shift.
-  reg [N*N*8-1:0]    base_t, base_h;
-  reg [N*8-1:0]      column_t;
-  reg [COLSUM_W-1:0] column_sum_t;
-  reg [COLSUM_W+7:0] base_sum_t;
-  reg [7:0]          base_mean_h;
-  /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-  wire [7:0] base_mean = (base_sum_t * MEAN_MUL) >> MEAN_SHIFT;
-  /* verilator lint_on WIDTH */
+  // Registered with the window (shift k): the window, its row sums and the match column; the
+  // window's position a shift later (transform_* lags the window by one), with the window again.
+  reg [N*N*8-1:0]                base_t, base_h;
+  reg [N*8-1:0]                  column_t;
+  reg [COLSUM_W-1:0]             column_sum_t;
+  reg [N*COLSUM_W-1:0]           base_row_sums_t;
+  reg [X_W+YS_W+COST_K_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
-      history_slot <= transform_slot;
-      base_t       <= base_masked;
-      column_t     <= newest_column;
-      column_sum_t <= newest_sum;
-      base_sum_t   <= base_sum;
-      base_h       <= base_t;
-      base_mean_h  <= base_mean;
-      history_x    <= transform_x;
-      history_y    <= transform_y;
+      base_t          <= base_masked;
+      column_t        <= newest_column;
+      column_sum_t    <= newest_sum;
+      base_row_sums_t <= base_row_sums;
+      base_h          <= base_t;
+      position_h      <= {transform_x, transform_y, transform_slot};
+    end
+  // ZSAD: all of it waits a shift more for the base window's mean.
+  wire [N*N*8-1:0]    base_l;
+  wire [N*8-1:0]      column_l;
+  wire [COLSUM_W-1:0] column_sum_l;
+  generate
+    if (ZERO_MEAN != 0) begin : mean_wait
+      fpstereo_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(1)) shift_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
+        .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
+    end else begin : no_wait
+      assign {base_l, column_l, column_sum_l, history_x, history_y, history_slot} =
+             {base_h, column_t, column_sum_t, position_h};
+    end
+  endgenerate
+  // ZSAD: the total of the row sums at shift k + 1, the mean (a constant multiply) at k + 2.
+  reg [WINSUM_W-1:0] base_total;
+  always @* begin
+    base_total = 0;
+    for (e = 0; e < N; e = e + 1)
+      base_total = base_total + {{(WINSUM_W-COLSUM_W){1'b0}}, base_row_sums_t[e*COLSUM_W +: COLSUM_W]};
+  end
+  reg [WINSUM_W-1:0] base_total_t;
+  reg [7:0]          base_mean_h;
+  always @(posedge clk)
+    if (shift) begin
+      base_total_t <= base_total;
+      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+      base_mean_h <= (base_total_t * MEAN_MUL) >> MEAN_SHIFT;
+      /* verilator lint_on WIDTH */
     end
   wire [(UF+N-1)*N*8-1:0]      view;
   wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
   fpstereo_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_t), .view(view));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_l), .view(view));
   fpstereo_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_t), .view(view_sums));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_l), .view(view_sums));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base(base_h), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
+    .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall

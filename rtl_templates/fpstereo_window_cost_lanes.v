@@ -9,8 +9,8 @@
 // l .. l + SPAN - 1 (fpstereo_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
-// (LAT): the column masks and the border flag; ZSAD: the match window's sum, then its mean;
-// the row sums of the elements' terms; the total.
+// (LAT): the column masks and the border flag; ZSAD: the match window's sum, then its mean, then
+// the difference of the means; the row sums of the elements' terms; the total.
 module fpstereo_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -27,7 +27,7 @@ module fpstereo_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  // the latency the instantiating stage plans with (checked: 3, ZSAD 5)
+  // the latency the instantiating stage plans with (checked: 3, ZSAD 6)
   parameter LAT = 3
 ) (
   input  wire                                clk,
@@ -57,7 +57,7 @@ module fpstereo_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fpstereo_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
-    if (LAT != (ZERO_MEAN != 0 ? 5 : 3)) begin : invalid_LAT
+    if (LAT != (ZERO_MEAN != 0 ? 6 : 3)) begin : invalid_LAT
       fpstereo_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
@@ -72,16 +72,19 @@ module fpstereo_window_cost_lanes #(
 
   // The elements' terms: |(b - m) - delta| of pixels, or the Hamming distance of codes.
   localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W;
-  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 2 : 0;
+  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 3 : 0;
 
-  // The windows wait for the masks (and the ZSAD means): 1 + MEAN_STEPS steps.
+  // The windows wait for the masks (and the ZSAD means): 1 + MEAN_STEPS steps; the base
+  // window's mean meets the match window's after three.
   wire [SPAN*SPAN*ELEM_W-1:0]        base_d;
   wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0] view_d;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   wire [7:0]                         base_mean_d;
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_delay #(.WIDTH(SPAN*SPAN*ELEM_W + (UF+SPAN-1)*SPAN*ELEM_W + 8), .DEPTH(1 + MEAN_STEPS)) windows_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in({base, view, base_mean}), .out({base_d, view_d, base_mean_d}));
+  fpstereo_delay #(.WIDTH(SPAN*SPAN*ELEM_W + (UF+SPAN-1)*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) windows_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in({base, view}), .out({base_d, view_d}));
+  fpstereo_delay #(.WIDTH(8), .DEPTH(3)) base_mean_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   reg [(UF+SPAN-1)*COLSUM_W-1:0] view_sums_q;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -119,7 +122,8 @@ module fpstereo_window_cost_lanes #(
       fpstereo_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 
-      // ZSAD, steps 2 and 3: the match window's sum from its column sums, then its mean.
+      // ZSAD, steps 2 to 4: the match window's sum from its column sums, its mean, and the
+      // difference of the means.
       wire signed [9:0] delta;
       if (ZERO_MEAN) begin : zero_mean
         reg [WINSUM_W-1:0] match_sum;
@@ -132,14 +136,16 @@ module fpstereo_window_cost_lanes #(
         end
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
+        reg signed [9:0]   delta_q;
         always @(posedge clk)
           if (en) begin
             match_sum_q <= match_sum;
             /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
             match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
             /* verilator lint_on WIDTH */
+            delta_q <= $signed({2'b00, base_mean_d}) - $signed({2'b00, match_mean_q});
           end
-        assign delta = $signed({2'b00, base_mean_d}) - $signed({2'b00, match_mean_q});
+        assign delta = delta_q;
       end else begin : no_mean
         assign delta = 10'sd0;
       end

@@ -294,10 +294,12 @@ class CostStage : public Stage {
   std::string title() const override { return "cost"; }
   std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf"}; }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
-  // rs + 1 slots); the lanes take their register stages.
+  // rs + 1 slots; ZSAD: one more, for the base window's mean); the lanes take their register
+  // stages.
   Latency latency(const RtlDesign& d) const override {
     const int64_t rs = cost_ == CostFunction::Shd ? d.cfg.shd_window / 2 : 0;
-    return {rs, 1 + (cost_ == CostFunction::Shd ? rs + 1 : 0), d.cost_latency};
+    const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 1 : 0;
+    return {rs, 1 + wait, d.cost_latency};
   }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     if (cost_ != CostFunction::Shd) return {};
