@@ -70,11 +70,11 @@ module fpstereo_front_end #(
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
-  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
-  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(COST_K_W))
+  /* verilator lint_off PINCONNECTEMPTY */  // the centre's RAM slot has a counter of its own
+  fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
     input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
-                    .slot(si), .row(ti), .row_slot(ti_slot), .slot_end(slot_end));
+                    .slot(si), .row(ti), .row_slot(), .slot_end(slot_end));
+  /* verilator lint_on PINCONNECTEMPTY */
   // in_due is a register, set for the next step (the sequencer's enable depends on it), with
   // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
   // column 0 of row 0, inside every frame.
@@ -147,35 +147,48 @@ module fpstereo_front_end #(
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
-  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
-  // start, which lies in the previous row-time, newest_prev_y). Both rows are counters, so that
-  // the bounds compare registers; the column and the RAM slot come from fpstereo_window_centre.
-  wire [X_W-1:0] centre_x;
-  wire [COST_K_W-1:0] centre_slot;
-  /* verilator lint_off UNUSEDSIGNAL */  // the counters below give the rows
-  wire signed [YS_W-1:0] arithmetic_centre_y, arithmetic_newest_y;
-  /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
-                           .SLOT_W(COST_K_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
-    .centre_y(arithmetic_centre_y), .centre_slot(centre_slot), .row_y(arithmetic_newest_y));
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
+  // Centre of the window that forms in this shift, R slots and R rows behind the input, and its
+  // row's slot in the cost reorder RAM, all counters, so that the bounds compare registers. The
+  // window's newest column is the input column itself: in the image if the input column is, and
+  // its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
+  // start, which lies in the previous row-time, newest_prev_y).
+  localparam integer CENTRE_START_I = ROW_SLOTS - R;
+  localparam integer SLOT_BIAS = COST_ROWS * ((R + 1 + COST_ROWS) / COST_ROWS);  // a multiple above R + 1
+  localparam integer NEWEST_SLOT_I = (SLOT_BIAS - R) % COST_ROWS;
+  localparam integer PREV_SLOT_I = (SLOT_BIAS - R - 1) % COST_ROWS;
+  localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
+  localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
+  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
+  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
+  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
   localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
   localparam [X_W-1:0] R_X = R;
+  reg  [X_W-1:0] centre_x;
+  always @(posedge clk)
+    if (restart) centre_x <= CENTRE_START;
+    else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
+  wire signed [YS_W-1:0] newest_y;
+  reg  signed [YS_W-1:0] newest_prev_y;
+  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
   fpstereo_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
-    if (restart) newest_prev_y <= PREV_START;
-    else if (input_row_ends) newest_prev_y <= newest_y;
+    if (restart) begin
+      newest_prev_y <= PREV_START;
+      newest_slot <= NEWEST_SLOT;
+      newest_prev_slot <= PREV_SLOT;
+    end else if (input_row_ends) begin
+      newest_prev_y <= newest_y;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_prev_slot <= newest_slot;
+    end
   wire borrow = si < R_X;
   wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;

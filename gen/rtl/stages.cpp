@@ -189,7 +189,7 @@ class WindowStage : public Stage {
   }
   std::vector<std::string> modules(const RtlDesign& d) const override {
     std::vector<std::string> m = {"fpstereo_front_end", "fpstereo_raster_counter", "fpstereo_frame_row",
-                                  "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds"};
+                                  "fpstereo_window", "fpstereo_window_bounds"};
     if (transform_)
       m.insert(m.end(), {"fpstereo_transform", d.cfg.cost == CostFunction::Rank ? "fpstereo_rank" : "fpstereo_census"});
     return m;

@@ -1052,11 +1052,11 @@ module fps_census7_d128u32_796e15_front_end #(
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
-  wire [COST_K_W-1:0] ti_slot;  // ti mod COST_ROWS
-  fps_census7_d128u32_796e15_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(COST_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(COST_K_W))
+  /* verilator lint_off PINCONNECTEMPTY */  // the centre's RAM slot has a counter of its own
+  fps_census7_d128u32_796e15_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
     input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
-                    .slot(si), .row(ti), .row_slot(ti_slot), .slot_end(slot_end));
+                    .slot(si), .row(ti), .row_slot(), .slot_end(slot_end));
+  /* verilator lint_on PINCONNECTEMPTY */
   // in_due is a register, set for the next step (the sequencer's enable depends on it), with
   // flags for whether the slot's column and the row lie inside the frame. Step 0 is group 0 of
   // column 0 of row 0, inside every frame.
@@ -1129,35 +1129,48 @@ module fps_census7_d128u32_796e15_front_end #(
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
-  // Centre of the window that forms in this shift, and its row's slot in the cost reorder RAM.
-  // The window's newest column is the input column itself: in the image if the input column is,
-  // and its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
-  // start, which lies in the previous row-time, newest_prev_y). Both rows are counters, so that
-  // the bounds compare registers; the column and the RAM slot come from fps_census7_d128u32_796e15_window_centre.
-  wire [X_W-1:0] centre_x;
-  wire [COST_K_W-1:0] centre_slot;
-  /* verilator lint_off UNUSEDSIGNAL */  // the counters below give the rows
-  wire signed [YS_W-1:0] arithmetic_centre_y, arithmetic_newest_y;
-  /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_796e15_window_centre #(.LAG(R), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
-                           .SLOT_W(COST_K_W)) centre (
-    .x(si), .y($signed({2'b00, ti})), .slot(ti_slot), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
-    .centre_y(arithmetic_centre_y), .centre_slot(centre_slot), .row_y(arithmetic_newest_y));
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
+  // Centre of the window that forms in this shift, R slots and R rows behind the input, and its
+  // row's slot in the cost reorder RAM, all counters, so that the bounds compare registers. The
+  // window's newest column is the input column itself: in the image if the input column is, and
+  // its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
+  // start, which lies in the previous row-time, newest_prev_y).
+  localparam integer CENTRE_START_I = ROW_SLOTS - R;
+  localparam integer SLOT_BIAS = COST_ROWS * ((R + 1 + COST_ROWS) / COST_ROWS);  // a multiple above R + 1
+  localparam integer NEWEST_SLOT_I = (SLOT_BIAS - R) % COST_ROWS;
+  localparam integer PREV_SLOT_I = (SLOT_BIAS - R - 1) % COST_ROWS;
+  localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
+  localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
+  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
+  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
+  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
   localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
   localparam [X_W-1:0] R_X = R;
+  reg  [X_W-1:0] centre_x;
+  always @(posedge clk)
+    if (restart) centre_x <= CENTRE_START;
+    else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
+  wire signed [YS_W-1:0] newest_y;
+  reg  signed [YS_W-1:0] newest_prev_y;
+  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
   fps_census7_d128u32_796e15_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
-    if (restart) newest_prev_y <= PREV_START;
-    else if (input_row_ends) newest_prev_y <= newest_y;
+    if (restart) begin
+      newest_prev_y <= PREV_START;
+      newest_slot <= NEWEST_SLOT;
+      newest_prev_slot <= PREV_SLOT;
+    end else if (input_row_ends) begin
+      newest_prev_y <= newest_y;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_prev_slot <= newest_slot;
+    end
   wire borrow = si < R_X;
   wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
   reg  signed [YS_W-1:0] window_y;
   reg  [COST_K_W-1:0] window_slot;
@@ -1356,67 +1369,6 @@ module fps_census7_d128u32_796e15_window #(
         for (j = 0; j < N - 1; j = j + 1) window_q[(i*N + j)*WORD_W +: WORD_W] <= window_q[(i*N + j + 1)*WORD_W +: WORD_W];
         window_q[(i*N + N - 1)*WORD_W +: WORD_W] <= (i == N - 1) ? word : stored[(N - 2 - i)*WORD_W +: WORD_W];
       end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
-// and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
-// Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
-// earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
-// above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
-// in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
-// would be slow logic). row_y is the centre row of the entering column (no borrow).
-module fps_census7_d128u32_796e15_window_centre #(
-  parameter LAG = 2,
-  parameter ROW_SLOTS = 64,
-  parameter X_W = 7,
-  // signed row width
-  parameter YS_W = 8,
-  // rows of the RAM the slots index, and the slot width
-  parameter ROWS = 2,
-  parameter SLOT_W = 1
-) (
-  input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
-  input  wire [SLOT_W-1:0]      slot,
-  input  wire                   wrapped,
-  input  wire signed [YS_W-1:0] height,
-  output wire [X_W-1:0]         centre_x,
-  output wire signed [YS_W-1:0] centre_y,
-  output wire [SLOT_W-1:0]      centre_slot,
-  output wire signed [YS_W-1:0] row_y
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
-      fps_census7_d128u32_796e15_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
-    end
-    if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
-      fps_census7_d128u32_796e15_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
-    end
-  endgenerate
-  localparam integer LAG_I = LAG;
-  localparam integer BACK_I = ROW_SLOTS - LAG;
-  localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
-  localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
-
-  localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
-
-  wire borrow = x < LAG_X;  // the centre lies in the previous row-time
-  assign centre_x = borrow ? x + BACK : x - LAG_X;
-  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
-  // Both rows and their wrapped forms in parallel, then chosen.
-  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
-  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
-  assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
-  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
-  assign centre_y = borrow ? prev_y : row_y;
-  /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
-  /* verilator lint_on WIDTH */
 endmodule
 `resetall
 
@@ -3093,6 +3045,67 @@ module fps_census7_d128u32_796e15_median #(
   // One more register holds the word of the pixel in out_x / out_y.
   always @(posedge clk)
     if (adv) out_word <= selected;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
+// and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
+// Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
+// earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
+// above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
+// in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
+// would be slow logic). row_y is the centre row of the entering column (no borrow).
+module fps_census7_d128u32_796e15_window_centre #(
+  parameter LAG = 2,
+  parameter ROW_SLOTS = 64,
+  parameter X_W = 7,
+  // signed row width
+  parameter YS_W = 8,
+  // rows of the RAM the slots index, and the slot width
+  parameter ROWS = 2,
+  parameter SLOT_W = 1
+) (
+  input  wire [X_W-1:0]         x,
+  input  wire signed [YS_W-1:0] y,
+  input  wire [SLOT_W-1:0]      slot,
+  input  wire                   wrapped,
+  input  wire signed [YS_W-1:0] height,
+  output wire [X_W-1:0]         centre_x,
+  output wire signed [YS_W-1:0] centre_y,
+  output wire [SLOT_W-1:0]      centre_slot,
+  output wire signed [YS_W-1:0] row_y
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
+      fps_census7_d128u32_796e15_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
+    end
+    if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
+      fps_census7_d128u32_796e15_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
+    end
+  endgenerate
+  localparam integer LAG_I = LAG;
+  localparam integer BACK_I = ROW_SLOTS - LAG;
+  localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
+  localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
+  localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
+
+  localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
+
+  wire borrow = x < LAG_X;  // the centre lies in the previous row-time
+  assign centre_x = borrow ? x + BACK : x - LAG_X;
+  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  // Both rows and their wrapped forms in parallel, then chosen.
+  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
+  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  assign centre_y = borrow ? prev_y : row_y;
+  /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
+  assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
+  /* verilator lint_on WIDTH */
 endmodule
 `resetall
 
