@@ -785,14 +785,14 @@ class DisparityReorderStage : public Stage {
   static int lr_rows(const RtlDesign& d) { return d.cfg.lr == LrCheck::None ? 0 : d.cfg.lr == LrCheck::Lr1 ? 1 : 2; }
 };
 
-// Left-right check: two steps (the RAM reads, then Dm registered), against the match side's
-// completed pixels (LR1 also its row ends).
+// Left-right check: three steps (the RAM reads, Dm registered, the check registered), against the
+// match side's completed pixels (LR1 also its row ends).
 class LrCheckStage : public Stage {
  public:
   explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
   std::string title() const override { return "left-right check"; }
   std::vector<std::string> knobs() const override { return {"lr", "lr-threshold"}; }
-  Latency latency(const RtlDesign&) const override { return {0, 0, 2}; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, 3}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     std::vector<StageMemory> out = {{"core.lr_check.completed.mem", d.disp_depth(), d.widths.disparity}};
     if (row_end_)

@@ -20,8 +20,8 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1902822; frames follow on from 11 rows
-// Latency without stalls from the first input handshake to the first output handshake: 39827 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1902823; frames follow on from 11 rows
+// Latency without stalls from the first input handshake to the first output handshake: 39828 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
@@ -31,7 +31,7 @@
 //   LR1 match side                       0     0    0   lr
 //   winner-take-all with uniqueness      0     0    3   uniqueness
 //   disparity reorder                    1     1    0   lr
-//   left-right check                     0     0    2   lr, lr-threshold
+//   left-right check                     0     0    3   lr, lr-threshold
 //   median filter                        2     2   26   median
 //   gap interpolation                    1     0    3   gap-interp
 //   output                               0     0    4
@@ -2819,12 +2819,12 @@ endmodule
 
 `resetall
 `default_nettype none
-// Left-right check (docs/semantics.md, section 5), two steps: the match side writes Dm(x') of its
+// Left-right check (docs/semantics.md, section 5), three steps: the match side writes Dm(x') of its
 // completed pixels (and, with ROW_END, as LR1 does, the last DMAX - 1 of each row into the
 // row-end RAM, one word of UF per group); for the read stream's pixel x with disparity D, Dm of
 // x' = x - D is read, and the word becomes invalid where x' lies outside the image or
 // |D - Dm(x')| > lr_threshold. The RAMs are read in the first step, Dm is registered in the
-// second, and the stream leaves two steps later.
+// second, the check's result in the third, and the stream leaves three steps later.
 module fps_census7_d128u32_796e15_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -2923,26 +2923,36 @@ module fps_census7_d128u32_796e15_lr_check #(
     end
   endgenerate
   // Second step: Dm registered with the stream, so that the RAM reads and the check lie in
-  // different steps.
+  // different steps; third: the check's result registered with the stream.
+  reg              done_q, event_q;
+  reg [X_W-1:0]    x_q;
+  reg [Y_W-1:0]    y_q;
   reg [DISP_W-1:0] dm_q;
-  reg [DISP_W:0]   word_q;
+  reg [DISP_W:0]   word_q, checked_word_q;
   reg              outside_q;
+  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
+  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
   always @(posedge clk)
     if (restart) begin
+      done_q <= 1'b0;
+      event_q <= 1'b0;
       checked_done <= 1'b0;
       checked_event <= 1'b0;
     end else if (adv) begin
-      checked_done <= done_c;
-      checked_event <= event_c;
-      checked_x <= x_c;
-      checked_y <= y_c;
+      done_q <= done_c;
+      event_q <= event_c;
+      x_q <= x_c;
+      y_q <= y_c;
       word_q <= word_c;
       outside_q <= outside_c;
       dm_q <= dm;
+      checked_done <= done_q;
+      checked_event <= event_q;
+      checked_x <= x_q;
+      checked_y <= y_q;
+      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
     end
-  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
-  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
-  assign checked_word = (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
+  assign checked_word = checked_word_q;
   // verilator lint_on WIDTH
 endmodule
 `resetall
