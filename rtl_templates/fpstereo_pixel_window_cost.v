@@ -4,8 +4,9 @@
 // column, which enters the match ring (plus, for ZSAD, the base window's mean and the column's
 // sum). The ring serves later centres too, so the column is zero-extended by its own position.
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
-// ZSAD spreads the base window's mean over three shifts (its row sums, their total, the constant
-// multiply), so the window, its position and the match column wait a shift longer than for SAD.
+// ZSAD spreads the base window's mean over three shifts after the window's register (its row
+// sums, their total, the constant multiply), so the window, its position and the match column
+// wait two shifts longer than for SAD.
 module fpstereo_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -60,67 +61,69 @@ module fpstereo_pixel_window_cost #(
   fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
-  reg [N*8-1:0]        newest_column;
-  reg [COLSUM_W-1:0]   newest_sum;
-  reg [N*COLSUM_W-1:0] base_row_sums;
-  integer e, k;
-  always @* begin
-    newest_sum = 0;
-    for (e = 0; e < N; e = e + 1) begin
+  // The match window's newest column, zero outside the image, and its sum.
+  reg [N*8-1:0] newest_column;
+  integer e;
+  always @*
+    for (e = 0; e < N; e = e + 1)
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
-      newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
-      base_row_sums[e*COLSUM_W +: COLSUM_W] = 0;
-      for (k = 0; k < N; k = k + 1)
-        base_row_sums[e*COLSUM_W +: COLSUM_W] = base_row_sums[e*COLSUM_W +: COLSUM_W] +
-                                                 {{(COLSUM_W-8){1'b0}}, base_masked[(e*N + k)*8 +: 8]};
-    end
-  end
-  // Registered with the window (shift k): the window, its row sums and the match column; the
-  // window's position a shift later (transform_* lags the window by one), with the window again.
+  wire [COLSUM_W-1:0] newest_sum;
+  fpstereo_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
+  // Registered with the window (shift k): the window and the match column; the window's position
+  // a shift later (transform_* lags the window by one), with the window again.
   reg [N*N*8-1:0]                base_t, base_h;
   reg [N*8-1:0]                  column_t;
   reg [COLSUM_W-1:0]             column_sum_t;
-  reg [N*COLSUM_W-1:0]           base_row_sums_t;
   reg [X_W+YS_W+COST_K_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t          <= base_masked;
-      column_t        <= newest_column;
-      column_sum_t    <= newest_sum;
-      base_row_sums_t <= base_row_sums;
-      base_h          <= base_t;
-      position_h      <= {transform_x, transform_y, transform_slot};
+      base_t       <= base_masked;
+      column_t     <= newest_column;
+      column_sum_t <= newest_sum;
+      base_h       <= base_t;
+      position_h   <= {transform_x, transform_y, transform_slot};
     end
-  // ZSAD: all of it waits a shift more for the base window's mean.
+  // ZSAD: all of it waits two shifts more for the base window's mean.
   wire [N*N*8-1:0]    base_l;
   wire [N*8-1:0]      column_l;
   wire [COLSUM_W-1:0] column_sum_l;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [7:0]          base_mean;
+  /* verilator lint_on UNUSEDSIGNAL */
+  genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fpstereo_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(1)) shift_wait (
+      fpstereo_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(2)) shift_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
         .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
+      // The base window's mean over three shifts from the registered window: its row sums at
+      // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
+      wire [N*COLSUM_W-1:0] row_sums;
+      for (r = 0; r < N; r = r + 1) begin : row
+        fpstereo_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) row_total (
+          .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLSUM_W +: COLSUM_W]));
+      end
+      reg  [N*COLSUM_W-1:0] row_sums_q;
+      wire [WINSUM_W-1:0]   total;
+      fpstereo_sum_tree #(.N(N), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) window_total (
+        .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
+      reg  [WINSUM_W-1:0]   total_q;
+      reg  [7:0]            mean_q;
+      always @(posedge clk)
+        if (shift) begin
+          row_sums_q <= row_sums;
+          total_q <= total;
+          /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+          mean_q <= (total_q * MEAN_MUL) >> MEAN_SHIFT;
+          /* verilator lint_on WIDTH */
+        end
+      assign base_mean = mean_q;
     end else begin : no_wait
       assign {base_l, column_l, column_sum_l, history_x, history_y, history_slot} =
              {base_h, column_t, column_sum_t, position_h};
+      assign base_mean = 8'd0;
     end
   endgenerate
-  // ZSAD: the total of the row sums at shift k + 1, the mean (a constant multiply) at k + 2.
-  reg [WINSUM_W-1:0] base_total;
-  always @* begin
-    base_total = 0;
-    for (e = 0; e < N; e = e + 1)
-      base_total = base_total + {{(WINSUM_W-COLSUM_W){1'b0}}, base_row_sums_t[e*COLSUM_W +: COLSUM_W]};
-  end
-  reg [WINSUM_W-1:0] base_total_t;
-  reg [7:0]          base_mean_h;
-  always @(posedge clk)
-    if (shift) begin
-      base_total_t <= base_total;
-      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-      base_mean_h <= (base_total_t * MEAN_MUL) >> MEAN_SHIFT;
-      /* verilator lint_on WIDTH */
-    end
   wire [(UF+N-1)*N*8-1:0]      view;
   wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
   fpstereo_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
@@ -130,7 +133,7 @@ module fpstereo_pixel_window_cost #(
   fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
+    .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall

@@ -9,8 +9,10 @@
 // l .. l + SPAN - 1 (fpstereo_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
-// (LAT): the column masks and the border flag; ZSAD: the match window's sum, then its mean, then
-// the difference of the means; the row sums of the elements' terms; the total.
+// (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
+// the match window's sum, its mean, the difference of the means (with the masked view), the
+// magnitudes' pair sums; the row sums of the elements' magnitudes; the total. Sums are balanced
+// adder trees (fpstereo_sum_tree).
 module fpstereo_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -27,7 +29,7 @@ module fpstereo_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  // the latency the instantiating stage plans with (checked: 3, ZSAD 6)
+  // the latency the instantiating stage plans with (checked: 3, ZSAD 8)
   parameter LAT = 3
 ) (
   input  wire                                clk,
@@ -57,142 +59,181 @@ module fpstereo_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fpstereo_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
-    if (LAT != (ZERO_MEAN != 0 ? 6 : 3)) begin : invalid_LAT
+    if (LAT != (ZERO_MEAN != 0 ? 8 : 3)) begin : invalid_LAT
       fpstereo_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
-  // wide enough for x + SPAN and for any disparity plus R
+  localparam VIEW_COLS = UF + SPAN - 1;
+  // wide enough for x + VIEW_COLS and for any disparity plus UF + R + width
   localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
-  localparam TERM_W = 11;              // |(b - m) - delta| < 2^11 for 8-bit pixels
+  // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
+  localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
+  // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
+  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
+  localparam SIGNS_W = $clog2(SPAN + 1);
+  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
+  localparam PAIR_STEP = ZERO_MEAN != 0 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
-  // The elements' terms: |(b - m) - delta| of pixels, or the Hamming distance of codes.
-  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W;
-  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 3 : 0;
+  // View column c lies at x - group*UF + (SPAN - 1 - R - c) in the image for every lane that
+  // reads it (lane l: window column j = l + SPAN - 1 - c, at x - d + j - R), so one mask per view
+  // column serves all lanes. Inside: 0 <= that < width, here with group*UF + UF + R added.
+  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0];
+  wire [D_W-1:0] inside_high = inside_low + {{(D_W-X_W){1'b0}}, width};
+  wire [VIEW_COLS-1:0] view_valid;
+  genvar c;
+  generate
+    for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
+      localparam OFFSET = VIEW_COLS - c;
+      wire [D_W-1:0] position = x_wide + OFFSET[D_W-1:0];
+      assign view_valid[c] = position >= inside_low && position < inside_high;
+    end
+  endgenerate
 
-  // The windows wait for the masks (and the ZSAD means): 1 + MEAN_STEPS steps; the base
-  // window's mean meets the match window's after three.
-  wire [SPAN*SPAN*ELEM_W-1:0]        base_d;
-  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0] view_d;
-  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  wire [7:0]                         base_mean_d;
-  /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_delay #(.WIDTH(SPAN*SPAN*ELEM_W + (UF+SPAN-1)*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) windows_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in({base, view}), .out({base_d, view_d}));
-  fpstereo_delay #(.WIDTH(8), .DEPTH(3)) base_mean_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
-  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  reg [(UF+SPAN-1)*COLSUM_W-1:0] view_sums_q;
-  /* verilator lint_on UNUSEDSIGNAL */
+  // Step 1: the masks and the windows.
+  reg  [VIEW_COLS-1:0]          view_valid_q;
+  reg  [VIEW_COLS*COLUMN_W-1:0] view_q;
   always @(posedge clk)
-    if (en) view_sums_q <= view_sums;
+    if (en) begin
+      view_valid_q <= view_valid;
+      view_q <= view;
+    end
+  // The view as the terms read it, its columns outside the image zeroed; ZSAD: the match
+  // windows' column sums, masked the same way.
+  wire [VIEW_COLS*COLUMN_W-1:0] view_d;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
+  wire [7:0]                    base_mean_d;
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (ZERO_MEAN != 0) begin : late_mask
+      // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
+      // view waits three steps more for the means, and is masked into the register of step 5
+      // (the terms start from flip-flops, not from a shift register's read).
+      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
+      wire [VIEW_COLS*COLUMN_W-1:0] view_late;
+      wire [VIEW_COLS-1:0]          valid_late;
+      reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
+      fpstereo_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in({view_q, view_valid_q}), .out({view_late, valid_late}));
+      integer n;
+      always @(posedge clk)
+        if (en) begin
+          view_sums_q <= view_sums;
+          for (n = 0; n < VIEW_COLS; n = n + 1) begin
+            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
+                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
+            view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+          end
+        end
+      assign view_d = view_masked_q;
+      assign view_sums_masked = view_sums_masked_q;
+      // the base window's mean meets the match window's (step 4)
+      fpstereo_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
+    end else begin : early_mask
+      for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
+        assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+      end
+      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
+      assign base_mean_d = 8'd0;
+    end
+  endgenerate
+  wire [SPAN*SPAN*ELEM_W-1:0] base_d;
+  fpstereo_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in(base), .out(base_d));
 
-  genvar l, i, j;
+  genvar l, i, k;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [D_W-1:0] d = group_base + l[D_W-1:0];
-      // Window column j (left to right) is view column l + SPAN - 1 - j; it lies inside the
-      // image where 0 <= x - d + (j - R) < width.
-      wire [SPAN-1:0] column_valid;
-      for (j = 0; j < SPAN; j = j + 1) begin : column
-        wire [D_W-1:0] position = x_wide + j[D_W-1:0];  // x - d + (j - R) + d + R
-        assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + {{(D_W-X_W){1'b0}}, width};
-      end
-
-      // Step 1: the masks and the border flag, which wait with the windows.
-      reg  [SPAN-1:0] column_valid_q;
-      reg             outside_q;
+      // The border flag, registered at step 1, waits for the total.
+      reg  outside_q;
+      wire outside_d;
       always @(posedge clk)
-        if (en) begin
-          column_valid_q <= column_valid;
-          outside_q <= x_wide < d;
-        end
-      wire [SPAN-1:0] valid_d;
-      wire            outside_d;
-      if (MEAN_STEPS > 0) begin : valid_wait
-        fpstereo_delay #(.WIDTH(SPAN), .DEPTH(MEAN_STEPS)) masks (
-          .clk(clk), .rst(1'b0), .en(en), .in(column_valid_q), .out(valid_d));
-      end else begin : valid_now
-        assign valid_d = column_valid_q;
-      end
+        if (en) outside_q <= x_wide < d;
       fpstereo_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 
-      // ZSAD, steps 2 to 4: the match window's sum from its column sums, its mean, and the
-      // difference of the means.
-      wire signed [9:0] delta;
-      if (ZERO_MEAN) begin : zero_mean
-        reg [WINSUM_W-1:0] match_sum;
-        integer c;
-        always @* begin
-          match_sum = 0;
-          for (c = 0; c < SPAN; c = c + 1)
-            if (column_valid_q[c])
-              match_sum = match_sum + {{(WINSUM_W-COLSUM_W){1'b0}}, view_sums_q[(l + SPAN - 1 - c)*COLSUM_W +: COLSUM_W]};
-        end
+      // ZSAD, steps 3 to 5: the match window's sum from its masked column sums, its mean, and
+      // the difference of the means, negated: the terms are b - m + (mean_m - mean_b).
+      /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+      wire signed [TERM_W-1:0] mean_offset;
+      /* verilator lint_on UNUSEDSIGNAL */
+      if (ZERO_MEAN != 0) begin : zero_mean
+        wire [WINSUM_W-1:0] match_sum;
+        fpstereo_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
+          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
-        reg signed [9:0]   delta_q;
+        reg signed [TERM_W-1:0] mean_offset_q;
         always @(posedge clk)
           if (en) begin
             match_sum_q <= match_sum;
             /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
             match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
             /* verilator lint_on WIDTH */
-            delta_q <= $signed({2'b00, base_mean_d}) - $signed({2'b00, match_mean_q});
+            mean_offset_q <= $signed({2'b00, match_mean_q}) - $signed({2'b00, base_mean_d});
           end
-        assign delta = delta_q;
+        assign mean_offset = mean_offset_q;
       end else begin : no_mean
-        assign delta = 10'sd0;
+        assign mean_offset = {TERM_W{1'b0}};
       end
 
-      // The per-row sums of the elements' terms.
+      // Step 7 (ZSAD; SAD and SHD step 2): the row sums of the elements' magnitudes.
       wire [SPAN*COST_W-1:0] row_sums;
       for (i = 0; i < SPAN; i = i + 1) begin : row
-        reg [SPAN*MAG_W-1:0] terms;
-        integer k, b2;
-        reg [ELEM_W-1:0] bv, mv;
-        reg signed [TERM_W-1:0] diff;
-        reg [MAG_W-1:0] magnitude;  // its own assignment: in the sum, -diff would widen first
-        always @* begin
-          for (k = 0; k < SPAN; k = k + 1) begin
-            bv = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
-            mv = valid_d[k] ? view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
-            magnitude = 0;
-            if (HAMMING) begin
-              for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) magnitude = magnitude + {{(MAG_W-1){1'b0}}, bv[b2] ^ mv[b2]};
-            end else begin
-              /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference
-              diff = $signed({3'b000, bv}) - $signed({3'b000, mv}) - delta;
-              magnitude = diff < 0 ? -diff : diff;
-              /* verilator lint_on WIDTH */
+        wire [SPAN*MAG_W-1:0] magnitudes;
+        wire [SPAN-1:0]       negative;
+        for (k = 0; k < SPAN; k = k + 1) begin : element
+          // window column k (left to right) is view column l + SPAN - 1 - k
+          wire [ELEM_W-1:0] b = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
+          wire [ELEM_W-1:0] m = view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W];
+          if (HAMMING != 0) begin : code
+            reg [MAG_W-1:0] distance;
+            integer e;
+            always @* begin
+              distance = 0;
+              for (e = 0; e < ELEM_W; e = e + 1)
+                distance = distance + {{(MAG_W-1){1'b0}}, b[e] ^ m[e]};
             end
-            terms[k*MAG_W +: MAG_W] = magnitude;
+            assign magnitudes[k*MAG_W +: MAG_W] = distance;
+            assign negative[k] = 1'b0;
+          end else begin : pixel
+            wire [TERM_W-1:0] term;
+            if (ZERO_MEAN != 0) begin : zero_mean
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m} + mean_offset;
+            end else begin : plain
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m};
+            end
+            // |term| = (term xor sign) + sign: the xor joins the row sum's first adders, and
+            // the row's signs are counted and added once.
+            assign negative[k] = term[TERM_W-1];
+            assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
           end
         end
-        reg [COST_W-1:0] row_sum;
-        integer t;
-        always @* begin
-          row_sum = 0;
-          for (t = 0; t < SPAN; t = t + 1) row_sum = row_sum + {{(COST_W-MAG_W){1'b0}}, terms[t*MAG_W +: MAG_W]};
-        end
+        // ZSAD registers the pairs' sums (step 6), so that the terms and the row sum are not
+        // one path.
+        wire [COST_W-1:0]  magnitude_sum;
+        wire [SIGNS_W-1:0] sign_count;
+        fpstereo_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
+          .clk(clk), .en(en), .values(magnitudes), .sum(magnitude_sum));
+        fpstereo_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
+          .clk(clk), .en(en), .values(negative), .sum(sign_count));
         reg [COST_W-1:0] row_sum_q;
         always @(posedge clk)
-          if (en) row_sum_q <= row_sum;
+          if (en) row_sum_q <= magnitude_sum + {{(COST_W-SIGNS_W){1'b0}}, sign_count};
         assign row_sums[i*COST_W +: COST_W] = row_sum_q;
       end
 
       // The total.
-      reg [COST_W-1:0] total;
-      integer t;
-      always @* begin
-        total = 0;
-        for (t = 0; t < SPAN; t = t + 1) total = total + row_sums[t*COST_W +: COST_W];
-      end
+      wire [COST_W-1:0] total;
+      fpstereo_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
+        .clk(clk), .en(en), .values(row_sums), .sum(total));
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
     end

@@ -294,11 +294,11 @@ class CostStage : public Stage {
   std::string title() const override { return "cost"; }
   std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf"}; }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
-  // rs + 1 slots; ZSAD: one more, for the base window's mean); the lanes take their register
+  // rs + 1 slots; ZSAD: two more, for the base window's mean); the lanes take their register
   // stages.
   Latency latency(const RtlDesign& d) const override {
     const int64_t rs = cost_ == CostFunction::Shd ? d.cfg.shd_window / 2 : 0;
-    const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 1 : 0;
+    const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
     return {rs, 1 + wait, d.cost_latency};
   }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
@@ -315,12 +315,12 @@ class CostStage : public Stage {
       case CostFunction::Sad:
       case CostFunction::Zsad:
         return {"fpstereo_pixel_window_cost", "fpstereo_window_mask", "fpstereo_match_ring",
-                "fpstereo_window_cost_lanes"};
+                "fpstereo_window_cost_lanes", "fpstereo_sum_tree"};
       case CostFunction::Shd:
         break;
     }
     return {"fpstereo_code_window_cost", "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds",
-            "fpstereo_window_mask", "fpstereo_match_ring", "fpstereo_window_cost_lanes"};
+            "fpstereo_window_mask", "fpstereo_match_ring", "fpstereo_window_cost_lanes", "fpstereo_sum_tree"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const StereoConfig& c = d.cfg;

@@ -1386,8 +1386,9 @@ endmodule
 // column, which enters the match ring (plus, for ZSAD, the base window's mean and the column's
 // sum). The ring serves later centres too, so the column is zero-extended by its own position.
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
-// ZSAD spreads the base window's mean over three shifts (its row sums, their total, the constant
-// multiply), so the window, its position and the match column wait a shift longer than for SAD.
+// ZSAD spreads the base window's mean over three shifts after the window's register (its row
+// sums, their total, the constant multiply), so the window, its position and the match column
+// wait two shifts longer than for SAD.
 module fps_sad5_d128u32_fa1add_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -1442,67 +1443,69 @@ module fps_sad5_d128u32_fa1add_pixel_window_cost #(
   fps_sad5_d128u32_fa1add_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
-  reg [N*8-1:0]        newest_column;
-  reg [COLSUM_W-1:0]   newest_sum;
-  reg [N*COLSUM_W-1:0] base_row_sums;
-  integer e, k;
-  always @* begin
-    newest_sum = 0;
-    for (e = 0; e < N; e = e + 1) begin
+  // The match window's newest column, zero outside the image, and its sum.
+  reg [N*8-1:0] newest_column;
+  integer e;
+  always @*
+    for (e = 0; e < N; e = e + 1)
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
-      newest_sum = newest_sum + {{(COLSUM_W-8){1'b0}}, newest_column[e*8 +: 8]};
-      base_row_sums[e*COLSUM_W +: COLSUM_W] = 0;
-      for (k = 0; k < N; k = k + 1)
-        base_row_sums[e*COLSUM_W +: COLSUM_W] = base_row_sums[e*COLSUM_W +: COLSUM_W] +
-                                                 {{(COLSUM_W-8){1'b0}}, base_masked[(e*N + k)*8 +: 8]};
-    end
-  end
-  // Registered with the window (shift k): the window, its row sums and the match column; the
-  // window's position a shift later (transform_* lags the window by one), with the window again.
+  wire [COLSUM_W-1:0] newest_sum;
+  fps_sad5_d128u32_fa1add_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
+  // Registered with the window (shift k): the window and the match column; the window's position
+  // a shift later (transform_* lags the window by one), with the window again.
   reg [N*N*8-1:0]                base_t, base_h;
   reg [N*8-1:0]                  column_t;
   reg [COLSUM_W-1:0]             column_sum_t;
-  reg [N*COLSUM_W-1:0]           base_row_sums_t;
   reg [X_W+YS_W+COST_K_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t          <= base_masked;
-      column_t        <= newest_column;
-      column_sum_t    <= newest_sum;
-      base_row_sums_t <= base_row_sums;
-      base_h          <= base_t;
-      position_h      <= {transform_x, transform_y, transform_slot};
+      base_t       <= base_masked;
+      column_t     <= newest_column;
+      column_sum_t <= newest_sum;
+      base_h       <= base_t;
+      position_h   <= {transform_x, transform_y, transform_slot};
     end
-  // ZSAD: all of it waits a shift more for the base window's mean.
+  // ZSAD: all of it waits two shifts more for the base window's mean.
   wire [N*N*8-1:0]    base_l;
   wire [N*8-1:0]      column_l;
   wire [COLSUM_W-1:0] column_sum_l;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [7:0]          base_mean;
+  /* verilator lint_on UNUSEDSIGNAL */
+  genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fps_sad5_d128u32_fa1add_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(1)) shift_wait (
+      fps_sad5_d128u32_fa1add_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(2)) shift_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
         .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
+      // The base window's mean over three shifts from the registered window: its row sums at
+      // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
+      wire [N*COLSUM_W-1:0] row_sums;
+      for (r = 0; r < N; r = r + 1) begin : row
+        fps_sad5_d128u32_fa1add_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) row_total (
+          .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLSUM_W +: COLSUM_W]));
+      end
+      reg  [N*COLSUM_W-1:0] row_sums_q;
+      wire [WINSUM_W-1:0]   total;
+      fps_sad5_d128u32_fa1add_sum_tree #(.N(N), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) window_total (
+        .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
+      reg  [WINSUM_W-1:0]   total_q;
+      reg  [7:0]            mean_q;
+      always @(posedge clk)
+        if (shift) begin
+          row_sums_q <= row_sums;
+          total_q <= total;
+          /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+          mean_q <= (total_q * MEAN_MUL) >> MEAN_SHIFT;
+          /* verilator lint_on WIDTH */
+        end
+      assign base_mean = mean_q;
     end else begin : no_wait
       assign {base_l, column_l, column_sum_l, history_x, history_y, history_slot} =
              {base_h, column_t, column_sum_t, position_h};
+      assign base_mean = 8'd0;
     end
   endgenerate
-  // ZSAD: the total of the row sums at shift k + 1, the mean (a constant multiply) at k + 2.
-  reg [WINSUM_W-1:0] base_total;
-  always @* begin
-    base_total = 0;
-    for (e = 0; e < N; e = e + 1)
-      base_total = base_total + {{(WINSUM_W-COLSUM_W){1'b0}}, base_row_sums_t[e*COLSUM_W +: COLSUM_W]};
-  end
-  reg [WINSUM_W-1:0] base_total_t;
-  reg [7:0]          base_mean_h;
-  always @(posedge clk)
-    if (shift) begin
-      base_total_t <= base_total;
-      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-      base_mean_h <= (base_total_t * MEAN_MUL) >> MEAN_SHIFT;
-      /* verilator lint_on WIDTH */
-    end
   wire [(UF+N-1)*N*8-1:0]      view;
   wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
   fps_sad5_d128u32_fa1add_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
@@ -1512,7 +1515,7 @@ module fps_sad5_d128u32_fa1add_pixel_window_cost #(
   fps_sad5_d128u32_fa1add_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean_h), .view(view), .view_sums(view_sums),
+    .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall
@@ -1607,8 +1610,10 @@ endmodule
 // l .. l + SPAN - 1 (fps_sad5_d128u32_fa1add_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
-// (LAT): the column masks and the border flag; ZSAD: the match window's sum, then its mean, then
-// the difference of the means; the row sums of the elements' terms; the total.
+// (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
+// the match window's sum, its mean, the difference of the means (with the masked view), the
+// magnitudes' pair sums; the row sums of the elements' magnitudes; the total. Sums are balanced
+// adder trees (fps_sad5_d128u32_fa1add_sum_tree).
 module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -1625,7 +1630,7 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  // the latency the instantiating stage plans with (checked: 3, ZSAD 6)
+  // the latency the instantiating stage plans with (checked: 3, ZSAD 8)
   parameter LAT = 3
 ) (
   input  wire                                clk,
@@ -1655,144 +1660,273 @@ module fps_sad5_d128u32_fa1add_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
-    if (LAT != (ZERO_MEAN != 0 ? 6 : 3)) begin : invalid_LAT
+    if (LAT != (ZERO_MEAN != 0 ? 8 : 3)) begin : invalid_LAT
       fps_sad5_d128u32_fa1add_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
-  // wide enough for x + SPAN and for any disparity plus R
+  localparam VIEW_COLS = UF + SPAN - 1;
+  // wide enough for x + VIEW_COLS and for any disparity plus UF + R + width
   localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
-  localparam TERM_W = 11;              // |(b - m) - delta| < 2^11 for 8-bit pixels
+  // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
+  localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
+  // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
+  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
+  localparam SIGNS_W = $clog2(SPAN + 1);
+  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
+  localparam PAIR_STEP = ZERO_MEAN != 0 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
-  // The elements' terms: |(b - m) - delta| of pixels, or the Hamming distance of codes.
-  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W;
-  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 3 : 0;
+  // View column c lies at x - group*UF + (SPAN - 1 - R - c) in the image for every lane that
+  // reads it (lane l: window column j = l + SPAN - 1 - c, at x - d + j - R), so one mask per view
+  // column serves all lanes. Inside: 0 <= that < width, here with group*UF + UF + R added.
+  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0];
+  wire [D_W-1:0] inside_high = inside_low + {{(D_W-X_W){1'b0}}, width};
+  wire [VIEW_COLS-1:0] view_valid;
+  genvar c;
+  generate
+    for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
+      localparam OFFSET = VIEW_COLS - c;
+      wire [D_W-1:0] position = x_wide + OFFSET[D_W-1:0];
+      assign view_valid[c] = position >= inside_low && position < inside_high;
+    end
+  endgenerate
 
-  // The windows wait for the masks (and the ZSAD means): 1 + MEAN_STEPS steps; the base
-  // window's mean meets the match window's after three.
-  wire [SPAN*SPAN*ELEM_W-1:0]        base_d;
-  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0] view_d;
-  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  wire [7:0]                         base_mean_d;
-  /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_fa1add_delay #(.WIDTH(SPAN*SPAN*ELEM_W + (UF+SPAN-1)*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) windows_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in({base, view}), .out({base_d, view_d}));
-  fps_sad5_d128u32_fa1add_delay #(.WIDTH(8), .DEPTH(3)) base_mean_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
-  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  reg [(UF+SPAN-1)*COLSUM_W-1:0] view_sums_q;
-  /* verilator lint_on UNUSEDSIGNAL */
+  // Step 1: the masks and the windows.
+  reg  [VIEW_COLS-1:0]          view_valid_q;
+  reg  [VIEW_COLS*COLUMN_W-1:0] view_q;
   always @(posedge clk)
-    if (en) view_sums_q <= view_sums;
+    if (en) begin
+      view_valid_q <= view_valid;
+      view_q <= view;
+    end
+  // The view as the terms read it, its columns outside the image zeroed; ZSAD: the match
+  // windows' column sums, masked the same way.
+  wire [VIEW_COLS*COLUMN_W-1:0] view_d;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
+  wire [7:0]                    base_mean_d;
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (ZERO_MEAN != 0) begin : late_mask
+      // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
+      // view waits three steps more for the means, and is masked into the register of step 5
+      // (the terms start from flip-flops, not from a shift register's read).
+      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
+      wire [VIEW_COLS*COLUMN_W-1:0] view_late;
+      wire [VIEW_COLS-1:0]          valid_late;
+      reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
+      fps_sad5_d128u32_fa1add_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in({view_q, view_valid_q}), .out({view_late, valid_late}));
+      integer n;
+      always @(posedge clk)
+        if (en) begin
+          view_sums_q <= view_sums;
+          for (n = 0; n < VIEW_COLS; n = n + 1) begin
+            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
+                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
+            view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+          end
+        end
+      assign view_d = view_masked_q;
+      assign view_sums_masked = view_sums_masked_q;
+      // the base window's mean meets the match window's (step 4)
+      fps_sad5_d128u32_fa1add_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
+    end else begin : early_mask
+      for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
+        assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+      end
+      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
+      assign base_mean_d = 8'd0;
+    end
+  endgenerate
+  wire [SPAN*SPAN*ELEM_W-1:0] base_d;
+  fps_sad5_d128u32_fa1add_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in(base), .out(base_d));
 
-  genvar l, i, j;
+  genvar l, i, k;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [D_W-1:0] d = group_base + l[D_W-1:0];
-      // Window column j (left to right) is view column l + SPAN - 1 - j; it lies inside the
-      // image where 0 <= x - d + (j - R) < width.
-      wire [SPAN-1:0] column_valid;
-      for (j = 0; j < SPAN; j = j + 1) begin : column
-        wire [D_W-1:0] position = x_wide + j[D_W-1:0];  // x - d + (j - R) + d + R
-        assign column_valid[j] = position >= d + R[D_W-1:0] && position < d + R[D_W-1:0] + {{(D_W-X_W){1'b0}}, width};
-      end
-
-      // Step 1: the masks and the border flag, which wait with the windows.
-      reg  [SPAN-1:0] column_valid_q;
-      reg             outside_q;
+      // The border flag, registered at step 1, waits for the total.
+      reg  outside_q;
+      wire outside_d;
       always @(posedge clk)
-        if (en) begin
-          column_valid_q <= column_valid;
-          outside_q <= x_wide < d;
-        end
-      wire [SPAN-1:0] valid_d;
-      wire            outside_d;
-      if (MEAN_STEPS > 0) begin : valid_wait
-        fps_sad5_d128u32_fa1add_delay #(.WIDTH(SPAN), .DEPTH(MEAN_STEPS)) masks (
-          .clk(clk), .rst(1'b0), .en(en), .in(column_valid_q), .out(valid_d));
-      end else begin : valid_now
-        assign valid_d = column_valid_q;
-      end
+        if (en) outside_q <= x_wide < d;
       fps_sad5_d128u32_fa1add_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 
-      // ZSAD, steps 2 to 4: the match window's sum from its column sums, its mean, and the
-      // difference of the means.
-      wire signed [9:0] delta;
-      if (ZERO_MEAN) begin : zero_mean
-        reg [WINSUM_W-1:0] match_sum;
-        integer c;
-        always @* begin
-          match_sum = 0;
-          for (c = 0; c < SPAN; c = c + 1)
-            if (column_valid_q[c])
-              match_sum = match_sum + {{(WINSUM_W-COLSUM_W){1'b0}}, view_sums_q[(l + SPAN - 1 - c)*COLSUM_W +: COLSUM_W]};
-        end
+      // ZSAD, steps 3 to 5: the match window's sum from its masked column sums, its mean, and
+      // the difference of the means, negated: the terms are b - m + (mean_m - mean_b).
+      /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+      wire signed [TERM_W-1:0] mean_offset;
+      /* verilator lint_on UNUSEDSIGNAL */
+      if (ZERO_MEAN != 0) begin : zero_mean
+        wire [WINSUM_W-1:0] match_sum;
+        fps_sad5_d128u32_fa1add_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
+          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
-        reg signed [9:0]   delta_q;
+        reg signed [TERM_W-1:0] mean_offset_q;
         always @(posedge clk)
           if (en) begin
             match_sum_q <= match_sum;
             /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
             match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
             /* verilator lint_on WIDTH */
-            delta_q <= $signed({2'b00, base_mean_d}) - $signed({2'b00, match_mean_q});
+            mean_offset_q <= $signed({2'b00, match_mean_q}) - $signed({2'b00, base_mean_d});
           end
-        assign delta = delta_q;
+        assign mean_offset = mean_offset_q;
       end else begin : no_mean
-        assign delta = 10'sd0;
+        assign mean_offset = {TERM_W{1'b0}};
       end
 
-      // The per-row sums of the elements' terms.
+      // Step 7 (ZSAD; SAD and SHD step 2): the row sums of the elements' magnitudes.
       wire [SPAN*COST_W-1:0] row_sums;
       for (i = 0; i < SPAN; i = i + 1) begin : row
-        reg [SPAN*MAG_W-1:0] terms;
-        integer k, b2;
-        reg [ELEM_W-1:0] bv, mv;
-        reg signed [TERM_W-1:0] diff;
-        reg [MAG_W-1:0] magnitude;  // its own assignment: in the sum, -diff would widen first
-        always @* begin
-          for (k = 0; k < SPAN; k = k + 1) begin
-            bv = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
-            mv = valid_d[k] ? view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
-            magnitude = 0;
-            if (HAMMING) begin
-              for (b2 = 0; b2 < ELEM_W; b2 = b2 + 1) magnitude = magnitude + {{(MAG_W-1){1'b0}}, bv[b2] ^ mv[b2]};
-            end else begin
-              /* verilator lint_off WIDTH */  // 8-bit pixels widened into the signed difference
-              diff = $signed({3'b000, bv}) - $signed({3'b000, mv}) - delta;
-              magnitude = diff < 0 ? -diff : diff;
-              /* verilator lint_on WIDTH */
+        wire [SPAN*MAG_W-1:0] magnitudes;
+        wire [SPAN-1:0]       negative;
+        for (k = 0; k < SPAN; k = k + 1) begin : element
+          // window column k (left to right) is view column l + SPAN - 1 - k
+          wire [ELEM_W-1:0] b = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
+          wire [ELEM_W-1:0] m = view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W];
+          if (HAMMING != 0) begin : code
+            reg [MAG_W-1:0] distance;
+            integer e;
+            always @* begin
+              distance = 0;
+              for (e = 0; e < ELEM_W; e = e + 1)
+                distance = distance + {{(MAG_W-1){1'b0}}, b[e] ^ m[e]};
             end
-            terms[k*MAG_W +: MAG_W] = magnitude;
+            assign magnitudes[k*MAG_W +: MAG_W] = distance;
+            assign negative[k] = 1'b0;
+          end else begin : pixel
+            wire [TERM_W-1:0] term;
+            if (ZERO_MEAN != 0) begin : zero_mean
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m} + mean_offset;
+            end else begin : plain
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m};
+            end
+            // |term| = (term xor sign) + sign: the xor joins the row sum's first adders, and
+            // the row's signs are counted and added once.
+            assign negative[k] = term[TERM_W-1];
+            assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
           end
         end
-        reg [COST_W-1:0] row_sum;
-        integer t;
-        always @* begin
-          row_sum = 0;
-          for (t = 0; t < SPAN; t = t + 1) row_sum = row_sum + {{(COST_W-MAG_W){1'b0}}, terms[t*MAG_W +: MAG_W]};
-        end
+        // ZSAD registers the pairs' sums (step 6), so that the terms and the row sum are not
+        // one path.
+        wire [COST_W-1:0]  magnitude_sum;
+        wire [SIGNS_W-1:0] sign_count;
+        fps_sad5_d128u32_fa1add_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
+          .clk(clk), .en(en), .values(magnitudes), .sum(magnitude_sum));
+        fps_sad5_d128u32_fa1add_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
+          .clk(clk), .en(en), .values(negative), .sum(sign_count));
         reg [COST_W-1:0] row_sum_q;
         always @(posedge clk)
-          if (en) row_sum_q <= row_sum;
+          if (en) row_sum_q <= magnitude_sum + {{(COST_W-SIGNS_W){1'b0}}, sign_count};
         assign row_sums[i*COST_W +: COST_W] = row_sum_q;
       end
 
       // The total.
-      reg [COST_W-1:0] total;
-      integer t;
-      always @* begin
-        total = 0;
-        for (t = 0; t < SPAN; t = t + 1) total = total + row_sums[t*COST_W +: COST_W];
-      end
+      wire [COST_W-1:0] total;
+      fps_sad5_d128u32_fa1add_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
+        .clk(clk), .en(en), .values(row_sums), .sum(total));
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The sum of N unsigned values as a balanced tree of two-input adders: ceil(log2 N) adders
+// deep, where a chain of additions would be N - 1 deep. Level v's nodes are IN_W + v bits wide
+// (at most SUM_W), so no adder is wider than its operands need. The sum is taken modulo
+// 2^SUM_W: the caller sizes SUM_W for its largest sum. Combinational, or with the partial sums
+// of level REGISTER_LEVEL registered (latency 1), which splits the tree's logic from whatever
+// computes the values.
+module fps_sad5_d128u32_fa1add_sum_tree #(
+  parameter N = 7,
+  parameter IN_W = 8,
+  parameter SUM_W = 11,
+  // 0: combinational; 1 .. ceil(log2 N): that level's partial sums are registered
+  parameter REGISTER_LEVEL = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // with REGISTER_LEVEL 0
+  input  wire              clk,
+  input  wire              en,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [N*IN_W-1:0] values,
+  output wire [SUM_W-1:0]  sum
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || IN_W < 1) begin : invalid_N
+      fps_sad5_d128u32_fa1add_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
+    end
+    if (SUM_W < IN_W) begin : invalid_SUM_W
+      fps_sad5_d128u32_fa1add_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
+    end
+    if (REGISTER_LEVEL < 0 || REGISTER_LEVEL > ((N > 1) ? $clog2(N) : 0)) begin : invalid_REGISTER_LEVEL
+      fps_sad5_d128u32_fa1add_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
+    end
+  endgenerate
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+
+  genvar v, i;
+  generate
+    for (v = 0; v <= LEVELS; v = v + 1) begin : level
+      // Level v holds ceil(N / 2^v) partial sums of LEVEL_W bits.
+      localparam COUNT = (N + (1 << v) - 1) >> v;
+      localparam PREV_COUNT = (N + (1 << v) / 2 - 1) / ((1 << v) / 2 > 0 ? (1 << v) / 2 : 1);
+      localparam LEVEL_W = IN_W + v < SUM_W ? IN_W + v : SUM_W;
+      localparam PREV_W = IN_W + v - 1 < SUM_W ? IN_W + v - 1 : SUM_W;
+      wire [COUNT*LEVEL_W-1:0] nodes_d;  // the level's sums
+      wire [COUNT*LEVEL_W-1:0] nodes;    // as the next level reads them
+      if (v > 0 && v == REGISTER_LEVEL) begin : stage
+        reg [COUNT*LEVEL_W-1:0] nodes_q;
+        always @(posedge clk)
+          if (en) nodes_q <= nodes_d;
+        assign nodes = nodes_q;
+      end else begin : wire_through
+        assign nodes = nodes_d;
+      end
+      // a level's nodes are one bit wider than the level below, until SUM_W
+      localparam GROWS = LEVEL_W > PREV_W;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (v == 0) begin : leaf
+          assign nodes_d[i*LEVEL_W +: LEVEL_W] = values[i*IN_W +: IN_W];
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          wire [PREV_W-1:0] b = level[v-1].nodes[(2*i+1)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a} + {1'b0, b};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a + b;
+          end
+        end else begin : single  // the last node of an odd level passes up alone
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a;
+          end
+        end
+      end
+    end
+  endgenerate
+
+  localparam TOP_W = IN_W + LEVELS < SUM_W ? IN_W + LEVELS : SUM_W;
+  generate
+    if (TOP_W < SUM_W) begin : widen
+      assign sum = {{(SUM_W-TOP_W){1'b0}}, level[LEVELS].nodes};
+    end else begin : full
+      assign sum = level[LEVELS].nodes;
     end
   endgenerate
 endmodule

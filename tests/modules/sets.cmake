@@ -36,3 +36,11 @@ modtb_set(path_lanes path_lanes_uf1 TOP fpstereo_path_lanes SOURCES fpstereo_pat
           PARAMS UF=1 COST_W=4 PATH_W=6)
 modtb_set(path_lanes path_lanes_uf8 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
           PARAMS UF=8 COST_W=5 PATH_W=9)
+modtb_set(sum_tree sum_tree_n7_comb TOP fpstereo_sum_tree SOURCES fpstereo_sum_tree.v
+          PARAMS N=7 IN_W=9 SUM_W=12 REGISTER_LEVEL=0)
+modtb_set(sum_tree sum_tree_n13_l1 TOP fpstereo_sum_tree SOURCES fpstereo_sum_tree.v
+          PARAMS N=13 IN_W=8 SUM_W=10 REGISTER_LEVEL=1)
+modtb_set(sum_tree sum_tree_n8_l3 TOP fpstereo_sum_tree SOURCES fpstereo_sum_tree.v
+          PARAMS N=8 IN_W=5 SUM_W=8 REGISTER_LEVEL=3)
+modtb_set(sum_tree sum_tree_n1 TOP fpstereo_sum_tree SOURCES fpstereo_sum_tree.v
+          PARAMS N=1 IN_W=4 SUM_W=6 REGISTER_LEVEL=0)
