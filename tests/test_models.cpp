@@ -36,6 +36,8 @@ StereoConfig random_config(std::mt19937& rng) {
   c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
   c.median = pick(rng, {0, 3, 5, 7});
   c.gap_interpolation = pick(rng, {false, true});
+  c.subpixel_bits = pick(rng, {0, 0, 1, 3, 5});
+  c.subpixel_fit = pick(rng, {SubpixelFit::Equiangular, SubpixelFit::Parabola});
   c.width = c.dmax + std::uniform_int_distribution<int>(0, 24)(rng);
   c.height = std::uniform_int_distribution<int>(4, 20)(rng);
   return c;
@@ -95,11 +97,16 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "3"},
                            {"median", "5"},
                            {"median", "7"},
-                           {"gap-interp", "on"}}) {
+                           {"gap-interp", "on"},
+                           {"subpixel-bits", "4"}}) {
     StereoConfig c = base;
     set_param(c, spec.first, spec.second);
     variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);
   }
+  StereoConfig parabola = base;
+  parabola.subpixel_bits = 2;
+  parabola.subpixel_fit = SubpixelFit::Parabola;
+  variants.emplace_back("subpixel-bits=2 subpixel-fit=parabola", parabola);
   for (const auto& [name, cfg] : variants) {
     const auto [left, right] =
         test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });

@@ -1,6 +1,7 @@
 // Synthetic pairs whose disparity is known by construction (tests/test_support.hpp): the
 // expected output comes from the construction, not from the model.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <random>
 
 #include "golden_model.hpp"
@@ -165,4 +166,49 @@ TEST_CASE("gap interpolation fills invalid runs with the smaller neighbour", "[s
       CHECK(out.at(x, y) != invalid);
       CHECK(out.at(x, y) < near);
     }
+}
+
+// A smooth texture seen with a disparity that is not whole: the right image samples the left
+// one's continuous pattern at x + 7.3 (so the true disparity is 7.3 everywhere). Whole-pixel
+// output errs by 0.3 px; sub-pixel output must come closer with either fit, and with SAD (whose
+// costs vary smoothly with the shift) much closer. Census codes change in steps, so its fit gains
+// less.
+TEST_CASE("sub-pixel output recovers a fractional shift better than whole pixels", "[synthetic][subpixel]") {
+  const int width = 96, height = 24;
+  const double shift = 7.3;
+  auto pattern = [](double x, int y) {
+    return 128.0 + 50.0 * std::sin(0.61 * x + 0.9 * y) + 40.0 * std::sin(0.23 * x - 0.4 * y) +
+           25.0 * std::cos(1.13 * x + 0.17 * y);
+  };
+  GrayImage left(width, height), right(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      left.at(x, y) = uint8_t(std::lround(pattern(x, y)));
+      right.at(x, y) = uint8_t(std::lround(pattern(x + shift, y)));
+    }
+  auto mean_error = [&](const StereoConfig& cfg) {
+    const DisparityImage out = run_golden(cfg, left, right);
+    const Widths w = derive_widths(cfg);
+    double sum = 0;
+    int count = 0;
+    for (int y = 4; y < height - 4; ++y)
+      for (int x = 24; x < width - 4; ++x) {
+        REQUIRE(out.at(x, y) != w.invalid_word);
+        sum += std::abs(double(out.at(x, y)) / double(1 << cfg.subpixel_bits) - shift);
+        ++count;
+      }
+    return sum / count;
+  };
+  for (const char* cost : {"sad", "census"}) {
+    StereoConfig cfg = small_config(cost, width, height);
+    const double whole = mean_error(cfg);
+    CHECK(whole == Approx(0.3).margin(0.01));  // every interior pixel at 7
+    cfg.subpixel_bits = 4;
+    for (SubpixelFit fit : {SubpixelFit::Equiangular, SubpixelFit::Parabola}) {
+      cfg.subpixel_fit = fit;
+      const double fine = mean_error(cfg);
+      INFO(cost << ", " << to_string(fit) << ": mean error " << fine << " px against " << whole << " whole");
+      CHECK(fine < (std::string(cost) == "sad" ? 0.4 : 0.75) * whole);
+    }
+  }
 }

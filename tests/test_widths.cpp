@@ -177,6 +177,40 @@ TEST_CASE("disparity and output word widths", "[widths]") {
   CHECK(derive_widths(c2).output_word == 8);  // dmax 128: 7 disparity bits and the flag
 }
 
+TEST_CASE("sub-pixel output widths", "[widths][subpixel]") {
+  // The largest output is (dmax - 1) * 2^k: the last disparity has no right neighbour, so its
+  // fraction is 0 (docs/semantics.md, section 4).
+  std::mt19937 rng(6);
+  for (int bits : {1, 3, 5})
+    for (int dmax : {16, 100, 256}) {
+      StereoConfig cfg;
+      cfg.dmax = dmax;
+      cfg.uf = dmax;
+      cfg.width = dmax + 40;
+      cfg.height = 16;
+      cfg.median = 0;
+      cfg.subpixel_bits = bits;
+      const Widths w = derive_widths(cfg);
+      const auto [left, right] =
+          test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
+      const DisparityImage out = run_golden(cfg, left, right);
+      uint16_t largest = 0;
+      for (uint16_t v : out.pixels)
+        if (v != w.invalid_word) largest = std::max(largest, v);
+      INFO("dmax " << dmax << ", " << bits << " fraction bits");
+      CHECK(largest == (dmax - 1) << bits);
+      check_width_is_minimal(largest, w.output_disparity, uint64_t(dmax - 1) << bits);
+      StereoConfig whole = cfg;
+      whole.subpixel_bits = 0;
+      CHECK(w.disparity == derive_widths(whole).disparity);  // the winner-take-all's stays
+      CHECK(w.output_word == w.output_disparity + 1);
+      CHECK(w.invalid_word == (1u << w.output_disparity));
+    }
+  StereoConfig c2;
+  c2.subpixel_bits = 4;
+  CHECK(derive_widths(c2).output_word == 12);  // dmax 128: 127 * 16 = 2032 in 11 bits, and the flag
+}
+
 TEST_CASE("closed-form widths of the paper's C2 configuration", "[widths]") {
   // Census 7x7: 48-bit codes, costs 0..48 (6 bits), paths 48 + 86 = 134 (8 bits),
   // sums 4 * 134 = 536 (10 bits), uniqueness product 53600 (16 bits).

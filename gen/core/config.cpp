@@ -49,6 +49,8 @@ const std::vector<std::pair<std::string, CostFunction>> kCostNames = {{"census",
                                                                       {"shd", CostFunction::Shd}};
 const std::vector<std::pair<std::string, LrCheck>> kLrNames = {
     {"none", LrCheck::None}, {"lr1", LrCheck::Lr1}, {"lr2", LrCheck::Lr2}};
+const std::vector<std::pair<std::string, SubpixelFit>> kSubpixelFitNames = {
+    {"equiangular", SubpixelFit::Equiangular}, {"parabola", SubpixelFit::Parabola}};
 
 template <class E>
 E parse_enum(const std::string& name, const std::string& text,
@@ -126,6 +128,7 @@ bool StereoConfig::operator==(const StereoConfig& o) const { return describe(*th
 
 std::string to_string(CostFunction c) { return enum_name(c, kCostNames); }
 std::string to_string(LrCheck l) { return enum_name(l, kLrNames); }
+std::string to_string(SubpixelFit f) { return enum_name(f, kSubpixelFitNames); }
 
 std::string paths_to_string(unsigned paths) {
   std::string s;
@@ -181,6 +184,12 @@ const std::vector<ParamSpec>& param_specs() {
       {"gap-interp", "fill invalid pixels along the row: on or off",
        [](StereoConfig& c, const std::string& v) { c.gap_interpolation = parse_bool("gap-interp", v); },
        [](const StereoConfig& c) { return std::string(c.gap_interpolation ? "on" : "off"); }},
+      {"subpixel-bits", "fraction bits of the output disparity, 0 for whole pixels: 0 to 5",
+       [](StereoConfig& c, const std::string& v) { c.subpixel_bits = parse_int("subpixel-bits", v); },
+       [](const StereoConfig& c) { return std::to_string(c.subpixel_bits); }},
+      {"subpixel-fit", "sub-pixel fit through the winner's and its neighbours' costs: equiangular or parabola",
+       [](StereoConfig& c, const std::string& v) { c.subpixel_fit = parse_enum("subpixel-fit", v, kSubpixelFitNames); },
+       [](const StereoConfig& c) { return to_string(c.subpixel_fit); }},
   };
   return specs;
 }
@@ -211,6 +220,14 @@ void validate(const StereoConfig& c) {
   check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
     reject("median", std::to_string(c.median), "expected 0 (off), 3, 5 or 7");
+  check_range("subpixel-bits", c.subpixel_bits, 0, 5);
+}
+
+void check_hardware_support(const StereoConfig& c) {
+  if (c.subpixel_bits != 0)
+    reject("subpixel-bits", std::to_string(c.subpixel_bits),
+           "the RTL and HLS generators do not implement sub-pixel disparity yet (the golden model and "
+           "fpstereo run do): use 0");
 }
 
 std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4"}; }

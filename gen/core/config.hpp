@@ -13,6 +13,9 @@ namespace fpstereo {
 
 enum class CostFunction { Census, Rank, Sad, Zsad, Shd };
 enum class LrCheck { None, Lr1, Lr2 };
+// The curve fitted through the winner's and its two neighbours' aggregated costs for sub-pixel
+// disparity (docs/semantics.md, section 4): two lines of equal slope, or a parabola.
+enum class SubpixelFit { Equiangular, Parabola };
 
 // Aggregation path bit masks. The angle names the direction the path comes from in raster
 // order: 0 = from the left (x-1, y), 45 = from the upper left (x-1, y-1),
@@ -51,6 +54,8 @@ struct StereoConfig {
   int uniqueness = 0;    // percent; 0 = off
   int median = 5;        // median window side; 0 = off
   bool gap_interpolation = false;
+  int subpixel_bits = 0;  // fraction bits of the output disparity; 0 = integer disparities
+  SubpixelFit subpixel_fit = SubpixelFit::Equiangular;
 
   int path_count() const;
   bool operator==(const StereoConfig&) const;
@@ -66,6 +71,9 @@ class ConfigError : public std::runtime_error {
 
 // Throws ConfigError for the first invalid value or combination.
 void validate(const StereoConfig& cfg);
+// Throws ConfigError for a valid option the RTL and HLS generators do not implement yet
+// (sub-pixel disparity: the golden model and `fpstereo run` have it).
+void check_hardware_support(const StereoConfig& cfg);
 
 // Every parameter once: its name (the same as a command-line flag without "--" and as a
 // config-file key), a help line, and how to set it from text and print it as text.
@@ -94,6 +102,7 @@ StereoConfig compose_config(const std::optional<std::string>& preset_name, const
 
 std::string to_string(CostFunction c);
 std::string to_string(LrCheck l);
+std::string to_string(SubpixelFit f);
 std::string paths_to_string(unsigned paths);
 // "name = value" for every parameter, one per line, in param_specs() order.
 std::string describe(const StereoConfig& cfg, const std::string& line_prefix = "");

@@ -36,6 +36,22 @@ bool is_unique(const T* S, int dmax, int best, int ratio) {
   return !(second * uint64_t(100 - ratio) < uint64_t(S[best]) * 100);
 }
 
+// Section 4, sub-pixel: the winner d refined to units of 2^-bits from the sums at d - 1, d and
+// d + 1; at the ends of the range it stays whole.
+template <class T>
+int refined_disparity(const T* S, int dmax, int d, const StereoConfig& cfg) {
+  const int bits = cfg.subpixel_bits;
+  if (bits == 0 || d == 0 || d == dmax - 1) return d << bits;
+  const int64_t left = S[d - 1], best = S[d], right = S[d + 1];
+  // left > best (d is the first minimum) and right >= best, so the half denominator is positive
+  // and the offset num / (2 * half_den) lies in [-1/2, 1/2], towards the lower neighbour.
+  const int64_t num = left - right;
+  const int64_t half_den =
+      cfg.subpixel_fit == SubpixelFit::Equiangular ? std::max(left, right) - best : left + right - 2 * best;
+  const int64_t offset = ((std::abs(num) << bits) + half_den) / (2 * half_den);  // rounded half up
+  return (d << bits) + int(num < 0 ? -offset : offset);
+}
+
 // Section 5, LR1: Dm(x') = argmin_d S(x' + d, d) over d with x' + d < W.
 template <class T>
 std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dmax) {
@@ -59,13 +75,13 @@ std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dm
 // Sections 6-7 on a map of disparities with -1 for invalid.
 constexpr int kInvalid = -1;
 
-// Lower median of the valid in-image window values, with a histogram that slides along the
-// row (add the entering column, drop the leaving one) and a median pointer that only moves
-// as far as the counts changed.
-Image<int> median_filter(const Image<int>& in, int window, int dmax) {
+// Lower median of the valid in-image window values (0 .. values-1), with a histogram that
+// slides along the row (add the entering column, drop the leaving one) and a median pointer
+// that only moves as far as the counts changed.
+Image<int> median_filter(const Image<int>& in, int window, int values) {
   const int r = window / 2;
   Image<int> out = in;
-  std::vector<int> histogram(static_cast<size_t>(dmax));
+  std::vector<int> histogram(static_cast<size_t>(values));
   for (int y = 0; y < in.height; ++y) {
     std::fill(histogram.begin(), histogram.end(), 0);
     int count = 0, median = 0, below = 0;  // below: values smaller than median
@@ -119,6 +135,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   }
 
   Image<int> disparity(width, height, kInvalid);
+  std::vector<int> refined(static_cast<size_t>(width));
   for (int y = 0; y < height; ++y) {
     base_costs.compute(y, cost.data());
     base_paths.push_row(y, cost.data(), sum.data());
@@ -128,6 +145,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       const T* S = sum.data() + size_t(x) * size_t(dmax);
       const int d = winner(S, dmax);
       row[x] = (cfg.uniqueness == 0 || is_unique(S, dmax, d, cfg.uniqueness)) ? d : kInvalid;
+      refined[size_t(x)] = refined_disparity(S, dmax, d, cfg);
     }
 
     std::vector<int> match_disparity;
@@ -150,9 +168,12 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
         const int xm = x - row[x];
         if (xm < 0 || std::abs(row[x] - match_disparity[size_t(xm)]) > cfg.lr_threshold) row[x] = kInvalid;
       }
+    // The checks above use the whole disparity; the stages below the refined one.
+    for (int x = 0; x < width; ++x)
+      if (row[x] != kInvalid) row[x] = refined[size_t(x)];
   }
 
-  if (cfg.median != 0) disparity = median_filter(disparity, cfg.median, dmax);
+  if (cfg.median != 0) disparity = median_filter(disparity, cfg.median, ((dmax - 1) << cfg.subpixel_bits) + 1);
   if (cfg.gap_interpolation) interpolate_gaps(disparity);
 
   DisparityImage out(width, height);

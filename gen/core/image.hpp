@@ -23,7 +23,8 @@ struct Image {
 };
 
 using GrayImage = Image<uint8_t>;
-// Output words: a disparity 0 .. dmax-1, or Widths::invalid_word.
+// Output words: a disparity in units of 2^-subpixel_bits, 0 .. (dmax-1) * 2^subpixel_bits, or
+// Widths::invalid_word.
 using DisparityImage = Image<uint16_t>;
 
 }  // namespace fpstereo

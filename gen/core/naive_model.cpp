@@ -270,6 +270,33 @@ void apply_lr_check(const StereoConfig& cfg, const DispMap& dm, DispMap& disp) {
   }
 }
 
+// Section 4, sub-pixel: each valid D becomes D * 2^k + f, f the integer nearest to
+// delta * 2^k (ties away from zero), delta = (a - c) / (2 e) with a, b, c the sums at D - 1, D,
+// D + 1 and e = max(a, c) - b (equiangular) or a + c - 2b (parabola); f = 0 at D = 0 and
+// D = dmax - 1. Found by trying every f in -2^k .. 2^k on the cross-multiplied distance.
+// k = 0 keeps D as it is (no rounding to a neighbour).
+void refine_subpixel(const StereoConfig& cfg, const Volume& sum, DispMap& disp) {
+  if (cfg.subpixel_bits == 0) return;
+  const int64_t scale = int64_t(1) << cfg.subpixel_bits;
+  for (int y = 0; y < disp.height; ++y) {
+    for (int x = 0; x < disp.width; ++x) {
+      const int64_t D = disp.at(x, y);
+      if (D == kInvalid) continue;
+      int64_t best_f = 0;
+      if (D > 0 && D < sum.depth - 1) {
+        const int64_t a = sum.at(x, y, int(D) - 1), b = sum.at(x, y, int(D)), c = sum.at(x, y, int(D) + 1);
+        const int64_t e = cfg.subpixel_fit == SubpixelFit::Equiangular ? std::max(a, c) - b : a + c - 2 * b;
+        // |f - delta * 2^k| * 2e, compared as integers
+        auto distance = [&](int64_t f) { return std::llabs(f * 2 * e - (a - c) * scale); };
+        for (int64_t f = -scale; f <= scale; ++f)
+          if (distance(f) < distance(best_f) || (distance(f) == distance(best_f) && std::llabs(f) > std::llabs(best_f)))
+            best_f = f;
+      }
+      disp.at(x, y) = D * scale + best_f;
+    }
+  }
+}
+
 // Section 6: lower median of the valid in-image window values; invalid centres stay invalid.
 DispMap median_filter(const DispMap& in, int side) {
   const int k = (side - 1) / 2;
@@ -337,6 +364,8 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
 
   if (cfg.lr == LrCheck::Lr1) apply_lr_check(cfg, lr1_match_disparities(sum), disp);
   if (cfg.lr == LrCheck::Lr2) apply_lr_check(cfg, lr2_match_disparities(cfg, base, match, cmax), disp);
+
+  refine_subpixel(cfg, sum, disp);
 
   if (cfg.median > 0) disp = median_filter(disp, cfg.median);
 

@@ -1,5 +1,7 @@
 #include "widths.hpp"
 
+#include <algorithm>
+
 namespace fpstereo {
 
 int bits_for(uint64_t max_value) {
@@ -41,8 +43,10 @@ Widths derive_widths(const StereoConfig& cfg) {
   w.aggregated_max = uint64_t(cfg.path_count()) * w.path_cost_max;
   w.aggregated = bits_for(w.aggregated_max);
   w.disparity = bits_for(uint64_t(cfg.dmax - 1));
-  w.output_word = w.disparity + 1;
-  w.invalid_word = uint16_t(1u << w.disparity);
+  // validate() allows 0 .. 5 fraction bits; the clamp keeps the shift defined before it ran
+  w.output_disparity = bits_for(uint64_t(cfg.dmax - 1) << std::clamp(cfg.subpixel_bits, 0, 8));
+  w.output_word = w.output_disparity + 1;
+  w.invalid_word = uint16_t(1u << w.output_disparity);
   w.uniqueness_product = bits_for(w.aggregated_max * 100);
   return w;
 }

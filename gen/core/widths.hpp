@@ -20,8 +20,9 @@ struct Widths {
   int path_cost = 0;
   uint64_t aggregated_max = 0;  // paths * path_cost_max
   int aggregated = 0;
-  int disparity = 0;    // bits for 0 .. dmax-1
-  int output_word = 0;  // disparity bits plus the invalid flag in the top bit
+  int disparity = 0;         // bits for 0 .. dmax-1, the winner-take-all's disparity
+  int output_disparity = 0;  // bits for 0 .. (dmax-1) << subpixel_bits, the output's disparity
+  int output_word = 0;       // output disparity bits plus the invalid flag in the top bit
   uint16_t invalid_word = 0;
   int uniqueness_product = 0;  // bits of aggregated_max * 100 (the uniqueness comparison)
 };

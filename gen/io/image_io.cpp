@@ -308,11 +308,12 @@ void check_pair(const GrayImage& left, const GrayImage& right, const StereoConfi
 
 cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cfg) {
   const uint16_t invalid = derive_widths(cfg).invalid_word;
+  const float unit = 1.0f / float(1 << cfg.subpixel_bits);  // exact: a power of two
   cv::Mat1f disp(words.height, words.width);
   for (int y = 0; y < words.height; ++y)
     for (int x = 0; x < words.width; ++x) {
       const uint16_t w = words.at(x, y);
-      disp(y, x) = w == invalid ? NAN : float(w);
+      disp(y, x) = w == invalid ? NAN : float(w) * unit;
     }
   return disp;
 }
