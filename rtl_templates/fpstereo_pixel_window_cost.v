@@ -24,7 +24,7 @@ module fpstereo_pixel_window_cost #(
   parameter YS_W = 8,
   parameter G_W = 2,
   // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
-  parameter LAT = 3
+  parameter LAT = 4
 ) (
   input  wire                   clk,
   input  wire                   adv,

@@ -10,9 +10,9 @@
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
 // (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
-// the match window's sum, its mean, the difference of the means (with the masked view), the
-// magnitudes' pair sums; the row sums of the elements' magnitudes; the total. Sums are balanced
-// adder trees (fpstereo_sum_tree).
+// the match window's sum, its mean, the difference of the means (with the masked view); the
+// magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
+// (fpstereo_sum_tree).
 module fpstereo_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -29,8 +29,8 @@ module fpstereo_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  // the latency the instantiating stage plans with (checked: 3, ZSAD 8)
-  parameter LAT = 3
+  // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
+  parameter LAT = 4
 ) (
   input  wire                                clk,
   input  wire                                en,
@@ -59,7 +59,7 @@ module fpstereo_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fpstereo_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
-    if (LAT != (ZERO_MEAN != 0 ? 8 : 3)) begin : invalid_LAT
+    if (LAT != (ZERO_MEAN != 0 ? 4 : 0) + (SPAN > 1 ? 1 : 0) + 3) begin : invalid_LAT
       fpstereo_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
@@ -75,7 +75,7 @@ module fpstereo_window_cost_lanes #(
   localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
   localparam SIGNS_W = $clog2(SPAN + 1);
   localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
-  localparam PAIR_STEP = ZERO_MEAN != 0 ? 1 : 0;
+  localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
@@ -184,7 +184,7 @@ module fpstereo_window_cost_lanes #(
         assign mean_offset = {TERM_W{1'b0}};
       end
 
-      // Step 7 (ZSAD; SAD and SHD step 2): the row sums of the elements' magnitudes.
+      // Step 7 (ZSAD; SAD and SHD step 3): the row sums of the elements' magnitudes.
       wire [SPAN*COST_W-1:0] row_sums;
       for (i = 0; i < SPAN; i = i + 1) begin : row
         wire [SPAN*MAG_W-1:0] magnitudes;
@@ -216,8 +216,8 @@ module fpstereo_window_cost_lanes #(
             assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
           end
         end
-        // ZSAD registers the pairs' sums (step 6), so that the terms and the row sum are not
-        // one path.
+        // The pairs' sums are registered (ZSAD step 6, otherwise step 2), so that the terms and
+        // the row sum are not one path.
         wire [COST_W-1:0]  magnitude_sum;
         wire [SIGNS_W-1:0] sign_count;
         fpstereo_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (

@@ -264,12 +264,12 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.prefix = config_tag(cfg);
   d.window_radius = cfg.window / 2;
   d.groups = cfg.dmax / cfg.uf;
-  // The cost lanes' register steps: fpstereo_cost_lanes 2; fpstereo_window_cost_lanes 3, with
-  // five more for ZSAD (the masked column sums, the match window's sum, its mean, the means'
-  // difference, the magnitudes' pair sums).
+  // The cost lanes' register steps: fpstereo_cost_lanes 2; fpstereo_window_cost_lanes 4, with
+  // four more for ZSAD (the masked column sums, the match window's sum, its mean, the means'
+  // difference).
   const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad ||
                              (cfg.cost == CostFunction::Shd && cfg.shd_window > 1);
-  d.cost_latency = !windowed_cost ? 2 : cfg.cost == CostFunction::Zsad ? 8 : 3;
+  d.cost_latency = !windowed_cost ? 2 : cfg.cost == CostFunction::Zsad ? 8 : 4;
   d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
   std::tie(d.mean_mul, d.mean_shift) =

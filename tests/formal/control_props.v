@@ -7,12 +7,13 @@
 //   - BVALID/RVALID low after reset, held until BREADY/RREADY with BRESP/RDATA/RRESP stable;
 //   - one response per request: a response only for a request accepted and not yet answered,
 //     at most one outstanding of each kind, and each accepted request's response presented (a
-//     write's in the cycle after the one that takes it, when the write takes effect);
+//     write's in the cycle after the one that takes it, when the write takes effect; a read's
+//     likewise, its word selected in that cycle);
 //   - BRESP as the README's register map says: OKAY for a full-strobe write in range to a
 //     writable register, SLVERR out of range, to a read-only register (STATUS, VERSION,
 //     CONFIG_ID, UNIQUENESS when not generated, the counters, INFO) or with partial strobes;
-//   - RRESP OKAY, RDATA the register's value (the settings as written, the identity words, INFO),
-//     0 for unmapped addresses.
+//   - RRESP OKAY, RDATA the register's value in the cycle after the address was taken (the
+//     settings as written, the identity words, INFO), 0 for unmapped addresses.
 // The settings are modelled here from the README; the induction compares the model with the
 // unit's registers:
 // formal-probe: probe_enable dut.enable_q
@@ -123,7 +124,12 @@ module control_props (
   reg [7:0]  w_addr;
   reg [31:0] w_data;
   reg [3:0]  w_strb;
+  // the read address taken in the previous cycle, whose word is selected now
+  reg        ar_taken;
+  reg [7:0]  ar_addr;
   always @(posedge clk) begin
+    ar_taken <= !rst && ar_take;
+    if (ar_take) ar_addr <= araddr;
     w_taken <= !rst && aw_take && w_take;
     if (aw_take && w_take) begin
       w_addr <= awaddr;
@@ -148,7 +154,7 @@ module control_props (
       // one outstanding at a time, answered: a response exactly while a request is open
       assert(aw_open <= 2'd1 && w_open <= 2'd1 && ar_open <= 2'd1);
       assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1 && !w_taken));
-      assert(rvalid == (ar_open == 2'd1));
+      assert(rvalid == (ar_open == 2'd1 && !ar_taken));
       // a response is taken only when one was offered (no new one in the cycle it is taken)
       if (b_take) assert(!aw_take && !w_take);
       if (r_take) assert(!ar_take);
@@ -202,13 +208,13 @@ module control_props (
         endcase
     end
 
-  // the expected read word when the address is taken
+  // the expected read word, in the cycle after the address was taken
   reg        r_check;
   reg [31:0] r_expect;
   always @(posedge clk)
-    if (ar_take) begin
+    if (ar_taken) begin
       r_check <= 1'b1;
-      case (araddr)
+      case (ar_addr)
         8'h00: r_expect <= {31'd0, m_enable};
         8'h04: r_expect <= {31'd0, busy};
         8'h08: r_expect <= VERSION;
@@ -221,8 +227,8 @@ module control_props (
         8'h24: r_expect <= m_height;
         8'h28, 8'h30, 8'h34, 8'h38, 8'h3C: r_check <= 1'b0;  // counters: not modelled
         default:
-          if (araddr >= 8'h40 && araddr <= 8'h7C && araddr[1:0] == 2'b00)
-            r_expect <= INFO[(araddr - 8'h40) * 8 +: 32];
+          if (ar_addr >= 8'h40 && ar_addr <= 8'h7C && ar_addr[1:0] == 2'b00)
+            r_expect <= INFO[(ar_addr - 8'h40) * 8 +: 32];
           else r_expect <= 32'd0;  // unmapped
       endcase
     end

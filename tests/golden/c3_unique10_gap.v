@@ -945,14 +945,18 @@ module fps_census7_d128u32_888758_control #(
       if (protocol_error) protocol_errors <= protocol_errors + 1'b1;
     end
 
-  // ---- Reads: one at a time, always OKAY.
-  wire read = s_axi_arvalid && !s_axi_rvalid;
+  // ---- Reads: one at a time, always OKAY. The address is registered as it is taken and the
+  // word is selected from it in the next cycle (RVALID then), so the register mux starts from
+  // flip-flops rather than from the interconnect's address.
+  reg       read_pending;
+  reg [7:0] read_addr;
+  wire read = s_axi_arvalid && !s_axi_rvalid && !read_pending;
   assign s_axi_arready = read;
   assign s_axi_rresp = 2'b00;
   reg [31:0] read_word;
   always @* begin
     read_word = 32'd0;
-    case (s_axi_araddr)
+    case (read_addr)
       A_CONTROL:          read_word = {31'd0, enable_q};
       A_STATUS:           read_word = {31'd0, busy};
       A_VERSION:          read_word = VERSION;
@@ -969,13 +973,19 @@ module fps_census7_d128u32_888758_control #(
       A_FRAMES_TRUNCATED: read_word = frames_truncated;
       A_PROTOCOL_ERRORS:  read_word = protocol_errors;
       default:
-        if (s_axi_araddr[7:6] == A_INFO[7:6] && s_axi_araddr[1:0] == 2'b00)
-          read_word = INFO[s_axi_araddr[5:2]*32 +: 32];
+        if (read_addr[7:6] == A_INFO[7:6] && read_addr[1:0] == 2'b00)
+          read_word = INFO[read_addr[5:2]*32 +: 32];
     endcase
   end
   always @(posedge clk)
-    if (rst) s_axi_rvalid <= 1'b0;
-    else if (read) begin
+    if (rst) begin
+      read_pending <= 1'b0;
+      s_axi_rvalid <= 1'b0;
+    end else if (read) begin
+      read_pending <= 1'b1;
+      read_addr <= s_axi_araddr;
+    end else if (read_pending) begin
+      read_pending <= 1'b0;
       s_axi_rvalid <= 1'b1;
       s_axi_rdata <= read_word;
     end else if (s_axi_rready) s_axi_rvalid <= 1'b0;

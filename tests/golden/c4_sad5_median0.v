@@ -22,12 +22,12 @@
 //
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1887879; frames follow on from 8 rows
-// Latency without stalls from the first input handshake to the first output handshake: 24884 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1887880; frames follow on from 8 rows
+// Latency without stalls from the first input handshake to the first output handshake: 24885 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
-//   cost                                 0     1    3   cost, window, shd-window, dmax, uf
+//   cost                                 0     1    4   cost, window, shd-window, dmax, uf
 //   cost reorder                         0     0    1   uf
 //   LR2 match side                       0     0    0   lr, paths, p1, p2
 //   aggregation                          1     0    5   paths, p1, p2, dmax, uf
@@ -276,7 +276,7 @@ module fps_sad5_d128u32_994e67_sgm_core (
   wire [415:0] costs;
   fps_sad5_d128u32_994e67_pixel_window_cost #(
     .N(5), .ZERO_MEAN(0), .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
-    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .LAT(3)
+    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .LAT(4)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
@@ -292,7 +292,7 @@ module fps_sad5_d128u32_994e67_sgm_core (
   wire [13:0] cost_raddr;
   wire [415:0] cost_q;
   fps_sad5_d128u32_994e67_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(3), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
     .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -301,7 +301,7 @@ module fps_sad5_d128u32_994e67_sgm_core (
     .cost_raddr(cost_raddr), .cost_q(cost_q));
 
   // LR2 match side: second cost volume, aggregation and winner-take-all.
-  localparam MATCH_START = 10480;
+  localparam MATCH_START = 10481;
   reg match_on;
   always @(posedge clk)
     if (restart) match_on <= 1'b0;
@@ -321,7 +321,7 @@ module fps_sad5_d128u32_994e67_sgm_core (
     .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata));
 
   // Aggregation in K interleaved chains, from step AGG_START.
-  localparam AGG_START = 9960;
+  localparam AGG_START = 9961;
   reg agg_on;
   always @(posedge clk)
     if (restart) agg_on <= 1'b0;
@@ -358,7 +358,7 @@ module fps_sad5_d128u32_994e67_sgm_core (
     .word(wta_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24872;
+  localparam OUT_START = 24873;
   reg out_on;
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
@@ -911,14 +911,18 @@ module fps_sad5_d128u32_994e67_control #(
       if (protocol_error) protocol_errors <= protocol_errors + 1'b1;
     end
 
-  // ---- Reads: one at a time, always OKAY.
-  wire read = s_axi_arvalid && !s_axi_rvalid;
+  // ---- Reads: one at a time, always OKAY. The address is registered as it is taken and the
+  // word is selected from it in the next cycle (RVALID then), so the register mux starts from
+  // flip-flops rather than from the interconnect's address.
+  reg       read_pending;
+  reg [7:0] read_addr;
+  wire read = s_axi_arvalid && !s_axi_rvalid && !read_pending;
   assign s_axi_arready = read;
   assign s_axi_rresp = 2'b00;
   reg [31:0] read_word;
   always @* begin
     read_word = 32'd0;
-    case (s_axi_araddr)
+    case (read_addr)
       A_CONTROL:          read_word = {31'd0, enable_q};
       A_STATUS:           read_word = {31'd0, busy};
       A_VERSION:          read_word = VERSION;
@@ -935,13 +939,19 @@ module fps_sad5_d128u32_994e67_control #(
       A_FRAMES_TRUNCATED: read_word = frames_truncated;
       A_PROTOCOL_ERRORS:  read_word = protocol_errors;
       default:
-        if (s_axi_araddr[7:6] == A_INFO[7:6] && s_axi_araddr[1:0] == 2'b00)
-          read_word = INFO[s_axi_araddr[5:2]*32 +: 32];
+        if (read_addr[7:6] == A_INFO[7:6] && read_addr[1:0] == 2'b00)
+          read_word = INFO[read_addr[5:2]*32 +: 32];
     endcase
   end
   always @(posedge clk)
-    if (rst) s_axi_rvalid <= 1'b0;
-    else if (read) begin
+    if (rst) begin
+      read_pending <= 1'b0;
+      s_axi_rvalid <= 1'b0;
+    end else if (read) begin
+      read_pending <= 1'b1;
+      read_addr <= s_axi_araddr;
+    end else if (read_pending) begin
+      read_pending <= 1'b0;
       s_axi_rvalid <= 1'b1;
       s_axi_rdata <= read_word;
     end else if (s_axi_rready) s_axi_rvalid <= 1'b0;
@@ -1408,7 +1418,7 @@ module fps_sad5_d128u32_994e67_pixel_window_cost #(
   parameter YS_W = 8,
   parameter G_W = 2,
   // the cost lanes' latency the stage plans with (fps_sad5_d128u32_994e67_window_cost_lanes checks it)
-  parameter LAT = 3
+  parameter LAT = 4
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -1613,9 +1623,9 @@ endmodule
 // (at the right border the ring already holds the next row's first columns).
 // Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
 // (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
-// the match window's sum, its mean, the difference of the means (with the masked view), the
-// magnitudes' pair sums; the row sums of the elements' magnitudes; the total. Sums are balanced
-// adder trees (fps_sad5_d128u32_994e67_sum_tree).
+// the match window's sum, its mean, the difference of the means (with the masked view); the
+// magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
+// (fps_sad5_d128u32_994e67_sum_tree).
 module fps_sad5_d128u32_994e67_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
@@ -1632,8 +1642,8 @@ module fps_sad5_d128u32_994e67_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  // the latency the instantiating stage plans with (checked: 3, ZSAD 8)
-  parameter LAT = 3
+  // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
+  parameter LAT = 4
 ) (
   input  wire                                clk,
   input  wire                                en,
@@ -1662,7 +1672,7 @@ module fps_sad5_d128u32_994e67_window_cost_lanes #(
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
       fps_sad5_d128u32_994e67_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
-    if (LAT != (ZERO_MEAN != 0 ? 8 : 3)) begin : invalid_LAT
+    if (LAT != (ZERO_MEAN != 0 ? 4 : 0) + (SPAN > 1 ? 1 : 0) + 3) begin : invalid_LAT
       fps_sad5_d128u32_994e67_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
@@ -1678,7 +1688,7 @@ module fps_sad5_d128u32_994e67_window_cost_lanes #(
   localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
   localparam SIGNS_W = $clog2(SPAN + 1);
   localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
-  localparam PAIR_STEP = ZERO_MEAN != 0 ? 1 : 0;
+  localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
 
@@ -1787,7 +1797,7 @@ module fps_sad5_d128u32_994e67_window_cost_lanes #(
         assign mean_offset = {TERM_W{1'b0}};
       end
 
-      // Step 7 (ZSAD; SAD and SHD step 2): the row sums of the elements' magnitudes.
+      // Step 7 (ZSAD; SAD and SHD step 3): the row sums of the elements' magnitudes.
       wire [SPAN*COST_W-1:0] row_sums;
       for (i = 0; i < SPAN; i = i + 1) begin : row
         wire [SPAN*MAG_W-1:0] magnitudes;
@@ -1819,8 +1829,8 @@ module fps_sad5_d128u32_994e67_window_cost_lanes #(
             assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
           end
         end
-        // ZSAD registers the pairs' sums (step 6), so that the terms and the row sum are not
-        // one path.
+        // The pairs' sums are registered (ZSAD step 6, otherwise step 2), so that the terms and
+        // the row sum are not one path.
         wire [COST_W-1:0]  magnitude_sum;
         wire [SIGNS_W-1:0] sign_count;
         fps_sad5_d128u32_994e67_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
