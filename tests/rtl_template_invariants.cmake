@@ -48,6 +48,7 @@ check_module(window "-GN=3 -GROW_SLOTS=40 -GADDR_W=6" "-GN=3 -GROW_SLOTS=40 -GAD
   window_ADDR_W_below_clog2_ROW_SLOTS ram_sdp)
 check_module(min_tree "-GN=5 -GIDX_W=3" "-GN=9 -GIDX_W=3" min_tree_IDX_W_does_not_hold_N_minus_1)
 check_module(sum_tree "-GN=7 -GREGISTER_LEVEL=3" "-GN=7 -GREGISTER_LEVEL=4" sum_tree_REGISTER_LEVEL_is_not_a_level)
+check_module(subpixel_fit "-GK=4" "-GK=4 -GOUT_W=9" subpixel_fit_DISP_W_or_OUT_W_does_not_hold_DMAX_minus_1)
 check_module(lr1_match "-GK=2 -GG=4 -GUF=8 -GDMAX=32" "-GK=2 -GG=4 -GUF=8 -GDMAX=24"
   DMAX_is_not_G_times_UF ram_async)
 check_module(median_select "-GM=3 -GWORD_W=6" "-GM=9 -GWORD_W=6" median_select_M_is_not_3_5_or_7)

@@ -77,9 +77,12 @@ TEST_CASE("every template is used by some configuration, and every module a stag
         CHECK(rtl::templates().count(module) == 1);
       }
   }
+  // Building blocks of an option the stages do not take yet (see not_in_hardware_yet above);
+  // each has its own module tests (tests/modules) until a stage uses it.
+  const std::set<std::string> not_wired_yet = {"fpstereo_subpixel_fit"};
   for (const auto& [name, text] : rtl::templates()) {
     INFO("template " << name);
-    CHECK(used.count(name) == 1);
+    CHECK(used.count(name) == (not_wired_yet.count(name) ? 0 : 1));
   }
 }
 

@@ -44,3 +44,11 @@ modtb_set(sum_tree sum_tree_n8_l3 TOP fpstereo_sum_tree SOURCES fpstereo_sum_tre
           PARAMS N=8 IN_W=5 SUM_W=8 REGISTER_LEVEL=3)
 modtb_set(sum_tree sum_tree_n1 TOP fpstereo_sum_tree SOURCES fpstereo_sum_tree.v
           PARAMS N=1 IN_W=4 SUM_W=6 REGISTER_LEVEL=0)
+modtb_set(subpixel_fit subpixel_fit_k4_equiangular TOP fpstereo_subpixel_fit SOURCES fpstereo_subpixel_fit.v
+          PARAMS DMAX=64 DISP_W=6 SUM_W=10 K=4 EQUIANGULAR=1 OUT_W=10)
+modtb_set(subpixel_fit subpixel_fit_k1_parabola TOP fpstereo_subpixel_fit SOURCES fpstereo_subpixel_fit.v
+          PARAMS DMAX=64 DISP_W=6 SUM_W=10 K=1 EQUIANGULAR=0 OUT_W=7)
+modtb_set(subpixel_fit subpixel_fit_k5_d256 TOP fpstereo_subpixel_fit SOURCES fpstereo_subpixel_fit.v
+          PARAMS DMAX=256 DISP_W=8 SUM_W=14 K=5 EQUIANGULAR=1 OUT_W=13)
+modtb_set(subpixel_fit subpixel_fit_k3_parabola_d16 TOP fpstereo_subpixel_fit SOURCES fpstereo_subpixel_fit.v
+          PARAMS DMAX=16 DISP_W=4 SUM_W=6 K=3 EQUIANGULAR=0 OUT_W=7)
