@@ -9,7 +9,8 @@
 // one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
 // frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
 // last word (frame_done); unless the next frame follows on (continuing), restart clears the
-// stages' valid flags then, as at reset.
+// stages' valid flags then, as at reset, and a next frame begun too late to follow on (pending)
+// starts as from idle.
 module fpstereo_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -45,7 +46,9 @@ module fpstereo_sequencer #(
       starting <= 1'b0;
       in_frame <= 1'b0;
     end else begin
-      starting <= start && idle;
+      // A following frame that began as the window stage closed (pending, not taken) starts
+      // when this frame ends, as from idle: the framing stage is already passing its pixels.
+      starting <= (start && idle) || (ends && pending);
       if (!in_frame) in_frame <= starting;
       else if (ends) in_frame <= 1'b0;
     end
