@@ -7,7 +7,7 @@
 // The caller guarantees a > b and c >= b (d is the first minimum), so e > 0 and the offset is at
 // most 2^(K-1). A pipeline advancing on en, one pixel per step: the offsets' numerator and e,
 // then the dividend and divisor, then K restoring-division steps (one quotient bit each), then
-// the sum; latency K + 3. The whole disparity d travels along (d_out).
+// the sum; latency K + 3.
 module fpstereo_subpixel_fit #(
   parameter DMAX = 64,
   parameter DISP_W = 6,
@@ -24,7 +24,6 @@ module fpstereo_subpixel_fit #(
   input  wire [SUM_W-1:0]  left,
   input  wire [SUM_W-1:0]  best,
   input  wire [SUM_W-1:0]  right,
-  output wire [DISP_W-1:0] d_out,
   output reg  [OUT_W-1:0]  refined
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -122,12 +121,7 @@ module fpstereo_subpixel_fit #(
   wire [DISP_W-1:0] d_last = divide[K-1].d_q;
   wire [OUT_W-1:0]  scaled = {{(OUT_W-DISP_W){1'b0}}, d_last} << K;
   wire [OUT_W-1:0]  offset_wide = {{(OUT_W-K){1'b0}}, offset};
-  reg  [DISP_W-1:0] d_out_q;
   always @(posedge clk)
-    if (en) begin
-      refined <= divide[K-1].whole_q ? scaled : divide[K-1].towards_left_q ? scaled - offset_wide : scaled + offset_wide;
-      d_out_q <= d_last;
-    end
-  assign d_out = d_out_q;
+    if (en) refined <= divide[K-1].whole_q ? scaled : divide[K-1].towards_left_q ? scaled - offset_wide : scaled + offset_wide;
 endmodule
 `resetall

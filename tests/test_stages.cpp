@@ -2,7 +2,6 @@
 // by some configuration, and the schedule is the sum of the stages' latencies.
 #include <catch2/catch.hpp>
 
-#include <map>
 #include <set>
 
 #include "rtl_emitter.hpp"
@@ -28,6 +27,7 @@ std::vector<StereoConfig> covering_configs() {
       c.lr = lr;
       c.uniqueness = lr == LrCheck::Lr1 ? 10 : 0;
       c.gap_interpolation = lr == LrCheck::Lr2;
+      c.subpixel_bits = lr == LrCheck::None ? 3 : 0;  // sub-pixel goes without a left-right check
       out.push_back(c);
     }
   return out;
@@ -40,19 +40,9 @@ TEST_CASE("every configuration parameter is owned by a stage", "[stages]") {
   for (const auto& cfg : covering_configs())
     for (const auto& stage : rtl::plan(cfg).stages)
       for (const auto& knob : stage->knobs()) owned.insert(knob);
-  // Options the golden model has and the hardware generators refuse (check_hardware_support);
-  // each must really be refused, so the list shrinks as the stages take them on.
-  const std::map<std::string, std::string> not_in_hardware_yet = {{"subpixel-bits", "3"}, {"subpixel-fit", ""}};
   for (const auto& spec : param_specs()) {
     INFO("parameter " << spec.name);
-    const auto pending = not_in_hardware_yet.find(spec.name);
-    if (pending == not_in_hardware_yet.end()) {
-      CHECK(owned.count(spec.name) == 1);
-    } else if (!pending->second.empty()) {
-      StereoConfig c;
-      set_param(c, spec.name, pending->second);
-      CHECK_THROWS_AS(rtl::plan(c), ConfigError);
-    }
+    CHECK(owned.count(spec.name) == 1);
   }
   for (const auto& knob : owned) {
     INFO("knob " << knob);
@@ -77,12 +67,9 @@ TEST_CASE("every template is used by some configuration, and every module a stag
         CHECK(rtl::templates().count(module) == 1);
       }
   }
-  // Building blocks of an option the stages do not take yet (see not_in_hardware_yet above);
-  // each has its own module tests (tests/modules) until a stage uses it.
-  const std::set<std::string> not_wired_yet = {"fpstereo_subpixel_fit"};
   for (const auto& [name, text] : rtl::templates()) {
     INFO("template " << name);
-    CHECK(used.count(name) == (not_wired_yet.count(name) ? 0 : 1));
+    CHECK(used.count(name) == 1);
   }
 }
 

@@ -70,8 +70,9 @@ std::vector<std::pair<std::string, uint32_t>> info_words(const RtlDesign& d) {
       {"PATHS", c.paths},
       {"P2_MAX", uint32_t(c.p2)},
       {"OPTIONS", uint32_t(c.lr) | uint32_t(c.median) << 4 | uint32_t(c.gap_interpolation) << 8 |
-                      uint32_t(c.uniqueness != 0) << 9},
-      {"OUTPUT", uint32_t(w.disparity) | uint32_t(w.output_word) << 8 | uint32_t(d.output_bits) << 16},
+                      uint32_t(c.uniqueness != 0) << 9 | uint32_t(c.subpixel_bits) << 12 |
+                      uint32_t(c.subpixel_fit) << 15},
+      {"OUTPUT", uint32_t(w.output_disparity) | uint32_t(w.output_word) << 8 | uint32_t(d.output_bits) << 16},
       {"MIN_WIDTH", uint32_t(d.min_width)},
       {"MIN_HEIGHT", uint32_t(d.min_height)},
       {"CYCLES_PER_FRAME", uint32_t(d.cycles_per_frame)},

@@ -95,7 +95,9 @@ std::string top_module(const RtlDesign& d) {
   os << "`resetall\n`default_nettype none\n"
      << "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
      << "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
-     << "// with the invalid flag in bit " << w.disparity << ". Frames are at most " << c.width << " x "
+     << "// with the invalid flag in bit " << w.output_disparity
+     << (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string())
+     << ". Frames are at most " << c.width << " x "
      << c.height << " pixels; fpstereo_video_in checks the input's\n"
      << "// framing and resynchronises on the next start of frame after an error.\n"
      << (d.options.control ? "// Settings and status: AXI4-Lite s_axi_ctrl (register map in " + d.prefix + "_regs.h).\n"
@@ -191,7 +193,7 @@ std::string top_module(const RtlDesign& d) {
       "    .m_data({{core_left, core_right}}), .m_valid(core_valid), .m_ready(take));\n",
       d.prefix, d.x_bits, d.y_bits);
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
-     << fmt::format("  wire [{}:0] out_word;\n", w.disparity);
+     << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity);
   os << fmt::format(
       "  {}_sgm_core core (\n"
       "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),\n"
@@ -239,7 +241,7 @@ std::string core_module(const RtlDesign& d) {
      << "  output wire in_take,\n"
      << "  // output word (invalid flag above the disparity), pushed when out_push is high\n"
      << "  input  wire out_ready,\n  output wire out_push,\n"
-     << fmt::format("  output wire [{}:0] out_word,\n", w.disparity)
+     << fmt::format("  output wire [{}:0] out_word,\n", w.output_disparity)
      << "  output wire out_first,\n  output wire out_last,\n"
      << "  // high in the cycle that pushes the frame's last pixel\n"
      << "  output wire frame_end\n);\n";
@@ -253,7 +255,7 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
-  check_hardware_support(cfg);
+  check_rtl_support(cfg);
   RtlDesign d;
   d.cfg = cfg;
   d.options = options;

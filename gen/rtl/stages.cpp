@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <stdexcept>
 #include <utility>
 
 #include "rtl_emitter.hpp"
@@ -88,7 +89,7 @@ Values stream_ports(const PixelStream& in, const PixelStream& out) {
 std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
   std::string v;
   if (!s.done.empty()) v += wire(1, s.done);
-  v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) + wire(d.widths.disparity + 1, s.word);
+  v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) + wire(d.widths.output_word, s.word);
   return maybe_unused(v, "the stages after it read what they need");
 }
 
@@ -682,6 +683,8 @@ class WtaStage : public Stage {
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const int tag_bits = 1 + d.x_bits + d.out_row_bits;
+    // With sub-pixel output the words go to the sub-pixel stage (whole_*), which names wta_*.
+    const std::string out = d.cfg.subpixel_bits != 0 ? "whole" : "wta";
     Values ports = {{"clk", "clk"},
                     {"restart", "restart"},
                     {"adv", "adv"},
@@ -689,11 +692,12 @@ class WtaStage : public Stage {
                     {"group", "agg_group"},
                     {"tag", "{agg_active, agg_x, agg_slot}"}};
     if (unique_) ports.push_back({"uniqueness", "uniqueness"});
-    ports.insert(ports.end(),
-                 {{"group_out", "wta_group"}, {"tag_out", "{wta_active, wta_x, wta_slot}"}, {"word", "wta_word"}});
-    return "\n  // Winner-take-all: the pixel's word in its last group's step.\n" + wire(d.group_bits, "wta_group") +
-           wire(1, "wta_active") + wire(d.x_bits, "wta_x") + wire(d.out_row_bits, "wta_slot") +
-           wire(d.widths.disparity + 1, "wta_word") +
+    ports.insert(ports.end(), {{"group_out", out + "_group"},
+                               {"tag_out", fmt::format("{{{0}_active, {0}_x, {0}_slot}}", out)},
+                               {"word", out + "_word"}});
+    return "\n  // Winner-take-all: the pixel's word in its last group's step.\n" + wire(d.group_bits, out + "_group") +
+           wire(1, out + "_active") + wire(d.x_bits, out + "_x") + wire(d.out_row_bits, out + "_slot") +
+           wire(d.widths.disparity + 1, out + "_word") +
            instance(unique_ ? "fpstereo_wta_unique" : "fpstereo_wta", "wta",
                     {{"UF", num(d.cfg.uf)},
                      {"SUM_W", num(d.widths.aggregated)},
@@ -725,6 +729,47 @@ class WtaStage : public Stage {
   bool unique_;
 };
 
+// Sub-pixel refinement of the winner-take-all's words (fpstereo_subpixel): the sums at D - 1, D
+// and D + 1 selected a step after the word, then the fit's K + 3 steps.
+class SubpixelStage : public Stage {
+ public:
+  std::string title() const override { return "sub-pixel fit"; }
+  std::vector<std::string> knobs() const override { return {"subpixel-bits", "subpixel-fit"}; }
+  Latency latency(const RtlDesign& d) const override { return {0, 0, d.cfg.subpixel_bits + 5}; }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_subpixel", "fpstereo_subpixel_fit", "fpstereo_delay"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits;
+    return "\n  // Sub-pixel fit: the refined word, subpixel-bits + 5 steps after the whole one.\n" +
+           wire(d.group_bits, "wta_group") + wire(1, "wta_active") + wire(d.x_bits, "wta_x") +
+           wire(d.out_row_bits, "wta_slot") + wire(d.widths.output_word, "wta_word") +
+           instance("fpstereo_subpixel", "subpixel",
+                    {{"UF", num(d.cfg.uf)},
+                     {"G", num(d.groups)},
+                     {"SUM_W", num(d.widths.aggregated)},
+                     {"DMAX", num(d.cfg.dmax)},
+                     {"DISP_W", num(d.widths.disparity)},
+                     {"K", num(d.cfg.subpixel_bits)},
+                     {"EQUIANGULAR", d.cfg.subpixel_fit == SubpixelFit::Equiangular ? "1" : "0"},
+                     {"OUT_W", num(d.widths.output_disparity)},
+                     {"TREE_LAT", num(d.wta_tree_latency)},
+                     {"TAG_W", num(tag_bits)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"sums", "agg_sums"},
+                     {"tag", "{whole_active, whole_x, whole_slot, whole_group}"},
+                     {"word", "whole_word"},
+                     {"tag_out", "{wta_active, wta_x, wta_slot, wta_group}"},
+                     {"word_out", "wta_word"}});
+  }
+  // The HLS generator refuses sub-pixel output (check_hls_support), so this is never reached.
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    throw std::logic_error("sub-pixel fit: no HLS kernel yet");
+  }
+};
+
 // Disparity reorder RAM: chain order in, one word per slot in raster order out. With a
 // left-right check the reads wait one (LR1) or two (LR2) more row-times for the match side.
 class DisparityReorderStage : public Stage {
@@ -735,7 +780,7 @@ class DisparityReorderStage : public Stage {
   Latency latency(const RtlDesign& d) const override { return {lr_rows(d), 1, 0}; }
   Latency start_offset(const RtlDesign& d) const override { return {lr_rows(d), 0, 0}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), d.widths.disparity + 1}};
+    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), d.widths.output_word}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_frame_row", "fpstereo_ram_sdp"};
@@ -748,7 +793,7 @@ class DisparityReorderStage : public Stage {
            instance("fpstereo_disparity_reorder", "disparity_reorder",
                     {{"ROW_SLOTS", num(d.row_slots)},
                      {"G", num(d.groups)},
-                     {"DISP_W", num(d.widths.disparity)},
+                     {"DISP_W", num(d.widths.output_disparity)},
                      {"OUT_ROWS", num(d.out_rows)},
                      {"OUT_K_W", num(d.out_row_bits)},
                      {"DISP_AW", num(d.disp_addr_bits)},
@@ -874,7 +919,7 @@ class MedianStage : public Stage {
   }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.median.line_window.line_buffer.mem", d.row_slots,
-             int64_t(d.cfg.median - 1) * (d.widths.disparity + 1)}};
+             int64_t(d.cfg.median - 1) * d.widths.output_word}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_median", "fpstereo_window", "fpstereo_window_centre", "fpstereo_window_bounds",
@@ -887,7 +932,7 @@ class MedianStage : public Stage {
            instance("fpstereo_median", "median",
                     {{"M", num(d.cfg.median)},
                      {"ROW_SLOTS", num(d.row_slots)},
-                     {"DISP_W", num(d.widths.disparity)},
+                     {"DISP_W", num(d.widths.output_disparity)},
                      {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)},
@@ -920,8 +965,8 @@ class GapStage : public Stage {
   std::vector<std::string> knobs() const override { return {"gap-interp"}; }
   Latency latency(const RtlDesign&) const override { return {1, 0, 3}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    return {{"core.gap.words.mem", 2 * int64_t(d.cfg.width), d.widths.disparity + 1 + d.x_bits},
-            {"core.gap.right_neighbours.mem", 2 * int64_t(d.cfg.width), d.widths.disparity + 1}};
+    return {{"core.gap.words.mem", 2 * int64_t(d.cfg.width), d.widths.output_word + d.x_bits},
+            {"core.gap.right_neighbours.mem", 2 * int64_t(d.cfg.width), d.widths.output_word}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_gap_fill"}; }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
@@ -930,7 +975,7 @@ class GapStage : public Stage {
     return "\n  // Gap interpolation.\n" + stream_wires(d, stream) +
            instance("fpstereo_gap_fill", "gap",
                     {{"W", num(d.cfg.width)},
-                     {"WORD_W", num(d.widths.disparity + 1)},
+                     {"WORD_W", num(d.widths.output_word)},
                      {"X_W", num(d.x_bits)},
                      {"Y_W", num(d.y_bits)}},
                     frame_ports() + Values{{"wrapped", "wrapped"}, {"in_event", in.event}} + stream_ports(in, stream));
@@ -983,7 +1028,7 @@ class OutputStage : public Stage {
         "  assign out_last   = out_last_q;\n"
         "  assign frame_done = frame_done_q;\n"
         "  assign frame_end  = adv && frame_done;\n",
-        stream.event, stream.x, stream.y, stream.word, d.widths.disparity);
+        stream.event, stream.x, stream.y, stream.word, d.widths.output_disparity);
   }
 
   // ---- HLS: the words into the output video stream.
@@ -1001,6 +1046,7 @@ std::vector<StagePtr> pipeline_stages(const StereoConfig& c) {
   stages.push_back(std::make_shared<AggregationStage>());
   if (c.lr == LrCheck::Lr1) stages.push_back(std::make_shared<Lr1MatchStage>());
   stages.push_back(std::make_shared<WtaStage>(c));
+  if (c.subpixel_bits != 0) stages.push_back(std::make_shared<SubpixelStage>());
   stages.push_back(std::make_shared<DisparityReorderStage>());
   if (c.lr != LrCheck::None) stages.push_back(std::make_shared<LrCheckStage>(c));
   if (c.median != 0) stages.push_back(std::make_shared<MedianStage>());
