@@ -8,12 +8,12 @@
 //   - one response per request: a response only for a request accepted and not yet answered,
 //     at most one outstanding of each kind, and each accepted request's response presented (a
 //     write's in the cycle after the one that takes it, when the write takes effect; a read's
-//     likewise, its word selected in that cycle);
+//     two cycles after, with the registers' values of the cycle after the one that takes it);
 //   - BRESP as the README's register map says: OKAY for a full-strobe write in range to a
 //     writable register, SLVERR out of range, to a read-only register (STATUS, VERSION,
 //     CONFIG_ID, UNIQUENESS when not generated, the counters, INFO) or with partial strobes;
 //   - RRESP OKAY, RDATA the register's value in the cycle after the address was taken (the
-//     settings as written, the identity words, INFO), 0 for unmapped addresses.
+//     settings as written, the identity words, INFO), 0 for unmapped and unaligned addresses.
 // The settings are modelled here from the README; the induction compares the model with the
 // unit's registers:
 // formal-probe: probe_enable dut.enable_q
@@ -124,11 +124,13 @@ module control_props (
   reg [7:0]  w_addr;
   reg [31:0] w_data;
   reg [3:0]  w_strb;
-  // the read address taken in the previous cycle, whose word is selected now
-  reg        ar_taken;
+  // the read address taken in the previous cycle, whose registers are read now, and in the one
+  // before (the word is being selected)
+  reg        ar_taken, ar_taken2;
   reg [7:0]  ar_addr;
   always @(posedge clk) begin
     ar_taken <= !rst && ar_take;
+    ar_taken2 <= !rst && ar_taken;
     if (ar_take) ar_addr <= araddr;
     w_taken <= !rst && aw_take && w_take;
     if (aw_take && w_take) begin
@@ -154,7 +156,7 @@ module control_props (
       // one outstanding at a time, answered: a response exactly while a request is open
       assert(aw_open <= 2'd1 && w_open <= 2'd1 && ar_open <= 2'd1);
       assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1 && !w_taken));
-      assert(rvalid == (ar_open == 2'd1 && !ar_taken));
+      assert(rvalid == (ar_open == 2'd1 && !ar_taken && !ar_taken2));
       // a response is taken only when one was offered (no new one in the cycle it is taken)
       if (b_take) assert(!aw_take && !w_take);
       if (r_take) assert(!ar_take);

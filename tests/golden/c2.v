@@ -422,7 +422,8 @@ endmodule
 // one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
 // frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
 // last word (frame_done); unless the next frame follows on (continuing), restart clears the
-// stages' valid flags then, as at reset.
+// stages' valid flags then, as at reset, and a next frame begun too late to follow on (pending)
+// starts as from idle.
 module fps_census7_d128u32_2aeddc_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -458,7 +459,9 @@ module fps_census7_d128u32_2aeddc_sequencer #(
       starting <= 1'b0;
       in_frame <= 1'b0;
     end else begin
-      starting <= start && idle;
+      // A following frame that began as the window stage closed (pending, not taken) starts
+      // when this frame ends, as from idle: the framing stage is already passing its pixels.
+      starting <= (start && idle) || (ends && pending);
       if (!in_frame) in_frame <= starting;
       else if (ends) in_frame <= 1'b0;
     end
@@ -896,49 +899,61 @@ module fps_census7_d128u32_2aeddc_control #(
       if (protocol_error) protocol_errors <= protocol_errors + 1'b1;
     end
 
-  // ---- Reads: one at a time, always OKAY. The address is registered as it is taken and the
-  // word is selected from it in the next cycle (RVALID then), so the register mux starts from
-  // flip-flops rather than from the interconnect's address.
-  reg       read_pending;
-  reg [7:0] read_addr;
-  wire read = s_axi_arvalid && !s_axi_rvalid && !read_pending;
+  // ---- Reads: one at a time, always OKAY. The address is registered as it is taken; the word
+  // is then selected in two registered steps, within the registers (0x00 .. 0x3C) and within INFO
+  // by the address's bits 5..2, then between the two by bits 7..6, so that no step is a deep mux.
+  // RVALID comes two cycles after the address is taken; the word is the registers' values in the
+  // cycle after.
+  reg        read_pending, read_selecting;
+  reg [7:0]  read_addr;
+  reg [31:0] register_word, info_word;
+  reg [1:0]  read_page;
+  reg        read_aligned;
+  wire read = s_axi_arvalid && !s_axi_rvalid && !read_pending && !read_selecting;
   assign s_axi_arready = read;
   assign s_axi_rresp = 2'b00;
-  reg [31:0] read_word;
+  reg [31:0] register_at;
   always @* begin
-    read_word = 32'd0;
-    case (read_addr)
-      A_CONTROL:          read_word = {31'd0, enable_q};
-      A_STATUS:           read_word = {31'd0, busy};
-      A_VERSION:          read_word = VERSION;
-      A_CONFIG_ID:        read_word = CONFIG_ID;
-      A_P1:               read_word = p1_now;
-      A_P2:               read_word = p2_now;
-      A_UNIQUENESS:       read_word = {25'd0, uniqueness_q};
-      A_LR_THRESHOLD:     read_word = {28'd0, lr_threshold_q};
-      A_WIDTH:            read_word = {{(32-X_W){1'b0}}, width_q};
-      A_HEIGHT:           read_word = {{(32-Y_W){1'b0}}, height_q};
-      A_REJECTED_WRITES:  read_word = rejected;
-      A_FRAMES_DONE:      read_word = frames_done;
-      A_FRAMES_DROPPED:   read_word = frames_dropped;
-      A_FRAMES_TRUNCATED: read_word = frames_truncated;
-      A_PROTOCOL_ERRORS:  read_word = protocol_errors;
-      default:
-        if (read_addr[7:6] == A_INFO[7:6] && read_addr[1:0] == 2'b00)
-          read_word = INFO[read_addr[5:2]*32 +: 32];
+    register_at = 32'd0;
+    case ({2'b00, read_addr[5:2], 2'b00})
+      A_CONTROL:          register_at = {31'd0, enable_q};
+      A_STATUS:           register_at = {31'd0, busy};
+      A_VERSION:          register_at = VERSION;
+      A_CONFIG_ID:        register_at = CONFIG_ID;
+      A_P1:               register_at = p1_now;
+      A_P2:               register_at = p2_now;
+      A_UNIQUENESS:       register_at = {25'd0, uniqueness_q};
+      A_LR_THRESHOLD:     register_at = {28'd0, lr_threshold_q};
+      A_WIDTH:            register_at = {{(32-X_W){1'b0}}, width_q};
+      A_HEIGHT:           register_at = {{(32-Y_W){1'b0}}, height_q};
+      A_REJECTED_WRITES:  register_at = rejected;
+      A_FRAMES_DONE:      register_at = frames_done;
+      A_FRAMES_DROPPED:   register_at = frames_dropped;
+      A_FRAMES_TRUNCATED: register_at = frames_truncated;
+      A_PROTOCOL_ERRORS:  register_at = protocol_errors;
+      default:            register_at = 32'd0;
     endcase
   end
   always @(posedge clk)
     if (rst) begin
       read_pending <= 1'b0;
+      read_selecting <= 1'b0;
       s_axi_rvalid <= 1'b0;
     end else if (read) begin
       read_pending <= 1'b1;
       read_addr <= s_axi_araddr;
     end else if (read_pending) begin
       read_pending <= 1'b0;
+      read_selecting <= 1'b1;
+      register_word <= register_at;
+      info_word <= INFO[read_addr[5:2]*32 +: 32];
+      read_page <= read_addr[7:6];
+      read_aligned <= read_addr[1:0] == 2'b00;
+    end else if (read_selecting) begin
+      read_selecting <= 1'b0;
       s_axi_rvalid <= 1'b1;
-      s_axi_rdata <= read_word;
+      s_axi_rdata <= !read_aligned ? 32'd0 : read_page == A_INFO[7:6] ? info_word :
+                     read_page == 2'b00 ? register_word : 32'd0;
     end else if (s_axi_rready) s_axi_rvalid <= 1'b0;
 endmodule
 `resetall
