@@ -562,11 +562,23 @@ struct Winner {
   int top_sum[4], top_d[4];
   int count = 0;
 
+  // Sub-pixel (section 4): the sums offered just before and just after the winner's, which are
+  // S(D - 1) and S(D + 1) since disparities come in ascending order.
+  int left_sum = 0, right_sum = 0, last_sum = 0;
+  bool right_due = false;
+
   void offer(int s, int d) {
+    if (right_due) {
+      right_sum = s;
+      right_due = false;
+    }
     if (count == 0 || s < best_sum) {
       best_sum = s;
       best_d = d;
+      left_sum = last_sum;
+      right_due = true;
     }
+    last_sum = s;
     if (C::kUniqueness == 0) {
       ++count;
       return;
@@ -585,6 +597,17 @@ struct Winner {
       top_d[at] = d;
     }
     ++count;
+  }
+  // The winner in units of 2^-kSubpixelBits: the fit's offset rounded half away from zero, none at
+  // the ends of the range.
+  int refined() const {
+    constexpr int k = C::kSubpixelBits;
+    if (k == 0 || best_d == 0 || best_d == C::kDmax - 1) return best_d << k;
+    const int num = left_sum - right_sum;
+    const int half = C::kSubpixelEquiangular ? (left_sum > right_sum ? left_sum : right_sum) - best_sum
+                                             : left_sum + right_sum - 2 * best_sum;
+    const int offset = (((num < 0 ? -num : num) << k) + half) / (2 * half);
+    return (best_d << k) + (num < 0 ? -offset : offset);
   }
   // S2 * (100 - u) < S1 * 100 makes the pixel invalid.
   bool unique(int ratio) const {
@@ -636,7 +659,7 @@ select_rows:
       }
       if (++g == G) {
         const bool valid = C::kUniqueness == 0 || uniqueness == 0 || winner.unique(uniqueness);
-        disparity.write(valid ? Word<C>(winner.best_d) : Word<C>(C::kInvalidWord));
+        disparity.write(valid ? Word<C>(winner.refined()) : Word<C>(C::kInvalidWord));
         if (C::kLr == Lr::Lr1 && x - (C::kDmax - 1) >= 0) match_disparity.write(dm_d[x - (C::kDmax - 1)]);
         g = 0;
         ++x;

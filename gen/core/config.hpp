@@ -71,10 +71,9 @@ class ConfigError : public std::runtime_error {
 
 // Throws ConfigError for the first invalid value or combination.
 void validate(const StereoConfig& cfg);
-// Throw ConfigError for a valid option the RTL or the HLS generator does not implement yet: the
-// RTL has sub-pixel disparity without a left-right check, the HLS code none.
-void check_rtl_support(const StereoConfig& cfg);
-void check_hls_support(const StereoConfig& cfg);
+// Throws ConfigError for a valid combination the RTL and HLS generators do not implement yet
+// (sub-pixel disparity with a left-right check: the golden model has it).
+void check_hardware_support(const StereoConfig& cfg);
 
 // Every parameter once: its name (the same as a command-line flag without "--" and as a
 // config-file key), a help line, and how to set it from text and print it as text.

@@ -140,6 +140,9 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kUniqueness = " << cfg.uniqueness << ";  // 0: no uniqueness hardware\n"
      << "  static constexpr int kMedian = " << cfg.median << ";\n"
      << "  static constexpr bool kGapInterpolation = " << (cfg.gap_interpolation ? "true" : "false") << ";\n"
+     << "  static constexpr int kSubpixelBits = " << cfg.subpixel_bits << ";  // 0: whole pixels\n"
+     << "  static constexpr bool kSubpixelEquiangular = "
+     << (cfg.subpixel_fit == SubpixelFit::Equiangular ? "true" : "false") << ";  // else the parabola\n"
      << "  // Widths (derive_widths, docs/semantics.md \"Bit widths\").\n"
      << "  static constexpr int kCodeBits = " << w.code << ";\n"
      << "  static constexpr int kCostMax = " << w.cost_max << ";\n"
@@ -161,7 +164,7 @@ std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top";
 
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   validate(cfg);
-  check_hls_support(cfg);
+  check_hardware_support(cfg);
   if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
     throw std::invalid_argument("--part " + quoted(options.part) +
                                 ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");

@@ -255,7 +255,7 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
-  check_rtl_support(cfg);
+  check_hardware_support(cfg);
   RtlDesign d;
   d.cfg = cfg;
   d.options = options;

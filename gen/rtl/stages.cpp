@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <stdexcept>
 #include <utility>
 
 #include "rtl_emitter.hpp"
@@ -764,9 +763,9 @@ class SubpixelStage : public Stage {
                      {"tag_out", "{wta_active, wta_x, wta_slot, wta_group}"},
                      {"word_out", "wta_word"}});
   }
-  // The HLS generator refuses sub-pixel output (check_hls_support), so this is never reached.
+  // ---- HLS: select_base refines the winner as it passes (Winner::refined).
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
-    throw std::logic_error("sub-pixel fit: no HLS kernel yet");
+    return "\n  // Sub-pixel fit: none, select_base refines the winner.\n";
   }
 };
 
