@@ -150,20 +150,29 @@ TEST_CASE("path cost and sum widths hold the worst case and are minimal", "[widt
       }
 }
 
+namespace {
+
+// The largest disparity, dmax - 1, is produced by a pair shifted by that much: the golden
+// model's output on one, with the configuration it ran.
+std::pair<StereoConfig, DisparityImage> run_largest_shift(int dmax, int subpixel_bits, std::mt19937& rng) {
+  StereoConfig cfg;
+  cfg.dmax = dmax;
+  cfg.uf = dmax;
+  cfg.width = dmax + 40;
+  cfg.height = 16;
+  cfg.median = 0;
+  cfg.subpixel_bits = subpixel_bits;
+  const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
+  return {cfg, run_golden(cfg, left, right)};
+}
+
+}  // namespace
+
 TEST_CASE("disparity and output word widths", "[widths]") {
   std::mt19937 rng(5);
   for (int dmax : {16, 48, 100, 128, 256}) {
-    StereoConfig cfg;
-    cfg.dmax = dmax;
-    cfg.uf = dmax;
-    cfg.width = dmax + 40;
-    cfg.height = 16;
-    cfg.median = 0;
+    const auto [cfg, out] = run_largest_shift(dmax, 0, rng);
     const Widths w = derive_widths(cfg);
-    // The largest disparity, dmax - 1, is produced by a pair shifted by that much.
-    const auto [left, right] =
-        test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
-    const DisparityImage out = run_golden(cfg, left, right);
     const uint16_t largest = *std::max_element(out.pixels.begin(), out.pixels.end());
     INFO("dmax " << dmax);
     CHECK(largest == dmax - 1);
@@ -183,17 +192,8 @@ TEST_CASE("sub-pixel output widths", "[widths][subpixel]") {
   std::mt19937 rng(6);
   for (int bits : {1, 3, 5})
     for (int dmax : {16, 100, 256}) {
-      StereoConfig cfg;
-      cfg.dmax = dmax;
-      cfg.uf = dmax;
-      cfg.width = dmax + 40;
-      cfg.height = 16;
-      cfg.median = 0;
-      cfg.subpixel_bits = bits;
+      const auto [cfg, out] = run_largest_shift(dmax, bits, rng);
       const Widths w = derive_widths(cfg);
-      const auto [left, right] =
-          test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return dmax - 1; });
-      const DisparityImage out = run_golden(cfg, left, right);
       uint16_t largest = 0;
       for (uint16_t v : out.pixels)
         if (v != w.invalid_word) largest = std::max(largest, v);
