@@ -1146,7 +1146,12 @@ module fps_census7_d128u32_2aeddc_front_end #(
       newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
-  wire borrow = si < R_X;
+  // The centre lies in the previous row-time while the input slot is below R: a register that
+  // moves with the slot counter (slot 0 after a restart), so the rows' mux starts from it.
+  reg borrow;
+  always @(posedge clk)
+    if (restart) borrow <= 1'b1;
+    else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
   wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
   wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
