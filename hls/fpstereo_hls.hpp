@@ -90,6 +90,14 @@ template <class C>
 using SumWord = ap_uint<C::kUf * C::kSumBits>;
 template <class C>
 using Word = ap_uint<C::kWordBits>;  // the output word: disparity, invalid flag on top
+// The winner-take-all's word: with sub-pixel output and a left-right check, the whole D above the
+// word (the check compares whole disparities, semantics section 5); otherwise the word itself.
+template <class C>
+constexpr int whole_bits() {
+  return C::kSubpixelBits != 0 && C::kLr != Lr::None ? C::kDisparityBits : 0;
+}
+template <class C>
+using BaseWord = ap_uint<C::kWordBits + whole_bits<C>()>;
 template <class C>
 using VideoOut = ap_axiu<C::kOutBits, 1, 1, 1>;
 
@@ -627,7 +635,7 @@ struct Winner {
 // minimising S(x' + d, d), built up in a row RAM as the sums pass and sent out as soon as final
 // (x' + dmax - 1 seen), the rest at the row's end.
 template <class C>
-void select_base(hls::stream<SumWord<C>>& sums, hls::stream<Word<C>>& disparity,
+void select_base(hls::stream<SumWord<C>>& sums, hls::stream<BaseWord<C>>& disparity,
                  hls::stream<Word<C>>& match_disparity, int width, int height, int uniqueness) {
   constexpr int G = C::kGroups, U = C::kUf;
   uniqueness = clamp_int(uniqueness, 0, 99);
@@ -659,7 +667,9 @@ select_rows:
       }
       if (++g == G) {
         const bool valid = C::kUniqueness == 0 || uniqueness == 0 || winner.unique(uniqueness);
-        disparity.write(valid ? Word<C>(winner.refined()) : Word<C>(C::kInvalidWord));
+        const BaseWord<C> whole = whole_bits<C>() != 0 ? BaseWord<C>(winner.best_d) : BaseWord<C>(0);
+        disparity.write(BaseWord<C>((whole << C::kWordBits) |
+                                    BaseWord<C>(valid ? winner.refined() : C::kInvalidWord)));
         if (C::kLr == Lr::Lr1 && x - (C::kDmax - 1) >= 0) match_disparity.write(dm_d[x - (C::kDmax - 1)]);
         g = 0;
         ++x;
@@ -701,7 +711,7 @@ select_match_groups:
 // Section 5: the check. Dm(x') for x' <= x has arrived when D(x) is checked, since both come in
 // raster order; Dm is kept for the row.
 template <class C>
-void lr_check(hls::stream<Word<C>>& disparity, hls::stream<Word<C>>& match_disparity,
+void lr_check(hls::stream<BaseWord<C>>& disparity, hls::stream<Word<C>>& match_disparity,
               hls::stream<Word<C>>& out, int width, int height, int threshold) {
   threshold = clamp_int(threshold, 0, 15);
   ap_uint<C::kDisparityBits> dm_row[C::kMaxWidth];
@@ -710,10 +720,11 @@ lr_check_pixels:
   for (int i = 0; i < width * height; ++i) {
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    Word<C> w = disparity.read();
+    const BaseWord<C> in = disparity.read();
+    Word<C> w = Word<C>(in.range(C::kWordBits - 1, 0));
     dm_row[x] = match_disparity.read();
     if (int(w) != C::kInvalidWord) {
-      const int d = int(w), xm = x - d;
+      const int d = whole_bits<C>() != 0 ? int(in >> C::kWordBits) : int(w), xm = x - d;
       if (xm < 0 || abs_diff(d, int(dm_row[xm < 0 ? 0 : xm])) > threshold) w = C::kInvalidWord;
     }
     out.write(w);

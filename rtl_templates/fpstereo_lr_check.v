@@ -6,12 +6,16 @@
 // x' = x - D is read, and the word becomes invalid where x' lies outside the image or
 // |D - Dm(x')| > lr_threshold. The RAMs are read in the first step, Dm is registered in the
 // second, the check's result in the third, and the stream leaves three steps later.
+// With sub-pixel output (REFINED_W > 0) the read word carries the refined disparity above the
+// whole D: the check uses D (semantics section 5), and the word that leaves is {invalid, refined}.
 module fpstereo_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
   parameter DMAX = 32,
   parameter DISP_W = 5,
+  // bits of the refined disparity carried above D in the read word, 0 without sub-pixel output
+  parameter REFINED_W = 0,
   parameter OUT_ROWS = 3,
   parameter OUT_K_W = 2,
   parameter DISP_AW = 8,
@@ -43,14 +47,16 @@ module fpstereo_lr_check #(
   input  wire [X_W-1:0]       read_x,
   input  wire [Y_W-1:0]       read_y,
   input  wire [OUT_K_W-1:0]   read_slot_row,
-  input  wire [DISP_W:0]      read_word,
+  input  wire [REFINED_W+DISP_W:0] read_word,
   output reg                  checked_done,
   output reg                  checked_event,
   output reg  [X_W-1:0]       checked_x,
   output reg  [Y_W-1:0]       checked_y,
-  output wire [DISP_W:0]      checked_word
+  output wire [(REFINED_W > 0 ? REFINED_W : DISP_W):0] checked_word
 );
-  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  localparam IN_W = REFINED_W + DISP_W;  // the read word's bits under its invalid flag
+  localparam OUT_W = REFINED_W > 0 ? REFINED_W : DISP_W;
+  localparam [OUT_W:0] INVALID_WORD = {1'b1, {OUT_W{1'b0}}};
   generate
     if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
       fpstereo_invalid_parameters_lr_check_addresses_too_narrow failed ();
@@ -59,13 +65,13 @@ module fpstereo_lr_check #(
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-  wire outside = read_word[DISP_W] || read_x < d;
+  wire outside = read_word[IN_W] || read_x < d;
   wire [X_W-1:0] xm = read_x - d;
   wire [DISP_W-1:0] match_q;
   fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
-  reg [DISP_W:0] word_c;
+  reg [IN_W:0]   word_c;
   reg            outside_c, done_c, event_c;
   reg [X_W-1:0]  x_c;
   reg [Y_W-1:0]  y_c;
@@ -109,7 +115,8 @@ module fpstereo_lr_check #(
   reg [X_W-1:0]    x_q;
   reg [Y_W-1:0]    y_q;
   reg [DISP_W-1:0] dm_q;
-  reg [DISP_W:0]   word_q, checked_word_q;
+  reg [IN_W:0]     word_q;
+  reg [OUT_W:0]    checked_word_q;
   reg              outside_q;
   wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
   wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
@@ -131,7 +138,7 @@ module fpstereo_lr_check #(
       checked_event <= event_q;
       checked_x <= x_q;
       checked_y <= y_q;
-      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
+      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
     end
   assign checked_word = checked_word_q;
   // verilator lint_on WIDTH

@@ -5,12 +5,20 @@
 // first pixel by then); from then on the step counter advances in every cycle where adv is high,
 // and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
 // while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due). While a frame runs and the window stage can still take a following
-// one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
-// frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
-// last word (frame_done); unless the next frame follows on (continuing), restart clears the
-// stages' valid flags then, as at reset, and a next frame begun too late to follow on (pending)
+// that cannot leave (out_due). A start while a frame runs begins the next frame (docs/
+// architecture.md, "Back-to-back frames"): next_frame (pending), a register, from the next cycle
+// until the window stage takes it, which it can while follow_open is high. A frame ends in the
+// step that pushes its last word (frame_done); unless the next frame follows on (continuing),
+// restart clears the stages' valid flags then, as at reset, and a next frame that was not taken
 // starts as from idle.
+// accepting tells the framing stage that it may start a frame: while idle, or while the window
+// stage can take a following frame with the same settings (settings_held). It is a register, so
+// that no path runs from this block's state through the framing checks into the input slices:
+// exact for idle (made from the next state) and after a start or an end, one cycle late for
+// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
+// any other and begins when the frame ends; the settings cannot have changed (settings_held
+// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
+// start taken while accepting is lost (tests/formal/sequencer_props.v).
 module fpstereo_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -18,8 +26,10 @@ module fpstereo_sequencer #(
   input  wire              rst,
   input  wire              start,
   output wire              idle,
+  // the written settings equal the running frame's (a register, fpstereo_control)
+  input  wire              settings_held,
+  output reg               accepting,
   input  wire              follow_open,
-  output wire              follow,
   output wire              next_frame,
   input  wire              next_taken,
   input  wire              continuing,
@@ -39,25 +49,28 @@ module fpstereo_sequencer #(
     end
   endgenerate
   reg starting, in_frame, pending;
+  wire follow = in_frame && follow_open && !pending;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   wire ends = adv && frame_done && !continuing;
+  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
+  // as from idle: the framing stage is already passing its pixels.
+  wire starting_next = (start && idle) || (ends && (pending || start));
+  wire in_frame_next = in_frame ? !ends : starting;
   always @(posedge clk)
     if (rst) begin
       starting <= 1'b0;
       in_frame <= 1'b0;
+      accepting <= 1'b1;
     end else begin
-      // A following frame that began as the window stage closed (pending, not taken) starts
-      // when this frame ends, as from idle: the framing stage is already passing its pixels.
-      starting <= (start && idle) || (ends && pending);
-      if (!in_frame) in_frame <= starting;
-      else if (ends) in_frame <= 1'b0;
+      starting <= starting_next;
+      in_frame <= in_frame_next;
+      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
     end
   assign idle = !in_frame && !starting;
-  assign follow = in_frame && follow_open && !pending;
   assign next_frame = pending;
   always @(posedge clk)
     if (restart || next_taken) pending <= 1'b0;
-    else if (start && follow) pending <= 1'b1;
+    else if (start && in_frame) pending <= 1'b1;
   // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
   always @(posedge clk)
     if (rst) step <= 0;

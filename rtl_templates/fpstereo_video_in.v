@@ -6,7 +6,7 @@
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
-//         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
+//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
 //         frame is the counterpart of what was skipped (a start of frame missing or repeated on
 //         one stream only) and is skipped as well, so that the streams pair up again.
@@ -32,9 +32,9 @@ module fpstereo_video_in #(
   input  wire [9:0]     right,
   input  wire           right_valid,
   output wire           right_ready,
-  // the core: a frame begins with core_start while the core is idle; its size holds from the
-  // next cycle until the frame is done
-  input  wire           core_idle,
+  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
+  // a following frame); its size holds from the next cycle until the frame is done
+  input  wire           core_accepting,
   output wire           core_start,
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
@@ -82,8 +82,8 @@ module fpstereo_video_in #(
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
   reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
-  assign core_start = starts && aligned && core_idle && enable;
-  wire drop = starts && aligned && core_idle && !enable;
+  assign core_start = starts && aligned && core_accepting && enable;
+  wire drop = starts && aligned && core_accepting && !enable;
 
   // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
   // returns to SEEK in the next cycle, so that the state does not wait for the take).

@@ -114,9 +114,6 @@ expect_error("--emit 'vhdl': expected verilog or hls" --emit vhdl -o ${WORK}/vhd
 expect_error("--part 'zcu 102'" --emit hls --part "zcu 102" -o ${WORK}/bad_part)
 expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad_uf)
 expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
-expect_error("do not combine sub-pixel disparity with a left-right check" --preset C3 --subpixel-bits 2)
-expect_error("do not combine sub-pixel disparity with a left-right check" --emit hls --preset C4 --subpixel-bits 2
-             -o ${WORK}/hls_subpixel)
 set(FPSTEREO ${FPSTEREO_MAIN})
 file(MAKE_DIRECTORY ${WORK}/nul)
 execute_process(COMMAND sh -c "printf 'pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\\np,left.png\\0x,right.png,,,,1,0,\\n' > '${WORK}/nul/pairs.csv'")

@@ -27,7 +27,7 @@ std::vector<StereoConfig> covering_configs() {
       c.lr = lr;
       c.uniqueness = lr == LrCheck::Lr1 ? 10 : 0;
       c.gap_interpolation = lr == LrCheck::Lr2;
-      c.subpixel_bits = lr == LrCheck::None ? 3 : 0;  // sub-pixel goes without a left-right check
+      c.subpixel_bits = lr == LrCheck::Lr2 ? 0 : 3;
       out.push_back(c);
     }
   return out;

@@ -223,13 +223,6 @@ void validate(const StereoConfig& c) {
   check_range("subpixel-bits", c.subpixel_bits, 0, 5);
 }
 
-void check_hardware_support(const StereoConfig& c) {
-  if (c.subpixel_bits != 0 && c.lr != LrCheck::None)
-    reject("subpixel-bits", std::to_string(c.subpixel_bits),
-           "the RTL and HLS generators do not combine sub-pixel disparity with a left-right check yet "
-           "(the golden model does): use 0 or lr = none");
-}
-
 std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4"}; }
 
 StereoConfig preset(const std::string& name) {

@@ -71,9 +71,6 @@ class ConfigError : public std::runtime_error {
 
 // Throws ConfigError for the first invalid value or combination.
 void validate(const StereoConfig& cfg);
-// Throws ConfigError for a valid combination the RTL and HLS generators do not implement yet
-// (sub-pixel disparity with a left-right check: the golden model has it).
-void check_hardware_support(const StereoConfig& cfg);
 
 // Every parameter once: its name (the same as a command-line flag without "--" and as a
 // config-file key), a help line, and how to set it from text and print it as text.

@@ -164,7 +164,6 @@ std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top";
 
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   validate(cfg);
-  check_hardware_support(cfg);
   if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
     throw std::invalid_argument("--part " + quoted(options.part) +
                                 ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");

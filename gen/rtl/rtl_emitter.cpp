@@ -136,7 +136,7 @@ std::string top_module(const RtlDesign& d) {
         side, d.prefix);
   os << fmt::format(
       "\n  // The frame's settings, fixed while the core runs it.\n"
-      "  wire enable, core_idle, core_follow, settings_held, core_start, frame_done;\n"
+      "  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;\n"
       "  wire frame_dropped, frame_truncated, protocol_error;\n"
       "  wire [{}:0] frame_width;\n  wire [{}:0] frame_height;\n  wire [{}:0] p1, p2;\n"
       "  wire [6:0] uniqueness;\n  wire [3:0] lr_threshold;\n",
@@ -167,8 +167,8 @@ std::string top_module(const RtlDesign& d) {
     os << fmt::format(
         "  assign enable = 1'b1;\n  assign settings_held = 1'b1;\n  assign frame_width = {}'d{};\n  assign frame_height = {}'d{};\n"
         "  assign p1 = {}'d{};\n  assign p2 = {}'d{};\n  assign uniqueness = 7'd{};\n  assign lr_threshold = 4'd{};\n"
-        "  // Without a control interface there is nothing to count into.\n"
-        "  wire unused_events = &{{1'b0, frame_done, frame_dropped, frame_truncated, protocol_error}};\n",
+        "  // Without a control interface there is nothing to count into, and no status to show.\n"
+        "  wire unused_events = &{{1'b0, frame_done, frame_dropped, frame_truncated, protocol_error, core_idle}};\n",
         d.x_bits, c.width, d.y_bits, c.height, w.path_cost, c.p1, w.path_cost, c.p2, c.uniqueness,
         c.lr_threshold);
   }
@@ -179,7 +179,7 @@ std::string top_module(const RtlDesign& d) {
       "    .clk(aclk), .rst(rst), .enable(enable),\n"
       "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
       "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
-      "    .core_idle(core_idle || (core_follow && settings_held)), .core_start(core_start), .frame_width(frame_width),\n"
+      "    .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),\n"
       "    .frame_height(frame_height),\n"
       "    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),\n"
       "    .in_take(framed_valid && framed_ready),\n"
@@ -196,7 +196,8 @@ std::string top_module(const RtlDesign& d) {
      << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity);
   os << fmt::format(
       "  {}_sgm_core core (\n"
-      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),\n"
+      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),\n"
+      "    .accepting(core_accepting),\n"
       "    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),\n"
       "    .lr_threshold(lr_threshold),\n"
       "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
@@ -226,9 +227,10 @@ std::string core_module(const RtlDesign& d) {
   for (const auto& stage : d.stages) os << "//   " << stage->title() << "\n";
   os << "module " << d.prefix << "_sgm_core (\n"
      << "  input  wire clk,\n  input  wire rst,\n"
-     << "  // Frames: while idle, start begins one; the settings hold until the core is idle again. While\n"
-     << "  // follow is high, start begins the next frame with the same settings, to follow on.\n"
-     << "  input  wire start,\n  output wire idle,\n  output wire follow,\n"
+     << "  // Frames: while accepting (a register), start begins one: in an idle core, or following on\n"
+     << "  // while the written settings equal the frame's (settings_held); the settings hold until the\n"
+     << "  // core is idle again.\n"
+     << "  input  wire start,\n  output wire idle,\n  input  wire settings_held,\n  output wire accepting,\n"
      << fmt::format("  input  wire [{}:0] frame_width,\n  input  wire [{}:0] frame_height,\n", d.x_bits - 1,
                     d.y_bits - 1)
      << fmt::format("  input  wire [{0}:0] p1,\n  input  wire [{0}:0] p2,\n", w.path_cost - 1);
@@ -255,7 +257,6 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
-  check_hardware_support(cfg);
   RtlDesign d;
   d.cfg = cfg;
   d.options = options;

@@ -84,11 +84,20 @@ Values stream_ports(const PixelStream& in, const PixelStream& out) {
           {"out_x", out.x},        {"out_y", out.y}, {"out_word", out.word}};
 }
 
-// A pixel stream's wires; the stages after it read what they need of them.
-std::string stream_wires(const RtlDesign& d, const PixelStream& s) {
+// With sub-pixel output and a left-right check, the words up to the check carry the whole D under
+// the refined disparity: the check compares whole disparities (semantics section 5).
+bool carries_whole(const RtlDesign& d) { return d.cfg.subpixel_bits != 0 && d.cfg.lr != LrCheck::None; }
+int reorder_word_bits(const RtlDesign& d) {
+  return d.widths.output_word + (carries_whole(d) ? d.widths.disparity : 0);
+}
+
+// A pixel stream's wires (words of word_bits, the output word's by default); the stages after it
+// read what they need of them.
+std::string stream_wires(const RtlDesign& d, const PixelStream& s, int word_bits = 0) {
   std::string v;
   if (!s.done.empty()) v += wire(1, s.done);
-  v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) + wire(d.widths.output_word, s.word);
+  v += wire(1, s.event) + wire(d.x_bits, s.x) + wire(d.y_bits, s.y) +
+       wire(word_bits != 0 ? word_bits : d.widths.output_word, s.word);
   return maybe_unused(v, "the stages after it read what they need");
 }
 
@@ -147,8 +156,9 @@ class FramingStage : public Stage {
                      {"rst", "rst"},
                      {"start", "start"},
                      {"idle", "idle"},
+                     {"settings_held", "settings_held"},
+                     {"accepting", "accepting"},
                      {"follow_open", "follow_open"},
-                     {"follow", "follow"},
                      {"next_frame", "next_frame"},
                      {"next_taken", "next_taken"},
                      {"continuing", "continuing"},
@@ -714,7 +724,7 @@ class WtaStage : public Stage {
   // the match side's extra latency with LR2.
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     std::string text = std::string("\n  // Winner-take-all") + (unique_ ? " with uniqueness" : "") + ".\n" +
-                       hls_streams("Word<C>", {"disparity"}, "2 * C::kDmax + 4");
+                       hls_streams("BaseWord<C>", {"disparity"}, "2 * C::kDmax + 4");
     if (d.cfg.lr == LrCheck::None) {
       s.match = "match_disparity";
       text += hls_streams("Word<C>", {s.match});
@@ -739,10 +749,16 @@ class SubpixelStage : public Stage {
     return {"fpstereo_subpixel", "fpstereo_subpixel_fit", "fpstereo_delay"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
-    const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits;
+    // With a left-right check the whole D travels in the tag (wta_whole) for the check.
+    const bool whole = carries_whole(d);
+    const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + (whole ? d.widths.disparity : 0);
+    const std::string tag = "{whole_active, whole_x, whole_slot, whole_group" +
+                            (whole ? fmt::format(", whole_word[{}:0]}}", d.widths.disparity - 1) : std::string("}"));
+    const std::string tag_out = std::string("{wta_active, wta_x, wta_slot, wta_group") + (whole ? ", wta_whole}" : "}");
     return "\n  // Sub-pixel fit: the refined word, subpixel-bits + 5 steps after the whole one.\n" +
            wire(d.group_bits, "wta_group") + wire(1, "wta_active") + wire(d.x_bits, "wta_x") +
            wire(d.out_row_bits, "wta_slot") + wire(d.widths.output_word, "wta_word") +
+           (whole ? wire(d.widths.disparity, "wta_whole") : std::string()) +
            instance("fpstereo_subpixel", "subpixel",
                     {{"UF", num(d.cfg.uf)},
                      {"G", num(d.groups)},
@@ -758,9 +774,9 @@ class SubpixelStage : public Stage {
                      {"restart", "restart"},
                      {"adv", "adv"},
                      {"sums", "agg_sums"},
-                     {"tag", "{whole_active, whole_x, whole_slot, whole_group}"},
+                     {"tag", tag},
                      {"word", "whole_word"},
-                     {"tag_out", "{wta_active, wta_x, wta_slot, wta_group}"},
+                     {"tag_out", tag_out},
                      {"word_out", "wta_word"}});
   }
   // ---- HLS: select_base refines the winner as it passes (Winner::refined).
@@ -779,7 +795,7 @@ class DisparityReorderStage : public Stage {
   Latency latency(const RtlDesign& d) const override { return {lr_rows(d), 1, 0}; }
   Latency start_offset(const RtlDesign& d) const override { return {lr_rows(d), 0, 0}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), d.widths.output_word}};
+    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), reorder_word_bits(d)}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_frame_row", "fpstereo_ram_sdp"};
@@ -787,12 +803,12 @@ class DisparityReorderStage : public Stage {
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     stream = {"read_done", "read_event", "read_x", "read_y", "read_word"};
     return "\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n" +
-           start_flag(d, *this, "out_on") + stream_wires(d, stream) +
+           start_flag(d, *this, "out_on") + stream_wires(d, stream, reorder_word_bits(d)) +
            unused_unless(d.cfg.lr != LrCheck::None, wire(d.out_row_bits, "read_slot_row"), "the left-right check reads with it") +
            instance("fpstereo_disparity_reorder", "disparity_reorder",
                     {{"ROW_SLOTS", num(d.row_slots)},
                      {"G", num(d.groups)},
-                     {"DISP_W", num(d.widths.output_disparity)},
+                     {"DISP_W", num(reorder_word_bits(d) - 1)},
                      {"OUT_ROWS", num(d.out_rows)},
                      {"OUT_K_W", num(d.out_row_bits)},
                      {"DISP_AW", num(d.disp_addr_bits)},
@@ -811,7 +827,7 @@ class DisparityReorderStage : public Stage {
                      {"x", "wta_x"},
                      {"slot", "wta_slot"},
                      {"group", "wta_group"},
-                     {"word", "wta_word"},
+                     {"word", carries_whole(d) ? "{wta_word, wta_whole}" : "wta_word"},
                      {"read_done", "read_done"},
                      {"read_event", "read_event"},
                      {"read_x", "read_x"},
@@ -883,6 +899,7 @@ class LrCheckStage : public Stage {
                          {"UF", num(c.uf)},
                          {"DMAX", num(c.dmax)},
                          {"DISP_W", num(d.widths.disparity)},
+                         {"REFINED_W", num(carries_whole(d) ? d.widths.output_disparity : 0)},
                          {"OUT_ROWS", num(d.out_rows)},
                          {"OUT_K_W", num(d.out_row_bits)},
                          {"DISP_AW", num(d.disp_addr_bits)},

@@ -28,7 +28,7 @@ module video_in_props (
   input wire       left_valid,
   input wire [9:0] right,
   input wire       right_valid,
-  input wire       core_idle,
+  input wire       core_accepting,
   input wire [2:0] frame_width,
   input wire [1:0] frame_height,
   input wire       in_take
@@ -41,7 +41,7 @@ module video_in_props (
     .clk(clk), .rst(rst), .enable(enable),
     .left(left), .left_valid(left_valid), .left_ready(left_ready),
     .right(right), .right_valid(right_valid), .right_ready(right_ready),
-    .core_idle(core_idle), .core_start(core_start), .frame_width(frame_width),
+    .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height), .in_valid(in_valid), .in_left(in_left), .in_right(in_right),
     .in_take(in_take), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
     .protocol_error(protocol_error));

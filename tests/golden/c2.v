@@ -100,7 +100,7 @@ module fps_census7_d128u32_2aeddc_top (
     .m_data(right_beat), .m_valid(right_valid), .m_ready(right_ready));
 
   // The frame's settings, fixed while the core runs it.
-  wire enable, core_idle, core_follow, settings_held, core_start, frame_done;
+  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;
   wire frame_dropped, frame_truncated, protocol_error;
   wire [10:0] frame_width;
   wire [8:0] frame_height;
@@ -143,7 +143,7 @@ module fps_census7_d128u32_2aeddc_top (
     .clk(aclk), .rst(rst), .enable(enable),
     .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
     .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
-    .core_idle(core_idle || (core_follow && settings_held)), .core_start(core_start), .frame_width(frame_width),
+    .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height),
     .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
     .in_take(framed_valid && framed_ready),
@@ -161,7 +161,8 @@ module fps_census7_d128u32_2aeddc_top (
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
   fps_census7_d128u32_2aeddc_sgm_core core (
-    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),
+    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
+    .accepting(core_accepting),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),
     .lr_threshold(lr_threshold),
     .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
@@ -192,11 +193,13 @@ endmodule
 module fps_census7_d128u32_2aeddc_sgm_core (
   input  wire clk,
   input  wire rst,
-  // Frames: while idle, start begins one; the settings hold until the core is idle again. While
-  // follow is high, start begins the next frame with the same settings, to follow on.
+  // Frames: while accepting (a register), start begins one: in an idle core, or following on
+  // while the written settings equal the frame's (settings_held); the settings hold until the
+  // core is idle again.
   input  wire start,
   output wire idle,
-  output wire follow,
+  input  wire settings_held,
+  output wire accepting,
   input  wire [10:0] frame_width,
   input  wire [8:0] frame_height,
   input  wire [7:0] p1,
@@ -239,10 +242,10 @@ module fps_census7_d128u32_2aeddc_sgm_core (
   fps_census7_d128u32_2aeddc_sequencer #(
     .STEP_W(21)
   ) sequencer (
-    .clk(clk), .rst(rst), .start(start), .idle(idle), .follow_open(follow_open), .follow(follow),
-    .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing), .in_due(in_due),
-    .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .frame_done(frame_done), .adv(adv),
-    .step(step), .restart(restart));
+    .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
+    .follow_open(follow_open), .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing),
+    .in_due(in_due), .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .frame_done(frame_done),
+    .adv(adv), .step(step), .restart(restart));
 
   // Window stage: line buffers, windows, their bounds and centres.
   wire shift;
@@ -418,12 +421,20 @@ endmodule
 // first pixel by then); from then on the step counter advances in every cycle where adv is high,
 // and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
 // while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due). While a frame runs and the window stage can still take a following
-// one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
-// frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
-// last word (frame_done); unless the next frame follows on (continuing), restart clears the
-// stages' valid flags then, as at reset, and a next frame begun too late to follow on (pending)
+// that cannot leave (out_due). A start while a frame runs begins the next frame (docs/
+// architecture.md, "Back-to-back frames"): next_frame (pending), a register, from the next cycle
+// until the window stage takes it, which it can while follow_open is high. A frame ends in the
+// step that pushes its last word (frame_done); unless the next frame follows on (continuing),
+// restart clears the stages' valid flags then, as at reset, and a next frame that was not taken
 // starts as from idle.
+// accepting tells the framing stage that it may start a frame: while idle, or while the window
+// stage can take a following frame with the same settings (settings_held). It is a register, so
+// that no path runs from this block's state through the framing checks into the input slices:
+// exact for idle (made from the next state) and after a start or an end, one cycle late for
+// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
+// any other and begins when the frame ends; the settings cannot have changed (settings_held
+// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
+// start taken while accepting is lost (tests/formal/sequencer_props.v).
 module fps_census7_d128u32_2aeddc_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -431,8 +442,10 @@ module fps_census7_d128u32_2aeddc_sequencer #(
   input  wire              rst,
   input  wire              start,
   output wire              idle,
+  // the written settings equal the running frame's (a register, fps_census7_d128u32_2aeddc_control)
+  input  wire              settings_held,
+  output reg               accepting,
   input  wire              follow_open,
-  output wire              follow,
   output wire              next_frame,
   input  wire              next_taken,
   input  wire              continuing,
@@ -452,25 +465,28 @@ module fps_census7_d128u32_2aeddc_sequencer #(
     end
   endgenerate
   reg starting, in_frame, pending;
+  wire follow = in_frame && follow_open && !pending;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   wire ends = adv && frame_done && !continuing;
+  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
+  // as from idle: the framing stage is already passing its pixels.
+  wire starting_next = (start && idle) || (ends && (pending || start));
+  wire in_frame_next = in_frame ? !ends : starting;
   always @(posedge clk)
     if (rst) begin
       starting <= 1'b0;
       in_frame <= 1'b0;
+      accepting <= 1'b1;
     end else begin
-      // A following frame that began as the window stage closed (pending, not taken) starts
-      // when this frame ends, as from idle: the framing stage is already passing its pixels.
-      starting <= (start && idle) || (ends && pending);
-      if (!in_frame) in_frame <= starting;
-      else if (ends) in_frame <= 1'b0;
+      starting <= starting_next;
+      in_frame <= in_frame_next;
+      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
     end
   assign idle = !in_frame && !starting;
-  assign follow = in_frame && follow_open && !pending;
   assign next_frame = pending;
   always @(posedge clk)
     if (restart || next_taken) pending <= 1'b0;
-    else if (start && follow) pending <= 1'b1;
+    else if (start && in_frame) pending <= 1'b1;
   // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
   always @(posedge clk)
     if (rst) step <= 0;
@@ -539,7 +555,7 @@ endmodule
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
-//         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
+//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
 //         frame is the counterpart of what was skipped (a start of frame missing or repeated on
 //         one stream only) and is skipped as well, so that the streams pair up again.
@@ -565,9 +581,9 @@ module fps_census7_d128u32_2aeddc_video_in #(
   input  wire [9:0]     right,
   input  wire           right_valid,
   output wire           right_ready,
-  // the core: a frame begins with core_start while the core is idle; its size holds from the
-  // next cycle until the frame is done
-  input  wire           core_idle,
+  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
+  // a following frame); its size holds from the next cycle until the frame is done
+  input  wire           core_accepting,
   output wire           core_start,
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
@@ -615,8 +631,8 @@ module fps_census7_d128u32_2aeddc_video_in #(
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
   reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
-  assign core_start = starts && aligned && core_idle && enable;
-  wire drop = starts && aligned && core_idle && !enable;
+  assign core_start = starts && aligned && core_accepting && enable;
+  wire drop = starts && aligned && core_accepting && !enable;
 
   // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
   // returns to SEEK in the next cycle, so that the state does not wait for the take).

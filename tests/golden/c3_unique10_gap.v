@@ -103,7 +103,7 @@ module fps_census7_d128u32_888758_top (
     .m_data(right_beat), .m_valid(right_valid), .m_ready(right_ready));
 
   // The frame's settings, fixed while the core runs it.
-  wire enable, core_idle, core_follow, settings_held, core_start, frame_done;
+  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;
   wire frame_dropped, frame_truncated, protocol_error;
   wire [10:0] frame_width;
   wire [8:0] frame_height;
@@ -146,7 +146,7 @@ module fps_census7_d128u32_888758_top (
     .clk(aclk), .rst(rst), .enable(enable),
     .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
     .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
-    .core_idle(core_idle || (core_follow && settings_held)), .core_start(core_start), .frame_width(frame_width),
+    .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height),
     .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
     .in_take(framed_valid && framed_ready),
@@ -164,7 +164,8 @@ module fps_census7_d128u32_888758_top (
   wire out_ready, out_push, out_first, out_last;
   wire [7:0] out_word;
   fps_census7_d128u32_888758_sgm_core core (
-    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .follow(core_follow),
+    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
+    .accepting(core_accepting),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),
     .lr_threshold(lr_threshold),
     .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
@@ -198,11 +199,13 @@ endmodule
 module fps_census7_d128u32_888758_sgm_core (
   input  wire clk,
   input  wire rst,
-  // Frames: while idle, start begins one; the settings hold until the core is idle again. While
-  // follow is high, start begins the next frame with the same settings, to follow on.
+  // Frames: while accepting (a register), start begins one: in an idle core, or following on
+  // while the written settings equal the frame's (settings_held); the settings hold until the
+  // core is idle again.
   input  wire start,
   output wire idle,
-  output wire follow,
+  input  wire settings_held,
+  output wire accepting,
   input  wire [10:0] frame_width,
   input  wire [8:0] frame_height,
   input  wire [7:0] p1,
@@ -243,10 +246,10 @@ module fps_census7_d128u32_888758_sgm_core (
   fps_census7_d128u32_888758_sequencer #(
     .STEP_W(21)
   ) sequencer (
-    .clk(clk), .rst(rst), .start(start), .idle(idle), .follow_open(follow_open), .follow(follow),
-    .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing), .in_due(in_due),
-    .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .frame_done(frame_done), .adv(adv),
-    .step(step), .restart(restart));
+    .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
+    .follow_open(follow_open), .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing),
+    .in_due(in_due), .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .frame_done(frame_done),
+    .adv(adv), .step(step), .restart(restart));
 
   // Window stage: line buffers, windows, their bounds and centres.
   wire shift;
@@ -395,8 +398,8 @@ module fps_census7_d128u32_888758_sgm_core (
   wire [7:0] checked_word;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_888758_lr_check #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .OUT_ROWS(4), .OUT_K_W(2), .DISP_AW(13),
-    .ROW_END(1), .END_AW(4), .X_W(11), .Y_W(9), .LANE_W(5)
+    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(4), .OUT_K_W(2),
+    .DISP_AW(13), .ROW_END(1), .END_AW(4), .X_W(11), .Y_W(9), .LANE_W(5)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
     .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata),
@@ -467,12 +470,20 @@ endmodule
 // first pixel by then); from then on the step counter advances in every cycle where adv is high,
 // and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
 // while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due). While a frame runs and the window stage can still take a following
-// one (follow_open), start begins that frame instead (follow; docs/architecture.md, "Back-to-back
-// frames"): next_frame, a register, from the next cycle until the window stage takes it. A frame ends in the step that pushes its
-// last word (frame_done); unless the next frame follows on (continuing), restart clears the
-// stages' valid flags then, as at reset, and a next frame begun too late to follow on (pending)
+// that cannot leave (out_due). A start while a frame runs begins the next frame (docs/
+// architecture.md, "Back-to-back frames"): next_frame (pending), a register, from the next cycle
+// until the window stage takes it, which it can while follow_open is high. A frame ends in the
+// step that pushes its last word (frame_done); unless the next frame follows on (continuing),
+// restart clears the stages' valid flags then, as at reset, and a next frame that was not taken
 // starts as from idle.
+// accepting tells the framing stage that it may start a frame: while idle, or while the window
+// stage can take a following frame with the same settings (settings_held). It is a register, so
+// that no path runs from this block's state through the framing checks into the input slices:
+// exact for idle (made from the next state) and after a start or an end, one cycle late for
+// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
+// any other and begins when the frame ends; the settings cannot have changed (settings_held
+// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
+// start taken while accepting is lost (tests/formal/sequencer_props.v).
 module fps_census7_d128u32_888758_sequencer #(
   parameter STEP_W = 20
 ) (
@@ -480,8 +491,10 @@ module fps_census7_d128u32_888758_sequencer #(
   input  wire              rst,
   input  wire              start,
   output wire              idle,
+  // the written settings equal the running frame's (a register, fps_census7_d128u32_888758_control)
+  input  wire              settings_held,
+  output reg               accepting,
   input  wire              follow_open,
-  output wire              follow,
   output wire              next_frame,
   input  wire              next_taken,
   input  wire              continuing,
@@ -501,25 +514,28 @@ module fps_census7_d128u32_888758_sequencer #(
     end
   endgenerate
   reg starting, in_frame, pending;
+  wire follow = in_frame && follow_open && !pending;
   assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready);
   wire ends = adv && frame_done && !continuing;
+  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
+  // as from idle: the framing stage is already passing its pixels.
+  wire starting_next = (start && idle) || (ends && (pending || start));
+  wire in_frame_next = in_frame ? !ends : starting;
   always @(posedge clk)
     if (rst) begin
       starting <= 1'b0;
       in_frame <= 1'b0;
+      accepting <= 1'b1;
     end else begin
-      // A following frame that began as the window stage closed (pending, not taken) starts
-      // when this frame ends, as from idle: the framing stage is already passing its pixels.
-      starting <= (start && idle) || (ends && pending);
-      if (!in_frame) in_frame <= starting;
-      else if (ends) in_frame <= 1'b0;
+      starting <= starting_next;
+      in_frame <= in_frame_next;
+      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
     end
   assign idle = !in_frame && !starting;
-  assign follow = in_frame && follow_open && !pending;
   assign next_frame = pending;
   always @(posedge clk)
     if (restart || next_taken) pending <= 1'b0;
-    else if (start && follow) pending <= 1'b1;
+    else if (start && in_frame) pending <= 1'b1;
   // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
   always @(posedge clk)
     if (rst) step <= 0;
@@ -588,7 +604,7 @@ endmodule
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
-//         and the core is idle, the frame begins (or, while disabled, is skipped as dropped).
+//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
 //         frame is the counterpart of what was skipped (a start of frame missing or repeated on
 //         one stream only) and is skipped as well, so that the streams pair up again.
@@ -614,9 +630,9 @@ module fps_census7_d128u32_888758_video_in #(
   input  wire [9:0]     right,
   input  wire           right_valid,
   output wire           right_ready,
-  // the core: a frame begins with core_start while the core is idle; its size holds from the
-  // next cycle until the frame is done
-  input  wire           core_idle,
+  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
+  // a following frame); its size holds from the next cycle until the frame is done
+  input  wire           core_accepting,
   output wire           core_start,
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
@@ -664,8 +680,8 @@ module fps_census7_d128u32_888758_video_in #(
   wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
   reg  left_stale, right_stale;
   wire aligned = !left_stale && !right_stale;
-  assign core_start = starts && aligned && core_idle && enable;
-  wire drop = starts && aligned && core_idle && !enable;
+  assign core_start = starts && aligned && core_accepting && enable;
+  wire drop = starts && aligned && core_accepting && !enable;
 
   // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
   // returns to SEEK in the next cycle, so that the state does not wait for the take).
@@ -2857,12 +2873,16 @@ endmodule
 // x' = x - D is read, and the word becomes invalid where x' lies outside the image or
 // |D - Dm(x')| > lr_threshold. The RAMs are read in the first step, Dm is registered in the
 // second, the check's result in the third, and the stream leaves three steps later.
+// With sub-pixel output (REFINED_W > 0) the read word carries the refined disparity above the
+// whole D: the check uses D (semantics section 5), and the word that leaves is {invalid, refined}.
 module fps_census7_d128u32_888758_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
   parameter DMAX = 32,
   parameter DISP_W = 5,
+  // bits of the refined disparity carried above D in the read word, 0 without sub-pixel output
+  parameter REFINED_W = 0,
   parameter OUT_ROWS = 3,
   parameter OUT_K_W = 2,
   parameter DISP_AW = 8,
@@ -2894,14 +2914,16 @@ module fps_census7_d128u32_888758_lr_check #(
   input  wire [X_W-1:0]       read_x,
   input  wire [Y_W-1:0]       read_y,
   input  wire [OUT_K_W-1:0]   read_slot_row,
-  input  wire [DISP_W:0]      read_word,
+  input  wire [REFINED_W+DISP_W:0] read_word,
   output reg                  checked_done,
   output reg                  checked_event,
   output reg  [X_W-1:0]       checked_x,
   output reg  [Y_W-1:0]       checked_y,
-  output wire [DISP_W:0]      checked_word
+  output wire [(REFINED_W > 0 ? REFINED_W : DISP_W):0] checked_word
 );
-  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  localparam IN_W = REFINED_W + DISP_W;  // the read word's bits under its invalid flag
+  localparam OUT_W = REFINED_W > 0 ? REFINED_W : DISP_W;
+  localparam [OUT_W:0] INVALID_WORD = {1'b1, {OUT_W{1'b0}}};
   generate
     if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
       fps_census7_d128u32_888758_invalid_parameters_lr_check_addresses_too_narrow failed ();
@@ -2910,13 +2932,13 @@ module fps_census7_d128u32_888758_lr_check #(
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-  wire outside = read_word[DISP_W] || read_x < d;
+  wire outside = read_word[IN_W] || read_x < d;
   wire [X_W-1:0] xm = read_x - d;
   wire [DISP_W-1:0] match_q;
   fps_census7_d128u32_888758_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(read_slot_row * ROW_SLOTS + xm), .rdata(match_q));
-  reg [DISP_W:0] word_c;
+  reg [IN_W:0]   word_c;
   reg            outside_c, done_c, event_c;
   reg [X_W-1:0]  x_c;
   reg [Y_W-1:0]  y_c;
@@ -2960,7 +2982,8 @@ module fps_census7_d128u32_888758_lr_check #(
   reg [X_W-1:0]    x_q;
   reg [Y_W-1:0]    y_q;
   reg [DISP_W-1:0] dm_q;
-  reg [DISP_W:0]   word_q, checked_word_q;
+  reg [IN_W:0]     word_q;
+  reg [OUT_W:0]    checked_word_q;
   reg              outside_q;
   wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
   wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
@@ -2982,7 +3005,7 @@ module fps_census7_d128u32_888758_lr_check #(
       checked_event <= event_q;
       checked_x <= x_q;
       checked_y <= y_q;
-      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : word_q;
+      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
     end
   assign checked_word = checked_word_q;
   // verilator lint_on WIDTH
