@@ -9,9 +9,10 @@
 //
 //   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost
 //     ─ aggregate (to_chain_order ─ aggregate_chains ─ from_chain_order) ─ select
-//     ─ [LR check] ─ [window (median) ─ median] ─ [gap fill] ─ write_disparity
+//     ─ [LR check] ─ [window (median) ─ median] ─ [gap fill] ─ write_words
 //   LR1: select also finds the match-side disparities from the base side's sums.
 //   LR2: match_costs (the base costs regrouped per match pixel) ─ aggregate ─ select_match.
+//   Right view: the LR check passes Dm on ─ write_words (its own stream).
 //
 // Time base: one pixel takes G = dmax / uf loop iterations ("groups"), each handling uf disparities
 // packed into one word, so a frame takes about W * H * dmax / uf cycles plus the fill latency.
@@ -37,6 +38,7 @@ enum class Lr { None, Lr1, Lr2 };
 
 using Pixel = ap_uint<8>;
 using VideoIn = ap_axiu<8, 1, 1, 1>;
+using VideoRight = ap_axiu<8, 1, 1, 1>;  // the right view's whole disparities
 
 // Runtime sizes and parameters (AXI4-Lite registers), clamped to what the hardware was built for:
 // the path-cost widths hold P2 up to the configured value, the line buffers the configured width.
@@ -709,10 +711,10 @@ select_match_groups:
 }
 
 // Section 5: the check. Dm(x') for x' <= x has arrived when D(x) is checked, since both come in
-// raster order; Dm is kept for the row.
+// raster order; Dm is kept for the row. With the right view, Dm(x) also goes to right_view.
 template <class C>
 void lr_check(hls::stream<BaseWord<C>>& disparity, hls::stream<Word<C>>& match_disparity,
-              hls::stream<Word<C>>& out, int width, int height, int threshold) {
+              hls::stream<Word<C>>& out, hls::stream<Word<C>>& right_view, int width, int height, int threshold) {
   threshold = clamp_int(threshold, 0, 15);
   ap_uint<C::kDisparityBits> dm_row[C::kMaxWidth];
   int x = 0;
@@ -723,6 +725,7 @@ lr_check_pixels:
     const BaseWord<C> in = disparity.read();
     Word<C> w = Word<C>(in.range(C::kWordBits - 1, 0));
     dm_row[x] = match_disparity.read();
+    if (C::kRightView) right_view.write(Word<C>(dm_row[x]));
     if (int(w) != C::kInvalidWord) {
       const int d = whole_bits<C>() != 0 ? int(in >> C::kWordBits) : int(w), xm = x - d;
       if (xm < 0 || abs_diff(d, int(dm_row[xm < 0 ? 0 : xm])) > threshold) w = C::kInvalidWord;
@@ -832,16 +835,16 @@ gap_rows:
 
 // ---------------------------------------------------------------------------------------------
 // Output: words zero-extended to the byte-aligned tdata; tuser on a frame's first pixel, tlast on
-// a row's last.
-template <class C>
-void write_disparity(hls::stream<Word<C>>& in, hls::stream<VideoOut<C>>& out, int width, int height) {
+// a row's last. The disparity words (VideoOut) and the right view's (VideoRight).
+template <class C, class Beat>
+void write_words(hls::stream<Word<C>>& in, hls::stream<Beat>& out, int width, int height) {
   int x = 0;
 write_pixels:
   for (int i = 0; i < width * height; ++i) {
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    VideoOut<C> beat;
-    beat.data = ap_uint<C::kOutBits>(in.read());
+    Beat beat;
+    beat.data = decltype(beat.data)(in.read());
     beat.keep = -1;
     beat.strb = -1;
     beat.user = i == 0 ? 1 : 0;
@@ -875,8 +878,8 @@ load_pixels:
   }
 }
 
-template <class C>
-void store_frame(hls::stream<VideoOut<C>>& in, unsigned short* words, int width, int height) {
+template <class C, class Beat>
+void store_frame(hls::stream<Beat>& in, unsigned short* words, int width, int height) {
   const Frame f = clamp_frame<C>(width, height);
 store_pixels:
   for (int i = 0; i < f.width * f.height; ++i) {

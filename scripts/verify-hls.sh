@@ -67,14 +67,28 @@ if [ -z "$user_left" ] && [ "$width" -le 450 ] && [ "$height" -le 375 ]; then
     --from "$root/examples/cones/left.png" "$root/examples/cones/right.png"
 fi
 
+# With the right view, its words are checked too (test bench and host), against `--right-output`.
+right_view=$(sed -n 's/^right-view = //p' <<<"$config")
 pixels=0
 for name in "${pairs[@]}"; do
   left=$work/pairs/$name-left.pgm right=$work/pairs/$name-right.pgm
-  "$build/fpstereo" run "${config_flags[@]}" "$left" "$right" --pfm "$work/pairs/$name-reference.pfm" >/dev/null
-  "$tb" "$left" "$right" "$work/pairs/$name-reference.pfm" || fail "$name: the test bench found mismatches"
-  "$host" "$left" "$right" "$work/pairs/$name-host.pfm" >/dev/null || fail "$name: the host program failed"
+  reference=(--pfm "$work/pairs/$name-reference.pfm") tb_right=() host_right=()
+  if [ "$right_view" = on ]; then
+    reference+=(--right-output "$work/pairs/$name-right-reference.pfm")
+    tb_right=(--right-reference "$work/pairs/$name-right-reference.pfm")
+    host_right=(--right-view "$work/pairs/$name-host-right.pfm")
+  fi
+  "$build/fpstereo" run "${config_flags[@]}" "$left" "$right" "${reference[@]}" >/dev/null
+  "$tb" "$left" "$right" "$work/pairs/$name-reference.pfm" "${tb_right[@]}" ||
+    fail "$name: the test bench found mismatches"
+  "$host" "$left" "$right" "$work/pairs/$name-host.pfm" "${host_right[@]}" >/dev/null ||
+    fail "$name: the host program failed"
   cmp -s "$work/pairs/$name-host.pfm" "$work/pairs/$name-reference.pfm" ||
     fail "$name: the host program's disparity differs from the reference"
+  if [ "$right_view" = on ]; then
+    cmp -s "$work/pairs/$name-host-right.pfm" "$work/pairs/$name-right-reference.pfm" ||
+      fail "$name: the host program's right view differs from the reference"
+  fi
   read -r w h < <(sed -n 2p "$work/pairs/$name-reference.pfm")
   pixels=$((pixels + w * h))
 done

@@ -114,7 +114,11 @@ expect_error("--emit 'vhdl': expected verilog or hls" --emit vhdl -o ${WORK}/vhd
 expect_error("--part 'zcu 102'" --emit hls --part "zcu 102" -o ${WORK}/bad_part)
 expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad_uf)
 expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
+expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --right-view on)
+expect_error("right-view = on: needs a left-right check" --emit hls --right-view on -o ${WORK}/hls_right_view)
 set(FPSTEREO ${FPSTEREO_MAIN})
+expect_error("--right-output needs a left-right check (lr = lr1 or lr2)"
+             run --width 450 --height 375 --dmax 64 --uf 16 ${L} ${R} --right-output ${WORK}/right.png)
 file(MAKE_DIRECTORY ${WORK}/nul)
 execute_process(COMMAND sh -c "printf 'pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\\np,left.png\\0x,right.png,,,,1,0,\\n' > '${WORK}/nul/pairs.csv'")
 expect_error("column left: 'left.png\\x00x' holds a control character" eval ${WORK}/nul)

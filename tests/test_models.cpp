@@ -67,9 +67,18 @@ TEST_CASE("golden model equals the naive model on random configurations", "[mode
     const StereoConfig cfg = random_config(rng);
     validate(cfg);
     const auto [left, right] = random_pair(cfg, rng);
-    const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
+    // With a left-right check, the right views (the match side's disparities) as well.
+    const bool views = cfg.lr != LrCheck::None;
+    DisparityImage naive_right, golden_right;
+    const Comparison cmp = compare_words(run_naive(cfg, left, right, views ? &naive_right : nullptr),
+                                         run_golden(cfg, left, right, views ? &golden_right : nullptr));
     INFO("case " << i << "\n" << describe(cfg) << cmp.report());
     REQUIRE(cmp.equal());
+    if (views) {
+      const Comparison right_cmp = compare_words(naive_right, golden_right);
+      INFO("right view: " << right_cmp.report());
+      REQUIRE(right_cmp.equal());
+    }
   }
 }
 

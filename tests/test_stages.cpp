@@ -28,6 +28,7 @@ std::vector<StereoConfig> covering_configs() {
       c.uniqueness = lr == LrCheck::Lr1 ? 10 : 0;
       c.gap_interpolation = lr == LrCheck::Lr2;
       c.subpixel_bits = lr == LrCheck::Lr2 ? 0 : 3;
+      c.right_view = lr != LrCheck::None;
       out.push_back(c);
     }
   return out;

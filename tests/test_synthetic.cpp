@@ -67,6 +67,24 @@ TEST_CASE("a textured fronto-parallel plane is recovered exactly", "[synthetic]"
       }
 }
 
+TEST_CASE("the right view of a textured fronto-parallel plane is its disparity", "[synthetic]") {
+  std::mt19937 rng(13);
+  for (const char* lr : {"lr1", "lr2"})
+    for (int d0 : {0, 7, 19}) {
+      StereoConfig cfg = small_config("census", 80, 24);
+      set_param(cfg, "lr", lr);
+      const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
+      DisparityImage right_view;
+      run_golden(cfg, left, right, &right_view);
+      // Right pixel x' matches left pixel x' + d0; away from the borders and past the settling
+      // distance of the paths from the left.
+      const int r = cfg.window / 2;
+      INFO(lr << " d0 " << d0);
+      CHECK(wrong_pixels(right_view, r + kSettle, cfg.width - d0 - r, r, cfg.height - r,
+                         [&](int, int) { return d0; }) == 0);
+    }
+}
+
 TEST_CASE("a disparity step is recovered away from the edge and its occlusion", "[synthetic]") {
   std::mt19937 rng(12);
   const int near = 14, far = 4, edge = 48;

@@ -59,12 +59,21 @@ struct OutputBeat {
   bool operator==(const OutputBeat& o) const { return data == o.data && user == o.user && last == o.last; }
 };
 
-// Watches m_axis_disp at every rising edge: collects the pixels into frames of the expected
+// Where an output port's frames go: the frames, the cycles of their first and last handshakes.
+struct FrameLog {
+  std::vector<DisparityImage>& frames;
+  std::vector<uint64_t>& start_cycle;
+  std::vector<uint64_t>& end_cycle;
+};
+
+// Watches an output port at every rising edge: collects the pixels into frames of the expected
 // sizes and checks the stream rules (stable while stalled, tuser on each frame's first pixel,
 // tlast at each row end, nothing beyond the expected frames).
 class OutputMonitor {
  public:
-  OutputMonitor(const std::vector<std::pair<int, int>>& sizes, StreamRun& run) : sizes_(sizes), run_(run) {
+  OutputMonitor(const std::string& port, const std::vector<std::pair<int, int>>& sizes, FrameLog log,
+                ProtocolErrors& protocol)
+      : port_(port), sizes_(sizes), log_(log), protocol_(protocol) {
     start_frame();
   }
 
@@ -77,12 +86,12 @@ class OutputMonitor {
   // The design was reset: a frame in progress will not be completed.
   void reset() {
     stalled_.reset();
-    if (in_frame_ > 0) run_.frame_start_cycle.pop_back();
+    if (in_frame_ > 0) log_.start_cycle.pop_back();
     received_ -= in_frame_;
     in_frame_ = 0;
   }
 
-  bool done() const { return run_.outputs.size() >= sizes_.size(); }
+  bool done() const { return log_.frames.size() >= sizes_.size(); }
   size_t received() const { return received_; }
   size_t expected() const {
     size_t total = 0;
@@ -92,52 +101,54 @@ class OutputMonitor {
 
  private:
   void start_frame() {
-    if (!done()) frame_ = DisparityImage(sizes_[run_.outputs.size()].first, sizes_[run_.outputs.size()].second);
+    if (!done()) frame_ = DisparityImage(sizes_[log_.frames.size()].first, sizes_[log_.frames.size()].second);
   }
 
   void check_stall(uint64_t cycle, bool valid, const OutputBeat& beat) {
     if (!stalled_ || (valid && beat == *stalled_)) return;
     if (!valid) {
-      run_.protocol.add(fmt::format("cycle {}: tvalid dropped before a handshake", cycle));
+      protocol_.add(fmt::format("cycle {}: {}: tvalid dropped before a handshake", cycle, port_));
       return;
     }
-    run_.protocol.add(
-        fmt::format("cycle {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
+    protocol_.add(
+        fmt::format("cycle {}: {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
                     "tlast {} -> {}",
-                    cycle, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
+                    cycle, port_, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
                     int(stalled_->last), int(beat.last)));
   }
 
   void take(uint64_t cycle, const OutputBeat& beat) {
     if (done()) {
-      run_.protocol.add(fmt::format("cycle {}: output beyond the expected {} frames (tdata {})", cycle,
+      protocol_.add(fmt::format("cycle {}: {}: output beyond the expected {} frames (tdata {})", cycle, port_,
                                     sizes_.size(), beat.data));
       return;
     }
-    const size_t frame = run_.outputs.size();
+    const size_t frame = log_.frames.size();
     const int x = int(in_frame_ % size_t(frame_.width));
     const int y = int(in_frame_ / size_t(frame_.width));
     const bool first = x == 0 && y == 0;
     const bool row_end = x == frame_.width - 1;
     if (beat.user != first)
-      run_.protocol.add(fmt::format("cycle {}: frame {} ({}, {}): tuser {}, expected {}", cycle, frame, x, y,
+      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tuser {}, expected {}", cycle, port_, frame, x, y,
                                     int(beat.user), int(first)));
     if (beat.last != row_end)
-      run_.protocol.add(fmt::format("cycle {}: frame {} ({}, {}): tlast {}, expected {}", cycle, frame, x, y,
+      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tlast {}, expected {}", cycle, port_, frame, x, y,
                                     int(beat.last), int(row_end)));
     frame_.at(x, y) = beat.data;
-    if (in_frame_ == 0) run_.frame_start_cycle.push_back(cycle);
+    if (in_frame_ == 0) log_.start_cycle.push_back(cycle);
     ++received_;
     if (++in_frame_ == frame_.pixels.size()) {
-      run_.outputs.push_back(frame_);
-      run_.frame_end_cycle.push_back(cycle);
+      log_.frames.push_back(frame_);
+      log_.end_cycle.push_back(cycle);
       in_frame_ = 0;
       start_frame();
     }
   }
 
+  std::string port_;
   const std::vector<std::pair<int, int>>& sizes_;
-  StreamRun& run_;
+  FrameLog log_;
+  ProtocolErrors& protocol_;
   DisparityImage frame_{1, 1};
   size_t in_frame_ = 0;  // pixels of the current frame received
   size_t received_ = 0;
@@ -165,6 +176,11 @@ int output_port_bits() { return int(8 * sizeof(std::declval<Vdut&>().m_axis_disp
 bool has_control() { return true; }
 #else
 bool has_control() { return false; }
+#endif
+#ifdef FPSTEREO_TB_RIGHT_VIEW
+bool has_right_view() { return true; }
+#else
+bool has_right_view() { return false; }
 #endif
 
 namespace {
@@ -254,7 +270,13 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
 
   AxisSource left(plan.left), right(plan.right);
   StreamRun run;
-  OutputMonitor monitor(plan.output_sizes, run);
+  OutputMonitor monitor("m_axis_disp", plan.output_sizes, {run.outputs, run.frame_start_cycle, run.frame_end_cycle},
+                        run.protocol);
+  // The right view's frames, when the design has it: their cycles are not reported.
+  std::vector<uint64_t> right_start_cycle, right_end_cycle;
+  const std::vector<std::pair<int, int>> no_frames;
+  OutputMonitor right_monitor("m_axis_disp_right", has_right_view() ? plan.output_sizes : no_frames,
+                              {run.right_views, right_start_cycle, right_end_cycle}, run.protocol);
   LiteMaster lite;
 
   std::mt19937 rng(settings.seed);
@@ -281,13 +303,19 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
 
   dut->s_axis_left_tvalid = dut->s_axis_right_tvalid = 0;
   dut->m_axis_disp_tready = 0;
+#ifdef FPSTEREO_TB_RIGHT_VIEW
+  dut->m_axis_disp_right_tready = 0;
+#endif
   reset();
   constexpr size_t kNoHold = std::numeric_limits<size_t>::max();
   size_t hold_from = kNoHold;
   bool releasing = false;
   left.advance(false, withhold(), hold_from);
   right.advance(false, withhold(), hold_from);
-  bool ready = sink_ready();
+  // The right view's sink has backpressure of its own (drawn only where it exists, so that the
+  // other designs see the same patterns).
+  auto right_sink_ready = [&] { return has_right_view() ? sink_ready() : true; };
+  bool ready = sink_ready(), right_ready = right_sink_ready();
 
   // Once every pixel is out, keep watching long enough for a spurious extra row to show.
   const uint64_t drain_cycles = 2 * uint64_t(cfg.width) * uint64_t(cfg.dmax / cfg.uf) + 100;
@@ -303,6 +331,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
       if (action.reset) {
         reset();
         monitor.reset();
+        right_monitor.reset();
         last_progress = cycle;
       }
       for (const auto& access : action.writes) lite.queue(access);
@@ -323,6 +352,9 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
     right.drive(dut->s_axis_right_tdata, dut->s_axis_right_tvalid, dut->s_axis_right_tuser,
                 dut->s_axis_right_tlast);
     dut->m_axis_disp_tready = ready;
+#ifdef FPSTEREO_TB_RIGHT_VIEW
+    dut->m_axis_disp_right_tready = right_ready;
+#endif
     lite.drive(*dut);
     half_cycle(false);
 
@@ -339,11 +371,18 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
     monitor.observe(
         cycle, output_valid, ready,
         {uint16_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
+#ifdef FPSTEREO_TB_RIGHT_VIEW
+    right_monitor.observe(cycle, dut->m_axis_disp_right_tvalid, right_ready,
+                          {uint16_t(dut->m_axis_disp_right_tdata), bool(dut->m_axis_disp_right_tuser),
+                           bool(dut->m_axis_disp_right_tlast)});
+#else
+    right_monitor.observe(cycle, false, right_ready, {});
+#endif
     lite.sample(*dut, run.accesses);
     half_cycle(true);
 
     if (output_valid && ready) last_progress = cycle;
-    const bool finished = monitor.done() && lite.idle() && next_action == plan.actions.size();
+    const bool finished = monitor.done() && right_monitor.done() && lite.idle() && next_action == plan.actions.size();
     if (finished && cycle >= (run.frame_end_cycle.empty() ? 0 : run.frame_end_cycle.back()) + drain_cycles) break;
     if (!finished && cycle - last_progress >= settings.timeout) {
       run.timeout = timeout_message(cycle - last_progress, monitor, monitor.expected(), left, right);
@@ -352,6 +391,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
     left.advance(left_taken, withhold(), hold_from);
     right.advance(right_taken, withhold(), hold_from);
     ready = sink_ready();
+    right_ready = right_sink_ready();
   }
   run.cycles = cycle + 1;
   dut->final();

@@ -67,6 +67,7 @@ struct ProtocolErrors {
 
 struct StreamRun {
   std::vector<DisparityImage> outputs;      // the complete output frames, in order
+  std::vector<DisparityImage> right_views;  // with the right view: its complete frames, in order
   std::vector<uint64_t> frame_start_cycle;  // cycle of each frame's first output handshake
   std::vector<uint64_t> frame_end_cycle;    // cycle of each frame's last output handshake
   uint64_t first_input_cycle = 0;           // cycle of the first input handshake on either stream
@@ -85,6 +86,8 @@ struct StreamRun {
 int output_port_bits();
 // Whether the design has the AXI4-Lite control interface.
 bool has_control();
+// Whether the design streams the right view (m_axis_disp_right).
+bool has_right_view();
 
 // Resets the design, then runs the plan until every expected output pixel has arrived, the
 // reads at the end are done and a drain period has shown no extra output, or until the timeout.

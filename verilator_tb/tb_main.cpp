@@ -225,6 +225,7 @@ struct Run {
   std::string title;
   StreamPlan plan;
   std::vector<std::optional<DisparityImage>> expected;  // per output frame; none: not compared
+  std::vector<std::optional<DisparityImage>> expected_right;  // with the right view, likewise
   std::vector<std::pair<uint32_t, uint32_t>> registers;  // (offset, value) expected at the end
   std::vector<std::string> register_names;
 };
@@ -234,7 +235,9 @@ void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
   run.plan.left.insert(run.plan.left.end(), left.begin(), left.end());
   run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
   run.plan.output_sizes.push_back({cfg.width, cfg.height});
-  run.expected.push_back(run_golden(cfg, pair.left, pair.right));
+  DisparityImage right_view;
+  run.expected.push_back(run_golden(cfg, pair.left, pair.right, cfg.right_view ? &right_view : nullptr));
+  run.expected_right.push_back(right_view);
 }
 
 void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_t value) {
@@ -321,7 +324,8 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   const auto& pf = pairs[1 % pairs.size()];
   const auto& pb = pairs[2 % pairs.size()];
   const auto& pc = pairs[3 % pairs.size()];
-  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right);
+  DisparityImage golden_f_right;
+  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right, cfg.right_view ? &golden_f_right : nullptr);
 
   add_frame(run, pa, cfg);
   // F, and what the design makes of it: output frames (checked or not) and counter deltas.
@@ -360,6 +364,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     for (int i = 0; i < count; ++i) {
       run.plan.output_sizes.push_back({w, h});
       run.expected.push_back(std::nullopt);
+      run.expected_right.push_back(std::nullopt);
     }
   };
   if (fault == "early-eol" || fault == "late-eol" || fault == "short-frame") {
@@ -380,6 +385,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   } else if (fault == "long-frame") {
     run.plan.output_sizes.push_back({w, h});
     run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
+    run.expected_right.push_back(golden_f_right);
     errors = 1;
   } else if (fault == "reset") {
     // aresetn as F's last row begins: F's output is cut short, the counters start again, the
@@ -433,6 +439,20 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
     fmt::print("frame {}: {}\n", i, c.report());
     totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
     ++totals.frames;
+  }
+  // The right view's frames: as many as the disparity frames, each equal to its golden words.
+  if (cfg.right_view) {
+    if (run.right_views.size() != run.outputs.size()) {
+      fmt::print("right view: {} frames, expected {}\n", run.right_views.size(), run.outputs.size());
+      ++totals.mismatches;
+    }
+    for (size_t i = 0; i < run.right_views.size() && i < run_spec.expected_right.size(); ++i) {
+      if (!run_spec.expected_right[i]) continue;
+      const Comparison c = compare_words(*run_spec.expected_right[i], run.right_views[i]);
+      fmt::print("right view, frame {}: {}\n", i, c.report());
+      totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
+      ++totals.frames;
+    }
   }
   if (settings.idle > 0 || settings.backpressure > 0)
     fmt::print("stalls: left idle while tready {} cycles, right {}; output held by backpressure {} cycles\n",

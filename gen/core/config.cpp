@@ -190,6 +190,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"subpixel-fit", "sub-pixel fit through the winner's and its neighbours' costs: equiangular or parabola",
        [](StereoConfig& c, const std::string& v) { c.subpixel_fit = parse_enum("subpixel-fit", v, kSubpixelFitNames); },
        [](const StereoConfig& c) { return to_string(c.subpixel_fit); }},
+      {"right-view", "also stream the right image's disparities, the left-right check's match side: on or off",
+       [](StereoConfig& c, const std::string& v) { c.right_view = parse_bool("right-view", v); },
+       [](const StereoConfig& c) { return std::string(c.right_view ? "on" : "off"); }},
   };
   return specs;
 }
@@ -221,6 +224,8 @@ void validate(const StereoConfig& c) {
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
     reject("median", std::to_string(c.median), "expected 0 (off), 3, 5 or 7");
   check_range("subpixel-bits", c.subpixel_bits, 0, 5);
+  if (c.right_view && c.lr == LrCheck::None)
+    reject("right-view", "on", "needs a left-right check (lr = lr1 or lr2), whose match side it streams");
 }
 
 std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4"}; }

@@ -56,6 +56,8 @@ struct StereoConfig {
   bool gap_interpolation = false;
   int subpixel_bits = 0;  // fraction bits of the output disparity; 0 = integer disparities
   SubpixelFit subpixel_fit = SubpixelFit::Equiangular;
+  // The hardware also streams the right view's disparities (the left-right check's match side).
+  bool right_view = false;
 
   int path_count() const;
   bool operator==(const StereoConfig&) const;

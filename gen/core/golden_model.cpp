@@ -119,7 +119,7 @@ void interpolate_gaps(Image<int>& map) {
 // The pipeline, with T the storage type of costs and sums.
 template <class T>
 DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const GrayImage& left,
-                            const GrayImage& right) {
+                            const GrayImage& right, DisparityImage* right_view) {
   const int width = left.width, height = left.height, dmax = cfg.dmax;
   const size_t row_size = size_t(width) * size_t(dmax);
   // Larger than any path cost plus P2, and sentinel + P1 still fits in T.
@@ -162,6 +162,8 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       for (int xm = 0; xm < width; ++xm)
         match_disparity[size_t(xm)] = winner(match_sum.data() + size_t(xm) * size_t(dmax), dmax);
     }
+    if (right_view != nullptr)
+      for (int xm = 0; xm < width; ++xm) right_view->at(xm, y) = uint16_t(match_disparity[size_t(xm)]);
     if (cfg.lr != LrCheck::None)
       for (int x = 0; x < width; ++x) {
         if (row[x] == kInvalid) continue;
@@ -184,16 +186,21 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
 
 }  // namespace
 
-DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right) {
+DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                          DisparityImage* right_view) {
   if (left.width != right.width || left.height != right.height || left.width > cfg.width ||
       left.height > cfg.height || left.width < 1 || left.height < 1)
     throw std::invalid_argument("run_golden: images must have equal sizes within the configured size");
+  if (right_view != nullptr) {
+    if (cfg.lr == LrCheck::None) throw std::invalid_argument("run_golden: the right view needs a left-right check");
+    *right_view = DisparityImage(left.width, left.height);
+  }
   const Widths widths = derive_widths(cfg);
   // 16-bit storage whenever sums, and the sentinel above any path cost plus P2, fit.
   if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 &&
       widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
-    return run_pipeline<uint16_t>(cfg, widths, left, right);
-  return run_pipeline<uint32_t>(cfg, widths, left, right);
+    return run_pipeline<uint16_t>(cfg, widths, left, right, right_view);
+  return run_pipeline<uint32_t>(cfg, widths, left, right, right_view);
 }
 
 }  // namespace fpstereo

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "widths.hpp"
@@ -345,7 +346,8 @@ void gap_interpolate(DispMap& disp) {
 
 }  // namespace
 
-DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right) {
+DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                         DisparityImage* right_view) {
   // The run's size is the images' size (the caller checked left and right agree).
   const int W = left.width, H = left.height;
   const Widths widths = derive_widths(cfg);
@@ -362,8 +364,18 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
 
   if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
 
-  if (cfg.lr == LrCheck::Lr1) apply_lr_check(cfg, lr1_match_disparities(sum), disp);
-  if (cfg.lr == LrCheck::Lr2) apply_lr_check(cfg, lr2_match_disparities(cfg, base, match, cmax), disp);
+  if (cfg.lr != LrCheck::None) {
+    const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum)
+                                              : lr2_match_disparities(cfg, base, match, cmax);
+    apply_lr_check(cfg, dm, disp);
+    if (right_view != nullptr) {
+      *right_view = DisparityImage(W, H);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) right_view->at(x, y) = uint16_t(dm.at(x, y));
+    }
+  } else if (right_view != nullptr) {
+    throw std::invalid_argument("run_naive: the right view needs a left-right check");
+  }
 
   refine_subpixel(cfg, sum, disp);
 

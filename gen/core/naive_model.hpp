@@ -8,6 +8,8 @@
 
 namespace fpstereo {
 
-DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right);
+// With right_view (a left-right check needed), also the match side's disparities.
+DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                         DisparityImage* right_view = nullptr);
 
 }  // namespace fpstereo

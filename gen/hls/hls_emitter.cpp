@@ -141,6 +141,8 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kMedian = " << cfg.median << ";\n"
      << "  static constexpr bool kGapInterpolation = " << (cfg.gap_interpolation ? "true" : "false") << ";\n"
      << "  static constexpr int kSubpixelBits = " << cfg.subpixel_bits << ";  // 0: whole pixels\n"
+     << "  static constexpr bool kRightView = " << (cfg.right_view ? "true" : "false")
+     << ";  // the right view's stream (m_axis_disp_right)\n"
      << "  static constexpr bool kSubpixelEquiangular = "
      << (cfg.subpixel_fit == SubpixelFit::Equiangular ? "true" : "false") << ";  // else the parabola\n"
      << "  // Widths (derive_widths, docs/semantics.md \"Bit widths\").\n"
@@ -154,7 +156,9 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kInvalidWord = " << w.invalid_word << ";\n"
      << "  static constexpr int kUniquenessBits = " << w.uniqueness_product << ";\n"
      << "  static constexpr int kOutBits = " << (w.output_word > 8 ? 16 : 8) << ";  // byte-aligned tdata\n"
-     << "};\n";
+     << "};\n"
+     << "// The top functions' ports depend on it (the templates' #if).\n"
+     << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n";
   return os.str();
 }
 

@@ -97,6 +97,9 @@ std::string top_module(const RtlDesign& d) {
      << "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
      << "// with the invalid flag in bit " << w.output_disparity
      << (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string())
+     << (c.right_view ? ". m_axis_disp_right: the right view's whole disparities (the\n// left-right check's match "
+                        "side), in raster order of the right image"
+                      : "")
      << ". Frames are at most " << c.width << " x "
      << c.height << " pixels; fpstereo_video_in checks the input's\n"
      << "// framing and resynchronises on the next start of frame after an error.\n"
@@ -105,7 +108,7 @@ std::string top_module(const RtlDesign& d) {
      << "module " << d.prefix << "_top (\n"
      << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:clock:1.0 aclk CLK\" *)\n"
      << "  (* X_INTERFACE_PARAMETER = \"ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp"
-     << (d.options.control ? ":s_axi_ctrl" : "") << ", ASSOCIATED_RESET aresetn\" *)\n"
+     << (c.right_view ? ":m_axis_disp_right" : "") << (d.options.control ? ":s_axi_ctrl" : "") << ", ASSOCIATED_RESET aresetn\" *)\n"
      << "  input  wire        aclk,\n"
      << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:reset:1.0 aresetn RST\" *)\n"
      << "  (* X_INTERFACE_PARAMETER = \"POLARITY ACTIVE_LOW\" *)\n"
@@ -118,11 +121,16 @@ std::string top_module(const RtlDesign& d) {
         "  output wire        s_axis_{0}_tready,\n  input  wire        s_axis_{0}_tuser,\n"
         "  input  wire        s_axis_{0}_tlast,\n",
         side);
-  os << fmt::format(
-      "  output wire [{0}:0] m_axis_disp_tdata,\n  output wire        m_axis_disp_tvalid,\n"
-      "  input  wire        m_axis_disp_tready,\n  output wire        m_axis_disp_tuser,\n"
-      "  output wire        m_axis_disp_tlast\n);\n",
-      d.output_bits - 1);
+  // The disparity words, and with right-view the right view's (whole disparities, 8 bits).
+  std::vector<std::pair<std::string, int>> outputs = {{"m_axis_disp", d.output_bits}};
+  if (c.right_view) outputs.push_back({"m_axis_disp_right", 8});
+  for (size_t i = 0; i < outputs.size(); ++i)
+    os << fmt::format(
+        "  output wire [{1}:0] {0}_tdata,\n  output wire        {0}_tvalid,\n"
+        "  input  wire        {0}_tready,\n  output wire        {0}_tuser,\n"
+        "  output wire        {0}_tlast{2}\n",
+        outputs[i].first, outputs[i].second - 1, i + 1 < outputs.size() ? "," : "");
+  os << ");\n";
   os << "  wire rst = !aresetn;\n\n"
      << "  // Input register slices: {tuser, tlast, tdata}.\n";
   for (const char* side : {"left", "right"})
@@ -194,6 +202,9 @@ std::string top_module(const RtlDesign& d) {
       d.prefix, d.x_bits, d.y_bits);
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
      << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity);
+  if (c.right_view)
+    os << fmt::format("  wire view_ready, view_push, view_first, view_last;\n  wire [{}:0] view_word;\n",
+                      w.disparity - 1);
   os << fmt::format(
       "  {}_sgm_core core (\n"
       "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),\n"
@@ -202,18 +213,27 @@ std::string top_module(const RtlDesign& d) {
       "    .lr_threshold(lr_threshold),\n"
       "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
       "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
-      "    .out_last(out_last), .frame_end(frame_done));\n",
-      d.prefix);
-  const int pad = d.output_bits - w.output_word;
-  os << "\n  // Output register slice.\n"
-     << fmt::format("  {}_axis_skid #(.DATA_W({})) disp_slice (\n", d.prefix, d.output_bits + 2)
-     << "    .clk(aclk), .rst(rst),\n"
-     << (pad > 0 ? fmt::format("    .s_data({{out_first, out_last, {}'d0, out_word}}),", pad)
-                 : std::string("    .s_data({out_first, out_last, out_word}),"))
-     << " .s_valid(out_push), .s_ready(out_ready),\n"
-     << "    .m_data({m_axis_disp_tuser, m_axis_disp_tlast, m_axis_disp_tdata}), "
-        ".m_valid(m_axis_disp_tvalid),\n"
-     << "    .m_ready(m_axis_disp_tready));\nendmodule\n`resetall\n";
+      "    .out_last(out_last),{}\n"
+      "    .frame_end(frame_done));\n",
+      d.prefix,
+      c.right_view ? "\n    .view_ready(view_ready), .view_push(view_push), .view_word(view_word),\n"
+                     "    .view_first(view_first), .view_last(view_last),"
+                   : "");
+  // Output register slices: {tuser, tlast, tdata}, the word zero-extended to the port.
+  auto slice = [&](const std::string& name, const std::string& core, const std::string& port, int port_bits,
+                   int word_bits) {
+    const int pad = port_bits - word_bits;
+    os << fmt::format("  {}_axis_skid #(.DATA_W({})) {} (\n", d.prefix, port_bits + 2, name)
+       << "    .clk(aclk), .rst(rst),\n"
+       << fmt::format("    .s_data({{{0}_first, {0}_last, {1}{0}_word}}), .s_valid({0}_push), .s_ready({0}_ready),\n",
+                      core, pad > 0 ? fmt::format("{}'d0, ", pad) : std::string())
+       << fmt::format("    .m_data({{{0}_tuser, {0}_tlast, {0}_tdata}}), .m_valid({0}_tvalid),\n", port)
+       << fmt::format("    .m_ready({}_tready));\n", port);
+  };
+  os << "\n  // Output register slices.\n";
+  slice("disp_slice", "out", "m_axis_disp", d.output_bits, w.output_word);
+  if (c.right_view) slice("disp_right_slice", "view", "m_axis_disp_right", 8, w.disparity);
+  os << "endmodule\n`resetall\n";
   return os.str();
 }
 
@@ -245,6 +265,12 @@ std::string core_module(const RtlDesign& d) {
      << "  input  wire out_ready,\n  output wire out_push,\n"
      << fmt::format("  output wire [{}:0] out_word,\n", w.output_disparity)
      << "  output wire out_first,\n  output wire out_last,\n"
+     << (d.cfg.right_view ? fmt::format("  // the right view's word, pushed when view_push is high\n"
+                                        "  input  wire view_ready,\n  output wire view_push,\n"
+                                        "  output wire [{}:0] view_word,\n"
+                                        "  output wire view_first,\n  output wire view_last,\n",
+                                        w.disparity - 1)
+                          : std::string())
      << "  // high in the cycle that pushes the frame's last pixel\n"
      << "  output wire frame_end\n);\n";
   PixelStream stream;

@@ -141,7 +141,8 @@ class FramingStage : public Stage {
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     return "  // Frame sequencing: adv is every stage's enable.\n" + wire(1, "adv") + wire(1, "restart") +
-           wire(1, "in_due") + wire(1, "out_due") + wire(1, "frame_done") + wire(d.step_bits, "step") +
+           wire(1, "in_due") + wire(1, "out_due") + (d.cfg.right_view ? wire(1, "view_due") : std::string()) +
+           wire(1, "frame_done") + wire(d.step_bits, "step") +
            wire(1, "follow_open") + wire(1, "next_frame") + wire(1, "next_taken") + wire(1, "continuing") +
            wire(1, "wrapped") +
            fmt::format(
@@ -166,6 +167,8 @@ class FramingStage : public Stage {
                      {"in_valid", "in_valid"},
                      {"out_due", "out_due"},
                      {"out_ready", "out_ready"},
+                     {"view_due", d.cfg.right_view ? "view_due" : "1'b0"},
+                     {"view_ready", d.cfg.right_view ? "view_ready" : "1'b1"},
                      {"frame_done", "frame_done"},
                      {"adv", "adv"},
                      {"step", "step"},
@@ -854,18 +857,27 @@ class LrCheckStage : public Stage {
   std::vector<std::string> knobs() const override { return {"lr", "lr-threshold"}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 3}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    std::vector<StageMemory> out = {{"core.lr_check.completed.mem", d.disp_depth(), d.widths.disparity}};
-    if (row_end_)
-      out.push_back({"core.lr_check.row_end.row_end.mem", int64_t(d.out_rows) * d.groups,
-                     int64_t(d.cfg.uf) * d.widths.disparity});
+    // One lookup of Dm for the check; with the right view a second one for Dm(x).
+    std::vector<StageMemory> out;
+    for (const std::string lookup : {"lookup", "right_view.lookup"}) {
+      if (lookup != "lookup" && !d.cfg.right_view) break;
+      const std::string at = "core.lr_check." + lookup;
+      out.push_back({at + ".completed.mem", d.disp_depth(), d.widths.disparity});
+      if (row_end_)
+        out.push_back({at + ".row_end.row_end.mem", int64_t(d.out_rows) * d.groups,
+                       int64_t(d.cfg.uf) * d.widths.disparity});
+    }
     return out;
   }
-  std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_lr_check", "fpstereo_ram_sdp"}; }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_lr_check", "fpstereo_match_lookup", "fpstereo_ram_sdp"};
+  }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     const StereoConfig& c = d.cfg;
     const PixelStream in = stream;
     stream = {"checked_done", "checked_event", "checked_x", "checked_y", "checked_word"};
-    std::string v = "\n  // Left-right check.\n" + stream_wires(d, stream);
+    std::string v = "\n  // Left-right check.\n" + stream_wires(d, stream) +
+                    unused_unless(c.right_view, wire(d.widths.disparity, "right_dm"), "only the right view reads it");
     Values ports = {{"clk", "clk"},
                     {"restart", "restart"},
                     {"adv", "adv"},
@@ -892,7 +904,8 @@ class LrCheckStage : public Stage {
                                {"checked_event", stream.event},
                                {"checked_x", stream.x},
                                {"checked_y", stream.y},
-                               {"checked_word", stream.word}});
+                               {"checked_word", stream.word},
+                               {"right_word", "right_dm"}});
     return v + instance("fpstereo_lr_check", "lr_check",
                         {{"ROW_SLOTS", num(d.row_slots)},
                          {"G", num(d.groups)},
@@ -905,6 +918,7 @@ class LrCheckStage : public Stage {
                          {"DISP_AW", num(d.disp_addr_bits)},
                          {"ROW_END", row_end_ ? "1" : "0"},
                          {"END_AW", num(d.end_addr_bits)},
+                         {"RIGHT_VIEW", c.right_view ? "1" : "0"},
                          {"X_W", num(d.x_bits)},
                          {"Y_W", num(d.y_bits)},
                          {"LANE_W", num(d.lane_bits)}},
@@ -915,8 +929,9 @@ class LrCheckStage : public Stage {
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     const HlsStreams in = s;
     s = {"checked", ""};
-    return "\n  // Left-right check.\n" + hls_streams("Word<C>", {s.base}) +
-           fmt::format("  lr_check<C>({}, {}, {}, W, H, lr_threshold);\n", in.base, in.match, s.base);
+    // Without the right view, right_view is never written.
+    return "\n  // Left-right check.\n" + hls_streams("Word<C>", {s.base, "right_view"}) +
+           fmt::format("  lr_check<C>({}, {}, {}, right_view, W, H, lr_threshold);\n", in.base, in.match, s.base);
   }
 
  private:
@@ -1007,11 +1022,57 @@ class GapStage : public Stage {
   int hls_fill_rows(const RtlDesign&) const override { return 1; }
 };
 
+// An output register: the stream's word with its first and last flags, pushed in the step after
+// its event (the sequencer stalls while the output register slice is full). `prefix`_due is the
+// sequencer's input; the core's ports are `prefix`_push, _word, _first and _last.
+std::string output_register(const std::string& prefix, const PixelStream& stream, const std::string& event,
+                            const std::string& word, int word_bits) {
+  return fmt::format(
+      "  reg {0}_event_q, {0}_first_q, {0}_last_q;\n"
+      "  reg [{5}:0] {0}_word_q;\n"
+      "  always @(posedge clk)\n"
+      "    if (restart) {0}_event_q <= 1'b0;\n"
+      "    else if (adv) {0}_event_q <= {1};\n"
+      "  always @(posedge clk)\n"
+      "    if (adv) begin\n"
+      "      {0}_word_q <= {4};\n"
+      "      {0}_first_q <= {2} == 0 && {3} == 0;\n"
+      "      {0}_last_q <= {2} == frame_width - 1'b1;\n"
+      "    end\n"
+      "  assign {0}_due    = {0}_event_q;\n"
+      "  assign {0}_push   = adv && {0}_event_q;\n"
+      "  assign {0}_word   = {0}_word_q;\n"
+      "  assign {0}_first  = {0}_first_q;\n"
+      "  assign {0}_last   = {0}_last_q;\n",
+      prefix, event, stream.x, stream.y, word, word_bits - 1);
+}
+
+// Right view (with right-view): the left-right check's Dm(x) at each pixel x of its stream, the
+// right image's disparity, to a second output stream (m_axis_disp_right). Beside the stream: the
+// main output is at least as late, so the frame ends with the main output's last push.
+class RightViewStage : public Stage {
+ public:
+  std::string title() const override { return "right view"; }
+  std::vector<std::string> knobs() const override { return {"right-view"}; }
+  Latency latency(const RtlDesign&) const override { return {}; }
+  std::vector<std::string> modules(const RtlDesign&) const override { return {}; }
+  std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
+    // With gap interpolation the stream runs a row past the frame (the gap fill's lookahead).
+    const std::string event =
+        d.cfg.gap_interpolation ? fmt::format("{} && {} < frame_height", stream.event, stream.y) : stream.event;
+    return "\n  // Right view: Dm(x) registered, pushed to its own output in the next step.\n" +
+           output_register("view", stream, event, "right_dm", d.widths.disparity);
+  }
+  // ---- HLS: lr_check writes the right view's words.
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Right view.\n  write_words<C>(right_view, right_out, W, H);\n";
+  }
+};
+
 // Output: one register stage, so that what the sequencer's enable depends on (out_due,
 // frame_done) comes from flip-flops; each pixel's word is pushed in the step after its stream
-// event (the sequencer stalls while the output register slice is full). The frame ends with its
-// last pixel; the core is idle for one cycle, and the next frame's step 0 comes two cycles after
-// its start (fpstereo_sequencer).
+// event. The frame ends with its last pixel; the core is idle for one cycle, and the next frame's
+// step 0 comes two cycles after its start (fpstereo_sequencer).
 class OutputStage : public Stage {
  public:
   std::string title() const override { return "output"; }
@@ -1019,37 +1080,21 @@ class OutputStage : public Stage {
   Latency latency(const RtlDesign&) const override { return {0, 0, 1 + kStepsAfterPush}; }
   std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_axis_skid"}; }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
-    return fmt::format(
-        "\n  // Output: registered, so that the sequencer's inputs are flip-flops.\n"
-        "  reg out_event_q, out_first_q, out_last_q, frame_done_q;\n"
-        "  reg [{4}:0] out_word_q;\n"
-        "  always @(posedge clk)\n"
-        "    if (restart) begin\n"
-        "      out_event_q <= 1'b0;\n"
-        "      frame_done_q <= 1'b0;\n"
-        "    end else if (adv) begin\n"
-        "      out_event_q <= {0};\n"
-        "      frame_done_q <= {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1;\n"
-        "    end\n"
-        "  always @(posedge clk)\n"
-        "    if (adv) begin\n"
-        "      out_word_q <= {3};\n"
-        "      out_first_q <= {1} == 0 && {2} == 0;\n"
-        "      out_last_q <= {1} == frame_width - 1'b1;\n"
-        "    end\n"
-        "  assign out_due    = out_event_q;\n"
-        "  assign out_push   = adv && out_event_q;\n"
-        "  assign out_word   = out_word_q;\n"
-        "  assign out_first  = out_first_q;\n"
-        "  assign out_last   = out_last_q;\n"
-        "  assign frame_done = frame_done_q;\n"
-        "  assign frame_end  = adv && frame_done;\n",
-        stream.event, stream.x, stream.y, stream.word, d.widths.output_disparity);
+    return "\n  // Output: registered, so that the sequencer's inputs are flip-flops.\n" +
+           output_register("out", stream, stream.event, stream.word, d.widths.output_word) +
+           fmt::format(
+               "  reg frame_done_q;\n"
+               "  always @(posedge clk)\n"
+               "    if (restart) frame_done_q <= 1'b0;\n"
+               "    else if (adv) frame_done_q <= {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1;\n"
+               "  assign frame_done = frame_done_q;\n"
+               "  assign frame_end  = adv && frame_done;\n",
+               stream.event, stream.x, stream.y);
   }
 
   // ---- HLS: the words into the output video stream.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
-    return fmt::format("\n  // Output.\n  write_disparity<C>({}, out, W, H);\n", s.base);
+    return fmt::format("\n  // Output.\n  write_words<C>({}, out, W, H);\n", s.base);
   }
 };
 
@@ -1065,6 +1110,7 @@ std::vector<StagePtr> pipeline_stages(const StereoConfig& c) {
   if (c.subpixel_bits != 0) stages.push_back(std::make_shared<SubpixelStage>());
   stages.push_back(std::make_shared<DisparityReorderStage>());
   if (c.lr != LrCheck::None) stages.push_back(std::make_shared<LrCheckStage>(c));
+  if (c.right_view) stages.push_back(std::make_shared<RightViewStage>());
   if (c.median != 0) stages.push_back(std::make_shared<MedianStage>());
   if (c.gap_interpolation) stages.push_back(std::make_shared<GapStage>());
   stages.push_back(std::make_shared<OutputStage>());

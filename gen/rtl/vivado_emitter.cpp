@@ -43,7 +43,11 @@ struct Stream {
   std::string name;
   bool slave;  // the core receives on it
 };
-const std::vector<Stream> kStreams = {{"s_axis_left", true}, {"s_axis_right", true}, {"m_axis_disp", false}};
+std::vector<Stream> streams(const RtlDesign& d) {
+  std::vector<Stream> s = {{"s_axis_left", true}, {"s_axis_right", true}, {"m_axis_disp", false}};
+  if (d.cfg.right_view) s.push_back({"m_axis_disp_right", false});
+  return s;
+}
 const std::vector<std::string> kStreamSignals = {"tdata", "tvalid", "tready", "tuser", "tlast"};
 
 std::string port_name(const Stream& stream, const std::string& signal) { return stream.name + "_" + signal; }
@@ -111,7 +115,7 @@ std::string control_port(const ControlPort& port) { return std::string(kControlI
 
 std::string port_delays(const RtlDesign& d) {
   std::string text = port_delay("set_input_delay", {"aresetn"});
-  for (const auto& stream : kStreams) {
+  for (const auto& stream : streams(d)) {
     std::vector<std::string> inputs, outputs;
     for (const auto& signal : kStreamSignals)
       (is_core_input(stream, signal) ? inputs : outputs).push_back(xdc_port(stream, signal));
@@ -185,7 +189,7 @@ std::string control_entry(const RtlDesign& d) {
 std::string package_settings(const RtlDesign& d, const std::vector<std::string>& files, double clock_mhz) {
   std::vector<std::string> sources, stream_entries, parameter_entries;
   for (const auto& file : files) sources.push_back(tcl_word(file));
-  for (const auto& stream : kStreams) {
+  for (const auto& stream : streams(d)) {
     std::vector<std::string> ports;
     for (const auto& signal : kStreamSignals) ports.push_back(port_name(stream, signal));
     stream_entries.push_back(stream.name + " {" + join(ports, " ") + "}");
@@ -346,7 +350,9 @@ std::string block_design_settings(const RtlDesign& d) {
      << "# VDMA line buffer depth (words): holds a row of " << d.cfg.width << " pixels.\n"
      << "set line_buffer " << line_buffer_depth(d) << "\n"
      << "# The core's AXI4-Lite control interface (none: generated without it).\n"
-     << "set control " << (d.options.control ? kControlInterface : "{}") << "\n\n";
+     << "set control " << (d.options.control ? kControlInterface : "{}") << "\n"
+     << "# The right view's stream m_axis_disp_right (8-bit words), to a fourth VDMA (0: none).\n"
+     << "set right_view " << (d.cfg.right_view ? 1 : 0) << "\n\n";
   return os.str();
 }
 
@@ -383,7 +389,8 @@ if {$board ne ""} {
   apply_bd_automation -rule xilinx.com:bd_rule:zynq_ultra_ps_e -config {apply_board_preset "1"} $ps
 }
 # M_AXI_HPM0_FPD for the registers (the other master ports off, so none is left without a
-# clock), S_AXI_HP0/1/2_FPD for the three VDMAs' memory traffic, and the fabric clock pl_clk0.
+# clock), S_AXI_HP0/1/2_FPD for the three VDMAs' memory traffic (HP3 for the right view's), and
+# the fabric clock pl_clk0.
 set_property -dict [list \
   CONFIG.PSU__USE__M_AXI_GP0 1 \
   CONFIG.PSU__USE__M_AXI_GP1 0 \
@@ -391,6 +398,7 @@ set_property -dict [list \
   CONFIG.PSU__USE__S_AXI_GP2 1 \
   CONFIG.PSU__USE__S_AXI_GP3 1 \
   CONFIG.PSU__USE__S_AXI_GP4 1 \
+  CONFIG.PSU__USE__S_AXI_GP5 $right_view \
   CONFIG.PSU__FPGA_PL0_ENABLE 1 \
   CONFIG.PSU__CRL_APB__PL0_REF_CTRL__FREQMHZ $pl_clk_mhz \
 ] $ps
@@ -419,6 +427,9 @@ proc add_vdma {name channel tdata_bits line_buffer} {
 add_vdma vdma_left mm2s $pixel_bits $line_buffer
 add_vdma vdma_right mm2s $pixel_bits $line_buffer
 add_vdma vdma_disp s2mm $disparity_bits $line_buffer
+if {$right_view} {
+  add_vdma vdma_disp_right s2mm $pixel_bits $line_buffer
+}
 
 # ---- The core and its streams ------------------------------------------------------------
 create_bd_cell -type ip -vlnv $ip_vlnv stereo
@@ -429,15 +440,23 @@ connect_bd_intf_net [get_bd_intf_pins stereo/m_axis_disp] [get_bd_intf_pins vdma
 connect_bd_net [get_bd_pins zynq_ultra_ps_e_0/pl_clk0] [get_bd_pins stereo/aclk] \
   [get_bd_pins vdma_left/m_axis_mm2s_aclk] [get_bd_pins vdma_right/m_axis_mm2s_aclk] \
   [get_bd_pins vdma_disp/s_axis_s2mm_aclk]
+if {$right_view} {
+  connect_bd_intf_net [get_bd_intf_pins stereo/m_axis_disp_right] [get_bd_intf_pins vdma_disp_right/S_AXIS_S2MM]
+  connect_bd_net [get_bd_pins zynq_ultra_ps_e_0/pl_clk0] [get_bd_pins vdma_disp_right/s_axis_s2mm_aclk]
+}
 
 # ---- Memory and register paths -----------------------------------------------------------
 # Connection automation adds the interconnects, clocks everything from pl_clk0 (the only fabric
 # clock) and adds a processor system reset for that clock.
-foreach {vdma master slave} {
+set vdma_ports {
   vdma_left M_AXI_MM2S S_AXI_HP0_FPD
   vdma_right M_AXI_MM2S S_AXI_HP1_FPD
   vdma_disp M_AXI_S2MM S_AXI_HP2_FPD
-} {
+}
+if {$right_view} {
+  lappend vdma_ports vdma_disp_right M_AXI_S2MM S_AXI_HP3_FPD
+}
+foreach {vdma master slave} $vdma_ports {
   apply_bd_automation -rule xilinx.com:bd_rule:axi4 -config [list Clk_master Auto Clk_slave Auto \
     Clk_xbar Auto Master /$vdma/$master Slave /zynq_ultra_ps_e_0/$slave ddr_seg Auto intc_ip Auto \
     master_apm 0] [get_bd_intf_pins zynq_ultra_ps_e_0/$slave]
@@ -565,6 +584,8 @@ std::string emit_block_design_tcl(const RtlDesign& d) {
       "              registers, or wire them to pl_ps_irq0.",
       "The core has no tkeep: Vivado may warn about it when connecting the VDMAs.",
   };
+  if (d.cfg.right_view)
+    usage.insert(usage.begin() + 5, "  and stereo -> m_axis_disp_right -> vdma_disp_right (S2MM) -> DDR, 8-bit words");
   return banner(d, "example block design (Zynq UltraScale+ MPSoC, AXI VDMA)", usage) + block_design_settings(d) +
          kBlockDesignBody;
 }

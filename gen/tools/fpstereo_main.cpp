@@ -18,7 +18,7 @@ namespace fpstereo {
 namespace {
 
 struct RunOptions {
-  std::string left, right, output, colour, pfm;
+  std::string left, right, output, colour, pfm, right_output;
   std::vector<std::string> gray_pgm;  // left, right
   ConfigFlags config;
 };
@@ -30,12 +30,15 @@ int run_pair(const RunOptions& opt) {
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
+  if (!opt.right_output.empty() && cfg.lr == LrCheck::None)
+    throw ConfigError("--right-output needs a left-right check (lr = lr1 or lr2), whose match side it writes");
   std::vector<std::string> paths = opt.gray_pgm;
-  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm})
+  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm, &opt.right_output})
     if (!path->empty()) paths.push_back(*path);
   for (const auto& path : paths) check_writable(path);  // before the long part
   const auto start = std::chrono::steady_clock::now();
-  const DisparityImage words = run_golden(cfg, left, right);
+  DisparityImage right_words;
+  const DisparityImage words = run_golden(cfg, left, right, opt.right_output.empty() ? nullptr : &right_words);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(words, cfg);
@@ -47,6 +50,13 @@ int run_pair(const RunOptions& opt) {
   if (!opt.output.empty()) outputs.push_back({opt.output, encode_kitti_png(disparity)});
   if (!opt.colour.empty()) outputs.push_back({opt.colour, encode_colour_png(disparity, float(cfg.dmax - 1))});
   if (!opt.pfm.empty()) outputs.push_back({opt.pfm, encode_pfm(disparity)});
+  if (!opt.right_output.empty()) {
+    StereoConfig whole = cfg;  // the right view's words are whole disparities
+    whole.subpixel_bits = 0;
+    const cv::Mat1f right_disparity = to_float_disparity(right_words, whole);
+    const bool pfm = opt.right_output.size() > 4 && opt.right_output.substr(opt.right_output.size() - 4) == ".pfm";
+    outputs.push_back({opt.right_output, pfm ? encode_pfm(right_disparity) : encode_kitti_png(right_disparity)});
+  }
   write_outputs(outputs);
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
@@ -82,6 +92,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("-o,--output", run.output, "KITTI 16-bit PNG (disparity x 256, 0 = invalid)");
   run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
   run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
+  run_cmd->add_option("--right-output", run.right_output,
+                      "the right view's disparities (the left-right check's match side): PFM if the name ends in "
+                      ".pfm, else a KITTI 16-bit PNG");
   run_cmd
       ->add_option("--gray-pgm", run.gray_pgm,
                    "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "

@@ -23,6 +23,8 @@ module sequencer_props (
   input wire in_valid,
   input wire out_due,
   input wire out_ready,
+  input wire view_due,
+  input wire view_ready,
   input wire frame_done
 );
   localparam STEP_W = 4;
@@ -32,7 +34,8 @@ module sequencer_props (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held),
     .accepting(accepting), .follow_open(follow_open), .next_frame(next_frame), .next_taken(next_taken),
     .continuing(continuing), .in_due(in_due), .in_valid(in_valid), .out_due(out_due),
-    .out_ready(out_ready), .frame_done(frame_done), .adv(adv), .step(step), .restart(restart));
+    .out_ready(out_ready), .view_due(view_due), .view_ready(view_ready), .frame_done(frame_done),
+    .adv(adv), .step(step), .restart(restart));
 
 `ifdef FORMAL
   (* keep *) wire probe_starting, probe_in_frame;

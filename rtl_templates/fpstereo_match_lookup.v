@@ -1,0 +1,74 @@
+`resetall
+`default_nettype none
+// The match side's disparity Dm(x') for the left-right check (fpstereo_lr_check), two steps: the
+// RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
+// outputs) in the second. The match side writes Dm of its completed pixels into the completed
+// RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
+// UF per group; x' beyond frame_width - DMAX reads the row end then.
+module fpstereo_match_lookup #(
+  parameter ROW_SLOTS = 64,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter DMAX = 32,
+  parameter DISP_W = 5,
+  parameter OUT_ROWS = 3,
+  parameter OUT_K_W = 2,
+  parameter DISP_AW = 8,
+  parameter ROW_END = 1,
+  parameter END_AW = 4,
+  parameter X_W = 7,
+  parameter LANE_W = 3
+) (
+  input  wire                 clk,
+  input  wire                 adv,
+  /* verilator lint_off UNUSEDSIGNAL */  // only LR1's row ends need the width
+  input  wire [X_W-1:0]       frame_width,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire                 completed_we,
+  input  wire [DISP_AW-1:0]   completed_waddr,
+  input  wire [DISP_W-1:0]    completed_wdata,
+  /* verilator lint_off UNUSEDSIGNAL */  // LR2 has no row-end RAM
+  input  wire                 row_end_we,
+  input  wire [END_AW-1:0]    row_end_waddr,
+  input  wire [UF*DISP_W-1:0] row_end_wdata,
+  /* verilator lint_on UNUSEDSIGNAL */
+  // first step: the row's slot in the RAMs and x'
+  input  wire [OUT_K_W-1:0]   slot_row,
+  input  wire [X_W-1:0]       xm,
+  // second step
+  output wire [DISP_W-1:0]    dm
+);
+  generate
+    if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END != 0 && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
+      fpstereo_invalid_parameters_match_lookup_addresses_too_narrow failed ();
+    end
+  endgenerate
+  // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
+  // verilator lint_off WIDTH
+  wire [DISP_W-1:0] completed_q;
+  fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
+    .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
+    .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
+  generate
+    if (ROW_END != 0) begin : row_end
+      wire from_row_end = xm > frame_width - DMAX;
+      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
+      wire [UF*DISP_W-1:0] end_q;
+      fpstereo_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
+        .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
+        .re(adv), .raddr(slot_row * G + from_end / UF), .rdata(end_q));
+      reg              from_row_end_q;
+      reg [LANE_W-1:0] lane_q;
+      always @(posedge clk)
+        if (adv) begin
+          from_row_end_q <= from_row_end;
+          lane_q <= from_end % UF;
+        end
+      assign dm = from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
+    end else begin : completed_only
+      assign dm = completed_q;
+    end
+  endgenerate
+  // verilator lint_on WIDTH
+endmodule
+`resetall
