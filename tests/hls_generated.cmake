@@ -49,13 +49,15 @@ endforeach()
 foreach(port left right disparity)
   expect_in(${top} "#pragma HLS INTERFACE mode = m_axi port = ${port} offset = slave" "memory port of the XRT kernel")
 endforeach()
-expect_in(${top} "void ${top_name}\\(hls::stream[^\n]*\n[^\n]*\n[^\n]*\\) {\n(#pragma HLS INTERFACE[^\n]*\n)+#pragma HLS DATAFLOW"
+# The signature spans lines, the right view's port under #if FPSTEREO_RIGHT_VIEW; the interface
+# pragmas likewise.
+expect_in(${top} "void ${top_name}\\(hls::stream[^{]*\\) {\n(#pragma HLS INTERFACE[^\n]*\n|#if[^\n]*\n|#endif\n)+#pragma HLS DATAFLOW"
           "DATAFLOW in the top function")
 # The pipeline the stages emit, called by both top functions; the LR2 configuration's match side.
 foreach(call "${top_name}_pipeline\\(s_axis_left, s_axis_right, m_axis_disp," "${top_name}_pipeline\\(left_video, right_video,"
              "read_pair<C>\\(left_in, right_in," "cost_stage<C>\\(" "aggregate<C, 0>\\(costs, sums,"
              "match_costs<C>\\(match_side_base_costs," "aggregate<C, 1>\\(" "select_match<C>\\(" "select_base<C>\\(sums,"
-             "lr_check<C>\\(disparity, match_disparity," "gap_fill<C>\\(" "write_disparity<C>\\([a-z]+, out,")
+             "lr_check<C>\\(disparity, match_disparity," "gap_fill<C>\\(" "write_words<C>\\([a-z]+, out,")
   expect_in(${top} "${call}" "a kernel call of the pipeline")
 endforeach()
 set(lib ${WORK}/one/fpstereo_hls.hpp)
@@ -81,6 +83,15 @@ expect_in(${lib} "#pragma HLS UNROLL" "uf cost lanes")
 expect_in(${lib} "__has_include\\(<ap_int.h>\\)" "the real Vitis headers win when present")
 file(GLOB config ${WORK}/one/*_config.hpp)
 expect_in(${config} "static constexpr int kPathCostBits = [0-9]+;" "derived widths as constants")
+
+# The right view: switched on in the configuration header, its stream written by the pipeline.
+emit(${WORK}/right --preset C3 --width 320 --height 96 --right-view on)
+file(GLOB right_config ${WORK}/right/*_config.hpp)
+file(GLOB right_top ${WORK}/right/*_top.cpp)
+expect_in(${right_config} "#define FPSTEREO_RIGHT_VIEW 1\n" "the right view switched on")
+expect_in(${config} "#define FPSTEREO_RIGHT_VIEW 0\n" "the right view off by default")
+expect_in(${right_top} "#pragma HLS INTERFACE mode = axis port = m_axis_disp_right\n" "the right view's stream port")
+expect_in(${right_top} "write_words<C>\\(right_view, right_out, W, H\\);" "the right view's writer")
 
 # run_hls.tcl with the Vitis HLS commands stubbed: each call is logged, then checked.
 emit(${WORK}/part --preset C2 --width 320 --height 96 --part xck26-sfvc784-2LV-c --clock-mhz 250)
