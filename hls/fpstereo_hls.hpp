@@ -84,8 +84,14 @@ constexpr int cost_window() {
                                                             : C::kWindow;
 }
 
+// With adaptive P2 a cost word carries, above its uf costs, the pixel's P2 for each of the four
+// paths (penalty_stage, attach_penalties; the aggregation's base instance reads them).
 template <class C>
-using CostWord = ap_uint<C::kUf * C::kCostBits>;  // uf costs, disparity g * uf + lane
+constexpr int penalty_bits() {
+  return C::kP2Adapt != 0 ? 4 * C::kPathCostBits : 0;
+}
+template <class C>
+using CostWord = ap_uint<C::kUf * C::kCostBits + penalty_bits<C>()>;  // uf costs, disparity g * uf + lane
 template <class C>
 using PathWord = ap_uint<C::kUf * C::kPathCostBits>;
 template <class C>
@@ -134,6 +140,19 @@ read_pair_pixels:
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
     left.write(left_in.read().data);
     right.write(right_in.read().data);
+  }
+}
+
+// Adaptive P2 reads the left pixels beside the cost's windows.
+template <class C>
+void fork_pixels(hls::stream<Pixel>& in, hls::stream<Pixel>& a, hls::stream<Pixel>& b, int width, int height) {
+fork_pixels_loop:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    const Pixel p = in.read();
+    a.write(p);
+    b.write(p);
   }
 }
 
@@ -309,6 +328,57 @@ cost_groups:
       g = 0;
       if (++x == width) x = 0;
     }
+  }
+}
+
+// Section 3, adaptive P2: each pixel's P2 on the four paths, max(P1, P2 - k * |I(p) - I(p-r)| / 4),
+// from the left pixels in raster order (the row above in a line buffer); where p - r lies outside
+// the image the aggregation does not use it. P1 and P2 are clamped as the aggregation clamps them.
+template <class C>
+void penalty_stage(hls::stream<Pixel>& pixels, hls::stream<ap_uint<4 * C::kPathCostBits>>& out, int width,
+                   int height, int p1, int p2) {
+  p2 = clamp_int(p2, 0, C::kP2);
+  p1 = clamp_int(p1, 0, p2);
+  Pixel above[C::kMaxWidth] = {};  // at pixel x: row y - 1 from x on, row y before x
+  Pixel left = 0, above_left = 0;
+  int x = 0;
+penalty_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    const Pixel centre = pixels.read();
+    const Pixel up = above[x], up_right = above[x + 1 < width ? x + 1 : x];
+    const Pixel before[4] = {left, above_left, up, up_right};  // 0, 45, 90, 135 degrees
+    ap_uint<4 * C::kPathCostBits> word = 0;
+    for (int r = 0; r < 4; ++r) {
+      const int step = int(centre) > int(before[r]) ? int(centre) - int(before[r]) : int(before[r]) - int(centre);
+      const int lowered = p2 - ((C::kP2Adapt * step) >> 2);
+      word.range((r + 1) * C::kPathCostBits - 1, r * C::kPathCostBits) = lowered > p1 ? lowered : p1;
+    }
+    out.write(word);
+    above[x] = centre;
+    above_left = up;
+    left = centre;
+    if (++x == width) x = 0;
+  }
+}
+
+// The pixel's penalties above each of its G cost words.
+template <class C>
+void attach_penalties(hls::stream<CostWord<C>>& costs, hls::stream<ap_uint<4 * C::kPathCostBits>>& penalties,
+                      hls::stream<CostWord<C>>& out, int width, int height) {
+  constexpr int kCostsBits = C::kUf * C::kCostBits;
+  ap_uint<4 * C::kPathCostBits> penalty = 0;
+  int g = 0;
+attach_groups:
+  for (int i = 0; i < width * height * C::kGroups; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
+    if (g == 0) penalty = penalties.read();
+    CostWord<C> word = costs.read();
+    word.range(kCostsBits + penalty_bits<C>() - 1, kCostsBits) = penalty;
+    out.write(word);
+    if (++g == C::kGroups) g = 0;
   }
 }
 
@@ -511,6 +581,13 @@ aggregate_groups:
     if (row >= 0 && row < height && x < width) {
       const int parity = row & 1;
       const CostWord<C> cost_word = costs.read();
+      // P2 on the four paths: the base instance's adaptive penalties, or the register.
+      int path_p2[4];
+      for (int p = 0; p < 4; ++p)
+        path_p2[p] = kInstance == 0 && C::kP2Adapt != 0
+                         ? int(cost_word.range(U * C::kCostBits + (p + 1) * C::kPathCostBits - 1,
+                                               U * C::kCostBits + p * C::kPathCostBits))
+                         : p2;
       int sum[U];
       for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
 
@@ -519,7 +596,7 @@ aggregate_groups:
         int word_min = 0;
         const PathWord<C> word =
             path_word<C>(cost_word, g, x > 0, own[G], own[G - 1], own[G >= 2 ? G - 2 : 0], left_min[parity],
-                         p1, p2, sum, word_min);
+                         p1, path_p2[0], sum, word_min);
         running_min[0] = g == 0 || word_min < running_min[0] ? word_min : running_min[0];
         for (int k = G; k > 0; --k) own[k] = own[k - 1];
         own[0] = word;
@@ -535,7 +612,7 @@ aggregate_groups:
         int word_min = 0;
         const PathWord<C> word = path_word<C>(
             cost_word, g, has_pred, above[g > 0 ? at - 1 : at], above[at], above[g < G - 1 ? at + 1 : at],
-            int(minima[p][1 - parity][has_pred ? px : 0]), p1, p2, sum, word_min);
+            int(minima[p][1 - parity][has_pred ? px : 0]), p1, path_p2[p + 1], sum, word_min);
         rows[p][parity][x * G + g] = word;
         running_min[p + 1] = g == 0 || word_min < running_min[p + 1] ? word_min : running_min[p + 1];
         if (g == G - 1) minima[p][parity][x] = running_min[p + 1];

@@ -4,7 +4,9 @@
 // RAM in chain order, runs the enabled paths in K interleaved chains and delivers, per step, the
 // path sums of one group of one pixel with the pixel's position. Every register advances when
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
-// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2).
+// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2). With
+// PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
+// enabled path (fpstereo_adaptive_p2), which replaces the p2 input for that path.
 module fpstereo_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
@@ -20,6 +22,8 @@ module fpstereo_aggregator #(
   // enabled paths: bit 0 = 0 degrees, 1 = 45, 2 = 90, 3 = 135
   parameter PATHS = 15,
   parameter MATCH_SIDE = 0,
+  // 0, or the enabled paths: P2 fields of PATH_W bits above the costs of each word
+  parameter PENALTIES = 0,
   parameter LEVELS_PER_STAGE = 3,
   parameter PATH_TREE_LAT = 1,
   // rows of the output RAMs (the slot output is the row modulo OUT_ROWS)
@@ -41,7 +45,9 @@ module fpstereo_aggregator #(
   input  wire [X_W-1:0]       frame_width,
   input  wire [Y_W-1:0]       frame_height,
   input  wire [PATH_W-1:0]    p1,
+  /* verilator lint_off UNUSEDSIGNAL */  // unused where every path's P2 adapts
   input  wire [PATH_W-1:0]    p2,
+  /* verilator lint_on UNUSEDSIGNAL */
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
   // back-to-back frames (fpstereo_front_end): the row-times wrap after the frame's last row, and
@@ -49,7 +55,7 @@ module fpstereo_aggregator #(
   input  wire                 overlap,
   input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
-  input  wire [UF*COST_W-1:0] cost_q,
+  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
   output wire                 sums_active,
@@ -81,6 +87,9 @@ module fpstereo_aggregator #(
     end
     if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
       fpstereo_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+    end
+    if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
+      fpstereo_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -195,10 +204,29 @@ module fpstereo_aggregator #(
 
   // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
-  reg  [UF*COST_W-1:0] cost_read2;
+  reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
   wire [UF*COST_W-1:0] cost2;
   always @(posedge clk)
     if (adv) cost_read2 <= cost_q;
+  // Each path's P2 for the pixel in S2: the word's field (paths in order 0, 45, 90, 135), or p2.
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire [4*PATH_W-1:0] p2_of;
+  /* verilator lint_on UNUSEDSIGNAL */
+  genvar f;
+  generate
+    for (f = 0; f < 4; f = f + 1) begin : penalty
+      localparam integer FIELD = (f > 0 ? PATHS % 2 : 0) + (f > 1 ? (PATHS / 2) % 2 : 0) + (f > 2 ? (PATHS / 4) % 2 : 0);
+      if (PENALTIES != 0 && (PATHS >> f) % 2 != 0) begin : adaptive
+        assign p2_of[f*PATH_W +: PATH_W] = cost_read2[UF*COST_W + FIELD*PATH_W +: PATH_W];
+      end else begin : constant
+        assign p2_of[f*PATH_W +: PATH_W] = p2;
+      end
+    end
+  endgenerate
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire [PATH_W-1:0] p2_0 = p2_of[0 +: PATH_W], p2_45 = p2_of[PATH_W +: PATH_W];
+  wire [PATH_W-1:0] p2_90 = p2_of[2*PATH_W +: PATH_W], p2_135 = p2_of[3*PATH_W +: PATH_W];
+  /* verilator lint_on UNUSEDSIGNAL */
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
@@ -230,7 +258,7 @@ module fpstereo_aggregator #(
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
       fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
       fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
@@ -274,7 +302,7 @@ module fpstereo_aggregator #(
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
       fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
       fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
@@ -309,7 +337,7 @@ module fpstereo_aggregator #(
             above_min2 <= above_min_q;
           end
         fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-          .clk(clk), .en(adv), .p1(p1), .p2(p2), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
+          .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
         fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))

@@ -4,11 +4,13 @@
 // lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
 // COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
+// A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
 module fpstereo_cost_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
   parameter COST_W = 5,
+  parameter EXTRA_W = 0,
   // register stages of the cost lanes
   parameter LAT = 1,
   parameter COST_ROWS = 2,
@@ -28,13 +30,13 @@ module fpstereo_cost_reorder #(
   input  wire [X_W-1:0]         history_x,
   input  wire signed [YS_W-1:0] history_y,
   input  wire [COST_K_W-1:0]    history_slot,
-  input  wire [UF*COST_W-1:0]   costs,
+  input  wire [UF*COST_W+EXTRA_W-1:0] costs,
   output wire                   cost_valid,
   output wire [X_W-1:0]         cost_x,
   output wire [COST_K_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
-  output wire [UF*COST_W-1:0]   cost_q
+  output wire [UF*COST_W+EXTRA_W-1:0] cost_q
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -56,7 +58,7 @@ module fpstereo_cost_reorder #(
   /* verilator lint_off WIDTH */
   wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
   /* verilator lint_on WIDTH */
-  fpstereo_ram_sdp #(.WIDTH(UF*COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+  fpstereo_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
 endmodule

@@ -31,6 +31,7 @@ StereoConfig random_config(std::mt19937& rng) {
   c.paths = std::uniform_int_distribution<unsigned>(1, kAllPaths)(rng);
   c.p1 = std::uniform_int_distribution<int>(0, 40)(rng);
   c.p2 = c.p1 + std::uniform_int_distribution<int>(0, 200)(rng);
+  c.p2_adapt = pick(rng, {0, 0, 1, 4, 16});
   c.lr = pick(rng, {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2});
   c.lr_threshold = pick(rng, {0, 1, 2});
   c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
@@ -107,7 +108,8 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "5"},
                            {"median", "7"},
                            {"gap-interp", "on"},
-                           {"subpixel-bits", "4"}}) {
+                           {"subpixel-bits", "4"},
+                           {"p2-adapt", "6"}}) {
     StereoConfig c = base;
     set_param(c, spec.first, spec.second);
     variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);

@@ -135,10 +135,12 @@ TEST_CASE("path cost and sum widths hold the worst case and are minimal", "[widt
         const int width = 96, height = 48;
         std::vector<uint32_t> costs(size_t(width) * 16, uint32_t(w.cost_max)), sum(costs.size());
         for (int x = 0; x < width; ++x) costs[size_t(x) * 16 + 3] = 0;
-        golden::PathAggregator<uint32_t> aggregator(cfg, width, std::numeric_limits<uint32_t>::max() / 2);
+        // Adaptive P2 only lowers P2 below the configured one, so constant P2 is the worst case.
+        golden::PathAggregator<uint32_t> aggregator(cfg, width, std::numeric_limits<uint32_t>::max() / 2, 0);
+        const GrayImage flat(width, height);
         uint64_t max_path = 0, max_sum = 0;
         for (int y = 0; y < height; ++y) {
-          aggregator.push_row(y, costs.data(), sum.data());
+          aggregator.push_row(y, costs.data(), sum.data(), flat);
           max_path = std::max<uint64_t>(max_path, aggregator.max_path_cost());
           max_sum = std::max<uint64_t>(max_sum, *std::max_element(sum.begin(), sum.end()));
         }

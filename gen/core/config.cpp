@@ -169,6 +169,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"p2", "SGM penalty for a larger disparity change: p1 to 4095",
        [](StereoConfig& c, const std::string& v) { c.p2 = parse_int("p2", v); },
        [](const StereoConfig& c) { return std::to_string(c.p2); }},
+      {"p2-adapt", "adaptive P2: P2 - (k * |I(p) - I(p-r)|) / 4 along each path, at least P1; k 0 (off) to 16",
+       [](StereoConfig& c, const std::string& v) { c.p2_adapt = parse_int_or_off("p2-adapt", v); },
+       [](const StereoConfig& c) { return std::to_string(c.p2_adapt); }},
       {"lr", "left-right check: none, lr1 (reuse base costs) or lr2 (match side from scratch)",
        [](StereoConfig& c, const std::string& v) { c.lr = parse_enum("lr", v, kLrNames); },
        [](const StereoConfig& c) { return to_string(c.lr); }},
@@ -219,6 +222,7 @@ void validate(const StereoConfig& c) {
   check_range("p1", c.p1, 0, 255);
   check_range("p2", c.p2, 0, 4095);
   if (c.p1 > c.p2) reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
+  check_range("p2-adapt", c.p2_adapt, 0, 16);
   check_range("lr-threshold", c.lr_threshold, 0, 15);
   check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)

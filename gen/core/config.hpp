@@ -49,6 +49,9 @@ struct StereoConfig {
   unsigned paths = kAllPaths;
   int p1 = 7;
   int p2 = 86;
+  // Intensity-adaptive P2 (docs/semantics.md, section 3): along a path, P2 falls by p2_adapt / 4
+  // per grey level of the base image's step from the predecessor, down to P1; 0 = constant P2.
+  int p2_adapt = 0;
   LrCheck lr = LrCheck::None;
   int lr_threshold = 1;  // max |D_b - D_m| that passes the left-right check
   int uniqueness = 0;    // percent; 0 = off

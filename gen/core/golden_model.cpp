@@ -126,8 +126,9 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   const T sentinel = T(std::numeric_limits<T>::max() - 256);
 
   CostRows<T> base_costs(cfg, widths, left, right);
-  PathAggregator<T> base_paths(cfg, width, sentinel);
-  PathAggregator<T> match_paths(cfg, width, sentinel);
+  // P2 adapts to the base image's steps; LR2's match side keeps it constant (section 3).
+  PathAggregator<T> base_paths(cfg, width, sentinel, cfg.p2_adapt);
+  PathAggregator<T> match_paths(cfg, width, sentinel, 0);
   std::vector<T> cost(row_size), sum(row_size), match_cost, match_sum;
   if (cfg.lr == LrCheck::Lr2) {
     match_cost.resize(row_size);
@@ -138,7 +139,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   std::vector<int> refined(static_cast<size_t>(width));
   for (int y = 0; y < height; ++y) {
     base_costs.compute(y, cost.data());
-    base_paths.push_row(y, cost.data(), sum.data());
+    base_paths.push_row(y, cost.data(), sum.data(), left);
 
     int* row = &disparity.at(0, y);
     for (int x = 0; x < width; ++x) {
@@ -157,7 +158,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
         for (int d = 0; d < dmax; ++d)
           match_cost[size_t(xm) * size_t(dmax) + size_t(d)] =
               xm + d < width ? cost[size_t(xm + d) * size_t(dmax) + size_t(d)] : T(widths.cost_max);
-      match_paths.push_row(y, match_cost.data(), match_sum.data());
+      match_paths.push_row(y, match_cost.data(), match_sum.data(), right);
       match_disparity.resize(size_t(width));
       for (int xm = 0; xm < width; ++xm)
         match_disparity[size_t(xm)] = winner(match_sum.data() + size_t(xm) * size_t(dmax), dmax);

@@ -203,16 +203,18 @@ class CostRows {
 template <class T>
 class PathAggregator {
  public:
-  PathAggregator(const StereoConfig& cfg, int width, T sentinel)
-      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2) {
+  // adapt: the gain k of the adaptive P2 (0: constant P2), for the side whose image guides it.
+  PathAggregator(const StereoConfig& cfg, int width, T sentinel, int adapt)
+      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt) {
     for (const auto& dir : path_directions())
       if (cfg.paths & dir.mask)
         paths_.push_back(
             PathState{dir, RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)});
   }
 
-  // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S.
-  void push_row(int y, const T* cost, T* sum) {
+  // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
+  // the image whose steps lower P2 (read only when adapt is not 0).
+  void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
     const int dmax = cfg_.dmax;
     std::fill(sum, sum + size_t(width_) * size_t(dmax), T(0));
     for (auto& path : paths_) {
@@ -223,7 +225,8 @@ class PathAggregator {
         const size_t at = size_t(x) * size_t(dmax);
         path.current.minimum[size_t(x)] =
             has_pred ? step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)],
-                            path.current.costs(x), sum + at)
+                            path.current.costs(x), sum + at,
+                            penalty2(guide.at(x, y), guide.at(px, y + path.dir.dy)))
                      : start(cost + at, path.current.costs(x), sum + at);
       }
       std::swap(path.current, path.previous);
@@ -269,10 +272,15 @@ class PathAggregator {
     return minimum;
   }
 
+  // Section 3's P2 between a pixel of intensity i and its predecessor's, j.
+  int penalty2(int i, int j) const {
+    return adapt_ == 0 ? cfg_.p2 : std::max(cfg_.p1, cfg_.p2 - ((adapt_ * std::abs(i - j)) >> 2));
+  }
+
   // The recursion of section 3; adds L to S and returns min_d L.
-  T step(const T* C, const T* pred, T pred_min, T* L, T* S) const {
+  T step(const T* C, const T* pred, T pred_min, T* L, T* S, int p2) const {
     const T p1 = T(cfg_.p1);
-    const T jump = T(pred_min + cfg_.p2);
+    const T jump = T(pred_min + p2);
     T minimum = std::numeric_limits<T>::max();
     for (int d = 0; d < cfg_.dmax; ++d) {
       const T neighbour = T(std::min(pred[d - 1], pred[d + 1]) + p1);
@@ -285,7 +293,7 @@ class PathAggregator {
   }
 
   const StereoConfig& cfg_;
-  const int width_, stride_;
+  const int width_, stride_, adapt_;
   std::vector<PathState> paths_;
 };
 

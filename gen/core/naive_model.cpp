@@ -163,9 +163,17 @@ Volume match_costs(const StereoConfig& cfg, const Side& base, const Side& match,
   return c;
 }
 
+// Section 3's large-jump penalty from predecessor q to p: P2, or with adaptive P2 and a guide
+// image, P2 less k/4 per grey level between I(p) and I(q), never below P1.
+int64_t jump_penalty(const StereoConfig& cfg, const GrayImage* guide, int x, int y, int qx, int qy) {
+  if (guide == nullptr || cfg.p2_adapt == 0) return cfg.p2;
+  const int64_t step = std::llabs(int64_t(guide->at(x, y)) - int64_t(guide->at(qx, qy)));
+  return std::max<int64_t>(cfg.p1, cfg.p2 - cfg.p2_adapt * step / 4);
+}
+
 // One path's L_r volume by explicit recursion (section 3). Raster order suffices because
 // every predecessor (x-1,y), (x-1,y-1), (x,y-1), (x+1,y-1) is earlier in raster order.
-Volume path_costs(const StereoConfig& cfg, const Volume& c, int dx, int dy) {
+Volume path_costs(const StereoConfig& cfg, const Volume& c, const GrayImage* guide, int dx, int dy) {
   const int w = c.width, h = c.height, D = c.depth;
   Volume l(w, h, D);
   for (int y = 0; y < h; ++y) {
@@ -182,7 +190,7 @@ Volume path_costs(const StereoConfig& cfg, const Volume& c, int dx, int dy) {
         int64_t best = l.at(px, py, d);
         if (d >= 1) best = std::min(best, l.at(px, py, d - 1) + int64_t(cfg.p1));
         if (d <= D - 2) best = std::min(best, l.at(px, py, d + 1) + int64_t(cfg.p1));
-        best = std::min(best, m + int64_t(cfg.p2));
+        best = std::min(best, m + jump_penalty(cfg, guide, x, y, px, py));
         l.at(x, y, d) = c.at(x, y, d) + best - m;
       }
     }
@@ -190,12 +198,12 @@ Volume path_costs(const StereoConfig& cfg, const Volume& c, int dx, int dy) {
   return l;
 }
 
-// S = sum of L_r over the enabled paths.
-Volume aggregate(const StereoConfig& cfg, const Volume& c) {
+// S = sum of L_r over the enabled paths; guide (or none) is the image adaptive P2 follows.
+Volume aggregate(const StereoConfig& cfg, const Volume& c, const GrayImage* guide) {
   Volume s(c.width, c.height, c.depth);
   for (const PathDirection& p : path_directions()) {
     if ((cfg.paths & p.mask) == 0) continue;
-    const Volume l = path_costs(cfg, c, p.dx, p.dy);
+    const Volume l = path_costs(cfg, c, guide, p.dx, p.dy);
     for (size_t i = 0; i < s.v.size(); ++i) s.v[i] += l.v[i];
   }
   return s;
@@ -250,9 +258,9 @@ DispMap lr1_match_disparities(const Volume& sum) {
   return dm;
 }
 
-// LR2: match-side cost with the roles swapped, its own aggregation, plain WTA.
+// LR2: match-side cost with the roles swapped, its own aggregation with constant P2, plain WTA.
 DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
-  const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax));
+  const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax), nullptr);
   DispMap dm(msum.width, msum.height);
   for (int y = 0; y < msum.height; ++y)
     for (int xm = 0; xm < msum.width; ++xm) dm.at(xm, y) = wta(msum, xm, y);
@@ -357,7 +365,7 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   const Side match = make_side(right, cfg.window);
 
   // Cost, aggregation, winner-take-all.
-  const Volume sum = aggregate(cfg, base_costs(cfg, base, match, cmax));
+  const Volume sum = aggregate(cfg, base_costs(cfg, base, match, cmax), &left);
   DispMap disp(W, H);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) disp.at(x, y) = wta(sum, x, y);

@@ -135,6 +135,7 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << ";  // bit 0: 0 degrees, 1: 45, 2: 90, 3: 135\n"
      << "  static constexpr int kP1 = " << cfg.p1 << ";  // register defaults\n"
      << "  static constexpr int kP2 = " << cfg.p2 << ";  // also the largest P2 the widths hold\n"
+     << "  static constexpr int kP2Adapt = " << cfg.p2_adapt << ";  // adaptive P2's gain k, 0: constant P2\n"
      << "  static constexpr fpstereo_hls::Lr kLr = fpstereo_hls::Lr::" << lr_enum(cfg.lr) << ";\n"
      << "  static constexpr int kLrThreshold = " << cfg.lr_threshold << ";\n"
      << "  static constexpr int kUniqueness = " << cfg.uniqueness << ";  // 0: no uniqueness hardware\n"

@@ -91,6 +91,11 @@ int reorder_word_bits(const RtlDesign& d) {
   return d.widths.output_word + (carries_whole(d) ? d.widths.disparity : 0);
 }
 
+// With adaptive P2 the cost words carry, beside the costs, each enabled path's P2 for the pixel
+// (fpstereo_adaptive_p2), through the cost reorder RAM to the base side's path lanes.
+int penalty_bits(const RtlDesign& d) { return d.cfg.p2_adapt != 0 ? d.cfg.path_count() * d.widths.path_cost : 0; }
+int cost_word_bits(const RtlDesign& d) { return d.cfg.uf * d.widths.cost + penalty_bits(d); }
+
 // A pixel stream's wires (words of word_bits, the output word's by default); the stages after it
 // read what they need of them.
 std::string stream_wires(const RtlDesign& d, const PixelStream& s, int word_bits = 0) {
@@ -176,10 +181,14 @@ class FramingStage : public Stage {
   }
 
   // ---- HLS: the pixel pairs of the two video streams.
-  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     s = {"left", "right"};
-    return "\n  // Framing: the left and right pixels.\n" + hls_streams("Pixel", {s.base, s.match}) +
-           "  read_pair<C>(left_in, right_in, left, right, W, H);\n";
+    std::string text = "\n  // Framing: the left and right pixels.\n" + hls_streams("Pixel", {s.base, s.match});
+    if (d.cfg.p2_adapt == 0) return text + "  read_pair<C>(left_in, right_in, left, right, W, H);\n";
+    // Adaptive P2's penalties read the left pixels too (the cost stage).
+    return text + hls_streams("Pixel", {"left_read", "guide_pixels"}) +
+           "  read_pair<C>(left_in, right_in, left_read, right, W, H);\n"
+           "  fork_pixels<C>(left_read, left, guide_pixels, W, H);\n";
   }
 };
 
@@ -305,7 +314,7 @@ class CostStage : public Stage {
  public:
   explicit CostStage(const StereoConfig& c) : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
   std::string title() const override { return "cost"; }
-  std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf"}; }
+  std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt"}; }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean); the lanes take their register
   // stages.
@@ -320,7 +329,12 @@ class CostStage : public Stage {
     return {{"core.cost.base_codes.line_buffer.mem", d.row_slots, bits},
             {"core.cost.match_codes.line_buffer.mem", d.row_slots, bits}};
   }
-  std::vector<std::string> modules(const RtlDesign&) const override {
+  std::vector<std::string> modules(const RtlDesign& d) const override {
+    std::vector<std::string> m = cost_modules();
+    if (d.cfg.p2_adapt != 0) m.insert(m.end(), {"fpstereo_adaptive_p2", "fpstereo_delay"});
+    return m;
+  }
+  std::vector<std::string> cost_modules() const {
     switch (cost_) {
       case CostFunction::Census:
       case CostFunction::Rank:
@@ -387,18 +401,45 @@ class CostStage : public Stage {
     }
     parameters.insert(parameters.end(), common.begin(), common.end());
     ports.insert(ports.end(), position.begin(), position.end());
-    return "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n" +
-           wire(d.x_bits, "history_x") + wire(d.signed_y_bits, "history_y", true) +
-           wire(d.cost_row_bits, "history_slot") + wire(c.uf * w.cost, "costs") +
-           instance(module, "cost", parameters, ports);
+    std::string v = "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n" +
+                    wire(d.x_bits, "history_x") + wire(d.signed_y_bits, "history_y", true) +
+                    wire(d.cost_row_bits, "history_slot") + wire(c.uf * w.cost, "costs") +
+                    instance(module, "cost", parameters, ports);
+    if (c.p2_adapt == 0) return v;
+    return v + "  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n" +
+           wire(penalty_bits(d), "cost_penalties") +
+           instance("fpstereo_adaptive_p2", "adaptive_p2",
+                    {{"N", num(c.window)},
+                     {"PATHS", num(c.paths)},
+                     {"NP", num(c.path_count())},
+                     {"GAIN", num(c.p2_adapt)},
+                     {"PATH_W", num(w.path_cost)},
+                     {"WAIT_SLOTS", num(cost_ == CostFunction::Zsad ? 2 : 0)},
+                     {"LAT", num(d.cost_latency)}},
+                    {{"clk", "clk"},
+                     {"adv", "adv"},
+                     {"shift", "shift"},
+                     {"window", "window_left"},
+                     {"p1", "p1"},
+                     {"p2", "p2"},
+                     {"penalties", "cost_penalties"}});
   }
 
   // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.
-  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     const HlsStreams in = s;
     s = {"costs", "match_side_base_costs"};
-    return "\n  // Cost.\n" + hls_streams("CostWord<C>", {s.base, s.match}, "kDepth") +
-           fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
+    std::string text = "\n  // Cost.\n" + hls_streams("CostWord<C>", {s.base, s.match}, "kDepth");
+    if (d.cfg.p2_adapt == 0)
+      return text + fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
+    // Adaptive P2: the pixels' penalties join their cost words. The penalties wait for the costs,
+    // which the windows delay by rows: their FIFO holds those rows and one more.
+    const int64_t waiting = (WindowStage(d.cfg).hls_fill_rows(d) + 1) * int64_t(d.cfg.width);
+    return text + hls_streams("CostWord<C>", {"plain_costs"}, "kDepth") +
+           hls_streams("ap_uint<4 * C::kPathCostBits>", {"penalties"}, num(waiting)) +
+           fmt::format("  cost_stage<C>({}, {}, plain_costs, {}, W, H);\n", in.base, in.match, s.match) +
+           "  penalty_stage<C>(guide_pixels, penalties, W, H, p1, p2);\n" +
+           fmt::format("  attach_penalties<C>(plain_costs, penalties, {}, W, H);\n", s.base);
   }
 
  private:
@@ -412,7 +453,7 @@ class CostReorderStage : public Stage {
   std::vector<std::string> knobs() const override { return {"uf"}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 1}; }  // written, then read
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    return {{"core.cost_reorder.cost_ram.mem", d.cost_depth(), int64_t(d.cfg.uf) * d.widths.cost}};
+    return {{"core.cost_reorder.cost_ram.mem", d.cost_depth(), cost_word_bits(d)}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_cost_reorder", "fpstereo_delay", "fpstereo_ram_sdp"};
@@ -420,27 +461,29 @@ class CostReorderStage : public Stage {
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const std::string cost_tag = wire(1, "cost_valid") + wire(d.x_bits, "cost_x") +
                                  wire(d.cost_row_bits, "cost_row_slot") + wire(d.group_bits, "cost_group");
+    Values parameters = {{"ROW_SLOTS", num(d.row_slots)},
+                         {"G", num(d.groups)},
+                         {"UF", num(d.cfg.uf)},
+                         {"COST_W", num(d.widths.cost)},
+                         {"LAT", num(d.cost_latency)},
+                         {"COST_ROWS", num(d.cost_rows)},
+                         {"COST_K_W", num(d.cost_row_bits)},
+                         {"COST_AW", num(d.cost_addr_bits)},
+                         {"X_W", num(d.x_bits)},
+                         {"Y_W", num(d.y_bits)},
+                         {"YS_W", num(d.signed_y_bits)},
+                         {"G_W", num(d.group_bits)}};
+    const bool penalties = penalty_bits(d) != 0;
+    if (penalties) parameters.push_back({"EXTRA_W", num(penalty_bits(d))});
     return "\n  // Cost reorder RAM.\n" +
            unused_unless(d.cfg.lr == LrCheck::Lr2, cost_tag, "LR2's lane banks take the cost words' positions") +
-           wire(d.cost_addr_bits, "cost_raddr") + wire(d.cfg.uf * d.widths.cost, "cost_q") +
-           instance("fpstereo_cost_reorder", "cost_reorder",
-                    {{"ROW_SLOTS", num(d.row_slots)},
-                     {"G", num(d.groups)},
-                     {"UF", num(d.cfg.uf)},
-                     {"COST_W", num(d.widths.cost)},
-                     {"LAT", num(d.cost_latency)},
-                     {"COST_ROWS", num(d.cost_rows)},
-                     {"COST_K_W", num(d.cost_row_bits)},
-                     {"COST_AW", num(d.cost_addr_bits)},
-                     {"X_W", num(d.x_bits)},
-                     {"Y_W", num(d.y_bits)},
-                     {"YS_W", num(d.signed_y_bits)},
-                     {"G_W", num(d.group_bits)}},
+           wire(d.cost_addr_bits, "cost_raddr") + wire(cost_word_bits(d), "cost_q") +
+           instance("fpstereo_cost_reorder", "cost_reorder", parameters,
                     frame_ports() + Values{{"group", "group"},
                      {"history_x", "history_x"},
                      {"history_y", "history_y"},
                      {"history_slot", "history_slot"},
-                     {"costs", "costs"},
+                     {"costs", penalties ? "{cost_penalties, costs}" : "costs"},
                      {"cost_valid", "cost_valid"},
                      {"cost_x", "cost_x"},
                      {"cost_row_slot", "cost_row_slot"},
@@ -525,7 +568,9 @@ class AggregationStage : public Stage {
                     wire(d.cfg.uf * d.widths.aggregated, "agg_sums") + wire(1, "agg_active") + wire(d.x_bits, "agg_x") +
                     wire(d.group_bits, "agg_group") + wire(d.out_row_bits, "agg_slot");
     v += unused_unless(d.cfg.lr == LrCheck::Lr1, wire(d.chain_bits, "agg_chain"), "only LR1 follows the chains");
-    return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + Values{{"MATCH_SIDE", "0"}},
+    Values side = {{"MATCH_SIDE", "0"}};
+    if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.cfg.path_count())});
+    return v + instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + side,
                         frame_ports() + Values{{"p1", "p1"},
                          {"p2", "p2"},
                          {"agg_on", "agg_on"},
@@ -1057,11 +1102,24 @@ class RightViewStage : public Stage {
   Latency latency(const RtlDesign&) const override { return {}; }
   std::vector<std::string> modules(const RtlDesign&) const override { return {}; }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
-    // With gap interpolation the stream runs a row past the frame (the gap fill's lookahead).
-    const std::string event =
-        d.cfg.gap_interpolation ? fmt::format("{} && {} < frame_height", stream.event, stream.y) : stream.event;
-    return "\n  // Right view: Dm(x) registered, pushed to its own output in the next step.\n" +
-           output_register("view", stream, event, "right_dm", d.widths.disparity);
+    // With a median or gap interpolation the stream runs rows past the frame (their lookahead):
+    // rows below the frame, or once the rows wrap (back-to-back frames) the next frame's rows,
+    // which are real only if that frame follows on (continuing, known since the input passed
+    // the frame's end, rows earlier).
+    const std::string view = "\n  // Right view: Dm(x) registered, pushed to its own output in the next step.\n";
+    if (d.cfg.median == 0 && !d.cfg.gap_interpolation)
+      return view + output_register("view", stream, stream.event, "right_dm", d.widths.disparity);
+    return view +
+           fmt::format(
+               "  reg view_beyond;  // past the frame's last pixel, and no frame follows\n"
+               "  always @(posedge clk)\n"
+               "    if (restart) view_beyond <= 1'b0;\n"
+               "    else if (adv && {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1)\n"
+               "      view_beyond <= !continuing;\n",
+               stream.event, stream.x, stream.y) +
+           output_register("view", stream,
+                           fmt::format("{} && {} < frame_height && !view_beyond", stream.event, stream.y),
+                           "right_dm", d.widths.disparity);
   }
   // ---- HLS: lr_check writes the right view's words.
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
