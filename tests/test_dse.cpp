@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <opencv2/imgcodecs.hpp>
 
@@ -180,6 +181,12 @@ TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
   t = {};
   t.resolution = {"1242*374"};
   CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  t = {};
+  t.p2_adapt = {"17"};
+  CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  t = {};
+  t.subpixel_bits = {"6"};
+  CHECK_THROWS_AS(dse::parse_space(t), InputError);
   CHECK(dse::parse_shard("2/8") == std::make_pair(2, 8));
   for (const char* bad : {"0/2", "3/2", "2", "a/b", "1/0", "1/2x"})
     CHECK_THROWS_AS(dse::parse_shard(bad), InputError);
@@ -187,6 +194,33 @@ TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
   CHECK_THROWS_AS(dse::parse_percent("--max-lut", "lots"), InputError);
   CHECK_THROWS_AS(find_part("xc9000"), ConfigError);
   CHECK(find_part("xczu9eg").lut == 274080);
+}
+
+TEST_CASE("the adaptive P2 and sub-pixel axes reach every configuration", "[dse]") {
+  dse::SpaceText t;
+  t.cost = {"census"};
+  t.window = {"5"};
+  t.dmax = {"64"};
+  t.uf = {"16"};
+  t.resolution = {"320x96"};
+  t.refine = {"none"};
+  t.median = {"5"};
+  t.p2_adapt = {"off", "4"};
+  t.subpixel_bits = {"0", "3"};
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  CHECK(skipped.empty());
+  std::set<std::pair<int, int>> seen;
+  for (const auto& c : configs) seen.insert({c.p2_adapt, c.subpixel_bits});
+  CHECK(seen == std::set<std::pair<int, int>>{{0, 0}, {0, 3}, {4, 0}, {4, 3}});
+  CHECK(configs.size() == 4);
+  // Each is a distinct accuracy key, and the flags name both axes.
+  std::set<std::string> keys;
+  for (const auto& c : configs) keys.insert(dse::accuracy_key(c));
+  CHECK(keys.size() == 4);
+  const std::string flags = dse::config_flags(configs.back());
+  CHECK(flags.find("--p2-adapt 4 ") != std::string::npos);
+  CHECK(flags.find("--subpixel-bits 3") != std::string::npos);
 }
 
 TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, resume from the cache",
@@ -270,6 +304,8 @@ TEST_CASE("a corrupt cache record is an error, not a silent recomputation", "[ds
 TEST_CASE("every CSV column reads back what was written", "[dse]") {
   dse::Row row;
   row.cfg = preset("C3");
+  row.cfg.p2_adapt = 4;
+  row.cfg.subpixel_bits = 2;
   row.acc = {12.3456, 10.5, 4.25, 80.125, 3};
   row.model.lut = 12345;
   row.model.ff = 23456;

@@ -188,6 +188,14 @@ Space parse_space(const SpaceText& t) {
     s.median.push_back(v == "off" ? 0 : axis_value<int>("median", "median", v, [](const StereoConfig& c) {
       return c.median;
     }));
+  for (const auto& v : t.p2_adapt)
+    s.p2_adapt.push_back(v == "off" ? 0 : axis_value<int>("p2-adapt", "p2-adapt", v, [](const StereoConfig& c) {
+      return c.p2_adapt;
+    }));
+  for (const auto& v : t.subpixel_bits)
+    s.subpixel_bits.push_back(axis_value<int>("subpixel-bits", "subpixel-bits", v, [](const StereoConfig& c) {
+      return c.subpixel_bits;
+    }));
   require_values("cost", s.cost);
   require_values("window", s.window);
   require_values("dmax", s.dmax);
@@ -195,6 +203,8 @@ Space parse_space(const SpaceText& t) {
   require_values("resolution", s.resolution);
   require_values("refine", s.refine);
   require_values("median", s.median);
+  require_values("p2-adapt", s.p2_adapt);
+  require_values("subpixel-bits", s.subpixel_bits);
   return s;
 }
 
@@ -205,24 +215,28 @@ std::vector<StereoConfig> enumerate(const Space& s, const StereoConfig& base, st
       for (int dmax : s.dmax)
         for (LrCheck lr : s.refine)
           for (int median : s.median)
-            for (const auto& [w, h] : s.resolution)
-              for (int uf : s.uf) {
-                StereoConfig c = base;
-                c.cost = cost;
-                c.window = window;
-                c.dmax = dmax;
-                c.lr = lr;
-                c.median = median;
-                c.width = w;
-                c.height = h;
-                c.uf = uf;
-                try {
-                  validate(c);
-                  out.push_back(c);
-                } catch (const ConfigError& e) {
-                  skipped.push_back({c, e.what()});
-                }
-              }
+            for (int adapt : s.p2_adapt)
+              for (int subpixel : s.subpixel_bits)
+                for (const auto& [w, h] : s.resolution)
+                  for (int uf : s.uf) {
+                    StereoConfig c = base;
+                    c.cost = cost;
+                    c.window = window;
+                    c.dmax = dmax;
+                    c.lr = lr;
+                    c.median = median;
+                    c.p2_adapt = adapt;
+                    c.subpixel_bits = subpixel;
+                    c.width = w;
+                    c.height = h;
+                    c.uf = uf;
+                    try {
+                      validate(c);
+                      out.push_back(c);
+                    } catch (const ConfigError& e) {
+                      skipped.push_back({c, e.what()});
+                    }
+                  }
   return out;
 }
 
@@ -468,8 +482,8 @@ std::string config_flags(const StereoConfig& cfg) {
   for (const auto& spec : param_specs()) {
     const std::string v = spec.get(cfg);
     // width, height and the swept axes always appear, so the command reads on its own.
-    static const std::vector<std::string> always = {"width", "height", "cost", "window",
-                                                    "dmax",  "uf",     "lr",   "median"};
+    static const std::vector<std::string> always = {"width", "height", "cost",   "window",   "dmax",
+                                                    "uf",    "lr",     "median", "p2-adapt", "subpixel-bits"};
     const bool shown = std::find(always.begin(), always.end(), spec.name) != always.end();
     if (shown || v != spec.get(defaults))
       out += fmt::format("{}--{} {}", out.empty() ? "" : " ", spec.name, v);

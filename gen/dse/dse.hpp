@@ -27,6 +27,8 @@ struct SpaceText {
   std::vector<std::string> resolution{"1242x374", "900x260"};
   std::vector<std::string> refine{"none", "lr1", "lr2"};
   std::vector<std::string> median{"off", "5"};
+  std::vector<std::string> p2_adapt{"0"};
+  std::vector<std::string> subpixel_bits{"0"};
 };
 
 struct Space {
@@ -34,7 +36,7 @@ struct Space {
   std::vector<int> window, dmax, uf;
   std::vector<std::pair<int, int>> resolution;
   std::vector<LrCheck> refine;
-  std::vector<int> median;
+  std::vector<int> median, p2_adapt, subpixel_bits;
 };
 
 // Throws InputError naming the axis and value (e.g. "--window '4': ...").

@@ -116,6 +116,8 @@ const std::vector<CsvColumn>& csv_columns() {
       {"height", [](const Row& r) { return std::to_string(r.cfg.height); }, nullptr},
       {"refine", [](const Row& r) { return to_string(r.cfg.lr); }, nullptr},
       {"median", [](const Row& r) { return std::to_string(r.cfg.median); }, nullptr},
+      {"p2_adapt", [](const Row& r) { return std::to_string(r.cfg.p2_adapt); }, nullptr},
+      {"subpixel_bits", [](const Row& r) { return std::to_string(r.cfg.subpixel_bits); }, nullptr},
       decimal("d1_all", 4, [](auto& r) { return &r.acc.d1_all; }),
       decimal("d1_noc", 4, [](auto& r) { return &r.acc.d1_noc; }),
       decimal("d1_valid", 4, [](auto& r) { return &r.acc.d1_valid; }),
@@ -315,7 +317,7 @@ std::string table(const std::vector<Row>& rows, bool with_command) {
   std::string out =
       "<table>\n<tr><th>#</th><th>cost</th><th>win</th><th>dmax</th><th>uf</th><th>resolution</"
       "th><th>refine</th>"
-      "<th>median</th><th>D1 all %</th><th>D1 valid %</th><th>density %</th><th>LUT %</th><th>FF %</th>"
+      "<th>median</th><th>P2 adapt</th><th>sub-pixel bits</th><th>D1 all %</th><th>D1 valid %</th><th>density %</th><th>LUT %</th><th>FF %</th>"
       "<th>BRAM36 %</th><th>DSP</th><th>fps</th><th>Yosys LUT / BRAM36</th>" +
       std::string(with_command ? "<th>command</th>" : "") + "</tr>\n";
   int i = 0;
@@ -325,11 +327,12 @@ std::string table(const std::vector<Row>& rows, bool with_command) {
                                   : std::string("-");
     out += fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}x{}</td><td>{}</td><td>{}</td>"
-        "<td>{:.2f}</td><td>{:.2f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</"
+        "<td>{}</td><td>{}</td><td>{:.2f}</td><td>{:.2f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</td><td>{:.1f}</"
         "td><td>{:.0f}</td>"
         "<td>{:.1f}</td><td>{}</td>{}</tr>\n",
         ++i, to_string(r.cfg.cost), r.cfg.window, r.cfg.dmax, r.cfg.uf, r.cfg.width, r.cfg.height,
-        to_string(r.cfg.lr), r.cfg.median ? std::to_string(r.cfg.median) : std::string("off"), r.acc.d1_all,
+        to_string(r.cfg.lr), r.cfg.median ? std::to_string(r.cfg.median) : std::string("off"),
+        r.cfg.p2_adapt ? std::to_string(r.cfg.p2_adapt) : std::string("off"), r.cfg.subpixel_bits, r.acc.d1_all,
         r.acc.d1_valid, r.acc.density, r.lut_pct, r.ff_pct, r.bram_pct, r.model.dsp, r.fps, yosys,
         with_command ? "<td class=\"command\"><code>" + escape(rtl_command(r.cfg)) + "</code></td>" : "");
   }

@@ -25,8 +25,8 @@ constexpr const char* kTool = "fpstereo";
 
 // The parameters the axes set; every other one is a fixed flag of the base configuration.
 bool is_axis_param(const std::string& name) {
-  static const std::vector<std::string> axes = {"cost",  "window", "dmax", "uf",
-                                                "width", "height", "lr",   "median"};
+  static const std::vector<std::string> axes = {"cost", "window", "dmax",   "uf",       "width",
+                                                "height", "lr",   "median", "p2-adapt", "subpixel-bits"};
   return std::find(axes.begin(), axes.end(), name) != axes.end();
 }
 
@@ -92,7 +92,9 @@ std::string sweep_command(const DseOptions& o) {
                                                                             {"uf", &t.uf},
                                                                             {"resolution", &t.resolution},
                                                                             {"refine", &t.refine},
-                                                                            {"median", &t.median}})
+                                                                            {"median", &t.median},
+                                                                            {"p2-adapt", &t.p2_adapt},
+                                                                            {"subpixel-bits", &t.subpixel_bits}})
     s += fmt::format(" --{} {}", flag, join(*values, ","));
   if (o.preset) s += " --preset " + *o.preset;
   if (!o.config_file.empty()) s += " --config " + o.config_file;
@@ -304,6 +306,8 @@ void register_dse_command(CLI::App& app, int& exit_code) {
   axis("--resolution", o->space.resolution, "largest image sizes, WIDTHxHEIGHT");
   axis("--refine", o->space.refine, "left-right check: none, lr1, lr2");
   axis("--median", o->space.median, "median filter: off or a side (3, 5, 7)");
+  axis("--p2-adapt", o->space.p2_adapt, "adaptive P2's gain: off (0) or 1 .. 16");
+  axis("--subpixel-bits", o->space.subpixel_bits, "fraction bits of the output disparity: 0 .. 5");
   const std::string base = "Fixed parameters (every configuration)";
   sub->add_option_function<std::string>(
          "--preset", [o](const std::string& v) { o->preset = v; }, "start from a named configuration")
@@ -325,11 +329,9 @@ void register_dse_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--progress", o->progress, "progress bar even when stderr is not a terminal");
   add_output_options(*sub, o->out);
   sub->footer(
-      "Accuracy depends on cost, window, dmax, refinement and median only; each such configuration runs once "
-      "on "
+      "Accuracy depends on every parameter but the resolution and uf; each such configuration runs once on "
       "the dataset at its own image size and is cached, so an interrupted sweep resumes. Resolution and uf "
-      "set "
-      "resources and frame rate.");
+      "set resources and frame rate.");
 
   CLI::App* merge =
       sub->add_subcommand("merge", "Combine the CSVs of a sharded sweep into one CSV and report");
