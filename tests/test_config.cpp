@@ -76,6 +76,19 @@ TEST_CASE("presets follow the paper's table", "[config]") {
   CHECK_THROWS_WITH(preset("C9"), Catch::Contains("preset = 'C9'") && Catch::Contains("C4"));
 }
 
+TEST_CASE("the presets beyond the paper are C2, C3 and C4 with their four additions", "[config]") {
+  for (const auto& [name, paper] : {std::pair{"A2", "C2"}, {"A3", "C3"}, {"A4", "C4"}}) {
+    INFO(name);
+    StereoConfig expected = preset(paper);
+    expected.window = 9;
+    expected.p2_adapt = 4;
+    expected.median = 7;
+    expected.subpixel_bits = 4;
+    CHECK(preset(name) == expected);
+    CHECK(rejection(preset(name)).empty());
+  }
+}
+
 TEST_CASE("parameters parse from text", "[config]") {
   StereoConfig c;
   set_param(c, "cost", "SAD");

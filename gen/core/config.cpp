@@ -232,7 +232,7 @@ void validate(const StereoConfig& c) {
     reject("right-view", "on", "needs a left-right check (lr = lr1 or lr2), whose match side it streams");
 }
 
-std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4"}; }
+std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4", "A2", "A3", "A4"}; }
 
 StereoConfig preset(const std::string& name) {
   // All presets: 4 paths, P1 = 7, P2 = 86, median 5, 1242x375 (the defaults), as in the paper.
@@ -256,6 +256,14 @@ StereoConfig preset(const std::string& name) {
   } else if (name == "C4") {
     census(7, 128, 32);
     c.lr = LrCheck::Lr2;
+  } else if (name == "A2" || name == "A3" || name == "A4") {
+    // Beyond the paper: C2, C3 and C4 with a 9 x 9 census, adaptive P2, a 7 x 7 median and four
+    // fraction bits (README, "Accuracy beyond the paper").
+    census(9, 128, 32);
+    c.lr = name == "A2" ? LrCheck::None : name == "A3" ? LrCheck::Lr1 : LrCheck::Lr2;
+    c.p2_adapt = 4;
+    c.median = 7;
+    c.subpixel_bits = 4;
   } else {
     std::string allowed = "expected one of";
     for (const auto& n : preset_names()) allowed += " " + n;

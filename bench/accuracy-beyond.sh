@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Accuracy of the options beyond the paper against OpenCV's StereoSGBM (MODE_SGBM and MODE_HH4),
+# per dataset of a stereo data folder, for the two KITTI sets pooled and for every pair pooled,
+# as the README's table "Accuracy beyond the paper" (markdown on stdout):
+#   bench/accuracy-beyond.sh [--build-dir B] [DATA]      (DATA: ../shared/data/stereo)
+# Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
+# after KITTI background interpolation of invalid pixels.
+set -euo pipefail
+fail() { echo "accuracy-beyond: $*" >&2; exit 2; }
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build
+data=$root/../shared/data/stereo
+while [ $# -gt 0 ]; do
+  case $1 in
+    --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
+                 shift 2 ;;
+    -*) fail "unknown option '$1'" ;;
+    *) data=$1; shift ;;
+  esac
+done
+[ -x "$build/fpstereo" ] || fail "$build/fpstereo not found: build the project first (scripts/build.sh)"
+[ -d "$data" ] || fail "no data folder '$data'"
+data=$(cd "$data" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# A group of datasets pooled: one pairs.csv naming the files by absolute path.
+pool() {
+  local name=$1; shift
+  mkdir -p "$work/$name"
+  echo "pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px" > "$work/$name/pairs.csv"
+  for set in "$@"; do
+    tail -n +2 "$data/$set/pairs.csv" | awk -F, -v d="$data/$set" 'BEGIN { OFS = "," }
+      NF > 1 { for (i = 2; i <= 6; i++) if ($i != "") $i = d "/" $i; print }' >> "$work/$name/pairs.csv"
+  done
+}
+
+sets=()
+for d in "$data"/*/; do [ -f "$d/pairs.csv" ] && sets+=("$(basename "$d")"); done
+[ ${#sets[@]} -gt 0 ] || fail "no dataset with pairs.csv under '$data'"
+groups=()
+for s in "${sets[@]}"; do groups+=("$data/$s"); done
+kitti=()
+for s in "${sets[@]}"; do case $s in kitti*) kitti+=("$s") ;; esac; done
+if [ ${#kitti[@]} -gt 1 ]; then pool kitti_pooled "${kitti[@]}"; groups+=("$work/kitti_pooled"); fi
+pool all_pooled "${sets[@]}"
+groups+=("$work/all_pooled")
+
+methods=("C2" "C2 --p2-adapt 4" "C2 --subpixel-bits 4" "C4" "A2" "A3" "A4")
+
+# The overall line of the first (ours) or second (the baseline) method: the filled columns.
+row() {  # dataset label, method label, eval output, which line (1 ours, 2 baseline)
+  local pairs cells
+  pairs=$(printf '%s\n' "$3" | sed -n 's/^overall (\([0-9]*\) pair.*/\1/p')
+  cells=$(printf '%s\n' "$3" | grep -A"$4" '^overall' | tail -1 |
+          awk '{ printf "%s | %s | %s | %s | %s | %s | %s", $10, $11, $13, $15, $3, $8, $12 }')
+  echo "| $1 ($pairs) | $2 | $cells |"
+}
+
+echo "| dataset (pairs) | method | D1-noc, filled | D1, filled | bad-2, filled | MAE px, filled | D1, valid only | density % | bad-1, filled |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for g in "${groups[@]}"; do
+  label=$(basename "$g")
+  for mode in sgbm hh4; do
+    out=$("$build/fpstereo" eval "$g" --preset C2 --baseline opencv-sgbm --sgbm-mode "$mode")
+    row "$label" "OpenCV $mode" "$out" 2
+  done
+  for m in "${methods[@]}"; do
+    # shellcheck disable=SC2086
+    out=$("$build/fpstereo" eval "$g" --preset $m)
+    row "$label" "$m" "$out" 1
+  done
+done
