@@ -194,6 +194,19 @@ TEST_CASE("write_pgm: binary P5 header, raster bytes, read back by load_gray", "
   CHECK(load_gray(dir.file("g.pgm"), "left image") == image);
 }
 
+TEST_CASE("encode_gray_png: one 8-bit gray pixel per value, raster order", "[io]") {
+  DisparityImage values(5, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x) values.at(x, y) = uint16_t(x * 60 + y);
+  const std::vector<uchar> bytes = encode_gray_png(values);
+  const cv::Mat back = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  REQUIRE(back.type() == CV_8UC1);
+  REQUIRE(back.cols == 5);
+  REQUIRE(back.rows == 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 5; ++x) CHECK(back.at<uchar>(y, x) == x * 60 + y);
+}
+
 TEST_CASE("write_colour_png: colour map, black invalid pixels, legend on the right", "[io]") {
   TempDir dir;
   cv::Mat1f disp(200, 300, 20.0f);

@@ -68,13 +68,18 @@ TEST_CASE("golden model equals the naive model on random configurations", "[mode
     const StereoConfig cfg = random_config(rng);
     validate(cfg);
     const auto [left, right] = random_pair(cfg, rng);
-    // With a left-right check, the right views (the match side's disparities) as well.
+    // The confidences, and with a left-right check the right views (the match side's
+    // disparities) as well.
     const bool views = cfg.lr != LrCheck::None;
-    DisparityImage naive_right, golden_right;
-    const Comparison cmp = compare_words(run_naive(cfg, left, right, views ? &naive_right : nullptr),
-                                         run_golden(cfg, left, right, views ? &golden_right : nullptr));
+    DisparityImage naive_right, golden_right, naive_confidence, golden_confidence;
+    const Comparison cmp = compare_words(
+        run_naive(cfg, left, right, SideViews{views ? &naive_right : nullptr, &naive_confidence}),
+        run_golden(cfg, left, right, SideViews{views ? &golden_right : nullptr, &golden_confidence}));
     INFO("case " << i << "\n" << describe(cfg) << cmp.report());
     REQUIRE(cmp.equal());
+    const Comparison confidence_cmp = compare_words(naive_confidence, golden_confidence);
+    INFO("confidence: " << confidence_cmp.report());
+    REQUIRE(confidence_cmp.equal());
     if (views) {
       const Comparison right_cmp = compare_words(naive_right, golden_right);
       INFO("right view: " << right_cmp.report());

@@ -75,7 +75,7 @@ TEST_CASE("the right view of a textured fronto-parallel plane is its disparity",
       set_param(cfg, "lr", lr);
       const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
       DisparityImage right_view;
-      run_golden(cfg, left, right, &right_view);
+      run_golden(cfg, left, right, {&right_view});
       // Right pixel x' matches left pixel x' + d0; away from the borders and past the settling
       // distance of the paths from the left.
       const int r = cfg.window / 2;
@@ -229,4 +229,35 @@ TEST_CASE("sub-pixel output recovers a fractional shift better than whole pixels
       CHECK(fine < (std::string(cost) == "sad" ? 0.4 : 0.75) * whole);
     }
   }
+}
+
+TEST_CASE("confidence: high on a unique match, low where a periodic texture repeats", "[synthetic]") {
+  std::mt19937 rng(14);
+  // The vertical path alone: a path from the left would remember the border strip x < d, where
+  // larger disparities cost Cmax, and prefer the smaller of equal matches ever after.
+  StereoConfig cfg = small_config("census", 96, 24);
+  set_param(cfg, "paths", "90");
+  const int d0 = 9, r = cfg.window / 2;
+  // Mean confidence away from the borders, where every disparity of the range has a match pixel.
+  auto mean_confidence = [&](const GrayImage& left, const GrayImage& right) {
+    DisparityImage confidence;
+    run_golden(cfg, left, right, {nullptr, &confidence});
+    double sum = 0;
+    int n = 0;
+    for (int y = r; y < cfg.height - r; ++y)
+      for (int x = cfg.dmax + r; x < cfg.width - r; ++x, ++n) sum += confidence.at(x, y);
+    return sum / n;
+  };
+  const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
+  // Columns repeating every 6 pixels: disparities d0 - 6 and d0 + 6 match as well as d0.
+  GrayImage periodic_right = test::random_image(cfg.width, cfg.height, rng);
+  for (int y = 0; y < cfg.height; ++y)
+    for (int x = 6; x < cfg.width; ++x) periodic_right.at(x, y) = periodic_right.at(x - 6, y);
+  GrayImage periodic_left = periodic_right;
+  for (int y = 0; y < cfg.height; ++y)
+    for (int x = 0; x < cfg.width; ++x) periodic_left.at(x, y) = periodic_right.at(std::max(0, x - d0), y);
+  const double unique = mean_confidence(left, right), repeated = mean_confidence(periodic_left, periodic_right);
+  INFO("unique " << unique << ", repeated " << repeated);
+  CHECK(unique > 128);
+  CHECK(repeated < 16);
 }

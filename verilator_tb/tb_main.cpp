@@ -236,7 +236,7 @@ void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
   run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
   run.plan.output_sizes.push_back({cfg.width, cfg.height});
   DisparityImage right_view;
-  run.expected.push_back(run_golden(cfg, pair.left, pair.right, cfg.right_view ? &right_view : nullptr));
+  run.expected.push_back(run_golden(cfg, pair.left, pair.right, SideViews{cfg.right_view ? &right_view : nullptr}));
   run.expected_right.push_back(right_view);
 }
 
@@ -325,7 +325,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   const auto& pb = pairs[2 % pairs.size()];
   const auto& pc = pairs[3 % pairs.size()];
   DisparityImage golden_f_right;
-  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right, cfg.right_view ? &golden_f_right : nullptr);
+  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right, SideViews{cfg.right_view ? &golden_f_right : nullptr});
 
   add_frame(run, pa, cfg);
   // F, and what the design makes of it: output frames (checked or not) and counter deltas.

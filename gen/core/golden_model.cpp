@@ -28,12 +28,25 @@ int winner(const T* S, int dmax) {
   return int(std::find(S, S + dmax, best) - S);
 }
 
+// The smallest sum at least two disparities from the winner (dmax >= 16: never empty).
 template <class T>
-bool is_unique(const T* S, int dmax, int best, int ratio) {
+uint64_t second_best(const T* S, int dmax, int best) {
   uint64_t second = std::numeric_limits<uint64_t>::max();
   for (int d = 0; d < dmax; ++d)
     if (std::abs(d - best) >= 2) second = std::min<uint64_t>(second, S[d]);
-  return !(second * uint64_t(100 - ratio) < uint64_t(S[best]) * 100);
+  return second;
+}
+
+template <class T>
+bool is_unique(const T* S, int dmax, int best, int ratio) {
+  return !(second_best(S, dmax, best) * uint64_t(100 - ratio) < uint64_t(S[best]) * 100);
+}
+
+// Section 4, confidence: the margin of the second best over the best, 255 (S2 - S1) / S2.
+template <class T>
+int confidence(const T* S, int dmax, int best) {
+  const uint64_t second = second_best(S, dmax, best);
+  return second == 0 ? 0 : int(255 * (second - S[best]) / second);
 }
 
 // Section 4, sub-pixel: the winner d refined to units of 2^-bits from the sums at d - 1, d and
@@ -119,7 +132,7 @@ void interpolate_gaps(Image<int>& map) {
 // The pipeline, with T the storage type of costs and sums.
 template <class T>
 DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const GrayImage& left,
-                            const GrayImage& right, DisparityImage* right_view) {
+                            const GrayImage& right, const SideViews& side) {
   const int width = left.width, height = left.height, dmax = cfg.dmax;
   const size_t row_size = size_t(width) * size_t(dmax);
   // Larger than any path cost plus P2, and sentinel + P1 still fits in T.
@@ -146,6 +159,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       const T* S = sum.data() + size_t(x) * size_t(dmax);
       const int d = winner(S, dmax);
       row[x] = (cfg.uniqueness == 0 || is_unique(S, dmax, d, cfg.uniqueness)) ? d : kInvalid;
+      if (side.confidence != nullptr) side.confidence->at(x, y) = uint16_t(confidence(S, dmax, d));
       refined[size_t(x)] = refined_disparity(S, dmax, d, cfg);
     }
 
@@ -163,8 +177,8 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       for (int xm = 0; xm < width; ++xm)
         match_disparity[size_t(xm)] = winner(match_sum.data() + size_t(xm) * size_t(dmax), dmax);
     }
-    if (right_view != nullptr)
-      for (int xm = 0; xm < width; ++xm) right_view->at(xm, y) = uint16_t(match_disparity[size_t(xm)]);
+    if (side.right != nullptr)
+      for (int xm = 0; xm < width; ++xm) side.right->at(xm, y) = uint16_t(match_disparity[size_t(xm)]);
     if (cfg.lr != LrCheck::None)
       for (int x = 0; x < width; ++x) {
         if (row[x] == kInvalid) continue;
@@ -188,20 +202,21 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
 }  // namespace
 
 DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                          DisparityImage* right_view) {
+                          const SideViews& side) {
   if (left.width != right.width || left.height != right.height || left.width > cfg.width ||
       left.height > cfg.height || left.width < 1 || left.height < 1)
     throw std::invalid_argument("run_golden: images must have equal sizes within the configured size");
-  if (right_view != nullptr) {
+  if (side.right != nullptr) {
     if (cfg.lr == LrCheck::None) throw std::invalid_argument("run_golden: the right view needs a left-right check");
-    *right_view = DisparityImage(left.width, left.height);
+    *side.right = DisparityImage(left.width, left.height);
   }
+  if (side.confidence != nullptr) *side.confidence = DisparityImage(left.width, left.height);
   const Widths widths = derive_widths(cfg);
   // 16-bit storage whenever sums, and the sentinel above any path cost plus P2, fit.
   if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 &&
       widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
-    return run_pipeline<uint16_t>(cfg, widths, left, right, right_view);
-  return run_pipeline<uint32_t>(cfg, widths, left, right, right_view);
+    return run_pipeline<uint16_t>(cfg, widths, left, right, side);
+  return run_pipeline<uint32_t>(cfg, widths, left, right, side);
 }
 
 }  // namespace fpstereo

@@ -7,11 +7,17 @@
 
 namespace fpstereo {
 
+// What a run writes besides the output words, where the caller asks for it: the right view's
+// words, the match side's whole disparities (needs a left-right check; docs/semantics.md
+// section 5, "Right view"), and each base pixel's confidence (section 4, "Confidence").
+struct SideViews {
+  DisparityImage* right = nullptr;
+  DisparityImage* confidence = nullptr;
+};
+
 // Runs the full pipeline. Images must be width x height of the run (at most the configured
-// size); cfg must be valid. Returns output words (docs/semantics.md, "Output word"). With
-// right_view, which needs a left-right check, also the right view's words: the match side's
-// whole disparities (section 5, "Right view").
+// size); cfg must be valid. Returns output words (docs/semantics.md, "Output word").
 DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                          DisparityImage* right_view = nullptr);
+                          const SideViews& side = {});
 
 }  // namespace fpstereo

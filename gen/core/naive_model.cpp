@@ -244,6 +244,21 @@ void apply_uniqueness(const StereoConfig& cfg, const Volume& sum, DispMap& disp)
   }
 }
 
+// Section 4, confidence: 255 (S2 - S1) / S2 rounded down, S2 the best sum two or more
+// disparities from the winner D; 0 when S2 is 0.
+DisparityImage confidence(const Volume& sum, const DispMap& winners) {
+  DisparityImage out(winners.width, winners.height);
+  for (int y = 0; y < winners.height; ++y)
+    for (int x = 0; x < winners.width; ++x) {
+      const int64_t D = winners.at(x, y), s1 = sum.at(x, y, int(D));
+      int64_t s2 = std::numeric_limits<int64_t>::max();
+      for (int d = 0; d < sum.depth; ++d)
+        if (d <= D - 2 || d >= D + 2) s2 = std::min(s2, sum.at(x, y, d));
+      out.at(x, y) = uint16_t(s2 == 0 ? 0 : 255 * (s2 - s1) / s2);
+    }
+  return out;
+}
+
 // LR1: Dm(x') = smallest d minimising S(x' + d, y, d) over d with x' + d < W.
 DispMap lr1_match_disparities(const Volume& sum) {
   DispMap dm(sum.width, sum.height);
@@ -355,7 +370,7 @@ void gap_interpolate(DispMap& disp) {
 }  // namespace
 
 DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                         DisparityImage* right_view) {
+                         const SideViews& side) {
   // The run's size is the images' size (the caller checked left and right agree).
   const int W = left.width, H = left.height;
   const Widths widths = derive_widths(cfg);
@@ -370,18 +385,19 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) disp.at(x, y) = wta(sum, x, y);
 
+  if (side.confidence != nullptr) *side.confidence = confidence(sum, disp);
   if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
 
   if (cfg.lr != LrCheck::None) {
     const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum)
                                               : lr2_match_disparities(cfg, base, match, cmax);
     apply_lr_check(cfg, dm, disp);
-    if (right_view != nullptr) {
-      *right_view = DisparityImage(W, H);
+    if (side.right != nullptr) {
+      *side.right = DisparityImage(W, H);
       for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) right_view->at(x, y) = uint16_t(dm.at(x, y));
+        for (int x = 0; x < W; ++x) side.right->at(x, y) = uint16_t(dm.at(x, y));
     }
-  } else if (right_view != nullptr) {
+  } else if (side.right != nullptr) {
     throw std::invalid_argument("run_naive: the right view needs a left-right check");
   }
 

@@ -4,12 +4,13 @@
 #pragma once
 
 #include "config.hpp"
+#include "golden_model.hpp"  // SideViews
 #include "image.hpp"
 
 namespace fpstereo {
 
-// With right_view (a left-right check needed), also the match side's disparities.
+// The side views as run_golden writes them.
 DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                         DisparityImage* right_view = nullptr);
+                         const SideViews& side = {});
 
 }  // namespace fpstereo

@@ -336,6 +336,13 @@ std::vector<uchar> encode_pgm(const GrayImage& image) {
   return bytes;
 }
 
+std::vector<uchar> encode_gray_png(const DisparityImage& values) {
+  cv::Mat1b stored(values.height, values.width);
+  for (int y = 0; y < values.height; ++y)
+    for (int x = 0; x < values.width; ++x) stored(y, x) = uchar(std::min<int>(values.at(x, y), 255));
+  return encode_png(stored);
+}
+
 std::vector<uchar> encode_pfm(const cv::Mat1f& disp) {
   const std::string header = fmt::format("Pf\n{} {}\n-1\n", disp.cols, disp.rows);
   std::vector<uchar> bytes(header.begin(), header.end());

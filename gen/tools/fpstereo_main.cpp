@@ -18,7 +18,7 @@ namespace fpstereo {
 namespace {
 
 struct RunOptions {
-  std::string left, right, output, colour, pfm, right_output;
+  std::string left, right, output, colour, pfm, right_output, confidence;
   std::vector<std::string> gray_pgm;  // left, right
   ConfigFlags config;
 };
@@ -33,12 +33,14 @@ int run_pair(const RunOptions& opt) {
   if (!opt.right_output.empty() && cfg.lr == LrCheck::None)
     throw ConfigError("--right-output needs a left-right check (lr = lr1 or lr2), whose match side it writes");
   std::vector<std::string> paths = opt.gray_pgm;
-  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm, &opt.right_output})
+  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm, &opt.right_output, &opt.confidence})
     if (!path->empty()) paths.push_back(*path);
   for (const auto& path : paths) check_writable(path);  // before the long part
   const auto start = std::chrono::steady_clock::now();
-  DisparityImage right_words;
-  const DisparityImage words = run_golden(cfg, left, right, opt.right_output.empty() ? nullptr : &right_words);
+  DisparityImage right_words, confidence;
+  const DisparityImage words =
+      run_golden(cfg, left, right,
+                 {opt.right_output.empty() ? nullptr : &right_words, opt.confidence.empty() ? nullptr : &confidence});
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(words, cfg);
@@ -57,6 +59,7 @@ int run_pair(const RunOptions& opt) {
     const bool pfm = opt.right_output.size() > 4 && opt.right_output.substr(opt.right_output.size() - 4) == ".pfm";
     outputs.push_back({opt.right_output, pfm ? encode_pfm(right_disparity) : encode_kitti_png(right_disparity)});
   }
+  if (!opt.confidence.empty()) outputs.push_back({opt.confidence, encode_gray_png(confidence)});
   write_outputs(outputs);
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
@@ -95,6 +98,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--right-output", run.right_output,
                       "the right view's disparities (the left-right check's match side): PFM if the name ends in "
                       ".pfm, else a KITTI 16-bit PNG");
+  run_cmd->add_option("--confidence", run.confidence,
+                      "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
+                      "(docs/semantics.md section 4), as an 8-bit gray PNG");
   run_cmd
       ->add_option("--gray-pgm", run.gray_pgm,
                    "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "
