@@ -3,7 +3,8 @@
 // Winner-take-all with the uniqueness check (docs/semantics.md, section 4): per step the range
 // summaries of one group's lanes (fpstereo_unique_tree), joined over the groups of the pixel
 // (fpstereo_unique_join); in the pixel's last group's step, word is the winner or the invalid
-// word when S2 * (100 - u) < S1 * 100. The tag travels along, TREE_LAT steps.
+// word when S2 * (100 - u) < S1 * 100, with S1 and S2 beside it (best_sum, second_sum: the
+// confidence uses them). The tag travels along, TREE_LAT steps.
 module fpstereo_wta_unique #(
   parameter UF = 8,
   parameter SUM_W = 9,
@@ -24,7 +25,9 @@ module fpstereo_wta_unique #(
   input  wire [6:0]          uniqueness,
   output wire [G_W-1:0]      group_out,
   output wire [TAG_W-1:0]    tag_out,
-  output wire [DISP_W:0]     word
+  output wire [DISP_W:0]     word,
+  output wire [SUM_W-1:0]    best_sum,
+  output wire [SUM_W-1:0]    second_sum
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -66,5 +69,7 @@ module fpstereo_wta_unique #(
   wire [SUM_W+7:0] scaled_best = s1 * 8'd100;
   /* verilator lint_on WIDTH */
   assign word = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
+  assign best_sum = s1;
+  assign second_sum = s2;
 endmodule
 `resetall

@@ -30,6 +30,7 @@ std::vector<StereoConfig> covering_configs() {
       c.subpixel_bits = lr == LrCheck::Lr2 ? 0 : 3;
       c.right_view = lr != LrCheck::None;
       c.p2_adapt = cost != CostFunction::Shd && lr != LrCheck::Lr1 ? 4 : 0;  // the RTL has it but with SHD
+      c.confidence = cost == CostFunction::Census || cost == CostFunction::Sad;
       out.push_back(c);
     }
   return out;

@@ -54,16 +54,19 @@ class AxisSource {
 };
 
 struct OutputBeat {
-  uint16_t data;
+  uint32_t data;
   bool user, last;
   bool operator==(const OutputBeat& o) const { return data == o.data && user == o.user && last == o.last; }
 };
 
-// Where an output port's frames go: the frames, the cycles of their first and last handshakes.
+// Where an output port's frames go: the frames, the cycles of their first and last handshakes;
+// with `upper`, tdata above its low lane_bits (the confidence) goes to frames of its own.
 struct FrameLog {
   std::vector<DisparityImage>& frames;
   std::vector<uint64_t>& start_cycle;
   std::vector<uint64_t>& end_cycle;
+  std::vector<DisparityImage>* upper = nullptr;
+  int lane_bits = 32;
 };
 
 // Watches an output port at every rising edge: collects the pixels into frames of the expected
@@ -101,7 +104,9 @@ class OutputMonitor {
 
  private:
   void start_frame() {
-    if (!done()) frame_ = DisparityImage(sizes_[log_.frames.size()].first, sizes_[log_.frames.size()].second);
+    if (done()) return;
+    frame_ = DisparityImage(sizes_[log_.frames.size()].first, sizes_[log_.frames.size()].second);
+    upper_frame_ = DisparityImage(frame_.width, frame_.height);
   }
 
   void check_stall(uint64_t cycle, bool valid, const OutputBeat& beat) {
@@ -134,11 +139,14 @@ class OutputMonitor {
     if (beat.last != row_end)
       protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tlast {}, expected {}", cycle, port_, frame, x, y,
                                     int(beat.last), int(row_end)));
-    frame_.at(x, y) = beat.data;
+    const uint64_t lane_mask = (uint64_t(1) << log_.lane_bits) - 1;
+    frame_.at(x, y) = uint16_t(beat.data & lane_mask);
+    upper_frame_.at(x, y) = uint16_t(uint64_t(beat.data) >> log_.lane_bits);
     if (in_frame_ == 0) log_.start_cycle.push_back(cycle);
     ++received_;
     if (++in_frame_ == frame_.pixels.size()) {
       log_.frames.push_back(frame_);
+      if (log_.upper != nullptr) log_.upper->push_back(upper_frame_);
       log_.end_cycle.push_back(cycle);
       in_frame_ = 0;
       start_frame();
@@ -149,7 +157,7 @@ class OutputMonitor {
   const std::vector<std::pair<int, int>>& sizes_;
   FrameLog log_;
   ProtocolErrors& protocol_;
-  DisparityImage frame_{1, 1};
+  DisparityImage frame_{1, 1}, upper_frame_{1, 1};
   size_t in_frame_ = 0;  // pixels of the current frame received
   size_t received_ = 0;
   std::optional<OutputBeat> stalled_;  // the beat offered without tready at the previous edge
@@ -164,6 +172,8 @@ std::string timeout_message(uint64_t cycles, const OutputMonitor& out, size_t ex
 }
 
 }  // namespace
+
+int word_lane_bits(const Widths& widths) { return widths.output_word <= 8 ? 8 : 16; }
 
 void ProtocolErrors::add(const std::string& message) {
   if (first.size() < kKeptProtocolErrors) first.push_back(message);
@@ -181,6 +191,11 @@ bool has_control() { return false; }
 bool has_right_view() { return true; }
 #else
 bool has_right_view() { return false; }
+#endif
+#ifdef FPSTEREO_TB_CONFIDENCE
+bool has_confidence() { return true; }
+#else
+bool has_confidence() { return false; }
 #endif
 
 namespace {
@@ -270,7 +285,10 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
 
   AxisSource left(plan.left), right(plan.right);
   StreamRun run;
-  OutputMonitor monitor("m_axis_disp", plan.output_sizes, {run.outputs, run.frame_start_cycle, run.frame_end_cycle},
+  // With confidence, tdata's top 8 bits are the confidence, the word's lane below them.
+  OutputMonitor monitor("m_axis_disp", plan.output_sizes,
+                        {run.outputs, run.frame_start_cycle, run.frame_end_cycle,
+                         has_confidence() ? &run.confidences : nullptr, word_lane_bits(derive_widths(cfg))},
                         run.protocol);
   // The right view's frames, when the design has it: their cycles are not reported.
   std::vector<uint64_t> right_start_cycle, right_end_cycle;
@@ -370,7 +388,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
     }
     monitor.observe(
         cycle, output_valid, ready,
-        {uint16_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
+        {uint32_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
 #ifdef FPSTEREO_TB_RIGHT_VIEW
     right_monitor.observe(cycle, dut->m_axis_disp_right_tvalid, right_ready,
                           {uint16_t(dut->m_axis_disp_right_tdata), bool(dut->m_axis_disp_right_tuser),

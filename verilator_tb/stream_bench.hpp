@@ -10,6 +10,7 @@
 
 #include "config.hpp"
 #include "image.hpp"
+#include "widths.hpp"
 #include "stimulus.hpp"
 
 namespace fpstereo::tb {
@@ -68,6 +69,7 @@ struct ProtocolErrors {
 struct StreamRun {
   std::vector<DisparityImage> outputs;      // the complete output frames, in order
   std::vector<DisparityImage> right_views;  // with the right view: its complete frames, in order
+  std::vector<DisparityImage> confidences;  // with confidence: each output frame's, in order
   std::vector<uint64_t> frame_start_cycle;  // cycle of each frame's first output handshake
   std::vector<uint64_t> frame_end_cycle;    // cycle of each frame's last output handshake
   uint64_t first_input_cycle = 0;           // cycle of the first input handshake on either stream
@@ -82,12 +84,16 @@ struct StreamRun {
   std::string timeout;  // empty unless the design stopped producing output
 };
 
-// Width of the design's m_axis_disp_tdata as Verilator stores it: 8 or 16 (or more) bits.
+// Width of the design's m_axis_disp_tdata as Verilator stores it: 8, 16 or 32 bits.
 int output_port_bits();
 // Whether the design has the AXI4-Lite control interface.
 bool has_control();
 // Whether the design streams the right view (m_axis_disp_right).
 bool has_right_view();
+// Whether the output words carry the confidence (the top 8 bits of m_axis_disp_tdata).
+bool has_confidence();
+// The bits of m_axis_disp_tdata that hold the output word (zero-extended): 8 or 16.
+int word_lane_bits(const Widths& widths);
 
 // Resets the design, then runs the plan until every expected output pixel has arrived, the
 // reads at the end are done and a drain period has shown no extra output, or until the timeout.

@@ -226,6 +226,7 @@ struct Run {
   StreamPlan plan;
   std::vector<std::optional<DisparityImage>> expected;  // per output frame; none: not compared
   std::vector<std::optional<DisparityImage>> expected_right;  // with the right view, likewise
+  std::vector<std::optional<DisparityImage>> expected_confidence;  // with confidence, likewise
   std::vector<std::pair<uint32_t, uint32_t>> registers;  // (offset, value) expected at the end
   std::vector<std::string> register_names;
 };
@@ -235,9 +236,11 @@ void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
   run.plan.left.insert(run.plan.left.end(), left.begin(), left.end());
   run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
   run.plan.output_sizes.push_back({cfg.width, cfg.height});
-  DisparityImage right_view;
-  run.expected.push_back(run_golden(cfg, pair.left, pair.right, SideViews{cfg.right_view ? &right_view : nullptr}));
+  DisparityImage right_view, confidence;
+  run.expected.push_back(run_golden(cfg, pair.left, pair.right,
+                                    {cfg.right_view ? &right_view : nullptr, cfg.confidence ? &confidence : nullptr}));
   run.expected_right.push_back(right_view);
+  run.expected_confidence.push_back(confidence);
 }
 
 void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_t value) {
@@ -324,8 +327,10 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   const auto& pf = pairs[1 % pairs.size()];
   const auto& pb = pairs[2 % pairs.size()];
   const auto& pc = pairs[3 % pairs.size()];
-  DisparityImage golden_f_right;
-  const DisparityImage golden_f = run_golden(cfg, pf.left, pf.right, SideViews{cfg.right_view ? &golden_f_right : nullptr});
+  DisparityImage golden_f_right, golden_f_confidence;
+  const DisparityImage golden_f =
+      run_golden(cfg, pf.left, pf.right,
+                 {cfg.right_view ? &golden_f_right : nullptr, cfg.confidence ? &golden_f_confidence : nullptr});
 
   add_frame(run, pa, cfg);
   // F, and what the design makes of it: output frames (checked or not) and counter deltas.
@@ -365,6 +370,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
       run.plan.output_sizes.push_back({w, h});
       run.expected.push_back(std::nullopt);
       run.expected_right.push_back(std::nullopt);
+      run.expected_confidence.push_back(std::nullopt);
     }
   };
   if (fault == "early-eol" || fault == "late-eol" || fault == "short-frame") {
@@ -386,6 +392,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     run.plan.output_sizes.push_back({w, h});
     run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
     run.expected_right.push_back(golden_f_right);
+    run.expected_confidence.push_back(golden_f_confidence);
     errors = 1;
   } else if (fault == "reset") {
     // aresetn as F's last row begins: F's output is cut short, the counters start again, the
@@ -440,6 +447,15 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
     totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
     ++totals.frames;
   }
+  // The confidences, beside each compared frame's words.
+  if (cfg.confidence)
+    for (size_t i = 0; i < run.confidences.size() && i < run_spec.expected_confidence.size(); ++i) {
+      if (!run_spec.expected[i] || !run_spec.expected_confidence[i]) continue;
+      const Comparison c = compare_words(*run_spec.expected_confidence[i], run.confidences[i]);
+      fmt::print("confidence, frame {}: {}\n", i, c.report());
+      totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
+      ++totals.frames;
+    }
   // The right view's frames: as many as the disparity frames, each equal to its golden words.
   if (cfg.right_view) {
     if (run.right_views.size() != run.outputs.size()) {
@@ -566,7 +582,9 @@ int run_bench(const Options& opt) {
   const StereoConfig cfg = load_tb_config();
   const StatedTiming stated = read_stated_timing(FPSTEREO_TB_TOP_FILE);
   const Widths widths = derive_widths(cfg);
-  const int port_bits = widths.output_word <= 8 ? 8 : 16;
+  // The word's lane, and the confidence above it; Verilator holds 24 bits in 32.
+  const int tdata_bits = word_lane_bits(widths) + (cfg.confidence ? 8 : 0);
+  const int port_bits = tdata_bits <= 8 ? 8 : tdata_bits <= 16 ? 16 : 32;
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
   fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,
              cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf, paths_to_string(cfg.paths),

@@ -196,6 +196,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"right-view", "also stream the right image's disparities, the left-right check's match side: on or off",
        [](StereoConfig& c, const std::string& v) { c.right_view = parse_bool("right-view", v); },
        [](const StereoConfig& c) { return std::string(c.right_view ? "on" : "off"); }},
+      {"confidence", "the output words also carry each pixel's 8-bit confidence: on or off",
+       [](StereoConfig& c, const std::string& v) { c.confidence = parse_bool("confidence", v); },
+       [](const StereoConfig& c) { return std::string(c.confidence ? "on" : "off"); }},
   };
   return specs;
 }

@@ -61,6 +61,8 @@ struct StereoConfig {
   SubpixelFit subpixel_fit = SubpixelFit::Equiangular;
   // The hardware also streams the right view's disparities (the left-right check's match side).
   bool right_view = false;
+  // Each output word carries the pixel's confidence (docs/semantics.md section 4) in 8 more bits.
+  bool confidence = false;
 
   int path_count() const;
   bool operator==(const StereoConfig&) const;

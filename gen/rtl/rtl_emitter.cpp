@@ -97,6 +97,10 @@ std::string top_module(const RtlDesign& d) {
      << "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
      << "// with the invalid flag in bit " << w.output_disparity
      << (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string())
+     << (c.confidence ? fmt::format(", zero-extended to {} bits, with the pixel's confidence (0..255,\n// "
+                                    "docs/semantics.md section 4) in the top 8 bits",
+                                    d.output_bits - 8)
+                      : std::string())
      << (c.right_view ? ". m_axis_disp_right: the right view's whole disparities (the\n// left-right check's match "
                         "side), in raster order of the right image"
                       : "")
@@ -201,7 +205,8 @@ std::string top_module(const RtlDesign& d) {
       "    .m_data({{core_left, core_right}}), .m_valid(core_valid), .m_ready(take));\n",
       d.prefix, d.x_bits, d.y_bits);
   os << "\n  wire out_ready, out_push, out_first, out_last;\n"
-     << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity);
+     << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity)
+     << (c.confidence ? "  wire [7:0] out_confidence;\n" : "");
   if (c.right_view)
     os << fmt::format("  wire view_ready, view_push, view_first, view_last;\n  wire [{}:0] view_word;\n",
                       w.disparity - 1);
@@ -213,25 +218,27 @@ std::string top_module(const RtlDesign& d) {
       "    .lr_threshold(lr_threshold),\n"
       "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
       "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
-      "    .out_last(out_last),{}\n"
+      "    .out_last(out_last),{}{}\n"
       "    .frame_end(frame_done));\n",
-      d.prefix,
+      d.prefix, c.confidence ? " .out_confidence(out_confidence)," : "",
       c.right_view ? "\n    .view_ready(view_ready), .view_push(view_push), .view_word(view_word),\n"
                      "    .view_first(view_first), .view_last(view_last),"
                    : "");
-  // Output register slices: {tuser, tlast, tdata}, the word zero-extended to the port.
+  // Output register slices: {tuser, tlast, tdata}, the word zero-extended to its lane, the
+  // confidence (if any) above it.
   auto slice = [&](const std::string& name, const std::string& core, const std::string& port, int port_bits,
-                   int word_bits) {
-    const int pad = port_bits - word_bits;
+                   int word_bits, const std::string& above = "") {
+    const int pad = port_bits - word_bits - (above.empty() ? 0 : 8);
     os << fmt::format("  {}_axis_skid #(.DATA_W({})) {} (\n", d.prefix, port_bits + 2, name)
        << "    .clk(aclk), .rst(rst),\n"
-       << fmt::format("    .s_data({{{0}_first, {0}_last, {1}{0}_word}}), .s_valid({0}_push), .s_ready({0}_ready),\n",
-                      core, pad > 0 ? fmt::format("{}'d0, ", pad) : std::string())
+       << fmt::format("    .s_data({{{0}_first, {0}_last, {2}{1}{0}_word}}), .s_valid({0}_push), .s_ready({0}_ready),\n",
+                      core, pad > 0 ? fmt::format("{}'d0, ", pad) : std::string(),
+                      above.empty() ? std::string() : above + ", ")
        << fmt::format("    .m_data({{{0}_tuser, {0}_tlast, {0}_tdata}}), .m_valid({0}_tvalid),\n", port)
        << fmt::format("    .m_ready({}_tready));\n", port);
   };
   os << "\n  // Output register slices.\n";
-  slice("disp_slice", "out", "m_axis_disp", d.output_bits, w.output_word);
+  slice("disp_slice", "out", "m_axis_disp", d.output_bits, w.output_word, c.confidence ? "out_confidence" : "");
   if (c.right_view) slice("disp_right_slice", "view", "m_axis_disp_right", 8, w.disparity);
   os << "endmodule\n`resetall\n";
   return os.str();
@@ -265,6 +272,7 @@ std::string core_module(const RtlDesign& d) {
      << "  input  wire out_ready,\n  output wire out_push,\n"
      << fmt::format("  output wire [{}:0] out_word,\n", w.output_disparity)
      << "  output wire out_first,\n  output wire out_last,\n"
+     << (d.cfg.confidence ? "  // the pixel's confidence, beside out_word\n  output wire [7:0] out_confidence,\n" : "")
      << (d.cfg.right_view ? fmt::format("  // the right view's word, pushed when view_push is high\n"
                                         "  input  wire view_ready,\n  output wire view_push,\n"
                                         "  output wire [{}:0] view_word,\n"
@@ -348,7 +356,8 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
   d.first_output_latency = push_first + 4;
   d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
-  d.output_bits = d.widths.output_word <= 8 ? 8 : 16;
+  // The word's lane (8 or 16 bits), and with confidence 8 bits above it.
+  d.output_bits = (d.widths.output_word <= 8 ? 8 : 16) + (cfg.confidence ? 8 : 0);
   d.x_bits = bits_for(uint64_t(R));
   d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
   d.signed_y_bits = d.y_bits + 2;

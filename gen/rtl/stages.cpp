@@ -90,6 +90,15 @@ bool carries_whole(const RtlDesign& d) { return d.cfg.subpixel_bits != 0 && d.cf
 int reorder_word_bits(const RtlDesign& d) {
   return d.widths.output_word + (carries_whole(d) ? d.widths.disparity : 0);
 }
+// With confidence the disparity reorder RAM keeps each pixel's 8-bit confidence above its word.
+constexpr int kConfidenceBits = 8;
+int reorder_ram_bits(const RtlDesign& d) { return reorder_word_bits(d) + (d.cfg.confidence ? kConfidenceBits : 0); }
+// The names of the words the winner-take-all, the sub-pixel fit and the confidence hand on: the
+// last of them names wta_*, which the disparity reorder RAM takes.
+std::string wta_out(const RtlDesign& d) {
+  return d.cfg.subpixel_bits != 0 ? "whole" : d.cfg.confidence ? "plain" : "wta";
+}
+std::string subpixel_out(const RtlDesign& d) { return d.cfg.confidence ? "plain" : "wta"; }
 
 // With adaptive P2 the cost words carry, beside the costs, each enabled path's P2 for the pixel
 // (fpstereo_adaptive_p2), through the cost reorder RAM to the base side's path lanes.
@@ -730,7 +739,8 @@ class Lr2MatchStage : public Stage {
 // Winner-take-all (with the uniqueness check when configured): the running minimum's register.
 class WtaStage : public Stage {
  public:
-  explicit WtaStage(const StereoConfig& c) : unique_(c.uniqueness != 0) {}
+  // The confidence needs the second-best sum that the uniqueness check's tree finds.
+  explicit WtaStage(const StereoConfig& c) : unique_(c.uniqueness != 0 || c.confidence) {}
   std::string title() const override { return unique_ ? "winner-take-all with uniqueness" : "winner-take-all"; }
   std::vector<std::string> knobs() const override { return {"uniqueness"}; }
   Latency latency(const RtlDesign& d) const override { return {0, 0, d.wta_tree_latency + 1}; }
@@ -740,21 +750,28 @@ class WtaStage : public Stage {
   }
   std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
     const int tag_bits = 1 + d.x_bits + d.out_row_bits;
-    // With sub-pixel output the words go to the sub-pixel stage (whole_*), which names wta_*.
-    const std::string out = d.cfg.subpixel_bits != 0 ? "whole" : "wta";
+    // The words go on to the sub-pixel fit or the confidence when they are there (wta_out).
+    const std::string out = wta_out(d);
     Values ports = {{"clk", "clk"},
                     {"restart", "restart"},
                     {"adv", "adv"},
                     {"sums", "agg_sums"},
                     {"group", "agg_group"},
                     {"tag", "{agg_active, agg_x, agg_slot}"}};
-    if (unique_) ports.push_back({"uniqueness", "uniqueness"});
+    if (unique_) ports.push_back({"uniqueness", d.cfg.uniqueness != 0 ? "uniqueness" : "7'd0"});
     ports.insert(ports.end(), {{"group_out", out + "_group"},
                                {"tag_out", fmt::format("{{{0}_active, {0}_x, {0}_slot}}", out)},
                                {"word", out + "_word"}});
+    std::string sums;
+    if (unique_) {
+      ports.insert(ports.end(), {{"best_sum", "winner_best"}, {"second_sum", "winner_second"}});
+      sums = unused_unless(d.cfg.confidence,
+                           wire(d.widths.aggregated, "winner_best") + wire(d.widths.aggregated, "winner_second"),
+                           "the confidence divides them");
+    }
     return "\n  // Winner-take-all: the pixel's word in its last group's step.\n" + wire(d.group_bits, out + "_group") +
            wire(1, out + "_active") + wire(d.x_bits, out + "_x") + wire(d.out_row_bits, out + "_slot") +
-           wire(d.widths.disparity + 1, out + "_word") +
+           wire(d.widths.disparity + 1, out + "_word") + sums +
            instance(unique_ ? "fpstereo_wta_unique" : "fpstereo_wta", "wta",
                     {{"UF", num(d.cfg.uf)},
                      {"SUM_W", num(d.widths.aggregated)},
@@ -802,11 +819,13 @@ class SubpixelStage : public Stage {
     const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + (whole ? d.widths.disparity : 0);
     const std::string tag = "{whole_active, whole_x, whole_slot, whole_group" +
                             (whole ? fmt::format(", whole_word[{}:0]}}", d.widths.disparity - 1) : std::string("}"));
-    const std::string tag_out = std::string("{wta_active, wta_x, wta_slot, wta_group") + (whole ? ", wta_whole}" : "}");
+    const std::string o = subpixel_out(d);
+    const std::string tag_out =
+        fmt::format("{{{0}_active, {0}_x, {0}_slot, {0}_group", o) + (whole ? fmt::format(", {}_whole}}", o) : "}");
     return "\n  // Sub-pixel fit: the refined word, subpixel-bits + 5 steps after the whole one.\n" +
-           wire(d.group_bits, "wta_group") + wire(1, "wta_active") + wire(d.x_bits, "wta_x") +
-           wire(d.out_row_bits, "wta_slot") + wire(d.widths.output_word, "wta_word") +
-           (whole ? wire(d.widths.disparity, "wta_whole") : std::string()) +
+           wire(d.group_bits, o + "_group") + wire(1, o + "_active") + wire(d.x_bits, o + "_x") +
+           wire(d.out_row_bits, o + "_slot") + wire(d.widths.output_word, o + "_word") +
+           (whole ? wire(d.widths.disparity, o + "_whole") : std::string()) +
            instance("fpstereo_subpixel", "subpixel",
                     {{"UF", num(d.cfg.uf)},
                      {"G", num(d.groups)},
@@ -825,12 +844,56 @@ class SubpixelStage : public Stage {
                      {"tag", tag},
                      {"word", "whole_word"},
                      {"tag_out", tag_out},
-                     {"word_out", "wta_word"}});
+                     {"word_out", o + "_word"}});
   }
   // ---- HLS: select_base refines the winner as it passes (Winner::refined).
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
     return "\n  // Sub-pixel fit: none, select_base refines the winner.\n";
   }
+};
+
+// Confidence (fpstereo_confidence): each pixel's 255 (S2 - S1) / S2 from the winner-take-all's
+// sums, divided in kConfidenceSteps steps while its word waits beside; it then travels above the
+// word through the disparity reorder RAM and, rows later, to the output (OutputStage).
+constexpr int kConfidenceSteps = 10;
+class ConfidenceStage : public Stage {
+ public:
+  std::string title() const override { return "confidence"; }
+  std::vector<std::string> knobs() const override { return {"confidence"}; }
+  Latency latency(const RtlDesign&) const override { return {0, 0, kConfidenceSteps}; }
+  std::vector<std::string> modules(const RtlDesign&) const override {
+    return {"fpstereo_confidence", "fpstereo_delay"};
+  }
+  std::string core_verilog(const RtlDesign& d, PixelStream&) const override {
+    const bool whole = carries_whole(d);
+    const int data_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + d.widths.output_word +
+                          (whole ? d.widths.disparity : 0);
+    auto data = [&](const std::string& p) {
+      return fmt::format("{{{0}_active, {0}_x, {0}_slot, {0}_group, {0}_word", p) +
+             (whole ? fmt::format(", {}_whole}}", p) : "}");
+    };
+    // The sub-pixel fit, when there, holds the words subpixel-bits + 5 steps after the sums.
+    const int waited = d.cfg.subpixel_bits != 0 ? d.cfg.subpixel_bits + 5 : 0;
+    return "\n  // Confidence: the word waits beside the division.\n" + wire(d.group_bits, "wta_group") +
+           wire(1, "wta_active") + wire(d.x_bits, "wta_x") + wire(d.out_row_bits, "wta_slot") +
+           wire(d.widths.output_word, "wta_word") + (whole ? wire(d.widths.disparity, "wta_whole") : std::string()) +
+           wire(kConfidenceBits, "wta_confidence") +
+           instance("fpstereo_confidence", "confidence_divider",
+                    {{"SUM_W", num(d.widths.aggregated)},
+                     {"DATA_W", num(data_bits)},
+                     {"IN_DELAY", num(waited)},
+                     {"LAT", num(kConfidenceSteps)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"best", "winner_best"},
+                     {"second", "winner_second"},
+                     {"data_in", data("plain")},
+                     {"data_out", data("wta")},
+                     {"confidence", "wta_confidence"}});
+  }
+  // ---- HLS: not yet (the generator refuses confidence).
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override { return ""; }
 };
 
 // Disparity reorder RAM: chain order in, one word per slot in raster order out. With a
@@ -843,20 +906,22 @@ class DisparityReorderStage : public Stage {
   Latency latency(const RtlDesign& d) const override { return {lr_rows(d), 1, 0}; }
   Latency start_offset(const RtlDesign& d) const override { return {lr_rows(d), 0, 0}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
-    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), reorder_word_bits(d)}};
+    return {{"core.disparity_reorder.disp_ram.mem", d.disp_depth(), reorder_ram_bits(d)}};
   }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_disparity_reorder", "fpstereo_raster_counter", "fpstereo_frame_row", "fpstereo_ram_sdp"};
   }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     stream = {"read_done", "read_event", "read_x", "read_y", "read_word"};
+    const bool confidence = d.cfg.confidence;
     return "\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n" +
            start_flag(d, *this, "out_on") + stream_wires(d, stream, reorder_word_bits(d)) +
+           (confidence ? wire(kConfidenceBits, "read_confidence") : std::string()) +
            unused_unless(d.cfg.lr != LrCheck::None, wire(d.out_row_bits, "read_slot_row"), "the left-right check reads with it") +
            instance("fpstereo_disparity_reorder", "disparity_reorder",
                     {{"ROW_SLOTS", num(d.row_slots)},
                      {"G", num(d.groups)},
-                     {"DISP_W", num(reorder_word_bits(d) - 1)},
+                     {"DISP_W", num(reorder_ram_bits(d) - 1)},
                      {"OUT_ROWS", num(d.out_rows)},
                      {"OUT_K_W", num(d.out_row_bits)},
                      {"DISP_AW", num(d.disp_addr_bits)},
@@ -875,13 +940,14 @@ class DisparityReorderStage : public Stage {
                      {"x", "wta_x"},
                      {"slot", "wta_slot"},
                      {"group", "wta_group"},
-                     {"word", carries_whole(d) ? "{wta_word, wta_whole}" : "wta_word"},
+                     {"word", std::string(confidence ? "{wta_confidence, " : "{") +
+                                  (carries_whole(d) ? "wta_word, wta_whole}" : "wta_word}")},
                      {"read_done", "read_done"},
                      {"read_event", "read_event"},
                      {"read_x", "read_x"},
                      {"read_y", "read_y"},
                      {"read_slot_row", "read_slot_row"},
-                     {"read_word", "read_word"}});
+                     {"read_word", confidence ? "{read_confidence, read_word}" : "read_word"}});
   }
 
   // ---- HLS: select_base writes raster order.
@@ -1136,10 +1202,18 @@ class OutputStage : public Stage {
   std::string title() const override { return "output"; }
   std::vector<std::string> knobs() const override { return {}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 1 + kStepsAfterPush}; }
-  std::vector<std::string> modules(const RtlDesign&) const override { return {"fpstereo_axis_skid"}; }
+  std::vector<std::string> modules(const RtlDesign& d) const override {
+    if (confidence_rows(d) != 0) return {"fpstereo_axis_skid", "fpstereo_confidence_rows", "fpstereo_ram_sdp"};
+    return {"fpstereo_axis_skid"};
+  }
+  std::vector<StageMemory> memories(const RtlDesign& d) const override {
+    if (!confidence_rows(d)) return {};
+    return {{"core.confidence_rows.confidences.mem", int64_t(confidence_rows(d)) * d.cfg.width, kConfidenceBits}};
+  }
   std::string core_verilog(const RtlDesign& d, PixelStream& stream) const override {
     return "\n  // Output: registered, so that the sequencer's inputs are flip-flops.\n" +
            output_register("out", stream, stream.event, stream.word, d.widths.output_word) +
+           (d.cfg.confidence ? confidence_verilog(d, stream) : std::string()) +
            fmt::format(
                "  reg frame_done_q;\n"
                "  always @(posedge clk)\n"
@@ -1154,6 +1228,40 @@ class OutputStage : public Stage {
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     return fmt::format("\n  // Output.\n  write_words<C>({}, out, W, H);\n", s.base);
   }
+
+ private:
+  // Rows of confidences between the disparity reorder RAM and the output: more than the rows the
+  // median and gap interpolation delay the stream; none when nothing but the check lies between.
+  static int confidence_rows(const RtlDesign& d) {
+    if (!d.cfg.confidence || (d.cfg.median == 0 && !d.cfg.gap_interpolation && d.cfg.lr == LrCheck::None)) return 0;
+    return d.cfg.median / 2 + (d.cfg.gap_interpolation ? 1 : 0) + 2;
+  }
+  // The pixel's confidence beside its word, registered with it.
+  static std::string confidence_verilog(const RtlDesign& d, const PixelStream& stream) {
+    const int rows = confidence_rows(d);
+    if (rows == 0)
+      return "  reg [7:0] out_confidence_q;\n"
+             "  always @(posedge clk)\n"
+             "    if (adv) out_confidence_q <= read_confidence;\n"
+             "  assign out_confidence = out_confidence_q;\n";
+    const int row_bits = bits_for(uint64_t(rows - 1));
+    return instance("fpstereo_confidence_rows", "confidence_rows",
+                    {{"W", num(d.cfg.width)},
+                     {"ROWS", num(rows)},
+                     {"ROW_K_W", num(row_bits)},
+                     {"AW", num(bits_for(uint64_t(rows) * d.cfg.width - 1))},
+                     {"X_W", num(d.x_bits)}},
+                    {{"clk", "clk"},
+                     {"restart", "restart"},
+                     {"adv", "adv"},
+                     {"frame_width", "frame_width"},
+                     {"in_event", "read_event"},
+                     {"in_x", "read_x"},
+                     {"in_confidence", "read_confidence"},
+                     {"out_event", stream.event},
+                     {"out_x", stream.x},
+                     {"out_confidence", "out_confidence"}});
+  }
 };
 
 }  // namespace
@@ -1166,6 +1274,7 @@ std::vector<StagePtr> pipeline_stages(const StereoConfig& c) {
   if (c.lr == LrCheck::Lr1) stages.push_back(std::make_shared<Lr1MatchStage>());
   stages.push_back(std::make_shared<WtaStage>(c));
   if (c.subpixel_bits != 0) stages.push_back(std::make_shared<SubpixelStage>());
+  if (c.confidence) stages.push_back(std::make_shared<ConfidenceStage>());
   stages.push_back(std::make_shared<DisparityReorderStage>());
   if (c.lr != LrCheck::None) stages.push_back(std::make_shared<LrCheckStage>(c));
   if (c.right_view) stages.push_back(std::make_shared<RightViewStage>());

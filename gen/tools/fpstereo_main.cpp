@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--right-output", run.right_output,
                       "the right view's disparities (the left-right check's match side): PFM if the name ends in "
                       ".pfm, else a KITTI 16-bit PNG");
-  run_cmd->add_option("--confidence", run.confidence,
+  run_cmd->add_option("--confidence-output", run.confidence,
                       "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
                       "(docs/semantics.md section 4), as an 8-bit gray PNG");
   run_cmd
