@@ -666,7 +666,7 @@ struct Winner {
       right_due = true;
     }
     last_sum = s;
-    if (C::kUniqueness == 0) {
+    if (C::kUniqueness == 0 && !C::kConfidence) {
       ++count;
       return;
     }
@@ -696,17 +696,28 @@ struct Winner {
     const int offset = (((num < 0 ? -num : num) << k) + half) / (2 * half);
     return (best_d << k) + (num < 0 ? -offset : offset);
   }
-  // S2 * (100 - u) < S1 * 100 makes the pixel invalid.
-  bool unique(int ratio) const {
+  // S2: the smallest sum two or more disparities from the winner, among the four smallest (one
+  // of them is once dmax >= 4 sums were offered: at most three lie within one of the winner);
+  // -1 if none.
+  int second() const {
     for (int k = 0; k < 4 && k < count; ++k) {
       const int distance = top_d[k] > best_d ? top_d[k] - best_d : best_d - top_d[k];
-      if (distance >= 2) {
-        const ap_uint<C::kUniquenessBits> second = ap_uint<C::kUniquenessBits>(top_sum[k]) * (100 - ratio);
-        const ap_uint<C::kUniquenessBits> first = ap_uint<C::kUniquenessBits>(best_sum) * 100;
-        return !(second < first);
-      }
+      if (distance >= 2) return top_sum[k];
     }
-    return true;
+    return -1;
+  }
+  // S2 * (100 - u) < S1 * 100 makes the pixel invalid.
+  bool unique(int ratio) const {
+    const int s2 = second();
+    if (s2 < 0) return true;
+    const ap_uint<C::kUniquenessBits> second_scaled = ap_uint<C::kUniquenessBits>(s2) * (100 - ratio);
+    const ap_uint<C::kUniquenessBits> first_scaled = ap_uint<C::kUniquenessBits>(best_sum) * 100;
+    return !(second_scaled < first_scaled);
+  }
+  // Section 4: 255 (S2 - S1) / S2, 0 where S2 is 0.
+  int confidence() const {
+    const int s2 = second();
+    return s2 <= 0 ? 0 : int((ap_uint<C::kSumBits + 8>(s2 - best_sum) * 255) / s2);
   }
 };
 
@@ -715,7 +726,8 @@ struct Winner {
 // (x' + dmax - 1 seen), the rest at the row's end.
 template <class C>
 void select_base(hls::stream<SumWord<C>>& sums, hls::stream<BaseWord<C>>& disparity,
-                 hls::stream<Word<C>>& match_disparity, int width, int height, int uniqueness) {
+                 hls::stream<Word<C>>& match_disparity, hls::stream<ap_uint<8>>& confidences, int width,
+                 int height, int uniqueness) {
   constexpr int G = C::kGroups, U = C::kUf;
   uniqueness = clamp_int(uniqueness, 0, 99);
   int dm_sum[C::kMaxWidth];
@@ -749,6 +761,7 @@ select_rows:
         const BaseWord<C> whole = whole_bits<C>() != 0 ? BaseWord<C>(winner.best_d) : BaseWord<C>(0);
         disparity.write(BaseWord<C>((whole << C::kWordBits) |
                                     BaseWord<C>(valid ? winner.refined() : C::kInvalidWord)));
+        if (C::kConfidence) confidences.write(winner.confidence());
         if (C::kLr == Lr::Lr1 && x - (C::kDmax - 1) >= 0) match_disparity.write(dm_d[x - (C::kDmax - 1)]);
         g = 0;
         ++x;
@@ -933,6 +946,28 @@ write_pixels:
   }
 }
 
+// With confidence: each word in its lane, its pixel's confidence in the 8 bits above.
+template <class C>
+void write_confident_words(hls::stream<Word<C>>& in, hls::stream<ap_uint<8>>& confidences,
+                           hls::stream<VideoOut<C>>& out, int width, int height) {
+  int x = 0;
+write_confident_pixels:
+  for (int i = 0; i < width * height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    VideoOut<C> beat;
+    beat.data = (ap_uint<C::kOutBits>(confidences.read()) << C::kLaneBits) | ap_uint<C::kOutBits>(in.read());
+    beat.keep = -1;
+    beat.strb = -1;
+    beat.user = i == 0 ? 1 : 0;
+    beat.last = x == width - 1 ? 1 : 0;
+    beat.id = 0;
+    beat.dest = 0;
+    out.write(beat);
+    if (++x == width) x = 0;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Memory-mapped frames for the Vitis kernel flow (XRT): a frame in memory becomes a video stream
 // and the disparity stream becomes 16-bit words in memory.
@@ -963,6 +998,21 @@ store_pixels:
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
     words[i] = (unsigned short)(in.read().data);
+  }
+}
+
+// With confidence: the words' lanes to one frame, the confidences above them to another.
+template <class C>
+void store_confident_frame(hls::stream<VideoOut<C>>& in, unsigned short* words, unsigned char* confidences,
+                           int width, int height) {
+  const Frame f = clamp_frame<C>(width, height);
+store_confident_pixels:
+  for (int i = 0; i < f.width * f.height; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
+    const ap_uint<C::kOutBits> data = in.read().data;
+    words[i] = (unsigned short)(data.range(C::kLaneBits - 1, 0));
+    confidences[i] = (unsigned char)(data.range(C::kOutBits - 1, C::kLaneBits));
   }
 }
 

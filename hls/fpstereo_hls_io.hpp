@@ -132,6 +132,14 @@ inline Words load_pfm_words(const std::string& path, const std::string& role, un
   return out;
 }
 
+// Binary PGM, as fpstereo writes it (`P5`, the size, 255, the bytes).
+inline void write_pgm(const Gray& image, const std::string& path) {
+  std::ofstream out(path, std::ios::binary);
+  out << "P5\n" << image.width << " " << image.height << "\n255\n";
+  out.write(reinterpret_cast<const char*>(image.pixels.data()), std::streamsize(image.pixels.size()));
+  if (!out) throw InputError("cannot write '" + path + "'");
+}
+
 inline void write_pfm_words(const Words& words, unsigned invalid_word, int fraction_bits, const std::string& path) {
   std::ofstream out(path, std::ios::binary);
   out << "Pf\n" << words.width << " " << words.height << "\n-1\n";

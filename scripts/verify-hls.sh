@@ -67,27 +67,38 @@ if [ -z "$user_left" ] && [ "$width" -le 450 ] && [ "$height" -le 375 ]; then
     --from "$root/examples/cones/left.png" "$root/examples/cones/right.png"
 fi
 
-# With the right view, its words are checked too (test bench and host), against `--right-output`.
+# With the right view, its words are checked too (test bench and host), against `--right-output`;
+# with confidence the confidences, against `--confidence-output`.
 right_view=$(sed -n 's/^right-view = //p' <<<"$config")
+confidence=$(sed -n 's/^confidence = //p' <<<"$config")
 pixels=0
 for name in "${pairs[@]}"; do
   left=$work/pairs/$name-left.pgm right=$work/pairs/$name-right.pgm
-  reference=(--pfm "$work/pairs/$name-reference.pfm") tb_right=() host_right=()
+  reference=(--pfm "$work/pairs/$name-reference.pfm") tb_extra=() host_extra=()
   if [ "$right_view" = on ]; then
     reference+=(--right-output "$work/pairs/$name-right-reference.pfm")
-    tb_right=(--right-reference "$work/pairs/$name-right-reference.pfm")
-    host_right=(--right-view "$work/pairs/$name-host-right.pfm")
+    tb_extra=(--right-reference "$work/pairs/$name-right-reference.pfm")
+    host_extra=(--right-view "$work/pairs/$name-host-right.pfm")
+  fi
+  if [ "$confidence" = on ]; then
+    reference+=(--confidence-output "$work/pairs/$name-confidence.pgm")
+    tb_extra+=(--confidence-reference "$work/pairs/$name-confidence.pgm")
+    host_extra+=(--confidence "$work/pairs/$name-host-confidence.pgm")
   fi
   "$build/fpstereo" run "${config_flags[@]}" "$left" "$right" "${reference[@]}" >/dev/null
-  "$tb" "$left" "$right" "$work/pairs/$name-reference.pfm" "${tb_right[@]}" ||
+  "$tb" "$left" "$right" "$work/pairs/$name-reference.pfm" "${tb_extra[@]}" ||
     fail "$name: the test bench found mismatches"
-  "$host" "$left" "$right" "$work/pairs/$name-host.pfm" "${host_right[@]}" >/dev/null ||
+  "$host" "$left" "$right" "$work/pairs/$name-host.pfm" "${host_extra[@]}" >/dev/null ||
     fail "$name: the host program failed"
   cmp -s "$work/pairs/$name-host.pfm" "$work/pairs/$name-reference.pfm" ||
     fail "$name: the host program's disparity differs from the reference"
   if [ "$right_view" = on ]; then
     cmp -s "$work/pairs/$name-host-right.pfm" "$work/pairs/$name-right-reference.pfm" ||
       fail "$name: the host program's right view differs from the reference"
+  fi
+  if [ "$confidence" = on ]; then
+    cmp -s "$work/pairs/$name-host-confidence.pgm" "$work/pairs/$name-confidence.pgm" ||
+      fail "$name: the host program's confidences differ from the reference"
   fi
   read -r w h < <(sed -n 2p "$work/pairs/$name-reference.pfm")
   pixels=$((pixels + w * h))

@@ -116,7 +116,6 @@ expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad
 expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
 expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --right-view on)
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
-expect_error("confidence = on: not in the HLS path yet" --emit hls --confidence on -o ${WORK}/hls_confidence)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --cost shd --p2-adapt 4)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --emit hls --cost shd --p2-adapt 4
              -o ${WORK}/hls_shd_adapt)

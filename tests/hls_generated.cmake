@@ -92,6 +92,14 @@ expect_in(${right_config} "#define FPSTEREO_RIGHT_VIEW 1\n" "the right view swit
 expect_in(${config} "#define FPSTEREO_RIGHT_VIEW 0\n" "the right view off by default")
 expect_in(${right_top} "#pragma HLS INTERFACE mode = axis port = m_axis_disp_right\n" "the right view's stream port")
 expect_in(${right_top} "write_words<C>\\(right_view, right_out, W, H\\);" "the right view's writer")
+# Confidence: switched on, the words written with it, and the memory-mapped kernel's frame of it.
+emit(${WORK}/confidence --preset C2 --width 320 --height 96 --confidence on)
+file(GLOB confidence_config ${WORK}/confidence/*_config.hpp)
+file(GLOB confidence_top ${WORK}/confidence/*_top.cpp)
+expect_in(${confidence_config} "#define FPSTEREO_CONFIDENCE 1\n" "confidence switched on")
+expect_in(${confidence_config} "kOutBits = kLaneBits \\+ \\(kConfidence \\? 8 : 0\\)" "tdata 8 bits wider")
+expect_in(${confidence_top} "write_confident_words<C>\\([a-z]+, confidences, out, W, H\\);" "the confident writer")
+expect_in(${confidence_top} "store_confident_frame<" "the memory-mapped kernel's confidences")
 
 # run_hls.tcl with the Vitis HLS commands stubbed: each call is logged, then checked.
 emit(${WORK}/part --preset C2 --width 320 --height 96 --part xck26-sfvc784-2LV-c --clock-mhz 250)

@@ -156,10 +156,14 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kWordBits = " << w.output_word << ";\n"
      << "  static constexpr int kInvalidWord = " << w.invalid_word << ";\n"
      << "  static constexpr int kUniquenessBits = " << w.uniqueness_product << ";\n"
-     << "  static constexpr int kOutBits = " << (w.output_word > 8 ? 16 : 8) << ";  // byte-aligned tdata\n"
+     << "  static constexpr int kLaneBits = " << (w.output_word > 8 ? 16 : 8) << ";  // the word's byte-aligned lane\n"
+     << "  static constexpr bool kConfidence = " << (cfg.confidence ? "true" : "false")
+     << ";  // the confidence in 8 bits above the lane\n"
+     << "  static constexpr int kOutBits = kLaneBits + (kConfidence ? 8 : 0);  // tdata\n"
      << "};\n"
-     << "// The top functions' ports depend on it (the templates' #if).\n"
-     << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n";
+     << "// The top functions' ports depend on them (the templates' #if).\n"
+     << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n"
+     << "#define FPSTEREO_CONFIDENCE " << (cfg.confidence ? 1 : 0) << "\n";
   return os.str();
 }
 
@@ -169,8 +173,6 @@ std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top";
 
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   validate(cfg);
-  if (cfg.confidence)
-    throw ConfigError("confidence = on: not in the HLS path yet (the RTL and the golden model have it)");
   if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
     throw std::invalid_argument("--part " + quoted(options.part) +
                                 ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");

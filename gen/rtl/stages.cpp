@@ -786,7 +786,8 @@ class WtaStage : public Stage {
 
   // ---- HLS: select_base, with LR1 also Dm into the match side's stream; without a left-right
   // check that stream is never written. D waits in its FIFO for Dm: up to dmax pixels with LR1,
-  // the match side's extra latency with LR2.
+  // the match side's extra latency with LR2. With confidence, each pixel's goes to the output
+  // (write_confident_words) past the check, the median's rows and gap interpolation's row.
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     std::string text = std::string("\n  // Winner-take-all") + (unique_ ? " with uniqueness" : "") + ".\n" +
                        hls_streams("BaseWord<C>", {"disparity"}, "2 * C::kDmax + 4");
@@ -794,7 +795,10 @@ class WtaStage : public Stage {
       s.match = "match_disparity";
       text += hls_streams("Word<C>", {s.match});
     }
-    text += fmt::format("  select_base<C>({}, disparity, {}, W, H, uniqueness);\n", s.base, s.match);
+    const int64_t waiting_rows = d.cfg.median / 2 + (d.cfg.gap_interpolation ? 1 : 0) + 3;
+    text += hls_streams("ap_uint<8>", {"confidences"},
+                        d.cfg.confidence ? num(waiting_rows * d.cfg.width + 2 * d.cfg.dmax + 4) : "");
+    text += fmt::format("  select_base<C>({}, disparity, {}, confidences, W, H, uniqueness);\n", s.base, s.match);
     s.base = "disparity";
     return text;
   }
@@ -892,8 +896,10 @@ class ConfidenceStage : public Stage {
                      {"data_out", data("wta")},
                      {"confidence", "wta_confidence"}});
   }
-  // ---- HLS: not yet (the generator refuses confidence).
-  std::string hls_calls(const RtlDesign&, HlsStreams&) const override { return ""; }
+  // ---- HLS: select_base computes it (Winner::confidence).
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Confidence: none, select_base computes it.\n";
+  }
 };
 
 // Disparity reorder RAM: chain order in, one word per slot in raster order out. With a
@@ -1224,8 +1230,10 @@ class OutputStage : public Stage {
                stream.event, stream.x, stream.y);
   }
 
-  // ---- HLS: the words into the output video stream.
-  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+  // ---- HLS: the words into the output video stream, with confidence each above its word.
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
+    if (d.cfg.confidence)
+      return fmt::format("\n  // Output.\n  write_confident_words<C>({}, confidences, out, W, H);\n", s.base);
     return fmt::format("\n  // Output.\n  write_words<C>({}, out, W, H);\n", s.base);
   }
 

@@ -59,7 +59,12 @@ int run_pair(const RunOptions& opt) {
     const bool pfm = opt.right_output.size() > 4 && opt.right_output.substr(opt.right_output.size() - 4) == ".pfm";
     outputs.push_back({opt.right_output, pfm ? encode_pfm(right_disparity) : encode_kitti_png(right_disparity)});
   }
-  if (!opt.confidence.empty()) outputs.push_back({opt.confidence, encode_gray_png(confidence)});
+  if (!opt.confidence.empty()) {
+    const bool pgm = opt.confidence.size() > 4 && opt.confidence.substr(opt.confidence.size() - 4) == ".pgm";
+    GrayImage bytes(confidence.width, confidence.height);
+    for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(confidence.pixels[i]);
+    outputs.push_back({opt.confidence, pgm ? encode_pgm(bytes) : encode_gray_png(confidence)});
+  }
   write_outputs(outputs);
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
@@ -100,7 +105,7 @@ int main(int argc, char** argv) {
                       ".pfm, else a KITTI 16-bit PNG");
   run_cmd->add_option("--confidence-output", run.confidence,
                       "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
-                      "(docs/semantics.md section 4), as an 8-bit gray PNG");
+                      "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG");
   run_cmd
       ->add_option("--gray-pgm", run.gray_pgm,
                    "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "
