@@ -116,11 +116,15 @@ expect_error("uf = 48: must divide dmax (128)" --emit hls --uf 48 -o ${WORK}/bad
 expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
 expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --right-view on)
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
+expect_error("min-disp = -300: must be in -256 .. 256" --min-disp -300)
+expect_error("min-disp = -8: not in the hardware generators yet" --min-disp -8)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --cost shd --p2-adapt 4)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --emit hls --cost shd --p2-adapt 4
              -o ${WORK}/hls_shd_adapt)
 expect_error("right-view = on: needs a left-right check" --emit hls --right-view on -o ${WORK}/hls_right_view)
 set(FPSTEREO ${FPSTEREO_MAIN})
+expect_error("a KITTI PNG cannot hold the negative disparity"
+             run --width 450 --height 375 --dmax 64 --uf 16 --min-disp -200 ${L} ${R} -o ${WORK}/negative.png)
 expect_error("--right-output needs a left-right check (lr = lr1 or lr2)"
              run --width 450 --height 375 --dmax 64 --uf 16 ${L} ${R} --right-output ${WORK}/right.png)
 file(MAKE_DIRECTORY ${WORK}/nul)

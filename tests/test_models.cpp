@@ -32,6 +32,7 @@ StereoConfig random_config(std::mt19937& rng) {
   c.p1 = std::uniform_int_distribution<int>(0, 40)(rng);
   c.p2 = c.p1 + std::uniform_int_distribution<int>(0, 200)(rng);
   c.p2_adapt = pick(rng, {0, 0, 1, 4, 16});
+  c.min_disp = pick(rng, {0, 0, 3, -5, -20});
   c.lr = pick(rng, {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2});
   c.lr_threshold = pick(rng, {0, 1, 2});
   c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
@@ -114,7 +115,9 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "7"},
                            {"gap-interp", "on"},
                            {"subpixel-bits", "4"},
-                           {"p2-adapt", "6"}}) {
+                           {"p2-adapt", "6"},
+                           {"min-disp", "2"},
+                           {"min-disp", "-7"}}) {
     StereoConfig c = base;
     set_param(c, spec.first, spec.second);
     variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);

@@ -261,3 +261,21 @@ TEST_CASE("confidence: high on a unique match, low where a periodic texture repe
   CHECK(unique > 128);
   CHECK(repeated < 16);
 }
+
+TEST_CASE("a negative disparity is found with min-disp, and the words count from it", "[synthetic]") {
+  std::mt19937 rng(15);
+  for (const char* cost : {"census", "sad"})
+    for (int m : {-20, -4, 3}) {
+      StereoConfig cfg = small_config(cost, 80, 24);
+      cfg.min_disp = m;
+      const int d0 = m + 11;  // the true disparity, index 11 of the range
+      const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
+      const DisparityImage out = run_golden(cfg, left, right);
+      const int r = cfg.window / 2;
+      // Away from the borders where the match pixel x - d0 leaves the row, and past the settling
+      // distance of the paths from the left.
+      INFO(cost << " min-disp " << m);
+      CHECK(wrong_pixels(out, std::max(0, d0) + r + kSettle, cfg.width - std::max(0, -d0) - r, r, cfg.height - r,
+                         [&](int, int) { return 11; }) == 0);
+    }
+}

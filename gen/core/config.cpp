@@ -157,6 +157,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"dmax", "disparity range (disparities 0 .. dmax-1): 16 to 256, a multiple of uf",
        [](StereoConfig& c, const std::string& v) { c.dmax = parse_int("dmax", v); },
        [](const StereoConfig& c) { return std::to_string(c.dmax); }},
+      {"min-disp", "the smallest disparity searched (negative for converged cameras): -256 to 256",
+       [](StereoConfig& c, const std::string& v) { c.min_disp = parse_int("min-disp", v); },
+       [](const StereoConfig& c) { return std::to_string(c.min_disp); }},
       {"uf", "unroll factor: disparities per clock, a divisor of dmax",
        [](StereoConfig& c, const std::string& v) { c.uf = parse_int("uf", v); },
        [](const StereoConfig& c) { return std::to_string(c.uf); }},
@@ -215,6 +218,7 @@ void validate(const StereoConfig& c) {
   check_odd_window("window", c.window, 3, 11);
   check_odd_window("shd-window", c.shd_window, 1, 11);  // checked even when unused: never silently wrong
   check_range("dmax", c.dmax, 16, 256);
+  check_range("min-disp", c.min_disp, -256, 256);
   if (c.uf < 1 || c.uf > c.dmax || c.dmax % c.uf != 0)
     reject("uf", std::to_string(c.uf), "must divide dmax (" + std::to_string(c.dmax) + ")");
   if (c.dmax > c.width)

@@ -44,7 +44,8 @@ struct StereoConfig {
   CostFunction cost = CostFunction::Census;
   int window = 7;      // cost window side (odd)
   int shd_window = 5;  // SHD only: side of the window the Hamming distances are summed over
-  int dmax = 128;      // disparities 0 .. dmax-1
+  int dmax = 128;      // disparities min_disp .. min_disp + dmax - 1
+  int min_disp = 0;    // the smallest disparity; words count from it (docs/semantics.md section 8)
   int uf = 32;         // disparities computed per clock (hardware unroll factor)
   unsigned paths = kAllPaths;
   int p1 = 7;

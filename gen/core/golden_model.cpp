@@ -65,18 +65,21 @@ int refined_disparity(const T* S, int dmax, int d, const StereoConfig& cfg) {
   return (d << bits) + int(num < 0 ? -offset : offset);
 }
 
-// Section 5, LR1: Dm(x') = argmin_d S(x' + d, d) over d with x' + d < W.
+// Section 5, LR1: Dm(x') = argmin_d S(x' + m + d, d) over d with x' + m + d in the row (the
+// smallest such d on ties; 0 if there is none).
 template <class T>
-std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dmax) {
+std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dmax, int m) {
   std::vector<int> dm(static_cast<size_t>(width));
   for (int xm = 0; xm < width; ++xm) {
     int best = 0;
-    T best_sum = sum_row[size_t(xm) * size_t(dmax)];
-    for (int d = 1; d < dmax && xm + d < width; ++d) {
-      const T s = sum_row[size_t(xm + d) * size_t(dmax) + size_t(d)];
-      if (s < best_sum) {
+    bool found = false;
+    T best_sum = 0;
+    for (int d = std::max(0, -m - xm); d < dmax && xm + m + d < width; ++d) {
+      const T s = sum_row[size_t(xm + m + d) * size_t(dmax) + size_t(d)];
+      if (!found || s < best_sum) {
         best = d;
         best_sum = s;
+        found = true;
       }
     }
     dm[size_t(xm)] = best;
@@ -164,14 +167,16 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
     }
 
     std::vector<int> match_disparity;
-    if (cfg.lr == LrCheck::Lr1) match_disparity = match_disparities_from_base(sum.data(), width, dmax);
+    if (cfg.lr == LrCheck::Lr1) match_disparity = match_disparities_from_base(sum.data(), width, dmax, cfg.min_disp);
     if (cfg.lr == LrCheck::Lr2) {
       // Every cost is symmetric in its two images, so the match side's cost at (x', d) is the
-      // base side's cost at (x' + d, d); beyond the right border it is Cmax (section 5).
+      // base side's cost at (x' + m + d, d); beyond the row it is Cmax (section 5).
       for (int xm = 0; xm < width; ++xm)
-        for (int d = 0; d < dmax; ++d)
+        for (int d = 0; d < dmax; ++d) {
+          const int x = xm + cfg.min_disp + d;
           match_cost[size_t(xm) * size_t(dmax) + size_t(d)] =
-              xm + d < width ? cost[size_t(xm + d) * size_t(dmax) + size_t(d)] : T(widths.cost_max);
+              x >= 0 && x < width ? cost[size_t(x) * size_t(dmax) + size_t(d)] : T(widths.cost_max);
+        }
       match_paths.push_row(y, match_cost.data(), match_sum.data(), right);
       match_disparity.resize(size_t(width));
       for (int xm = 0; xm < width; ++xm)
@@ -182,8 +187,9 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
     if (cfg.lr != LrCheck::None)
       for (int x = 0; x < width; ++x) {
         if (row[x] == kInvalid) continue;
-        const int xm = x - row[x];
-        if (xm < 0 || std::abs(row[x] - match_disparity[size_t(xm)]) > cfg.lr_threshold) row[x] = kInvalid;
+        const int xm = x - cfg.min_disp - row[x];
+        if (xm < 0 || xm >= width || std::abs(row[x] - match_disparity[size_t(xm)]) > cfg.lr_threshold)
+          row[x] = kInvalid;
       }
     // The checks above use the whole disparity; the stages below the refined one.
     for (int x = 0; x < width; ++x)

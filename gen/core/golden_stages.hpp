@@ -117,37 +117,43 @@ class CostRows {
     }
   }
 
+  // Index d is the disparity min_disp + d: base pixel x against match pixel x - min_disp - d.
   void compute(int y, T* out) const {
-    const int width = base_.width, dmax = cfg_.dmax;
+    const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
+    // The indices whose match pixel lies in the row: d_lo(x) <= d < d_hi(x).
+    auto d_lo = [&](int x) { return std::clamp(x - m - width + 1, 0, dmax); };
+    auto d_hi = [&](int x) { return std::clamp(x - m + 1, 0, dmax); };
     switch (cfg_.cost) {
       case CostFunction::Census:
         for (int x = 0; x < width; ++x)
-          for (int d = 0; d <= std::min(x, dmax - 1); ++d)
-            out[x * dmax + d] = T(hamming(base_codes_.at(x, y), match_codes_.at(x - d, y)));
+          for (int d = d_lo(x); d < d_hi(x); ++d)
+            out[x * dmax + d] = T(hamming(base_codes_.at(x, y), match_codes_.at(x - m - d, y)));
         break;
       case CostFunction::Rank:
         for (int x = 0; x < width; ++x)
-          for (int d = 0; d <= std::min(x, dmax - 1); ++d)
-            out[x * dmax + d] = T(std::abs(base_ranks_.at(x, y) - match_ranks_.at(x - d, y)));
+          for (int d = d_lo(x); d < d_hi(x); ++d)
+            out[x * dmax + d] = T(std::abs(base_ranks_.at(x, y) - match_ranks_.at(x - m - d, y)));
         break;
       case CostFunction::Sad:
         box_sum_row(y, cfg_.window, out, [&](int xb, int yy, int d) {
-          return std::abs(pixel_or_zero(base_, xb, yy) - pixel_or_zero(match_, xb - d, yy));
+          return std::abs(pixel_or_zero(base_, xb, yy) - pixel_or_zero(match_, xb - m - d, yy));
         });
         break;
       case CostFunction::Shd:
         box_sum_row(y, cfg_.shd_window, out, [&](int xb, int yy, int d) {
-          return hamming(code_or_zero(base_codes_, xb, yy), code_or_zero(match_codes_, xb - d, yy));
+          return hamming(code_or_zero(base_codes_, xb, yy), code_or_zero(match_codes_, xb - m - d, yy));
         });
         break;
       case CostFunction::Zsad:
         for (int x = 0; x < width; ++x)
-          for (int d = 0; d <= std::min(x, dmax - 1); ++d) out[x * dmax + d] = T(zsad(x, y, d));
+          for (int d = d_lo(x); d < d_hi(x); ++d) out[x * dmax + d] = T(zsad(x, y, m + d));
         break;
     }
-    // Match pixel outside the image (x - d < 0): the largest cost.
-    for (int x = 0; x < std::min(width, dmax); ++x)
-      for (int d = x + 1; d < dmax; ++d) out[x * dmax + d] = cost_max_;
+    // Match pixel outside the row: the largest cost.
+    for (int x = 0; x < width; ++x) {
+      for (int d = 0; d < d_lo(x); ++d) out[x * dmax + d] = cost_max_;
+      for (int d = d_hi(x); d < dmax; ++d) out[x * dmax + d] = cost_max_;
+    }
   }
 
  private:
@@ -177,14 +183,15 @@ class CostRows {
     }
   }
 
-  int zsad(int x, int y, int d) const {
+  // The ZSAD cost of base pixel x against match pixel x - shift.
+  int zsad(int x, int y, int shift) const {
     const int r = cfg_.window / 2;
-    const int base_mean = base_means_.at(x, y), match_mean = match_means_.at(x - d, y);
+    const int base_mean = base_means_.at(x, y), match_mean = match_means_.at(x - shift, y);
     int sum = 0;
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx)
         sum += std::abs((pixel_or_zero(base_, x + dx, y + dy) - base_mean) -
-                        (pixel_or_zero(match_, x - d + dx, y + dy) - match_mean));
+                        (pixel_or_zero(match_, x - shift + dx, y + dy) - match_mean));
     return sum;
   }
 

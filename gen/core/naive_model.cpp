@@ -148,18 +148,22 @@ Volume base_costs(const StereoConfig& cfg, const Side& base, const Side& match, 
   Volume c(base.width, base.height, cfg.dmax);
   for (int y = 0; y < base.height; ++y)
     for (int x = 0; x < base.width; ++x)
-      for (int d = 0; d < cfg.dmax; ++d)
-        c.at(x, y, d) = (x - d < 0) ? cmax : pair_cost(cfg, base, match, x, x - d, y);
+      for (int d = 0; d < cfg.dmax; ++d) {
+        const int xm = x - cfg.min_disp - d;  // disparity min_disp + d
+        c.at(x, y, d) = (xm < 0 || xm >= match.width) ? cmax : pair_cost(cfg, base, match, x, xm, y);
+      }
   return c;
 }
 
-// LR2 match-side cost: match pixel (x', y) against base pixel (x' + d, y), roles swapped.
+// LR2 match-side cost: match pixel (x', y) against base pixel (x' + m + d, y), roles swapped.
 Volume match_costs(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
   Volume c(match.width, match.height, cfg.dmax);
   for (int y = 0; y < match.height; ++y)
     for (int x = 0; x < match.width; ++x)
       for (int d = 0; d < cfg.dmax; ++d)
-        c.at(x, y, d) = (x + d >= match.width) ? cmax : pair_cost(cfg, match, base, x, x + d, y);
+        c.at(x, y, d) = (x + cfg.min_disp + d < 0 || x + cfg.min_disp + d >= match.width)
+                            ? cmax
+                            : pair_cost(cfg, match, base, x, x + cfg.min_disp + d, y);
   return c;
 }
 
@@ -259,15 +263,19 @@ DisparityImage confidence(const Volume& sum, const DispMap& winners) {
   return out;
 }
 
-// LR1: Dm(x') = smallest d minimising S(x' + d, y, d) over d with x' + d < W.
-DispMap lr1_match_disparities(const Volume& sum) {
+// LR1: Dm(x') = smallest d minimising S(x' + m + d, y, d) over d with x' + m + d in the row.
+DispMap lr1_match_disparities(const Volume& sum, int m) {
   DispMap dm(sum.width, sum.height);
   for (int y = 0; y < sum.height; ++y) {
     for (int xm = 0; xm < sum.width; ++xm) {
-      int best_d = 0;  // d = 0 always qualifies since xm < W
-      for (int d = 1; d < sum.depth && xm + d < sum.width; ++d)
-        if (sum.at(xm + d, y, d) < sum.at(xm + best_d, y, best_d)) best_d = d;
-      dm.at(xm, y) = best_d;
+      // Over the d whose base pixel x' + m + d lies in the row; 0 when none does.
+      int64_t best_d = -1;
+      for (int d = 0; d < sum.depth; ++d) {
+        const int x = xm + m + d;
+        if (x < 0 || x >= sum.width) continue;
+        if (best_d < 0 || sum.at(x, y, d) < sum.at(xm + m + int(best_d), y, int(best_d))) best_d = d;
+      }
+      dm.at(xm, y) = best_d < 0 ? 0 : best_d;
     }
   }
   return dm;
@@ -288,8 +296,9 @@ void apply_lr_check(const StereoConfig& cfg, const DispMap& dm, DispMap& disp) {
     for (int x = 0; x < disp.width; ++x) {
       const int64_t D = disp.at(x, y);
       if (D == kInvalid) continue;
-      const int64_t xm = int64_t(x) - D;
-      if (xm < 0 || std::llabs(D - dm.at(int(xm), y)) > int64_t(cfg.lr_threshold)) disp.at(x, y) = kInvalid;
+      const int64_t xm = int64_t(x) - cfg.min_disp - D;
+      if (xm < 0 || xm >= disp.width || std::llabs(D - dm.at(int(xm), y)) > int64_t(cfg.lr_threshold))
+        disp.at(x, y) = kInvalid;
     }
   }
 }
@@ -389,7 +398,7 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
 
   if (cfg.lr != LrCheck::None) {
-    const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum)
+    const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum, cfg.min_disp)
                                               : lr2_match_disparities(cfg, base, match, cmax);
     apply_lr_check(cfg, dm, disp);
     if (side.right != nullptr) {

@@ -313,7 +313,7 @@ cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cf
   for (int y = 0; y < words.height; ++y)
     for (int x = 0; x < words.width; ++x) {
       const uint16_t w = words.at(x, y);
-      disp(y, x) = w == invalid ? NAN : float(w) * unit;
+      disp(y, x) = w == invalid ? NAN : float(cfg.min_disp) + float(w) * unit;
     }
   return disp;
 }
@@ -324,6 +324,9 @@ std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp) {
     for (int x = 0; x < disp.cols; ++x) {
       const float d = disp(y, x);
       // 0 is the invalid code, so a valid disparity that would round to 0 is stored as 1.
+      if (std::isfinite(d) && d < 0)
+        throw InputError(fmt::format("a KITTI PNG cannot hold the negative disparity {} at ({}, {}): write a PFM",
+                                     d, x, y));
       stored(y, x) = std::isfinite(d) ? uint16_t(std::clamp(std::lround(d * 256.0f), 1L, 65535L)) : 0;
     }
   return encode_png(stored);

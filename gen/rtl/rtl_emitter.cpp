@@ -296,6 +296,9 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   if (cfg.p2_adapt != 0 && cfg.cost == CostFunction::Shd && cfg.shd_window > 1)
     throw ConfigError("p2-adapt = " + std::to_string(cfg.p2_adapt) +
                       ": not with cost shd in the hardware generators (the golden model has it)");
+  if (cfg.min_disp != 0)
+    throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) +
+                      ": not in the hardware generators yet (the golden model has it)");
   RtlDesign d;
   d.cfg = cfg;
   d.options = options;

@@ -323,7 +323,10 @@ class CostStage : public Stage {
  public:
   explicit CostStage(const StereoConfig& c) : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
   std::string title() const override { return "cost"; }
-  std::vector<std::string> knobs() const override { return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt"}; }
+  // min-disp: the stage that will shift the match columns (the generators refuse it so far).
+  std::vector<std::string> knobs() const override {
+    return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt", "min-disp"};
+  }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean); the lanes take their register
   // stages.
