@@ -926,6 +926,19 @@ gap_rows:
 // ---------------------------------------------------------------------------------------------
 // Output: words zero-extended to the byte-aligned tdata; tuser on a frame's first pixel, tlast on
 // a row's last. The disparity words (VideoOut) and the right view's (VideoRight).
+template <class Beat>
+Beat video_beat(decltype(Beat::data) data, bool first, bool row_end) {
+  Beat beat;
+  beat.data = data;
+  beat.keep = -1;
+  beat.strb = -1;
+  beat.user = first ? 1 : 0;
+  beat.last = row_end ? 1 : 0;
+  beat.id = 0;
+  beat.dest = 0;
+  return beat;
+}
+
 template <class C, class Beat>
 void write_words(hls::stream<Word<C>>& in, hls::stream<Beat>& out, int width, int height) {
   int x = 0;
@@ -933,15 +946,7 @@ write_pixels:
   for (int i = 0; i < width * height; ++i) {
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    Beat beat;
-    beat.data = decltype(beat.data)(in.read());
-    beat.keep = -1;
-    beat.strb = -1;
-    beat.user = i == 0 ? 1 : 0;
-    beat.last = x == width - 1 ? 1 : 0;
-    beat.id = 0;
-    beat.dest = 0;
-    out.write(beat);
+    out.write(video_beat<Beat>(decltype(Beat::data)(in.read()), i == 0, x == width - 1));
     if (++x == width) x = 0;
   }
 }
@@ -955,15 +960,9 @@ write_confident_pixels:
   for (int i = 0; i < width * height; ++i) {
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    VideoOut<C> beat;
-    beat.data = (ap_uint<C::kOutBits>(confidences.read()) << C::kLaneBits) | ap_uint<C::kOutBits>(in.read());
-    beat.keep = -1;
-    beat.strb = -1;
-    beat.user = i == 0 ? 1 : 0;
-    beat.last = x == width - 1 ? 1 : 0;
-    beat.id = 0;
-    beat.dest = 0;
-    out.write(beat);
+    const ap_uint<C::kOutBits> data =
+        (ap_uint<C::kOutBits>(confidences.read()) << C::kLaneBits) | ap_uint<C::kOutBits>(in.read());
+    out.write(video_beat<VideoOut<C>>(data, i == 0, x == width - 1));
     if (++x == width) x = 0;
   }
 }
@@ -978,15 +977,7 @@ load_pixels:
   for (int i = 0; i < f.width * f.height; ++i) {
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    VideoIn beat;
-    beat.data = frame[i];
-    beat.keep = -1;
-    beat.strb = -1;
-    beat.user = i == 0 ? 1 : 0;
-    beat.last = (i + 1) % f.width == 0 ? 1 : 0;
-    beat.id = 0;
-    beat.dest = 0;
-    out.write(beat);
+    out.write(video_beat<VideoIn>(frame[i], i == 0, (i + 1) % f.width == 0));
   }
 }
 
