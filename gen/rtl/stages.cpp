@@ -879,8 +879,8 @@ class ConfidenceStage : public Stage {
       return fmt::format("{{{0}_active, {0}_x, {0}_slot, {0}_group, {0}_word", p) +
              (whole ? fmt::format(", {}_whole}}", p) : "}");
     };
-    // The sub-pixel fit, when there, holds the words subpixel-bits + 5 steps after the sums.
-    const int waited = d.cfg.subpixel_bits != 0 ? d.cfg.subpixel_bits + 5 : 0;
+    // The sub-pixel fit, when there, holds the words its latency after the sums.
+    const int64_t waited = d.cfg.subpixel_bits != 0 ? SubpixelStage().latency(d).steps : 0;
     return "\n  // Confidence: the word waits beside the division.\n" + wire(d.group_bits, "wta_group") +
            wire(1, "wta_active") + wire(d.x_bits, "wta_x") + wire(d.out_row_bits, "wta_slot") +
            wire(d.widths.output_word, "wta_word") + (whole ? wire(d.widths.disparity, "wta_whole") : std::string()) +
