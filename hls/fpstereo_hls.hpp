@@ -91,6 +91,8 @@ constexpr int penalty_bits() {
   return C::kP2Adapt != 0 ? 4 * C::kPathCostBits : 0;
 }
 template <class C>
+using Penalties = ap_uint<4 * C::kPathCostBits>;  // a pixel's P2 on the 0, 45, 90, 135 degree paths
+template <class C>
 using CostWord = ap_uint<C::kUf * C::kCostBits + penalty_bits<C>()>;  // uf costs, disparity g * uf + lane
 template <class C>
 using PathWord = ap_uint<C::kUf * C::kPathCostBits>;
@@ -335,7 +337,7 @@ cost_groups:
 // from the left pixels in raster order (the row above in a line buffer); where p - r lies outside
 // the image the aggregation does not use it. P1 and P2 are clamped as the aggregation clamps them.
 template <class C>
-void penalty_stage(hls::stream<Pixel>& pixels, hls::stream<ap_uint<4 * C::kPathCostBits>>& out, int width,
+void penalty_stage(hls::stream<Pixel>& pixels, hls::stream<Penalties<C>>& out, int width,
                    int height, int p1, int p2) {
   p2 = clamp_int(p2, 0, C::kP2);
   p1 = clamp_int(p1, 0, p2);
@@ -349,7 +351,7 @@ penalty_pixels:
     const Pixel centre = pixels.read();
     const Pixel up = above[x], up_right = above[x + 1 < width ? x + 1 : x];
     const Pixel before[4] = {left, above_left, up, up_right};  // 0, 45, 90, 135 degrees
-    ap_uint<4 * C::kPathCostBits> word = 0;
+    Penalties<C> word = 0;
     for (int r = 0; r < 4; ++r) {
       const int step = int(centre) > int(before[r]) ? int(centre) - int(before[r]) : int(before[r]) - int(centre);
       const int lowered = p2 - ((C::kP2Adapt * step) >> 2);
@@ -365,10 +367,10 @@ penalty_pixels:
 
 // The pixel's penalties above each of its G cost words.
 template <class C>
-void attach_penalties(hls::stream<CostWord<C>>& costs, hls::stream<ap_uint<4 * C::kPathCostBits>>& penalties,
+void attach_penalties(hls::stream<CostWord<C>>& costs, hls::stream<Penalties<C>>& penalties,
                       hls::stream<CostWord<C>>& out, int width, int height) {
   constexpr int kCostsBits = C::kUf * C::kCostBits;
-  ap_uint<4 * C::kPathCostBits> penalty = 0;
+  Penalties<C> penalty = 0;
   int g = 0;
 attach_groups:
   for (int i = 0; i < width * height * C::kGroups; ++i) {

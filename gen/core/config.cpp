@@ -390,10 +390,6 @@ void apply_entries(StereoConfig& cfg, const Entries& entries, const std::string&
   }
 }
 
-bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 void apply_config_file(StereoConfig& cfg, const std::string& path) {

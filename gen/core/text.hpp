@@ -1,4 +1,5 @@
-// Quoting user input in messages: every error is one line, whatever the input holds.
+// Quoting user input in messages: every error is one line, whatever the input holds; and the
+// small text tests the tools share.
 #pragma once
 
 #include <string>
@@ -16,5 +17,10 @@ std::string quoted(const std::string& value);
 // For a non-const std::string, argument-dependent lookup would otherwise pick std::quoted (a
 // better match), which escapes no control characters.
 inline std::string quoted(std::string& value) { return quoted(std::as_const(value)); }
+
+// Whether `text` ends with `suffix` (a file name's extension, say).
+inline bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
 
 }  // namespace fpstereo

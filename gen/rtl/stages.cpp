@@ -448,7 +448,7 @@ class CostStage : public Stage {
     // which the windows delay by rows: their FIFO holds those rows and one more.
     const int64_t waiting = (WindowStage(d.cfg).hls_fill_rows(d) + 1) * int64_t(d.cfg.width);
     return text + hls_streams("CostWord<C>", {"plain_costs"}, "kDepth") +
-           hls_streams("ap_uint<4 * C::kPathCostBits>", {"penalties"}, num(waiting)) +
+           hls_streams("Penalties<C>", {"penalties"}, num(waiting)) +
            fmt::format("  cost_stage<C>({}, {}, plain_costs, {}, W, H);\n", in.base, in.match, s.match) +
            "  penalty_stage<C>(guide_pixels, penalties, W, H, p1, p2);\n" +
            fmt::format("  attach_penalties<C>(plain_costs, penalties, {}, W, H);\n", s.base);

@@ -12,6 +12,7 @@
 #include "golden_model.hpp"
 #include "image_io.hpp"
 #include "synth_command.hpp"
+#include "text.hpp"
 #include "widths.hpp"
 
 namespace fpstereo {
@@ -56,14 +57,13 @@ int run_pair(const RunOptions& opt) {
     StereoConfig whole = cfg;  // the right view's words are whole disparities
     whole.subpixel_bits = 0;
     const cv::Mat1f right_disparity = to_float_disparity(right_words, whole);
-    const bool pfm = opt.right_output.size() > 4 && opt.right_output.substr(opt.right_output.size() - 4) == ".pfm";
-    outputs.push_back({opt.right_output, pfm ? encode_pfm(right_disparity) : encode_kitti_png(right_disparity)});
+    outputs.push_back({opt.right_output, ends_with(opt.right_output, ".pfm") ? encode_pfm(right_disparity)
+                                                                              : encode_kitti_png(right_disparity)});
   }
   if (!opt.confidence.empty()) {
-    const bool pgm = opt.confidence.size() > 4 && opt.confidence.substr(opt.confidence.size() - 4) == ".pgm";
-    GrayImage bytes(confidence.width, confidence.height);
+    GrayImage bytes(confidence.width, confidence.height);  // confidences are 0 .. 255
     for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(confidence.pixels[i]);
-    outputs.push_back({opt.confidence, pgm ? encode_pgm(bytes) : encode_gray_png(confidence)});
+    outputs.push_back({opt.confidence, ends_with(opt.confidence, ".pgm") ? encode_pgm(bytes) : encode_gray_png(confidence)});
   }
   write_outputs(outputs);
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
