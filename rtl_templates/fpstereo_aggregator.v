@@ -4,7 +4,7 @@
 // RAM in chain order, runs the enabled paths in K interleaved chains and delivers, per step, the
 // path sums of one group of one pixel with the pixel's position. Every register advances when
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
-// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2). With
+// x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fpstereo_adaptive_p2), which replaces the p2 input for that path.
 module fpstereo_aggregator #(
@@ -36,7 +36,9 @@ module fpstereo_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1
+  parameter COST_K_W = 1,
+  // the match side's disparity offset
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -227,10 +229,14 @@ module fpstereo_aggregator #(
   wire [PATH_W-1:0] p2_0 = p2_of[0 +: PATH_W], p2_45 = p2_of[PATH_W +: PATH_W];
   wire [PATH_W-1:0] p2_90 = p2_of[2*PATH_W +: PATH_W], p2_135 = p2_of[3*PATH_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */
+  // base pixel x' + m + d compared as x' + d + BEHIND against the row shifted by AHEAD
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
+      wire beyond = MATCH_SIDE != 0 && (x2 + g2 * UF + c + BEHIND > frame_width - 1 + AHEAD ||
+                                        (MIN_DISP < 0 && x2 + g2 * UF + c < AHEAD));
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate

@@ -4,6 +4,8 @@
 // image); the base window waits a slot, the match window's newest column enters the match ring,
 // and the lanes sum the Hamming distances over the window (docs/semantics.md, section 2).
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
+// A disparity offset MIN_DISP delays the match columns by MIN_DISP slots before the ring or, when
+// negative, the base window and its centre by -MIN_DISP slots (fpstereo_offset_delays).
 module fpstereo_code_window_cost #(
   // the summation window's side
   parameter SHD_K = 3,
@@ -20,6 +22,7 @@ module fpstereo_code_window_cost #(
   parameter Y_W = 6,
   parameter YS_W = 8,
   parameter G_W = 2,
+  parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
   parameter LAT = 4
 ) (
@@ -108,20 +111,29 @@ module fpstereo_code_window_cost #(
     for (e = 0; e < SHD_K; e = e + 1)
       newest_column[e*CODE_W +: CODE_W] = code_newest_row_valid[e] ? codes_right[(e*SHD_K + SHD_K - 1)*CODE_W +: CODE_W]
                                                                     : {CODE_W{1'b0}};
+  wire [SHD_K*SHD_K*CODE_W-1:0] base_o;
+  wire [SHD_K*CODE_W-1:0]       newest_column_o;
+  wire [X_W-1:0]                codes_x_o;
+  wire signed [YS_W-1:0]        codes_y_o;
+  wire [COST_K_W-1:0]           codes_slot_o;
+  fpstereo_offset_delays #(.BASE_W(SHD_K*SHD_K*CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(SHD_K*CODE_W),
+                           .MIN_DISP(MIN_DISP)) offset (
+    .clk(clk), .shift(shift), .base({base_masked, codes_x, codes_y, codes_slot}), .match(newest_column),
+    .base_out({base_o, codes_x_o, codes_y_o, codes_slot_o}), .match_out(newest_column_o));
   reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
   always @(posedge clk)
     if (shift) begin
-      base_h       <= base_masked;
-      history_x    <= codes_x;
-      history_y    <= codes_y;
-      history_slot <= codes_slot;
+      base_h       <= base_o;
+      history_x    <= codes_x_o;
+      history_y    <= codes_y_o;
+      history_slot <= codes_slot_o;
     end
   wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
   fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column), .view(view));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column_o), .view(view));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(0), .HAMMING(1), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .LAT(LAT)) lanes (
+                               .COLSUM_W(COLSUM_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule

@@ -1,8 +1,8 @@
 `resetall
 `default_nettype none
-// UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
-// of the codes; rank: absolute difference. Where the match pixel lies left of the image
-// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
+// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
+// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
 // then their sum and the border's COST_MAX.
 module fpstereo_cost_lanes #(
@@ -15,6 +15,8 @@ module fpstereo_cost_lanes #(
   // bits of the group index and of the x coordinate
   parameter GROUP_W = 2,
   parameter X_W = 11,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
   // the latency the instantiating stage plans with (checked: 2)
   parameter LAT = 2
 ) (
@@ -24,6 +26,9 @@ module fpstereo_cost_lanes #(
   input  wire [UF*CODE_W-1:0] match_codes,
   input  wire [GROUP_W-1:0]   group,
   input  wire [X_W-1:0]       x,
+  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
+  input  wire [X_W-1:0]       width,
+  /* verilator lint_on UNUSEDSIGNAL */
   output reg  [UF*COST_W-1:0] costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -38,10 +43,15 @@ module fpstereo_cost_lanes #(
       fpstereo_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
-  // wide enough for x and for any disparity, plus one bit so both zero-extend
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 1;
+  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
@@ -51,9 +61,9 @@ module fpstereo_cost_lanes #(
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
-      wire [D_W-1:0]    d = group_base + l[D_W-1:0];
-      // Step 1: the partial counts (or the difference) and whether the match pixel lies left
-      // of the image.
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies
+      // outside the row (right of it only when MIN_DISP < 0).
       reg  [PART_W-1:0] part;
       reg               beyond;
       wire [COST_W-1:0] cost;
@@ -80,7 +90,7 @@ module fpstereo_cost_lanes #(
         assign cost = part;
       end
       always @(posedge clk)
-        if (en) beyond <= x_wide < d;
+        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
       // Step 2: the cost.
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;

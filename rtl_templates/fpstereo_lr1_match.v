@@ -1,11 +1,12 @@
 `resetall
 `default_nettype none
-// LR1 match side (docs/semantics.md, section 5): Dm(x') = argmin_d S(x' + d, d) from the base
-// side's sums. Each chain keeps, for the match pixels x - e (e < DMAX) of its current pixel x,
-// the best (sum, disparity) over d <= e so far; the next pixel shifts them by one and offers its
-// own S(x + 1, e + 1), smaller d winning ties. At e = DMAX - 1 a match pixel is complete
-// (completed_*); at the row's end the rest are (row_end_*, one word of UF per group). The state
-// follows the chains like the path costs do.
+// LR1 match side (docs/semantics.md, section 5): Dm(x') = argmin_d S(x' + m + d, d) from the base
+// side's sums (m = MIN_DISP). Each chain keeps, for the match pixels x - m - e (e < DMAX) of its
+// current pixel x, the best (sum, disparity) over d <= e so far; the next pixel shifts them by one
+// and offers its own S(x + 1, e + 1), smaller d winning ties (at a row's first pixel there is
+// nothing to shift in: with m < 0 its match pixels start there). At e = DMAX - 1 a match pixel is
+// complete (completed_*, if it lies in the row); at the row's end the rest are (row_end_*, one
+// word of UF per group). The state follows the chains like the path costs do.
 module fpstereo_lr1_match #(
   parameter K = 2,
   parameter G = 4,
@@ -19,7 +20,8 @@ module fpstereo_lr1_match #(
   parameter END_AW = 4,
   parameter X_W = 7,
   parameter G_W = 2,
-  parameter K_W = 1
+  parameter K_W = 1,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -67,13 +69,21 @@ module fpstereo_lr1_match #(
       wire [DISP_W-1:0] disparity = group * UF + l;
       wire [E_W-1:0]    earlier = (l == 0) ? below_q : previous[(l-1)*E_W +: E_W];
       wire [SUM_W-1:0]  offered = sums[l*SUM_W +: SUM_W];
-      wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
+      wire              take = disparity == 0 || (MIN_DISP < 0 && x == 0) || offered < earlier[E_W-1 -: SUM_W];
       assign updated[l*E_W +: E_W] = take ? {offered, disparity} : earlier;
       assign row_end_wdata[l*DISP_W +: DISP_W] = updated[l*E_W +: DISP_W];
     end
   endgenerate
-  assign completed_we = adv && active && group == LAST_GROUP && x >= DMAX - 1;
-  assign completed_waddr = slot * ROW_SLOTS + (x - (DMAX - 1));
+  // The completed match pixel x - m - (DMAX - 1), as x + AHEAD - BEHIND - (DMAX - 1): inside the
+  // row unless left of it or (far enough below 0) right of it.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = x + AHEAD;
+  wire completed_inside = x_ahead >= DMAX - 1 + BEHIND &&
+                          (MIN_DISP >= -(DMAX - 1) || x_ahead < frame_width + (DMAX - 1));
+  assign completed_we = adv && active && group == LAST_GROUP && completed_inside;
+  assign completed_waddr = slot * ROW_SLOTS + (x_ahead - (DMAX - 1 + BEHIND));
   assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
   assign row_end_we = adv && active && x == frame_width - 1;
   assign row_end_waddr = slot * G + group;

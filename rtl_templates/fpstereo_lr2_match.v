@@ -2,8 +2,9 @@
 `default_nettype none
 // LR2 match side (docs/semantics.md, section 5): a second cost volume and aggregation with the
 // images' roles swapped, and its winner-take-all (no uniqueness). Every cost is symmetric, so the
-// match side's C(x', d) is the base side's C(x' + d, d): lane l of each base cost word goes to its
-// own RAM bank at match pixel x - d, and a word of the match side reads all banks at one address.
+// match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
+// cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
+// word of the match side reads all banks at one address.
 // From match_on on, completed_* writes Dm(x') of each match pixel.
 module fpstereo_lr2_match #(
   parameter W = 64,
@@ -32,7 +33,8 @@ module fpstereo_lr2_match #(
   parameter Y_W = 6,
   parameter G_W = 2,
   parameter K_W = 1,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -67,13 +69,19 @@ module fpstereo_lr2_match #(
   // verilator lint_off WIDTH
   wire [UF*COST_W-1:0] match_costs;
   wire [COST_AW-1:0]   match_raddr;
+  // x - m - d as (x + AHEAD) - (d + BEHIND)
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = cost_x + AHEAD;
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : bank
-      wire [DISP_W-1:0] disparity = cost_group * UF + l;
+      wire [P_W-1:0] d_behind = cost_group * UF + l + BEHIND;
+      wire in_row = x_ahead >= d_behind && (MIN_DISP >= 0 || x_ahead < d_behind + frame_width);
       fpstereo_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
-        .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
-        .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
+        .clk(clk), .we(adv && cost_valid && in_row),
+        .waddr((cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
     end
@@ -91,7 +99,7 @@ module fpstereo_lr2_match #(
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
     .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));

@@ -1,7 +1,7 @@
 `resetall
 `default_nettype none
 // Left-right check (docs/semantics.md, section 5), three steps: for the read stream's pixel x
-// with disparity D, Dm of x' = x - D is looked up (fpstereo_match_lookup: the match side's
+// with index D, Dm of x' = x - MIN_DISP - D is looked up (fpstereo_match_lookup: the match side's
 // completed pixels, with ROW_END, as LR1 does, its row ends), and the word becomes invalid where
 // x' lies outside the image or |D - Dm(x')| > lr_threshold. The RAMs are read in the first step,
 // Dm is registered in the second, the check's result in the third, and the stream leaves three
@@ -27,7 +27,8 @@ module fpstereo_lr_check #(
   parameter RIGHT_VIEW = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -61,12 +62,19 @@ module fpstereo_lr_check #(
   // Disparities against positions and the threshold's 4 bits: the compares widen them.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-  wire outside = read_word[IN_W] || read_x < d;
-  wire [X_W-1:0] xm = read_x - d;  // wraps where x' lies outside, and then goes unused
+  // x' = x - MIN_DISP - D as (x + AHEAD) - (D + BEHIND)
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = read_x + AHEAD;
+  wire [P_W-1:0] d_behind = d + BEHIND;
+  wire outside = read_word[IN_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+  wire [X_W-1:0] xm = x_ahead - d_behind;  // wraps where x' lies outside, and then goes unused
   wire [DISP_W-1:0] dm;
   fpstereo_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
@@ -127,7 +135,8 @@ module fpstereo_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fpstereo_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),

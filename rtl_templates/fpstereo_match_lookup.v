@@ -4,7 +4,8 @@
 // RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
 // outputs) in the second. The match side writes Dm of its completed pixels into the completed
 // RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
-// UF per group; x' beyond frame_width - DMAX reads the row end then.
+// UF per group: x' reads the row end where e = frame_width - 1 - MIN_DISP - x' < DMAX - 1, and
+// is 0 where no base pixel of the row meets it (e < 0 or e > frame_width - 1 + DMAX - 1).
 module fpstereo_match_lookup #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -17,7 +18,8 @@ module fpstereo_match_lookup #(
   parameter ROW_END = 1,
   parameter END_AW = 4,
   parameter X_W = 7,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -51,8 +53,18 @@ module fpstereo_match_lookup #(
     .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
   generate
     if (ROW_END != 0) begin : row_end
-      wire from_row_end = xm > frame_width - DMAX;
-      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
+      // e = frame_width - 1 - MIN_DISP - x', as (frame_width - 1 + AHEAD) - (x' + BEHIND)
+      localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+      localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+      localparam P_W = X_W + 10;
+      wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
+      wire [P_W-1:0] xm_behind = xm + BEHIND;
+      wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
+      wire [DISP_W-1:0] from_end = last_ahead - xm_behind;  // the row-end entry of x'
+      // no base pixel: right of the last one's reach (MIN_DISP > 0), or left of the first's
+      wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
+                  (MIN_DISP < -(DMAX - 1) && xm + (DMAX - 1) < AHEAD);
+      reg none_q;
       wire [UF*DISP_W-1:0] end_q;
       fpstereo_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
@@ -63,8 +75,9 @@ module fpstereo_match_lookup #(
         if (adv) begin
           from_row_end_q <= from_row_end;
           lane_q <= from_end % UF;
+          none_q <= none;
         end
-      assign dm = from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
+      assign dm = none_q ? {DISP_W{1'b0}} : from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
     end else begin : completed_only
       assign dm = completed_q;
     end

@@ -6,7 +6,9 @@
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
 // ZSAD spreads the base window's mean over three shifts after the window's register (its row
 // sums, their total, the constant multiply), so the window, its position and the match column
-// wait two shifts longer than for SAD.
+// wait two shifts longer than for SAD. A disparity offset MIN_DISP delays the match columns by
+// MIN_DISP slots before the rings or, when negative, the base window and its centre by -MIN_DISP
+// slots (fpstereo_offset_delays).
 module fpstereo_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -23,6 +25,7 @@ module fpstereo_pixel_window_cost #(
   parameter X_W = 7,
   parameter YS_W = 8,
   parameter G_W = 2,
+  parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
   parameter LAT = 4
 ) (
@@ -57,9 +60,12 @@ module fpstereo_pixel_window_cost #(
       fpstereo_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
-  wire [N*N*8-1:0] base_masked;
+  wire [N*N*8-1:0] base_masked, base_o;
   fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
+  wire [X_W-1:0]         transform_x_o;
+  wire signed [YS_W-1:0] transform_y_o;
+  wire [COST_K_W-1:0]    transform_slot_o;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
   // The match window's newest column, zero outside the image, and its sum.
   reg [N*8-1:0] newest_column;
@@ -77,11 +83,11 @@ module fpstereo_pixel_window_cost #(
   reg [X_W+YS_W+COST_K_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t       <= base_masked;
+      base_t       <= base_o;
       column_t     <= newest_column;
       column_sum_t <= newest_sum;
       base_h       <= base_t;
-      position_h   <= {transform_x, transform_y, transform_slot};
+      position_h   <= {transform_x_o, transform_y_o, transform_slot_o};
     end
   // ZSAD: all of it waits two shifts more for the base window's mean.
   wire [N*N*8-1:0]    base_l;
@@ -124,15 +130,22 @@ module fpstereo_pixel_window_cost #(
       assign base_mean = 8'd0;
     end
   endgenerate
+  wire [N*8-1:0]      column_o;
+  wire [COLSUM_W-1:0] column_sum_o;
+  fpstereo_offset_delays #(.BASE_W(N*N*8 + X_W + YS_W + COST_K_W), .MATCH_W(N*8 + COLSUM_W), .MIN_DISP(MIN_DISP)) offset (
+    .clk(clk), .shift(shift), .base({base_masked, transform_x, transform_y, transform_slot}),
+    .match({column_l, column_sum_l}), .base_out({base_o, transform_x_o, transform_y_o, transform_slot_o}),
+    .match_out({column_o, column_sum_o}));
   wire [(UF+N-1)*N*8-1:0]      view;
   wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
   fpstereo_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_l), .view(view));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_o), .view(view));
   fpstereo_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_l), .view(view_sums));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_o), .view(view_sums));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
+                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
+                               .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule

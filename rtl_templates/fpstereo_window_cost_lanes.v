@@ -8,7 +8,8 @@
 // b is the (already zero-extended) base window; the match window of lane l is view columns
 // l .. l + SPAN - 1 (fpstereo_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
-// Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
+// Lane l's disparity is MIN_DISP + d; where its match centre x - MIN_DISP - d lies outside the
+// row the cost is COST_MAX. Register steps
 // (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
 // the match window's sum, its mean, the difference of the means (with the masked view); the
 // magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
@@ -29,6 +30,8 @@ module fpstereo_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
   // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
   parameter LAT = 4
 ) (
@@ -66,8 +69,8 @@ module fpstereo_window_cost_lanes #(
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
   localparam VIEW_COLS = UF + SPAN - 1;
-  // wide enough for x + VIEW_COLS and for any disparity plus UF + R + width
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
+  // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
   // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
   localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
@@ -78,18 +81,24 @@ module fpstereo_window_cost_lanes #(
   localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
+  // Match positions x - MIN_DISP - ..., compared as x + AHEAD against ... + BEHIND.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
-  // View column c lies at x - group*UF + (SPAN - 1 - R - c) in the image for every lane that
-  // reads it (lane l: window column j = l + SPAN - 1 - c, at x - d + j - R), so one mask per view
-  // column serves all lanes. Inside: 0 <= that < width, here with group*UF + UF + R added.
-  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0];
-  wire [D_W-1:0] inside_high = inside_low + {{(D_W-X_W){1'b0}}, width};
+  // View column c lies at x - MIN_DISP - group*UF + (SPAN - 1 - R - c) in the image for every
+  // lane that reads it (lane l: window column j = l + SPAN - 1 - c, at x - MIN_DISP - d + j - R),
+  // so one mask per view column serves all lanes. Inside: 0 <= that < width, here with
+  // group*UF + UF + R + BEHIND added.
+  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0] + BEHIND[D_W-1:0];
+  wire [D_W-1:0] inside_high = inside_low + width_wide;
   wire [VIEW_COLS-1:0] view_valid;
   genvar c;
   generate
     for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
       localparam OFFSET = VIEW_COLS - c;
-      wire [D_W-1:0] position = x_wide + OFFSET[D_W-1:0];
+      wire [D_W-1:0] position = x_ahead + OFFSET[D_W-1:0];
       assign view_valid[c] = position >= inside_low && position < inside_high;
     end
   endgenerate
@@ -150,12 +159,12 @@ module fpstereo_window_cost_lanes #(
   genvar l, i, k;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [D_W-1:0] d = group_base + l[D_W-1:0];
+      wire [D_W-1:0] d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
       // The border flag, registered at step 1, waits for the total.
       reg  outside_q;
       wire outside_d;
       always @(posedge clk)
-        if (en) outside_q <= x_wide < d;
+        if (en) outside_q <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
       fpstereo_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 

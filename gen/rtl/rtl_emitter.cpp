@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -296,14 +297,17 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   if (cfg.p2_adapt != 0 && cfg.cost == CostFunction::Shd && cfg.shd_window > 1)
     throw ConfigError("p2-adapt = " + std::to_string(cfg.p2_adapt) +
                       ": not with cost shd in the hardware generators (the golden model has it)");
-  if (cfg.min_disp != 0)
-    throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) +
-                      ": not in the hardware generators yet (the golden model has it)");
+  // A search range wider than the row searches nothing: the hardware keeps LR2's match side
+  // (dmax + min-disp slots behind) and the offset's delays within a row-time.
+  if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
+    throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
+                      std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
   RtlDesign d;
   d.cfg = cfg;
   d.options = options;
-  // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate).
-  d.min_width = std::max(8, cfg.dmax);
+  // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate),
+  // and a row that holds the whole search range (above).
+  d.min_width = std::max(8, cfg.dmax + std::abs(cfg.min_disp));
   d.min_height = 4;
   d.widths = derive_widths(cfg);
   d.prefix = config_tag(cfg);

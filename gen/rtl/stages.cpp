@@ -323,18 +323,19 @@ class CostStage : public Stage {
  public:
   explicit CostStage(const StereoConfig& c) : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
   std::string title() const override { return "cost"; }
-  // min-disp: the stage that will shift the match columns (the generators refuse it so far).
+  // min-disp delays the match columns (or, below 0, the base) before the match ring.
   std::vector<std::string> knobs() const override {
     return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt", "min-disp"};
   }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
-  // rs + 1 slots; ZSAD: two more, for the base window's mean); the lanes take their register
-  // stages.
+  // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
+  // fpstereo_offset_delays); the lanes take their register stages.
   Latency latency(const RtlDesign& d) const override {
     const int64_t rs = cost_ == CostFunction::Shd ? d.cfg.shd_window / 2 : 0;
     const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
-    return {rs, 1 + wait, d.cost_latency};
+    return {rs, 1 + wait + base_offset_slots(d.cfg), d.cost_latency};
   }
+  static int base_offset_slots(const StereoConfig& c) { return std::max(0, -c.min_disp); }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     if (cost_ != CostFunction::Shd) return {};
     const int64_t bits = int64_t(d.cfg.shd_window - 1) * std::max(1, d.widths.code);
@@ -343,7 +344,8 @@ class CostStage : public Stage {
   }
   std::vector<std::string> modules(const RtlDesign& d) const override {
     std::vector<std::string> m = cost_modules();
-    if (d.cfg.p2_adapt != 0) m.insert(m.end(), {"fpstereo_adaptive_p2", "fpstereo_delay"});
+    m.insert(m.end(), {"fpstereo_offset_delays", "fpstereo_delay"});
+    if (d.cfg.p2_adapt != 0) m.push_back("fpstereo_adaptive_p2");
     return m;
   }
   std::vector<std::string> cost_modules() const {
@@ -369,7 +371,7 @@ class CostStage : public Stage {
                      {"COST_W", num(w.cost)},        {"COST_MAX", num(int64_t(w.cost_max))},
                      {"COST_K_W", num(d.cost_row_bits)}, {"X_W", num(d.x_bits)},
                      {"YS_W", num(d.signed_y_bits)}, {"G_W", num(d.group_bits)},
-                     {"LAT", num(d.cost_latency)}};
+                     {"MIN_DISP", num(c.min_disp)},  {"LAT", num(d.cost_latency)}};
     Values ports = {{"clk", "clk"}, {"adv", "adv"}, {"slot_end", "slot_end"}, {"shift", "shift"}, {"group", "group"}};
     Values position = {{"transform_x", "transform_x"},   {"transform_y", "transform_y"},
                        {"transform_slot", "transform_slot"}, {"history_x", "history_x"},
@@ -382,7 +384,8 @@ class CostStage : public Stage {
       case CostFunction::Rank:
         module = "fpstereo_point_cost";
         parameters = {{"HAMMING", cost_ == CostFunction::Census ? "1" : "0"}, {"CODE_W", num(code_bits)}};
-        ports.insert(ports.end(), {{"code_base", "code_base"}, {"code_match", "code_match"}});
+        ports.insert(ports.end(),
+                     {{"frame_width", "frame_width"}, {"code_base", "code_base"}, {"code_match", "code_match"}});
         break;
       case CostFunction::Sad:
       case CostFunction::Zsad:
@@ -426,7 +429,7 @@ class CostStage : public Stage {
                      {"NP", num(c.path_count())},
                      {"GAIN", num(c.p2_adapt)},
                      {"PATH_W", num(w.path_cost)},
-                     {"WAIT_SLOTS", num(cost_ == CostFunction::Zsad ? 2 : 0)},
+                     {"WAIT_SLOTS", num((cost_ == CostFunction::Zsad ? 2 : 0) + base_offset_slots(c))},
                      {"LAT", num(d.cost_latency)}},
                     {{"clk", "clk"},
                      {"adv", "adv"},
@@ -624,7 +627,7 @@ std::string completed_wires(const RtlDesign& d) {
 class Lr1MatchStage : public Stage {
  public:
   std::string title() const override { return "LR1 match side"; }
-  std::vector<std::string> knobs() const override { return {"lr"}; }
+  std::vector<std::string> knobs() const override { return {"lr", "min-disp"}; }
   Latency latency(const RtlDesign&) const override { return {}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     return {{"core.lr1_match.entries.mem", int64_t(d.chains) * d.groups,
@@ -650,7 +653,8 @@ class Lr1MatchStage : public Stage {
                      {"END_AW", num(d.end_addr_bits)},
                      {"X_W", num(d.x_bits)},
                      {"G_W", num(d.group_bits)},
-                     {"K_W", num(d.chain_bits)}},
+                     {"K_W", num(d.chain_bits)},
+                     {"MIN_DISP", num(c.min_disp)}},
                     {{"clk", "clk"},
                      {"adv", "adv"},
                      {"frame_width", "frame_width"},
@@ -677,14 +681,15 @@ class Lr1MatchStage : public Stage {
 };
 
 // LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all, dmax + 2
-// slots behind the base side's aggregation (its costs need base pixels up to x' + dmax - 1).
+// slots behind the base side's aggregation (its costs need base pixels up to x' + m + dmax - 1,
+// so a positive min-disp m adds m).
 class Lr2MatchStage : public Stage {
  public:
   std::string title() const override { return "LR2 match side"; }
-  std::vector<std::string> knobs() const override { return {"lr", "paths", "p1", "p2"}; }
+  std::vector<std::string> knobs() const override { return {"lr", "paths", "p1", "p2", "min-disp"}; }
   std::string start_parameter() const override { return "MATCH_START"; }
   Latency latency(const RtlDesign&) const override { return {}; }
-  Latency start_offset(const RtlDesign& d) const override { return {0, d.cfg.dmax + 2, 0}; }
+  Latency start_offset(const RtlDesign& d) const override { return {0, d.cfg.dmax + 2 + std::max(0, d.cfg.min_disp), 0}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     std::vector<StageMemory> out;
     for (int l = 0; l < d.cfg.uf; ++l)
@@ -703,7 +708,8 @@ class Lr2MatchStage : public Stage {
                                          {"DISP_W", num(d.widths.disparity)},
                                          {"WTA_TREE_LAT", num(d.wta_tree_latency)},
                                          {"DISP_AW", num(d.disp_addr_bits)},
-                                         {"LANE_W", num(d.lane_bits)}});
+                                         {"LANE_W", num(d.lane_bits)},
+                                         {"MIN_DISP", num(c.min_disp)}});
     return "\n  // LR2 match side: second cost volume, aggregation and winner-take-all.\n" +
            start_flag(d, *this, "match_on") + completed_wires(d) +
            instance("fpstereo_lr2_match", "lr2_match", parameters,
@@ -974,7 +980,7 @@ class LrCheckStage : public Stage {
  public:
   explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
   std::string title() const override { return "left-right check"; }
-  std::vector<std::string> knobs() const override { return {"lr", "lr-threshold"}; }
+  std::vector<std::string> knobs() const override { return {"lr", "lr-threshold", "min-disp"}; }
   Latency latency(const RtlDesign&) const override { return {0, 0, 3}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     // One lookup of Dm for the check; with the right view a second one for Dm(x).
@@ -1041,7 +1047,8 @@ class LrCheckStage : public Stage {
                          {"RIGHT_VIEW", c.right_view ? "1" : "0"},
                          {"X_W", num(d.x_bits)},
                          {"Y_W", num(d.y_bits)},
-                         {"LANE_W", num(d.lane_bits)}},
+                         {"LANE_W", num(d.lane_bits)},
+                         {"MIN_DISP", num(c.min_disp)}},
                         ports);
   }
 

@@ -291,10 +291,10 @@ module fps_census7_d128u32_3d43b7_sgm_core (
   wire [191:0] costs;
   fps_census7_d128u32_3d43b7_point_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_K_W(1), .X_W(11),
-    .YS_W(11), .G_W(2), .LAT(2)
+    .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .code_base(code_base),
-    .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
+    .code_base(code_base), .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
     .transform_slot(transform_slot), .history_x(history_x), .history_y(history_y),
     .history_slot(history_slot), .costs(costs));
 
@@ -1510,7 +1510,9 @@ endmodule
 // Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
-// costs the lanes compute in this slot.
+// costs the lanes compute in this slot. A disparity offset MIN_DISP delays the match codes by
+// MIN_DISP slots before the ring or, when negative, the base code and its centre by -MIN_DISP
+// slots (fps_census7_d128u32_3d43b7_offset_delays).
 module fps_census7_d128u32_3d43b7_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -1523,6 +1525,7 @@ module fps_census7_d128u32_3d43b7_point_cost #(
   parameter X_W = 7,
   parameter YS_W = 8,
   parameter G_W = 2,
+  parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_census7_d128u32_3d43b7_cost_lanes checks it)
   parameter LAT = 2
 ) (
@@ -1531,6 +1534,7 @@ module fps_census7_d128u32_3d43b7_point_cost #(
   input  wire                   slot_end,
   input  wire                   shift,
   input  wire [G_W-1:0]         group,
+  input  wire [X_W-1:0]         frame_width,
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
@@ -1547,21 +1551,28 @@ module fps_census7_d128u32_3d43b7_point_cost #(
       fps_census7_d128u32_3d43b7_invalid_parameters_point_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
+  wire [CODE_W-1:0]      code_base_o, code_match_o;
+  wire [X_W-1:0]         transform_x_o;
+  wire signed [YS_W-1:0] transform_y_o;
+  wire [COST_K_W-1:0]    transform_slot_o;
+  fps_census7_d128u32_3d43b7_offset_delays #(.BASE_W(CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
+    .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
+    .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
   reg [CODE_W-1:0] code_base_h;
   always @(posedge clk)
     if (shift) begin
-      code_base_h  <= code_base;
-      history_x    <= transform_x;
-      history_y    <= transform_y;
-      history_slot <= transform_slot;
+      code_base_h  <= code_base_o;
+      history_x    <= transform_x_o;
+      history_y    <= transform_y_o;
+      history_slot <= transform_slot_o;
     end
   wire [UF*CODE_W-1:0] match_lanes;
   fps_census7_d128u32_3d43b7_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match), .view(match_lanes));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match_o), .view(match_lanes));
   fps_census7_d128u32_3d43b7_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .LAT(LAT)) lanes (
+                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
-    .x(history_x), .costs(costs));
+    .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall
 
@@ -1615,9 +1626,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
-// of the codes; rank: absolute difference. Where the match pixel lies left of the image
-// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
+// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
+// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
 // then their sum and the border's COST_MAX.
 module fps_census7_d128u32_3d43b7_cost_lanes #(
@@ -1630,6 +1641,8 @@ module fps_census7_d128u32_3d43b7_cost_lanes #(
   // bits of the group index and of the x coordinate
   parameter GROUP_W = 2,
   parameter X_W = 11,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
   // the latency the instantiating stage plans with (checked: 2)
   parameter LAT = 2
 ) (
@@ -1639,6 +1652,9 @@ module fps_census7_d128u32_3d43b7_cost_lanes #(
   input  wire [UF*CODE_W-1:0] match_codes,
   input  wire [GROUP_W-1:0]   group,
   input  wire [X_W-1:0]       x,
+  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
+  input  wire [X_W-1:0]       width,
+  /* verilator lint_on UNUSEDSIGNAL */
   output reg  [UF*COST_W-1:0] costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -1653,10 +1669,15 @@ module fps_census7_d128u32_3d43b7_cost_lanes #(
       fps_census7_d128u32_3d43b7_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
-  // wide enough for x and for any disparity, plus one bit so both zero-extend
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 1;
+  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
@@ -1666,9 +1687,9 @@ module fps_census7_d128u32_3d43b7_cost_lanes #(
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
-      wire [D_W-1:0]    d = group_base + l[D_W-1:0];
-      // Step 1: the partial counts (or the difference) and whether the match pixel lies left
-      // of the image.
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies
+      // outside the row (right of it only when MIN_DISP < 0).
       reg  [PART_W-1:0] part;
       reg               beyond;
       wire [COST_W-1:0] cost;
@@ -1695,12 +1716,87 @@ module fps_census7_d128u32_3d43b7_cost_lanes #(
         assign cost = part;
       end
       always @(posedge clk)
-        if (en) beyond <= x_wide < d;
+        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
       // Step 2: the cost.
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;
     end
   endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
+// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
+// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
+// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
+// that the ring already holds the match columns right of it. Shift registers, advanced once per
+// slot; pass-through at MIN_DISP = 0.
+module fps_census7_d128u32_3d43b7_offset_delays #(
+  parameter BASE_W = 8,
+  parameter MATCH_W = 8,
+  parameter MIN_DISP = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
+  input  wire               clk,
+  input  wire               shift,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [BASE_W-1:0]  base,
+  input  wire [MATCH_W-1:0] match,
+  output wire [BASE_W-1:0]  base_out,
+  output wire [MATCH_W-1:0] match_out
+);
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_census7_d128u32_3d43b7_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
+    end else begin : match_now
+      assign match_out = match;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_census7_d128u32_3d43b7_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
+    end else begin : base_now
+      assign base_out = base;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_census7_d128u32_3d43b7_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_census7_d128u32_3d43b7_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
 endmodule
 `resetall
 
@@ -1772,42 +1868,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_census7_d128u32_3d43b7_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
-) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_census7_d128u32_3d43b7_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
-    end
-  endgenerate
-  reg [WIDTH*DEPTH-1:0] line;
-  generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
-    end
-  endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
 module fps_census7_d128u32_3d43b7_ram_sdp #(
@@ -1847,7 +1907,7 @@ endmodule
 // RAM in chain order, runs the enabled paths in K interleaved chains and delivers, per step, the
 // path sums of one group of one pixel with the pixel's position. Every register advances when
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
-// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2). With
+// x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_census7_d128u32_3d43b7_adaptive_p2), which replaces the p2 input for that path.
 module fps_census7_d128u32_3d43b7_aggregator #(
@@ -1879,7 +1939,9 @@ module fps_census7_d128u32_3d43b7_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1
+  parameter COST_K_W = 1,
+  // the match side's disparity offset
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -2070,10 +2132,14 @@ module fps_census7_d128u32_3d43b7_aggregator #(
   wire [PATH_W-1:0] p2_0 = p2_of[0 +: PATH_W], p2_45 = p2_of[PATH_W +: PATH_W];
   wire [PATH_W-1:0] p2_90 = p2_of[2*PATH_W +: PATH_W], p2_135 = p2_of[3*PATH_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */
+  // base pixel x' + m + d compared as x' + d + BEHIND against the row shifted by AHEAD
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
+      wire beyond = MATCH_SIDE != 0 && (x2 + g2 * UF + c + BEHIND > frame_width - 1 + AHEAD ||
+                                        (MIN_DISP < 0 && x2 + g2 * UF + c < AHEAD));
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate

@@ -34,10 +34,10 @@
 //   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp
 //   cost reorder                         0     0    1   uf
 //   aggregation                          1     0    5   paths, p1, p2, dmax, uf
-//   LR1 match side                       0     0    0   lr
+//   LR1 match side                       0     0    0   lr, min-disp
 //   winner-take-all with uniqueness      0     0    3   uniqueness
 //   disparity reorder                    1     1    0   lr
-//   left-right check                     0     0    3   lr, lr-threshold
+//   left-right check                     0     0    3   lr, lr-threshold, min-disp
 //   median filter                        2     2   26   median
 //   gap interpolation                    1     0    3   gap-interp
 //   output                               0     0    4
@@ -295,10 +295,10 @@ module fps_census7_d128u32_e0d835_sgm_core (
   wire [191:0] costs;
   fps_census7_d128u32_e0d835_point_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_K_W(1), .X_W(11),
-    .YS_W(11), .G_W(2), .LAT(2)
+    .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .code_base(code_base),
-    .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
+    .code_base(code_base), .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
     .transform_slot(transform_slot), .history_x(history_x), .history_y(history_y),
     .history_slot(history_slot), .costs(costs));
 
@@ -351,7 +351,7 @@ module fps_census7_d128u32_e0d835_sgm_core (
   wire [223:0] row_end_wdata;
   fps_census7_d128u32_e0d835_lr1_match #(
     .K(2), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_K_W(2), .DISP_AW(13),
-    .END_AW(4), .X_W(11), .G_W(2), .K_W(1)
+    .END_AW(4), .X_W(11), .G_W(2), .K_W(1), .MIN_DISP(0)
   ) lr1_match (
     .clk(clk), .adv(adv), .frame_width(frame_width), .sums(agg_sums), .active(agg_active), .x(agg_x),
     .group(agg_group), .chain(agg_chain), .slot(agg_slot), .completed_we(completed_we),
@@ -412,7 +412,7 @@ module fps_census7_d128u32_e0d835_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_e0d835_lr_check #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(4), .OUT_K_W(2),
-    .DISP_AW(13), .ROW_END(1), .END_AW(4), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5)
+    .DISP_AW(13), .ROW_END(1), .END_AW(4), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
     .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata),
@@ -1568,7 +1568,9 @@ endmodule
 // Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
-// costs the lanes compute in this slot.
+// costs the lanes compute in this slot. A disparity offset MIN_DISP delays the match codes by
+// MIN_DISP slots before the ring or, when negative, the base code and its centre by -MIN_DISP
+// slots (fps_census7_d128u32_e0d835_offset_delays).
 module fps_census7_d128u32_e0d835_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -1581,6 +1583,7 @@ module fps_census7_d128u32_e0d835_point_cost #(
   parameter X_W = 7,
   parameter YS_W = 8,
   parameter G_W = 2,
+  parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_census7_d128u32_e0d835_cost_lanes checks it)
   parameter LAT = 2
 ) (
@@ -1589,6 +1592,7 @@ module fps_census7_d128u32_e0d835_point_cost #(
   input  wire                   slot_end,
   input  wire                   shift,
   input  wire [G_W-1:0]         group,
+  input  wire [X_W-1:0]         frame_width,
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
@@ -1605,21 +1609,28 @@ module fps_census7_d128u32_e0d835_point_cost #(
       fps_census7_d128u32_e0d835_invalid_parameters_point_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
+  wire [CODE_W-1:0]      code_base_o, code_match_o;
+  wire [X_W-1:0]         transform_x_o;
+  wire signed [YS_W-1:0] transform_y_o;
+  wire [COST_K_W-1:0]    transform_slot_o;
+  fps_census7_d128u32_e0d835_offset_delays #(.BASE_W(CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
+    .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
+    .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
   reg [CODE_W-1:0] code_base_h;
   always @(posedge clk)
     if (shift) begin
-      code_base_h  <= code_base;
-      history_x    <= transform_x;
-      history_y    <= transform_y;
-      history_slot <= transform_slot;
+      code_base_h  <= code_base_o;
+      history_x    <= transform_x_o;
+      history_y    <= transform_y_o;
+      history_slot <= transform_slot_o;
     end
   wire [UF*CODE_W-1:0] match_lanes;
   fps_census7_d128u32_e0d835_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match), .view(match_lanes));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match_o), .view(match_lanes));
   fps_census7_d128u32_e0d835_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .LAT(LAT)) lanes (
+                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
-    .x(history_x), .costs(costs));
+    .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall
 
@@ -1673,9 +1684,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// UF matching costs per step: lane l is disparity d = group*UF + l. Census: Hamming distance
-// of the codes; rank: absolute difference. Where the match pixel lies left of the image
-// (x < d) the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
+// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
+// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
 // then their sum and the border's COST_MAX.
 module fps_census7_d128u32_e0d835_cost_lanes #(
@@ -1688,6 +1699,8 @@ module fps_census7_d128u32_e0d835_cost_lanes #(
   // bits of the group index and of the x coordinate
   parameter GROUP_W = 2,
   parameter X_W = 11,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
   // the latency the instantiating stage plans with (checked: 2)
   parameter LAT = 2
 ) (
@@ -1697,6 +1710,9 @@ module fps_census7_d128u32_e0d835_cost_lanes #(
   input  wire [UF*CODE_W-1:0] match_codes,
   input  wire [GROUP_W-1:0]   group,
   input  wire [X_W-1:0]       x,
+  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
+  input  wire [X_W-1:0]       width,
+  /* verilator lint_on UNUSEDSIGNAL */
   output reg  [UF*COST_W-1:0] costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -1711,10 +1727,15 @@ module fps_census7_d128u32_e0d835_cost_lanes #(
       fps_census7_d128u32_e0d835_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
-  // wide enough for x and for any disparity, plus one bit so both zero-extend
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 1;
+  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
@@ -1724,9 +1745,9 @@ module fps_census7_d128u32_e0d835_cost_lanes #(
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
       wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
-      wire [D_W-1:0]    d = group_base + l[D_W-1:0];
-      // Step 1: the partial counts (or the difference) and whether the match pixel lies left
-      // of the image.
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies
+      // outside the row (right of it only when MIN_DISP < 0).
       reg  [PART_W-1:0] part;
       reg               beyond;
       wire [COST_W-1:0] cost;
@@ -1753,12 +1774,87 @@ module fps_census7_d128u32_e0d835_cost_lanes #(
         assign cost = part;
       end
       always @(posedge clk)
-        if (en) beyond <= x_wide < d;
+        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
       // Step 2: the cost.
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;
     end
   endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
+// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
+// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
+// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
+// that the ring already holds the match columns right of it. Shift registers, advanced once per
+// slot; pass-through at MIN_DISP = 0.
+module fps_census7_d128u32_e0d835_offset_delays #(
+  parameter BASE_W = 8,
+  parameter MATCH_W = 8,
+  parameter MIN_DISP = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
+  input  wire               clk,
+  input  wire               shift,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [BASE_W-1:0]  base,
+  input  wire [MATCH_W-1:0] match,
+  output wire [BASE_W-1:0]  base_out,
+  output wire [MATCH_W-1:0] match_out
+);
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_census7_d128u32_e0d835_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
+    end else begin : match_now
+      assign match_out = match;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_census7_d128u32_e0d835_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
+    end else begin : base_now
+      assign base_out = base;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_census7_d128u32_e0d835_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_census7_d128u32_e0d835_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
 endmodule
 `resetall
 
@@ -1830,42 +1926,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_census7_d128u32_e0d835_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
-) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_census7_d128u32_e0d835_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
-    end
-  endgenerate
-  reg [WIDTH*DEPTH-1:0] line;
-  generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
-    end
-  endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
 module fps_census7_d128u32_e0d835_ram_sdp #(
@@ -1905,7 +1965,7 @@ endmodule
 // RAM in chain order, runs the enabled paths in K interleaved chains and delivers, per step, the
 // path sums of one group of one pixel with the pixel's position. Every register advances when
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
-// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2). With
+// x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_census7_d128u32_e0d835_adaptive_p2), which replaces the p2 input for that path.
 module fps_census7_d128u32_e0d835_aggregator #(
@@ -1937,7 +1997,9 @@ module fps_census7_d128u32_e0d835_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1
+  parameter COST_K_W = 1,
+  // the match side's disparity offset
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -2128,10 +2190,14 @@ module fps_census7_d128u32_e0d835_aggregator #(
   wire [PATH_W-1:0] p2_0 = p2_of[0 +: PATH_W], p2_45 = p2_of[PATH_W +: PATH_W];
   wire [PATH_W-1:0] p2_90 = p2_of[2*PATH_W +: PATH_W], p2_135 = p2_of[3*PATH_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */
+  // base pixel x' + m + d compared as x' + d + BEHIND against the row shifted by AHEAD
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
+      wire beyond = MATCH_SIDE != 0 && (x2 + g2 * UF + c + BEHIND > frame_width - 1 + AHEAD ||
+                                        (MIN_DISP < 0 && x2 + g2 * UF + c < AHEAD));
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate
@@ -2523,12 +2589,13 @@ endmodule
 
 `resetall
 `default_nettype none
-// LR1 match side (docs/semantics.md, section 5): Dm(x') = argmin_d S(x' + d, d) from the base
-// side's sums. Each chain keeps, for the match pixels x - e (e < DMAX) of its current pixel x,
-// the best (sum, disparity) over d <= e so far; the next pixel shifts them by one and offers its
-// own S(x + 1, e + 1), smaller d winning ties. At e = DMAX - 1 a match pixel is complete
-// (completed_*); at the row's end the rest are (row_end_*, one word of UF per group). The state
-// follows the chains like the path costs do.
+// LR1 match side (docs/semantics.md, section 5): Dm(x') = argmin_d S(x' + m + d, d) from the base
+// side's sums (m = MIN_DISP). Each chain keeps, for the match pixels x - m - e (e < DMAX) of its
+// current pixel x, the best (sum, disparity) over d <= e so far; the next pixel shifts them by one
+// and offers its own S(x + 1, e + 1), smaller d winning ties (at a row's first pixel there is
+// nothing to shift in: with m < 0 its match pixels start there). At e = DMAX - 1 a match pixel is
+// complete (completed_*, if it lies in the row); at the row's end the rest are (row_end_*, one
+// word of UF per group). The state follows the chains like the path costs do.
 module fps_census7_d128u32_e0d835_lr1_match #(
   parameter K = 2,
   parameter G = 4,
@@ -2542,7 +2609,8 @@ module fps_census7_d128u32_e0d835_lr1_match #(
   parameter END_AW = 4,
   parameter X_W = 7,
   parameter G_W = 2,
-  parameter K_W = 1
+  parameter K_W = 1,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -2590,13 +2658,21 @@ module fps_census7_d128u32_e0d835_lr1_match #(
       wire [DISP_W-1:0] disparity = group * UF + l;
       wire [E_W-1:0]    earlier = (l == 0) ? below_q : previous[(l-1)*E_W +: E_W];
       wire [SUM_W-1:0]  offered = sums[l*SUM_W +: SUM_W];
-      wire              take = disparity == 0 || offered < earlier[E_W-1 -: SUM_W];
+      wire              take = disparity == 0 || (MIN_DISP < 0 && x == 0) || offered < earlier[E_W-1 -: SUM_W];
       assign updated[l*E_W +: E_W] = take ? {offered, disparity} : earlier;
       assign row_end_wdata[l*DISP_W +: DISP_W] = updated[l*E_W +: DISP_W];
     end
   endgenerate
-  assign completed_we = adv && active && group == LAST_GROUP && x >= DMAX - 1;
-  assign completed_waddr = slot * ROW_SLOTS + (x - (DMAX - 1));
+  // The completed match pixel x - m - (DMAX - 1), as x + AHEAD - BEHIND - (DMAX - 1): inside the
+  // row unless left of it or (far enough below 0) right of it.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = x + AHEAD;
+  wire completed_inside = x_ahead >= DMAX - 1 + BEHIND &&
+                          (MIN_DISP >= -(DMAX - 1) || x_ahead < frame_width + (DMAX - 1));
+  assign completed_we = adv && active && group == LAST_GROUP && completed_inside;
+  assign completed_waddr = slot * ROW_SLOTS + (x_ahead - (DMAX - 1 + BEHIND));
   assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
   assign row_end_we = adv && active && x == frame_width - 1;
   assign row_end_waddr = slot * G + group;
@@ -2918,7 +2994,7 @@ endmodule
 `resetall
 `default_nettype none
 // Left-right check (docs/semantics.md, section 5), three steps: for the read stream's pixel x
-// with disparity D, Dm of x' = x - D is looked up (fps_census7_d128u32_e0d835_match_lookup: the match side's
+// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_census7_d128u32_e0d835_match_lookup: the match side's
 // completed pixels, with ROW_END, as LR1 does, its row ends), and the word becomes invalid where
 // x' lies outside the image or |D - Dm(x')| > lr_threshold. The RAMs are read in the first step,
 // Dm is registered in the second, the check's result in the third, and the stream leaves three
@@ -2944,7 +3020,8 @@ module fps_census7_d128u32_e0d835_lr_check #(
   parameter RIGHT_VIEW = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -2978,12 +3055,19 @@ module fps_census7_d128u32_e0d835_lr_check #(
   // Disparities against positions and the threshold's 4 bits: the compares widen them.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-  wire outside = read_word[IN_W] || read_x < d;
-  wire [X_W-1:0] xm = read_x - d;  // wraps where x' lies outside, and then goes unused
+  // x' = x - MIN_DISP - D as (x + AHEAD) - (D + BEHIND)
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = read_x + AHEAD;
+  wire [P_W-1:0] d_behind = d + BEHIND;
+  wire outside = read_word[IN_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+  wire [X_W-1:0] xm = x_ahead - d_behind;  // wraps where x' lies outside, and then goes unused
   wire [DISP_W-1:0] dm;
   fps_census7_d128u32_e0d835_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
@@ -3044,7 +3128,8 @@ module fps_census7_d128u32_e0d835_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fps_census7_d128u32_e0d835_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
@@ -3069,7 +3154,8 @@ endmodule
 // RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
 // outputs) in the second. The match side writes Dm of its completed pixels into the completed
 // RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
-// UF per group; x' beyond frame_width - DMAX reads the row end then.
+// UF per group: x' reads the row end where e = frame_width - 1 - MIN_DISP - x' < DMAX - 1, and
+// is 0 where no base pixel of the row meets it (e < 0 or e > frame_width - 1 + DMAX - 1).
 module fps_census7_d128u32_e0d835_match_lookup #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -3082,7 +3168,8 @@ module fps_census7_d128u32_e0d835_match_lookup #(
   parameter ROW_END = 1,
   parameter END_AW = 4,
   parameter X_W = 7,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -3116,8 +3203,18 @@ module fps_census7_d128u32_e0d835_match_lookup #(
     .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
   generate
     if (ROW_END != 0) begin : row_end
-      wire from_row_end = xm > frame_width - DMAX;
-      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
+      // e = frame_width - 1 - MIN_DISP - x', as (frame_width - 1 + AHEAD) - (x' + BEHIND)
+      localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+      localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+      localparam P_W = X_W + 10;
+      wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
+      wire [P_W-1:0] xm_behind = xm + BEHIND;
+      wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
+      wire [DISP_W-1:0] from_end = last_ahead - xm_behind;  // the row-end entry of x'
+      // no base pixel: right of the last one's reach (MIN_DISP > 0), or left of the first's
+      wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
+                  (MIN_DISP < -(DMAX - 1) && xm + (DMAX - 1) < AHEAD);
+      reg none_q;
       wire [UF*DISP_W-1:0] end_q;
       fps_census7_d128u32_e0d835_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
@@ -3128,8 +3225,9 @@ module fps_census7_d128u32_e0d835_match_lookup #(
         if (adv) begin
           from_row_end_q <= from_row_end;
           lane_q <= from_end % UF;
+          none_q <= none;
         end
-      assign dm = from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
+      assign dm = none_q ? {DISP_W{1'b0}} : from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
     end else begin : completed_only
       assign dm = completed_q;
     end

@@ -33,11 +33,11 @@
 //   window                               2     4    0   window, cost
 //   cost                                 0     1    4   cost, window, shd-window, dmax, uf, p2-adapt, min-disp
 //   cost reorder                         0     0    1   uf
-//   LR2 match side                       0     0    0   lr, paths, p1, p2
+//   LR2 match side                       0     0    0   lr, paths, p1, p2, min-disp
 //   aggregation                          1     0    5   paths, p1, p2, dmax, uf
 //   winner-take-all                      0     0    3   uniqueness
 //   disparity reorder                    2     1    0   lr
-//   left-right check                     0     0    3   lr, lr-threshold
+//   left-right check                     0     0    3   lr, lr-threshold, min-disp
 //   output                               0     0    4
 /* verilator lint_off DECLFILENAME */
 
@@ -284,7 +284,7 @@ module fps_sad5_d128u32_ad0691_sgm_core (
   wire [415:0] costs;
   fps_sad5_d128u32_ad0691_pixel_window_cost #(
     .N(5), .ZERO_MEAN(0), .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
-    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .LAT(4)
+    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(4)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
@@ -321,7 +321,7 @@ module fps_sad5_d128u32_ad0691_sgm_core (
     .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
     .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_K_W(3), .COST_AW(14),
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .DMAX(128), .DISP_W(7),
-    .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5)
+    .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .match_on(match_on), .overlap(overlap), .wrapped(wrapped), .p1(p1), .p2(p2), .cost_valid(cost_valid),
@@ -401,7 +401,7 @@ module fps_sad5_d128u32_ad0691_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_ad0691_lr_check #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(5), .OUT_K_W(3),
-    .DISP_AW(13), .ROW_END(0), .END_AW(5), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5)
+    .DISP_AW(13), .ROW_END(0), .END_AW(5), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
     .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata),
@@ -1445,7 +1445,9 @@ endmodule
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
 // ZSAD spreads the base window's mean over three shifts after the window's register (its row
 // sums, their total, the constant multiply), so the window, its position and the match column
-// wait two shifts longer than for SAD.
+// wait two shifts longer than for SAD. A disparity offset MIN_DISP delays the match columns by
+// MIN_DISP slots before the rings or, when negative, the base window and its centre by -MIN_DISP
+// slots (fps_sad5_d128u32_ad0691_offset_delays).
 module fps_sad5_d128u32_ad0691_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -1462,6 +1464,7 @@ module fps_sad5_d128u32_ad0691_pixel_window_cost #(
   parameter X_W = 7,
   parameter YS_W = 8,
   parameter G_W = 2,
+  parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_sad5_d128u32_ad0691_window_cost_lanes checks it)
   parameter LAT = 4
 ) (
@@ -1496,9 +1499,12 @@ module fps_sad5_d128u32_ad0691_pixel_window_cost #(
       fps_sad5_d128u32_ad0691_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
-  wire [N*N*8-1:0] base_masked;
+  wire [N*N*8-1:0] base_masked, base_o;
   fps_sad5_d128u32_ad0691_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
+  wire [X_W-1:0]         transform_x_o;
+  wire signed [YS_W-1:0] transform_y_o;
+  wire [COST_K_W-1:0]    transform_slot_o;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
   // The match window's newest column, zero outside the image, and its sum.
   reg [N*8-1:0] newest_column;
@@ -1516,11 +1522,11 @@ module fps_sad5_d128u32_ad0691_pixel_window_cost #(
   reg [X_W+YS_W+COST_K_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t       <= base_masked;
+      base_t       <= base_o;
       column_t     <= newest_column;
       column_sum_t <= newest_sum;
       base_h       <= base_t;
-      position_h   <= {transform_x, transform_y, transform_slot};
+      position_h   <= {transform_x_o, transform_y_o, transform_slot_o};
     end
   // ZSAD: all of it waits two shifts more for the base window's mean.
   wire [N*N*8-1:0]    base_l;
@@ -1563,15 +1569,22 @@ module fps_sad5_d128u32_ad0691_pixel_window_cost #(
       assign base_mean = 8'd0;
     end
   endgenerate
+  wire [N*8-1:0]      column_o;
+  wire [COLSUM_W-1:0] column_sum_o;
+  fps_sad5_d128u32_ad0691_offset_delays #(.BASE_W(N*N*8 + X_W + YS_W + COST_K_W), .MATCH_W(N*8 + COLSUM_W), .MIN_DISP(MIN_DISP)) offset (
+    .clk(clk), .shift(shift), .base({base_masked, transform_x, transform_y, transform_slot}),
+    .match({column_l, column_sum_l}), .base_out({base_o, transform_x_o, transform_y_o, transform_slot_o}),
+    .match_out({column_o, column_sum_o}));
   wire [(UF+N-1)*N*8-1:0]      view;
   wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
   fps_sad5_d128u32_ad0691_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_l), .view(view));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_o), .view(view));
   fps_sad5_d128u32_ad0691_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_l), .view(view_sums));
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_o), .view(view_sums));
   fps_sad5_d128u32_ad0691_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .LAT(LAT)) lanes (
+                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
+                               .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
@@ -1666,7 +1679,8 @@ endmodule
 // b is the (already zero-extended) base window; the match window of lane l is view columns
 // l .. l + SPAN - 1 (fps_sad5_d128u32_ad0691_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
-// Where the match centre lies left of the image (x < d) the cost is COST_MAX. Register steps
+// Lane l's disparity is MIN_DISP + d; where its match centre x - MIN_DISP - d lies outside the
+// row the cost is COST_MAX. Register steps
 // (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
 // the match window's sum, its mean, the difference of the means (with the masked view); the
 // magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
@@ -1687,6 +1701,8 @@ module fps_sad5_d128u32_ad0691_window_cost_lanes #(
   parameter COLSUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
   // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
   parameter LAT = 4
 ) (
@@ -1724,8 +1740,8 @@ module fps_sad5_d128u32_ad0691_window_cost_lanes #(
   localparam R = SPAN / 2;
   localparam COLUMN_W = SPAN * ELEM_W;
   localparam VIEW_COLS = UF + SPAN - 1;
-  // wide enough for x + VIEW_COLS and for any disparity plus UF + R + width
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
+  // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
   localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
   // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
   localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
@@ -1736,18 +1752,24 @@ module fps_sad5_d128u32_ad0691_window_cost_lanes #(
   localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
   wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
   wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
+  // Match positions x - MIN_DISP - ..., compared as x + AHEAD against ... + BEHIND.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
-  // View column c lies at x - group*UF + (SPAN - 1 - R - c) in the image for every lane that
-  // reads it (lane l: window column j = l + SPAN - 1 - c, at x - d + j - R), so one mask per view
-  // column serves all lanes. Inside: 0 <= that < width, here with group*UF + UF + R added.
-  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0];
-  wire [D_W-1:0] inside_high = inside_low + {{(D_W-X_W){1'b0}}, width};
+  // View column c lies at x - MIN_DISP - group*UF + (SPAN - 1 - R - c) in the image for every
+  // lane that reads it (lane l: window column j = l + SPAN - 1 - c, at x - MIN_DISP - d + j - R),
+  // so one mask per view column serves all lanes. Inside: 0 <= that < width, here with
+  // group*UF + UF + R + BEHIND added.
+  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0] + BEHIND[D_W-1:0];
+  wire [D_W-1:0] inside_high = inside_low + width_wide;
   wire [VIEW_COLS-1:0] view_valid;
   genvar c;
   generate
     for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
       localparam OFFSET = VIEW_COLS - c;
-      wire [D_W-1:0] position = x_wide + OFFSET[D_W-1:0];
+      wire [D_W-1:0] position = x_ahead + OFFSET[D_W-1:0];
       assign view_valid[c] = position >= inside_low && position < inside_high;
     end
   endgenerate
@@ -1808,12 +1830,12 @@ module fps_sad5_d128u32_ad0691_window_cost_lanes #(
   genvar l, i, k;
   generate
     for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [D_W-1:0] d = group_base + l[D_W-1:0];
+      wire [D_W-1:0] d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
       // The border flag, registered at step 1, waits for the total.
       reg  outside_q;
       wire outside_d;
       always @(posedge clk)
-        if (en) outside_q <= x_wide < d;
+        if (en) outside_q <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
       fps_sad5_d128u32_ad0691_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 
@@ -1991,6 +2013,81 @@ endmodule
 
 `resetall
 `default_nettype none
+// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
+// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
+// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
+// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
+// that the ring already holds the match columns right of it. Shift registers, advanced once per
+// slot; pass-through at MIN_DISP = 0.
+module fps_sad5_d128u32_ad0691_offset_delays #(
+  parameter BASE_W = 8,
+  parameter MATCH_W = 8,
+  parameter MIN_DISP = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
+  input  wire               clk,
+  input  wire               shift,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [BASE_W-1:0]  base,
+  input  wire [MATCH_W-1:0] match,
+  output wire [BASE_W-1:0]  base_out,
+  output wire [MATCH_W-1:0] match_out
+);
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_sad5_d128u32_ad0691_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
+    end else begin : match_now
+      assign match_out = match;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_sad5_d128u32_ad0691_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
+    end else begin : base_now
+      assign base_out = base;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_sad5_d128u32_ad0691_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_sad5_d128u32_ad0691_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // Cost reorder RAM (docs/architecture.md): the cost words, written in raster order as the cost
 // lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
@@ -2057,42 +2154,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_sad5_d128u32_ad0691_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
-) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_sad5_d128u32_ad0691_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
-    end
-  endgenerate
-  reg [WIDTH*DEPTH-1:0] line;
-  generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
-    end
-  endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
 module fps_sad5_d128u32_ad0691_ram_sdp #(
@@ -2130,8 +2191,9 @@ endmodule
 `default_nettype none
 // LR2 match side (docs/semantics.md, section 5): a second cost volume and aggregation with the
 // images' roles swapped, and its winner-take-all (no uniqueness). Every cost is symmetric, so the
-// match side's C(x', d) is the base side's C(x' + d, d): lane l of each base cost word goes to its
-// own RAM bank at match pixel x - d, and a word of the match side reads all banks at one address.
+// match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
+// cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
+// word of the match side reads all banks at one address.
 // From match_on on, completed_* writes Dm(x') of each match pixel.
 module fps_sad5_d128u32_ad0691_lr2_match #(
   parameter W = 64,
@@ -2160,7 +2222,8 @@ module fps_sad5_d128u32_ad0691_lr2_match #(
   parameter Y_W = 6,
   parameter G_W = 2,
   parameter K_W = 1,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -2195,13 +2258,19 @@ module fps_sad5_d128u32_ad0691_lr2_match #(
   // verilator lint_off WIDTH
   wire [UF*COST_W-1:0] match_costs;
   wire [COST_AW-1:0]   match_raddr;
+  // x - m - d as (x + AHEAD) - (d + BEHIND)
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = cost_x + AHEAD;
   genvar l;
   generate
     for (l = 0; l < UF; l = l + 1) begin : bank
-      wire [DISP_W-1:0] disparity = cost_group * UF + l;
+      wire [P_W-1:0] d_behind = cost_group * UF + l + BEHIND;
+      wire in_row = x_ahead >= d_behind && (MIN_DISP >= 0 || x_ahead < d_behind + frame_width);
       fps_sad5_d128u32_ad0691_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
-        .clk(clk), .we(adv && cost_valid && cost_x >= disparity),
-        .waddr((cost_row_slot * ROW_SLOTS + (cost_x - disparity)) * G + cost_group),
+        .clk(clk), .we(adv && cost_valid && in_row),
+        .waddr((cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
     end
@@ -2219,7 +2288,7 @@ module fps_sad5_d128u32_ad0691_lr2_match #(
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
     .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
@@ -2247,7 +2316,7 @@ endmodule
 // RAM in chain order, runs the enabled paths in K interleaved chains and delivers, per step, the
 // path sums of one group of one pixel with the pixel's position. Every register advances when
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
-// x' + d lies beyond the right border get COST_MAX (docs/semantics.md section 5, LR2). With
+// x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_sad5_d128u32_ad0691_adaptive_p2), which replaces the p2 input for that path.
 module fps_sad5_d128u32_ad0691_aggregator #(
@@ -2279,7 +2348,9 @@ module fps_sad5_d128u32_ad0691_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1
+  parameter COST_K_W = 1,
+  // the match side's disparity offset
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -2470,10 +2541,14 @@ module fps_sad5_d128u32_ad0691_aggregator #(
   wire [PATH_W-1:0] p2_0 = p2_of[0 +: PATH_W], p2_45 = p2_of[PATH_W +: PATH_W];
   wire [PATH_W-1:0] p2_90 = p2_of[2*PATH_W +: PATH_W], p2_135 = p2_of[3*PATH_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */
+  // base pixel x' + m + d compared as x' + d + BEHIND against the row shifted by AHEAD
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   genvar c;
   generate
     for (c = 0; c < UF; c = c + 1) begin : match_border
-      wire beyond = MATCH_SIDE != 0 && x2 + g2 * UF + c > frame_width - 1;
+      wire beyond = MATCH_SIDE != 0 && (x2 + g2 * UF + c + BEHIND > frame_width - 1 + AHEAD ||
+                                        (MIN_DISP < 0 && x2 + g2 * UF + c < AHEAD));
       assign cost2[c*COST_W +: COST_W] = beyond ? COST_MAX[COST_W-1:0] : cost_read2[c*COST_W +: COST_W];
     end
   endgenerate
@@ -3019,7 +3094,7 @@ endmodule
 `resetall
 `default_nettype none
 // Left-right check (docs/semantics.md, section 5), three steps: for the read stream's pixel x
-// with disparity D, Dm of x' = x - D is looked up (fps_sad5_d128u32_ad0691_match_lookup: the match side's
+// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_sad5_d128u32_ad0691_match_lookup: the match side's
 // completed pixels, with ROW_END, as LR1 does, its row ends), and the word becomes invalid where
 // x' lies outside the image or |D - Dm(x')| > lr_threshold. The RAMs are read in the first step,
 // Dm is registered in the second, the check's result in the third, and the stream leaves three
@@ -3045,7 +3120,8 @@ module fps_sad5_d128u32_ad0691_lr_check #(
   parameter RIGHT_VIEW = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -3079,12 +3155,19 @@ module fps_sad5_d128u32_ad0691_lr_check #(
   // Disparities against positions and the threshold's 4 bits: the compares widen them.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] d = read_word[DISP_W-1:0];
-  wire outside = read_word[IN_W] || read_x < d;
-  wire [X_W-1:0] xm = read_x - d;  // wraps where x' lies outside, and then goes unused
+  // x' = x - MIN_DISP - D as (x + AHEAD) - (D + BEHIND)
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  wire [P_W-1:0] x_ahead = read_x + AHEAD;
+  wire [P_W-1:0] d_behind = d + BEHIND;
+  wire outside = read_word[IN_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+  wire [X_W-1:0] xm = x_ahead - d_behind;  // wraps where x' lies outside, and then goes unused
   wire [DISP_W-1:0] dm;
   fps_sad5_d128u32_ad0691_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
@@ -3145,7 +3228,8 @@ module fps_sad5_d128u32_ad0691_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fps_sad5_d128u32_ad0691_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W)
+        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
@@ -3170,7 +3254,8 @@ endmodule
 // RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
 // outputs) in the second. The match side writes Dm of its completed pixels into the completed
 // RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
-// UF per group; x' beyond frame_width - DMAX reads the row end then.
+// UF per group: x' reads the row end where e = frame_width - 1 - MIN_DISP - x' < DMAX - 1, and
+// is 0 where no base pixel of the row meets it (e < 0 or e > frame_width - 1 + DMAX - 1).
 module fps_sad5_d128u32_ad0691_match_lookup #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -3183,7 +3268,8 @@ module fps_sad5_d128u32_ad0691_match_lookup #(
   parameter ROW_END = 1,
   parameter END_AW = 4,
   parameter X_W = 7,
-  parameter LANE_W = 3
+  parameter LANE_W = 3,
+  parameter MIN_DISP = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -3217,8 +3303,18 @@ module fps_sad5_d128u32_ad0691_match_lookup #(
     .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
   generate
     if (ROW_END != 0) begin : row_end
-      wire from_row_end = xm > frame_width - DMAX;
-      wire [DISP_W-1:0] from_end = frame_width - 1 - xm;  // the row-end entry of x'
+      // e = frame_width - 1 - MIN_DISP - x', as (frame_width - 1 + AHEAD) - (x' + BEHIND)
+      localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+      localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+      localparam P_W = X_W + 10;
+      wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
+      wire [P_W-1:0] xm_behind = xm + BEHIND;
+      wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
+      wire [DISP_W-1:0] from_end = last_ahead - xm_behind;  // the row-end entry of x'
+      // no base pixel: right of the last one's reach (MIN_DISP > 0), or left of the first's
+      wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
+                  (MIN_DISP < -(DMAX - 1) && xm + (DMAX - 1) < AHEAD);
+      reg none_q;
       wire [UF*DISP_W-1:0] end_q;
       fps_sad5_d128u32_ad0691_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
@@ -3229,8 +3325,9 @@ module fps_sad5_d128u32_ad0691_match_lookup #(
         if (adv) begin
           from_row_end_q <= from_row_end;
           lane_q <= from_end % UF;
+          none_q <= none;
         end
-      assign dm = from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
+      assign dm = none_q ? {DISP_W{1'b0}} : from_row_end_q ? end_q[lane_q * DISP_W +: DISP_W] : completed_q;
     end else begin : completed_only
       assign dm = completed_q;
     end
