@@ -2,11 +2,13 @@
 `default_nettype none
 // Sub-pixel stage (docs/semantics.md, section 4): the winner-take-all's word {invalid, D}
 // refined to {invalid, D * 2^K + f} with the aggregated sums at D - 1, D and D + 1. The sums of
-// the pixel's G groups wait in a history of TREE_LAT + G steps (the winner-take-all's tree takes
-// TREE_LAT): in the step after the pixel's word the three sums are selected by D, a register
-// (sums beyond the range read as 0; fpstereo_subpixel_fit keeps D whole there), then the fit
-// takes K + 3 steps. Latency K + 5 steps; the tag travels along. An invalid word stays the
-// invalid word (the flag alone).
+// the pixel's G groups wait in a history of TREE_LAT + G steps (the winner-take-all's word lags
+// its sums by TREE_LAT): in the step after the pixel's word the high bits of D select a chunk of the sums
+// (2^LO_W of them and one on each side), in the next its low bits pick the three sums (sums
+// beyond the range read as 0; fpstereo_subpixel_fit keeps D whole there): two narrow
+// multiplexers in two register steps instead of one dmax:1. Then the fit takes K + 3 steps.
+// Latency K + 6 steps; the tag travels along. An invalid word stays the invalid word (the flag
+// alone).
 module fpstereo_subpixel #(
   parameter UF = 8,
   parameter G = 2,
@@ -43,7 +45,7 @@ module fpstereo_subpixel #(
   localparam SLOTS = 1 << DISP_W;  // every value of D, those beyond DMAX reading 0
 
   wire invalid;
-  fpstereo_delay #(.WIDTH(TAG_W + 1), .DEPTH(K + 5)) tag_wait (
+  fpstereo_delay #(.WIDTH(TAG_W + 1), .DEPTH(K + 6)) tag_wait (
     .clk(clk), .rst(restart), .en(adv), .in({tag, word[DISP_W]}), .out({tag_out, invalid}));
 
   // The history: entry j holds the sums that came j + 1 steps ago.
@@ -51,38 +53,45 @@ module fpstereo_subpixel #(
   always @(posedge clk)
     if (adv) history <= {history[(DEPTH-1)*ROW_W-1:0], sums};
 
-  // In the selection step, disparity g * UF + l is lane l of entry G + TREE_LAT - 1 - g.
-  wire [SLOTS*SUM_W-1:0] below, at, above;  // S(D - 1), S(D), S(D + 1) at index D
-  genvar v;
+  // In the first selection step, disparity g * UF + l is lane l of entry G + TREE_LAT - 1 - g.
+  // padded[v + 1] is S(v) for v = -1 .. SLOTS, 0 outside the range.
+  localparam HI_W = DISP_W / 2;
+  localparam LO_W = DISP_W - HI_W;
+  localparam CHUNK = 1 << LO_W;
+  localparam CHUNKS = 1 << HI_W;
+  localparam WINDOW = CHUNK + 2;
+  wire [(SLOTS+2)*SUM_W-1:0] padded;
+  wire [CHUNKS*WINDOW*SUM_W-1:0] windows;  // chunk c: S(c * CHUNK - 1) .. S(c * CHUNK + CHUNK)
+  genvar v, c;
   generate
-    for (v = 0; v < SLOTS; v = v + 1) begin : slot
-      if (v < DMAX) begin : in_range
-        assign at[v*SUM_W +: SUM_W] = history[((G + TREE_LAT - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W];
+    for (v = -1; v <= SLOTS; v = v + 1) begin : slot
+      if (v >= 0 && v < DMAX) begin : in_range
+        assign padded[(v+1)*SUM_W +: SUM_W] = history[((G + TREE_LAT - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W];
       end else begin : beyond
-        assign at[v*SUM_W +: SUM_W] = {SUM_W{1'b0}};
+        assign padded[(v+1)*SUM_W +: SUM_W] = {SUM_W{1'b0}};
       end
-      if (v > 0) begin : has_below
-        assign below[v*SUM_W +: SUM_W] = at[(v-1)*SUM_W +: SUM_W];
-      end else begin : no_below
-        assign below[v*SUM_W +: SUM_W] = {SUM_W{1'b0}};
-      end
-      if (v < SLOTS - 1) begin : has_above
-        assign above[v*SUM_W +: SUM_W] = at[(v+1)*SUM_W +: SUM_W];
-      end else begin : no_above
-        assign above[v*SUM_W +: SUM_W] = {SUM_W{1'b0}};
-      end
+    end
+    for (c = 0; c < CHUNKS; c = c + 1) begin : chunk
+      assign windows[c*WINDOW*SUM_W +: WINDOW*SUM_W] = padded[c*CHUNK*SUM_W +: WINDOW*SUM_W];
     end
   endgenerate
 
-  reg [DISP_W-1:0] d_q, d_selected;
-  reg [SUM_W-1:0]  left_q, best_q, right_q;
+  reg [DISP_W-1:0]       d_q, d_chunk, d_selected;
+  reg [WINDOW*SUM_W-1:0] window_q;
+  reg [SUM_W-1:0]        left_q, best_q, right_q;
+  // S(D - 1), S(D), S(D + 1) in the chunk's window
+  wire [LO_W+1:0]        at_left = {2'b00, d_chunk[LO_W-1:0]};
+  wire [LO_W+1:0]        at_best = at_left + 1'b1;
+  wire [LO_W+1:0]        at_right = at_best + 1'b1;
   always @(posedge clk)
     if (adv) begin
       d_q <= word[DISP_W-1:0];
-      d_selected <= d_q;
-      left_q <= below[d_q*SUM_W +: SUM_W];
-      best_q <= at[d_q*SUM_W +: SUM_W];
-      right_q <= above[d_q*SUM_W +: SUM_W];
+      d_chunk <= d_q;
+      window_q <= windows[(d_q >> LO_W)*WINDOW*SUM_W +: WINDOW*SUM_W];
+      d_selected <= d_chunk;
+      left_q <= window_q[at_left*SUM_W +: SUM_W];
+      best_q <= window_q[at_best*SUM_W +: SUM_W];
+      right_q <= window_q[at_right*SUM_W +: SUM_W];
     end
 
   wire [OUT_W-1:0] refined;

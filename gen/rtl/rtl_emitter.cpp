@@ -325,6 +325,9 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
       cfg.cost == CostFunction::Zsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
   d.path_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
   d.wta_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
+  d.unique_tree_latency = min_tree_latency(cfg.uf, RtlDesign::kUniqueLevelsPerStage);
+  d.wta_word_lag = finds_second_best(cfg) ? d.unique_tree_latency + RtlDesign::kUniqueWordSteps
+                                                         : d.wta_tree_latency;
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
   // path lanes (two steps, fpstereo_path_lanes), the tree and the running minimum take
   // G - 1 + 2 + latency + 1 steps; K chains give it K * G (fpstereo_aggregator checks it).

@@ -42,6 +42,13 @@ struct RtlDesign {
   int levels_per_stage = 3;
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
+  // The uniqueness tree's joins are deeper than the minimum trees' compare-selects: it is
+  // registered after each join (fpstereo_wta_unique); its word leaves two steps after the tree.
+  static constexpr int kUniqueLevelsPerStage = 1, kUniqueWordSteps = 2;
+  int unique_tree_latency = 0;
+  // Steps from the winner-take-all's sums to its word: the tree, and with uniqueness (or
+  // confidence) the group join's and the test's registers.
+  int wta_word_lag = 0;
   // the stages in data order (stages.hpp); the schedule below is the sum of their latencies
   std::vector<StagePtr> stages;
   // steps from a frame's first step to the start of each stage with a schedule of its own, by

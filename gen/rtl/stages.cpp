@@ -748,11 +748,10 @@ class Lr2MatchStage : public Stage {
 // Winner-take-all (with the uniqueness check when configured): the running minimum's register.
 class WtaStage : public Stage {
  public:
-  // The confidence needs the second-best sum that the uniqueness check's tree finds.
-  explicit WtaStage(const StereoConfig& c) : unique_(c.uniqueness != 0 || c.confidence) {}
+  explicit WtaStage(const StereoConfig& c) : unique_(finds_second_best(c)) {}
   std::string title() const override { return unique_ ? "winner-take-all with uniqueness" : "winner-take-all"; }
   std::vector<std::string> knobs() const override { return {"uniqueness"}; }
-  Latency latency(const RtlDesign& d) const override { return {0, 0, d.wta_tree_latency + 1}; }
+  Latency latency(const RtlDesign& d) const override { return {0, 0, d.wta_word_lag + 1}; }
   std::vector<std::string> modules(const RtlDesign&) const override {
     if (unique_) return {"fpstereo_wta_unique", "fpstereo_unique_tree", "fpstereo_unique_join", "fpstereo_delay"};
     return {"fpstereo_wta", "fpstereo_min_tree", "fpstereo_delay"};
@@ -788,8 +787,8 @@ class WtaStage : public Stage {
                      {"LANE_W", num(d.lane_bits)},
                      {"G_W", num(d.group_bits)},
                      {"TAG_W", num(tag_bits)},
-                     {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
-                     {"TREE_LAT", num(d.wta_tree_latency)}},
+                     {"LEVELS_PER_STAGE", num(unique_ ? RtlDesign::kUniqueLevelsPerStage : d.levels_per_stage)},
+                     {"TREE_LAT", num(unique_ ? d.unique_tree_latency : d.wta_tree_latency)}},
                     ports);
   }
 
@@ -817,12 +816,12 @@ class WtaStage : public Stage {
 };
 
 // Sub-pixel refinement of the winner-take-all's words (fpstereo_subpixel): the sums at D - 1, D
-// and D + 1 selected a step after the word, then the fit's K + 3 steps.
+// and D + 1 selected in the two steps after the word, then the fit's K + 3 steps.
 class SubpixelStage : public Stage {
  public:
   std::string title() const override { return "sub-pixel fit"; }
   std::vector<std::string> knobs() const override { return {"subpixel-bits", "subpixel-fit"}; }
-  Latency latency(const RtlDesign& d) const override { return {0, 0, d.cfg.subpixel_bits + 5}; }
+  Latency latency(const RtlDesign& d) const override { return {0, 0, d.cfg.subpixel_bits + 6}; }
   std::vector<std::string> modules(const RtlDesign&) const override {
     return {"fpstereo_subpixel", "fpstereo_subpixel_fit", "fpstereo_delay"};
   }
@@ -835,7 +834,7 @@ class SubpixelStage : public Stage {
     const std::string o = subpixel_out(d);
     const std::string tag_out =
         fmt::format("{{{0}_active, {0}_x, {0}_slot, {0}_group", o) + (whole ? fmt::format(", {}_whole}}", o) : "}");
-    return "\n  // Sub-pixel fit: the refined word, subpixel-bits + 5 steps after the whole one.\n" +
+    return "\n  // Sub-pixel fit: the refined word, subpixel-bits + 6 steps after the whole one.\n" +
            wire(d.group_bits, o + "_group") + wire(1, o + "_active") + wire(d.x_bits, o + "_x") +
            wire(d.out_row_bits, o + "_slot") + wire(d.widths.output_word, o + "_word") +
            (whole ? wire(d.widths.disparity, o + "_whole") : std::string()) +
@@ -848,7 +847,7 @@ class SubpixelStage : public Stage {
                      {"K", num(d.cfg.subpixel_bits)},
                      {"EQUIANGULAR", d.cfg.subpixel_fit == SubpixelFit::Equiangular ? "1" : "0"},
                      {"OUT_W", num(d.widths.output_disparity)},
-                     {"TREE_LAT", num(d.wta_tree_latency)},
+                     {"TREE_LAT", num(d.wta_word_lag)},
                      {"TAG_W", num(tag_bits)}},
                     {{"clk", "clk"},
                      {"restart", "restart"},

@@ -97,6 +97,10 @@ class Stage {
 
 using StagePtr = std::shared_ptr<const Stage>;
 
+// Whether the winner-take-all finds the second-best sum too (fpstereo_wta_unique): the
+// uniqueness check and the confidence need it.
+inline bool finds_second_best(const StereoConfig& c) { return c.uniqueness != 0 || c.confidence; }
+
 // The stages of a configuration in the order data flows through them; stages that run beside
 // the main stream (the match side of the left-right check) follow the stage they read from and
 // add no latency to the stream.
