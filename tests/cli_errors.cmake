@@ -117,7 +117,7 @@ expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
 expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --right-view on)
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
 expect_error("min-disp = -300: must be in -256 .. 256" --min-disp -300)
-expect_error("min-disp = -8: not in the hardware generators yet" --min-disp -8)
+expect_error("min-disp = -8: not in the RTL generator yet" --min-disp -8)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --cost shd --p2-adapt 4)
 expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --emit hls --cost shd --p2-adapt 4
              -o ${WORK}/hls_shd_adapt)

@@ -94,7 +94,8 @@ struct EmittedFile {
   std::string text;
 };
 
-// The top and every module it uses, the top first; each file opens with the banner.
+// The top and every module it uses, the top first; each file opens with the banner. Throws
+// ConfigError for min-disp != 0, which only the HLS path has so far.
 std::vector<EmittedFile> emit(const RtlDesign& design);
 // The same as one self-contained file.
 std::string emit_single_file(const RtlDesign& design);
