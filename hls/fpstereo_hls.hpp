@@ -439,7 +439,7 @@ match_cost_rows:
         for (int lane = 0; lane < C::kUf; ++lane) {
           const int xb = xm + C::kMinDisp + g * C::kUf + lane;
           const bool inside = xb >= 0 && xb < width;
-          const int cost = inside ? int(banks[lane][xb % D][g]) : C::kCostMax;
+          const int cost = inside ? int(banks[lane][(inside ? xb : 0) % D][g]) : C::kCostMax;
           word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
         }
         out.write(word);
@@ -845,7 +845,7 @@ select_match_groups:
 // Section 5: the check of D(x) against Dm(x') at x' = x - m - D, invalid where x' leaves the row.
 // Both come in raster order and Dm is kept for the row; D(x) is checked once Dm up to x + lead has
 // arrived (lead = match_lead, capped at W: with m < 0, x' may lie right of x), so each row reads
-// lead Dm before its first D (W + lead iterations). With the right view, Dm also goes to
+// lead Dm before its first D (W + lead iterations a row). With the right view, Dm also goes to
 // right_view as it arrives.
 template <class C>
 void lr_check(hls::stream<BaseWord<C>>& disparity, hls::stream<Word<C>>& match_disparity,
