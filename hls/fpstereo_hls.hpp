@@ -266,21 +266,21 @@ int hamming(const ap_uint<W>& a, const ap_uint<W>& b) {
 }
 inline int abs_diff(int a, int b) { return a > b ? a - b : b - a; }
 
-// The cost of disparity d at the current pixel. history[j] is the match column x + r - j of the
-// cost window (r its radius), so the match window of x - d spans history[d .. d + 2r].
+// The cost of the current pixel against the match window that spans history[at .. at + 2r]
+// (history[j] is a match column of the cost window, r its radius, the newest at j = 0).
 template <class C>
 int window_cost(const Window<Feature<C>, cost_window<C>()>& base,
-                const Feature<C> history[][cost_window<C>()], int d) {
+                const Feature<C> history[][cost_window<C>()], int at) {
   constexpr int K = cost_window<C>(), r = K / 2;
   int sum = 0;
   for (int row = 0; row < K; ++row)
     for (int col = 0; col < K; ++col) {
       const Feature<C>& b = base.v[row][col];
-      const Feature<C>& m = history[d + 2 * r - col][row];
+      const Feature<C>& m = history[at + 2 * r - col][row];
       if constexpr (C::kCost == Cost::Census || C::kCost == Cost::Shd) {
         sum += hamming(b, m);
       } else if constexpr (C::kCost == Cost::Zsad) {
-        const int base_mean = base.v[r][r].mean, match_mean = history[d + r][r].mean;
+        const int base_mean = base.v[r][r].mean, match_mean = history[at + r][r].mean;
         sum += abs_diff(int(b.pixel) - base_mean, int(m.pixel) - match_mean);
       } else {
         sum += abs_diff(int(b), int(m));
@@ -289,46 +289,68 @@ int window_cost(const Window<Feature<C>, cost_window<C>()>& base,
   return sum;
 }
 
-// C(x, y, d) for every pixel, G words of uf costs each; Cmax where x - d < 0. The match columns of
-// the last dmax + K - 1 positions live in a register history shifted once per pixel; at a row's
-// start it is refilled from the first window (columns left of the image are zero). With LR2 the
-// costs also go to the match side.
+// min-disp m (semantics section 2): index d pairs base pixel x with match pixel x - m - d. With
+// m > 0 the match pixels lie m further left, with m < 0 up to -m right of x: the match side then
+// runs match_lead = -m pixels ahead of the base side (cost_stage, lr_check).
+template <class C>
+constexpr int match_lead() {
+  return C::kMinDisp < 0 ? -C::kMinDisp : 0;
+}
+
+// C(x, y, d) for every pixel, G words of uf costs each; Cmax where the match pixel x - m - d leaves
+// the row. The match columns live in a register history shifted once per match window, newest
+// first; at a row's start it is refilled from the first window (columns left of the image are
+// zero). The newest column is x + r + lead (lead = match_lead), so the match window of x - m - d
+// starts at history[d + max(m, 0)]: dmax + K - 1 + max(m, 0) columns. With m < 0 each row opens
+// with lead iterations that only shift match windows in (W * G + lead iterations per row), and
+// past the row's last match window zero columns enter (outside the image). With LR2 the costs also
+// go to the match side.
 template <class C>
 void cost_stage(hls::stream<Window<Feature<C>, cost_window<C>()>>& base_in,
                 hls::stream<Window<Feature<C>, cost_window<C>()>>& match_in, hls::stream<CostWord<C>>& out,
                 hls::stream<CostWord<C>>& match_side_out, int width, int height) {
-  constexpr int K = cost_window<C>(), G = C::kGroups, kHistory = C::kDmax + K - 1;
+  constexpr int K = cost_window<C>(), G = C::kGroups, kLead = match_lead<C>();
+  constexpr int kShift = C::kMinDisp > 0 ? C::kMinDisp : 0, kHistory = C::kDmax + K - 1 + kShift;
   Feature<C> history[kHistory][K];
 #pragma HLS ARRAY_PARTITION variable = history complete dim = 0
   Window<Feature<C>, K> base;
-  int x = 0, g = 0;
+  int u = 0, g = 0;  // u: the newest match window in the row; base pixel x = u - lead
 cost_groups:
-  for (int i = 0; i < width * height * G; ++i) {
+  for (int i = 0; i < height * (width * G + kLead); ++i) {
 #pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
-    if (g == 0) {
-      base = base_in.read();
-      const Window<Feature<C>, K> match = match_in.read();
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight * (C::kMaxWidth * C::kGroups + kLead)
+    const bool ahead = u < kLead;  // a match window before the row's first base pixel
+    if (ahead || g == 0) {
+      if (!ahead) base = base_in.read();
+      Window<Feature<C>, K> match;
+      for (int row = 0; row < K; ++row)
+        for (int col = 0; col < K; ++col) match.v[row][col] = zero_value<Feature<C>>();
+      if (u < width) match = match_in.read();
       for (int j = kHistory - 1; j >= 0; --j)
         for (int row = 0; row < K; ++row) {
-          if (x == 0)
+          if (u == 0)
             history[j][row] = j < K ? match.v[row][K - 1 - j] : zero_value<Feature<C>>();
           else
             history[j][row] = j == 0 ? match.v[row][K - 1] : history[j - 1][row];
         }
     }
-    CostWord<C> word = 0;
-    for (int lane = 0; lane < C::kUf; ++lane) {
+    if (ahead) {
+      ++u;
+    } else {
+      const int x = u - kLead;
+      CostWord<C> word = 0;
+      for (int lane = 0; lane < C::kUf; ++lane) {
 #pragma HLS UNROLL
-      const int d = g * C::kUf + lane;
-      const int cost = d > x ? C::kCostMax : window_cost<C>(base, history, d);
-      word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
-    }
-    out.write(word);
-    if (C::kLr == Lr::Lr2) match_side_out.write(word);
-    if (++g == G) {
-      g = 0;
-      if (++x == width) x = 0;
+        const int d = g * C::kUf + lane, xm = x - C::kMinDisp - d;
+        const int cost = xm < 0 || xm >= width ? C::kCostMax : window_cost<C>(base, history, d + kShift);
+        word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
+      }
+      out.write(word);
+      if (C::kLr == Lr::Lr2) match_side_out.write(word);
+      if (++g == G) {
+        g = 0;
+        if (++u == width + kLead) u = 0;
+      }
     }
   }
 }
@@ -384,35 +406,40 @@ attach_groups:
   }
 }
 
-// Section 5, LR2: the match side's cost of match pixel x' at disparity d is the base cost
-// C(x' + d, d) (Cmax beyond the right border). Lane l of base word (x, g) goes to bank l at slot
+// Section 5, LR2: the match side's cost of match pixel x' at index d is the base cost
+// C(x' + m + d, d) (Cmax outside the row). Lane l of base word (x, g) goes to bank l at slot
 // x mod dmax, so every lane of match word (x', g) is one read in its own bank. Match pixel x' is
-// complete once base pixel x' + dmax - 1 has arrived: the row takes W + dmax - 1 pixel times.
+// complete once base pixel x' + lag has arrived (lag = m + dmax - 1; its base pixels are the dmax
+// up to that one, still in the banks): it leaves at pixel time t = x' + lag, while base pixel t
+// arrives. A row runs t from min(lag, 0) to max(W, W + lag) - 1, W + |lag| pixel times: with
+// lag < 0 the first -lag match pixels have no base pixel in the row (all Cmax).
 template <class C>
 void match_costs(hls::stream<CostWord<C>>& base_costs, hls::stream<CostWord<C>>& out, int width, int height) {
-  constexpr int G = C::kGroups, D = C::kDmax;
+  constexpr int G = C::kGroups, D = C::kDmax, kLag = C::kMinDisp + C::kDmax - 1;
+  constexpr int kExtra = kLag < 0 ? -kLag : kLag;
   ap_uint<C::kCostBits> banks[C::kUf][D][G];
 #pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
 #pragma HLS DEPENDENCE variable = banks inter false
 match_cost_rows:
   for (int y = 0; y < height; ++y) {
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight
-    int t = 0, g = 0;
+    int t = kLag < 0 ? kLag : 0, g = 0;
   match_cost_groups:
-    for (int i = 0; i < (width + D - 1) * G; ++i) {
+    for (int i = 0; i < (width + kExtra) * G; ++i) {
 #pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxWidth + C::kDmax - 1) * C::kGroups
-      if (t < width) {
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxWidth + kExtra) * C::kGroups
+      if (t >= 0 && t < width) {
         const CostWord<C> word = base_costs.read();
         for (int lane = 0; lane < C::kUf; ++lane)
           banks[lane][t % D][g] = word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits);
       }
-      if (t >= D - 1) {
-        const int xm = t - (D - 1);
+      const int xm = t - kLag;
+      if (xm >= 0 && xm < width) {
         CostWord<C> word = 0;
         for (int lane = 0; lane < C::kUf; ++lane) {
-          const int xb = xm + g * C::kUf + lane;
-          const int cost = xb < width ? int(banks[lane][xb % D][g]) : C::kCostMax;
+          const int xb = xm + C::kMinDisp + g * C::kUf + lane;
+          const bool inside = xb >= 0 && xb < width;
+          const int cost = inside ? int(banks[lane][(inside ? xb : 0) % D][g]) : C::kCostMax;
           word.range((lane + 1) * C::kCostBits - 1, lane * C::kCostBits) = cost;
         }
         out.write(word);
@@ -724,13 +751,16 @@ struct Winner {
 };
 
 // The base side: disparity words after uniqueness. With LR1 also Dm(x') = the smallest d
-// minimising S(x' + d, d), built up in a row RAM as the sums pass and sent out as soon as final
-// (x' + dmax - 1 seen), the rest at the row's end.
+// minimising S(x' + m + d, d) over the d with x' + m + d in the row (0 if none), built up in a row
+// RAM as the sums pass and sent out in order of x' as soon as final: after base pixel x' + lag
+// (lag = m + dmax - 1), at the row's start where that lies left of the row (no candidates), the
+// rest at the row's end (0 where x' + m >= W). A row takes W * G + min(|lag|, W) iterations.
 template <class C>
 void select_base(hls::stream<SumWord<C>>& sums, hls::stream<BaseWord<C>>& disparity,
                  hls::stream<Word<C>>& match_disparity, hls::stream<ap_uint<8>>& confidences, int width,
                  int height, int uniqueness) {
-  constexpr int G = C::kGroups, U = C::kUf;
+  constexpr int G = C::kGroups, U = C::kUf, kLag = C::kMinDisp + C::kDmax - 1;
+  constexpr int kStart = kLag < 0 ? -kLag : 1, kEnd = kLag > 0 ? kLag : 1;  // trip counts
   uniqueness = clamp_int(uniqueness, 0, 99);
   int dm_sum[C::kMaxWidth];
   int dm_d[C::kMaxWidth];
@@ -743,6 +773,14 @@ select_rows:
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight
     Winner<C> winner;
     int x = 0, g = 0;
+    if (C::kLr == Lr::Lr1) {
+    select_lr1_row_start:
+      for (int xm = 0; xm < -kLag && xm < width; ++xm) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = kStart
+        match_disparity.write(0);
+      }
+    }
   select_groups:
     for (int i = 0; i < width * G; ++i) {
 #pragma HLS PIPELINE II = 1
@@ -753,9 +791,11 @@ select_rows:
         const int d = g * U + lane;
         const int s = int(word.range((lane + 1) * C::kSumBits - 1, lane * C::kSumBits));
         winner.offer(s, d);
-        if (C::kLr == Lr::Lr1 && x - d >= 0 && (d == 0 || s < dm_sum[x - d])) {
-          dm_sum[x - d] = s;
-          dm_d[x - d] = d;
+        // x' = x - m - d; the first candidate of x' is d = 0 or, left of the row's start, x = 0.
+        const int xm = x - C::kMinDisp - d;
+        if (C::kLr == Lr::Lr1 && xm >= 0 && xm < width && (d == 0 || x == 0 || s < dm_sum[xm])) {
+          dm_sum[xm] = s;
+          dm_d[xm] = d;
         }
       }
       if (++g == G) {
@@ -764,17 +804,17 @@ select_rows:
         disparity.write(BaseWord<C>((whole << C::kWordBits) |
                                     BaseWord<C>(valid ? winner.refined() : C::kInvalidWord)));
         if (C::kConfidence) confidences.write(winner.confidence());
-        if (C::kLr == Lr::Lr1 && x - (C::kDmax - 1) >= 0) match_disparity.write(dm_d[x - (C::kDmax - 1)]);
+        if (C::kLr == Lr::Lr1 && x - kLag >= 0 && x - kLag < width) match_disparity.write(dm_d[x - kLag]);
         g = 0;
         ++x;
       }
     }
     if (C::kLr == Lr::Lr1) {
     select_lr1_row_end:
-      for (int xm = width - (C::kDmax - 1) < 0 ? 0 : width - (C::kDmax - 1); xm < width; ++xm) {
+      for (int xm = width - kLag < 0 ? 0 : width - kLag; xm < width; ++xm) {
 #pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kDmax
-        match_disparity.write(dm_d[xm]);
+#pragma HLS LOOP_TRIPCOUNT max = kEnd
+        match_disparity.write(xm < width - C::kMinDisp ? int(dm_d[xm]) : 0);
       }
     }
   }
@@ -802,28 +842,39 @@ select_match_groups:
   }
 }
 
-// Section 5: the check. Dm(x') for x' <= x has arrived when D(x) is checked, since both come in
-// raster order; Dm is kept for the row. With the right view, Dm(x) also goes to right_view.
+// Section 5: the check of D(x) against Dm(x') at x' = x - m - D, invalid where x' leaves the row.
+// Both come in raster order and Dm is kept for the row; D(x) is checked once Dm up to x + lead has
+// arrived (lead = match_lead, capped at W: with m < 0, x' may lie right of x), so each row reads
+// lead Dm before its first D (W + lead iterations a row). With the right view, Dm also goes to
+// right_view as it arrives.
 template <class C>
 void lr_check(hls::stream<BaseWord<C>>& disparity, hls::stream<Word<C>>& match_disparity,
               hls::stream<Word<C>>& out, hls::stream<Word<C>>& right_view, int width, int height, int threshold) {
+  constexpr int kLead = match_lead<C>();
   threshold = clamp_int(threshold, 0, 15);
+  const int lead = kLead < width ? kLead : width;
   ap_uint<C::kDisparityBits> dm_row[C::kMaxWidth];
-  int x = 0;
+  int u = 0;  // in the row: Dm(u) arrives, D(u - lead) is checked
 lr_check_pixels:
-  for (int i = 0; i < width * height; ++i) {
+  for (int i = 0; i < (width + lead) * height; ++i) {
 #pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    const BaseWord<C> in = disparity.read();
-    Word<C> w = Word<C>(in.range(C::kWordBits - 1, 0));
-    dm_row[x] = match_disparity.read();
-    if (C::kRightView) right_view.write(Word<C>(dm_row[x]));
-    if (int(w) != C::kInvalidWord) {
-      const int d = whole_bits<C>() != 0 ? int(in >> C::kWordBits) : int(w), xm = x - d;
-      if (xm < 0 || abs_diff(d, int(dm_row[xm < 0 ? 0 : xm])) > threshold) w = C::kInvalidWord;
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxWidth + kLead) * C::kMaxHeight
+    if (u < width) {
+      dm_row[u] = match_disparity.read();
+      if (C::kRightView) right_view.write(Word<C>(dm_row[u]));
     }
-    out.write(w);
-    if (++x == width) x = 0;
+    if (u >= lead) {
+      const int x = u - lead;
+      const BaseWord<C> in = disparity.read();
+      Word<C> w = Word<C>(in.range(C::kWordBits - 1, 0));
+      if (int(w) != C::kInvalidWord) {
+        const int d = whole_bits<C>() != 0 ? int(in >> C::kWordBits) : int(w), xm = x - C::kMinDisp - d;
+        const bool inside = xm >= 0 && xm < width;
+        if (!inside || abs_diff(d, int(dm_row[inside ? xm : 0])) > threshold) w = C::kInvalidWord;
+      }
+      out.write(w);
+    }
+    if (++u == width + lead) u = 0;
   }
 }
 

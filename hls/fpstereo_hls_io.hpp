@@ -91,10 +91,10 @@ inline Gray load_pgm(const std::string& path, const std::string& role) {
   return img;
 }
 
-// Reads a PFM of disparity words: finite values times 2^fraction_bits (sub-pixel bits, exact in
-// a float) must be integers 0 .. invalid_word - 1.
+// Reads a PFM of disparity words: finite values less min_disp (the words count from it), times
+// 2^fraction_bits (sub-pixel bits, exact in a float), must be integers 0 .. invalid_word - 1.
 inline Words load_pfm_words(const std::string& path, const std::string& role, unsigned invalid_word,
-                            int fraction_bits) {
+                            int fraction_bits, int min_disp = 0) {
   const std::string bytes = read_file(path, role);
   const std::string what = role + " '" + path + "'";
   HeaderReader header(bytes, what);
@@ -119,7 +119,7 @@ inline Words load_pfm_words(const std::string& path, const std::string& role, un
       std::memcpy(&v, &bits, 4);
       const int y = out.height - 1 - row;  // PFM rows run bottom to top
       unsigned short& w = out.words[size_t(y) * size_t(out.width) + size_t(x)];
-      const float scaled = v * float(1 << fraction_bits);
+      const float scaled = (v - float(min_disp)) * float(1 << fraction_bits);
       if (std::isinf(v)) {
         w = (unsigned short)invalid_word;
       } else if (scaled >= 0 && scaled < float(invalid_word) && scaled == std::floor(scaled)) {
@@ -140,13 +140,15 @@ inline void write_pgm(const Gray& image, const std::string& path) {
   if (!out) throw InputError("cannot write '" + path + "'");
 }
 
-inline void write_pfm_words(const Words& words, unsigned invalid_word, int fraction_bits, const std::string& path) {
+// Writes the words as `fpstereo run --pfm` does: min_disp + w / 2^fraction_bits, +inf where invalid.
+inline void write_pfm_words(const Words& words, unsigned invalid_word, int fraction_bits, const std::string& path,
+                            int min_disp = 0) {
   std::ofstream out(path, std::ios::binary);
   out << "Pf\n" << words.width << " " << words.height << "\n-1\n";
   for (int y = words.height - 1; y >= 0; --y)
     for (int x = 0; x < words.width; ++x) {
       const unsigned w = words.words[size_t(y) * size_t(words.width) + size_t(x)];
-      const float v = w == invalid_word ? INFINITY : float(w) / float(1 << fraction_bits);
+      const float v = w == invalid_word ? INFINITY : float(min_disp) + float(w) / float(1 << fraction_bits);
       uint32_t bits;
       std::memcpy(&bits, &v, 4);
       const char b[4] = {char(bits), char(bits >> 8), char(bits >> 16), char(bits >> 24)};

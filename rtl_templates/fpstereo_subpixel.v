@@ -6,7 +6,9 @@
 // its sums by TREE_LAT): in the step after the pixel's word the high bits of D select a chunk of the sums
 // (2^LO_W of them and one on each side), in the next its low bits pick the three sums (sums
 // beyond the range read as 0; fpstereo_subpixel_fit keeps D whole there): two narrow
-// multiplexers in two register steps instead of one dmax:1. Then the fit takes K + 3 steps.
+// multiplexers in two register steps instead of one dmax:1, each a decode and an OR of the
+// selected inputs (an indexed part-select with a stride that is not a power of two would be a
+// barrel shifter). Then the fit takes K + 3 steps.
 // Latency K + 6 steps; the tag travels along. An invalid word stays the invalid word (the flag
 // alone).
 module fpstereo_subpixel #(
@@ -79,19 +81,36 @@ module fpstereo_subpixel #(
   reg [DISP_W-1:0]       d_q, d_chunk, d_selected;
   reg [WINDOW*SUM_W-1:0] window_q;
   reg [SUM_W-1:0]        left_q, best_q, right_q;
-  // S(D - 1), S(D), S(D + 1) in the chunk's window
-  wire [LO_W+1:0]        at_left = {2'b00, d_chunk[LO_W-1:0]};
-  wire [LO_W+1:0]        at_best = at_left + 1'b1;
-  wire [LO_W+1:0]        at_right = at_best + 1'b1;
+  // The chunk of D's high bits; then S(D - 1), S(D), S(D + 1): its window's entries lo .. lo + 2.
+  reg [WINDOW*SUM_W-1:0] chunk_selected;
+  reg [SUM_W-1:0]        left_selected, best_selected, right_selected;
+  integer k;
+  /* verilator lint_off WIDTH */  // the high and low bits of D against the loop's integer
+  always @* begin
+    chunk_selected = {WINDOW*SUM_W{1'b0}};
+    for (k = 0; k < CHUNKS; k = k + 1)
+      chunk_selected = chunk_selected | (d_q[DISP_W-1:LO_W] == k ? windows[k*WINDOW*SUM_W +: WINDOW*SUM_W]
+                                                                  : {WINDOW*SUM_W{1'b0}});
+    left_selected = {SUM_W{1'b0}};
+    best_selected = {SUM_W{1'b0}};
+    right_selected = {SUM_W{1'b0}};
+    for (k = 0; k < CHUNK; k = k + 1)
+      if (d_chunk[LO_W-1:0] == k) begin
+        left_selected = left_selected | window_q[k*SUM_W +: SUM_W];
+        best_selected = best_selected | window_q[(k+1)*SUM_W +: SUM_W];
+        right_selected = right_selected | window_q[(k+2)*SUM_W +: SUM_W];
+      end
+  end
+  /* verilator lint_on WIDTH */
   always @(posedge clk)
     if (adv) begin
       d_q <= word[DISP_W-1:0];
       d_chunk <= d_q;
-      window_q <= windows[(d_q >> LO_W)*WINDOW*SUM_W +: WINDOW*SUM_W];
+      window_q <= chunk_selected;
       d_selected <= d_chunk;
-      left_q <= window_q[at_left*SUM_W +: SUM_W];
-      best_q <= window_q[at_best*SUM_W +: SUM_W];
-      right_q <= window_q[at_right*SUM_W +: SUM_W];
+      left_q <= left_selected;
+      best_q <= best_selected;
+      right_q <= right_selected;
     end
 
   wire [OUT_W-1:0] refined;

@@ -128,6 +128,8 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kWindow = " << cfg.window << ";\n"
      << "  static constexpr int kShdWindow = " << cfg.shd_window << ";\n"
      << "  static constexpr int kDmax = " << cfg.dmax << ";\n"
+     << "  static constexpr int kMinDisp = " << cfg.min_disp
+     << ";  // min-disp m: index d is the disparity m + d (the words are indices)\n"
      << "  static constexpr int kUf = " << cfg.uf << ";\n"
      << "  static constexpr int kGroups = " << cfg.dmax / cfg.uf
      << ";  // dmax / uf: loop iterations per pixel\n"

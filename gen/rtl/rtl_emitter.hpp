@@ -43,8 +43,8 @@ struct RtlDesign {
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
   // The uniqueness tree's joins are deeper than the minimum trees' compare-selects: it is
-  // registered after each join (fpstereo_wta_unique); its word leaves two steps after the tree.
-  static constexpr int kUniqueLevelsPerStage = 1, kUniqueWordSteps = 2;
+  // registered after each join (fpstereo_wta_unique); its word leaves three steps after the tree.
+  static constexpr int kUniqueLevelsPerStage = 1, kUniqueWordSteps = 3;
   int unique_tree_latency = 0;
   // Steps from the winner-take-all's sums to its word: the tree, and with uniqueness (or
   // confidence) the group join's and the test's registers.

@@ -284,8 +284,12 @@ class WindowStage : public Stage {
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     const HlsStreams in = s;
     s = {"base_windows", "match_windows"};
+    const std::string window = "Window<Feature<C>, cost_window<C>()>";
+    // With min-disp m < 0 the cost stage reads the match windows -m ahead: the base windows wait.
     std::string text = "\n  // Windows of the cost.\n" +
-                       hls_streams("Window<Feature<C>, cost_window<C>()>", {s.base, s.match});
+                       (d.cfg.min_disp < 0 ? hls_streams(window, {s.base}, "2 - C::kMinDisp") +
+                                                 hls_streams(window, {s.match})
+                                           : hls_streams(window, {s.base, s.match}));
     if (d.cfg.cost == CostFunction::Sad)
       return text +
              fmt::format("  window_stage<Pixel, C::kWindow, C::kMaxWidth>({}, {}, W, H, Pixel(0));\n",
@@ -448,13 +452,21 @@ class CostStage : public Stage {
     if (d.cfg.p2_adapt == 0)
       return text + fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
     // Adaptive P2: the pixels' penalties join their cost words. The penalties wait for the costs,
-    // which the windows delay by rows: their FIFO holds those rows and one more.
-    const int64_t waiting = (WindowStage(d.cfg).hls_fill_rows(d) + 1) * int64_t(d.cfg.width);
+    // which the windows delay by rows: their FIFO holds those rows and one more (and with
+    // min-disp m < 0 the -m pixels the cost stage's match runs ahead).
+    const int64_t waiting =
+        (WindowStage(d.cfg).hls_fill_rows(d) + 1) * int64_t(d.cfg.width) + std::max(0, -d.cfg.min_disp);
     return text + hls_streams("CostWord<C>", {"plain_costs"}, "kDepth") +
            hls_streams("Penalties<C>", {"penalties"}, num(waiting)) +
            fmt::format("  cost_stage<C>({}, {}, plain_costs, {}, W, H);\n", in.base, in.match, s.match) +
            "  penalty_stage<C>(guide_pixels, penalties, W, H, p1, p2);\n" +
            fmt::format("  attach_penalties<C>(plain_costs, penalties, {}, W, H);\n", s.base);
+  }
+  // With min-disp m < 0 each row opens with -m iterations that read match windows ahead.
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    if (d.cfg.min_disp >= 0) return {};
+    const int64_t W = d.cfg.width, H = d.cfg.height, lead = -d.cfg.min_disp;
+    return {"cost (the match -m pixels ahead)", "H*(W*dmax/uf-m)", H * (W * d.groups + lead)};
   }
 
  private:
@@ -678,6 +690,14 @@ class Lr1MatchStage : public Stage {
     return "\n  // LR1 match side: Dm, found by select_base (winner-take-all).\n" +
            hls_streams("Word<C>", {s.match});
   }
+  // select_base sends the Dm not final within the row at its start or end: min(|m + dmax - 1|, W)
+  // iterations per row beyond the sums'.
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    const int64_t W = d.cfg.width, H = d.cfg.height, lag = d.cfg.min_disp + d.cfg.dmax - 1;
+    return {"LR1 winner-take-all (Dm at the row ends)",
+            d.cfg.min_disp == 0 ? "H*(W*dmax/uf+dmax-1)" : "H*(W*dmax/uf+|m+dmax-1|)",
+            H * (W * d.groups + std::min(std::abs(lag), W))};
+  }
 };
 
 // LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all, dmax + 2
@@ -738,10 +758,12 @@ class Lr2MatchStage : public Stage {
            "  aggregate<C, 1>(match_side_costs, match_side_sums, W, H, p1, p2);\n" +
            fmt::format("  select_match<C>(match_side_sums, {}, W, H);\n", s.match);
   }
-  // Match pixel x' waits for base pixel x' + dmax - 1: its rows are dmax - 1 pixels longer.
+  // Match pixel x' waits for base pixel x' + m + dmax - 1: its rows are |m + dmax - 1| pixels
+  // longer (match_costs).
   HlsLoop hls_loop(const RtlDesign& d) const override {
-    const int64_t W = d.cfg.width, H = d.cfg.height;
-    return {"LR2 match side", "H*(W+dmax-1)*dmax/uf", H * (W + d.cfg.dmax - 1) * d.groups};
+    const int64_t W = d.cfg.width, H = d.cfg.height, lag = d.cfg.min_disp + d.cfg.dmax - 1;
+    return {"LR2 match side", d.cfg.min_disp == 0 ? "H*(W+dmax-1)*dmax/uf" : "H*(W+|m+dmax-1|)*dmax/uf",
+            H * (W + std::abs(lag)) * d.groups};
   }
 };
 
@@ -794,18 +816,21 @@ class WtaStage : public Stage {
 
   // ---- HLS: select_base, with LR1 also Dm into the match side's stream; without a left-right
   // check that stream is never written. D waits in its FIFO for Dm: up to dmax pixels with LR1,
-  // the match side's extra latency with LR2. With confidence, each pixel's goes to the output
+  // the match side's extra latency with LR2, and with min-disp m > 0 m pixels more (Dm(x) is
+  // final after base pixel x + m + dmax - 1). With confidence, each pixel's goes to the output
   // (write_confident_words) past the check, the median's rows and gap interpolation's row.
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
+    const int64_t later = std::max(0, d.cfg.min_disp);
     std::string text = std::string("\n  // Winner-take-all") + (unique_ ? " with uniqueness" : "") + ".\n" +
-                       hls_streams("BaseWord<C>", {"disparity"}, "2 * C::kDmax + 4");
+                       hls_streams("BaseWord<C>", {"disparity"},
+                                   later == 0 ? "2 * C::kDmax + 4" : "2 * C::kDmax + C::kMinDisp + 4");
     if (d.cfg.lr == LrCheck::None) {
       s.match = "match_disparity";
       text += hls_streams("Word<C>", {s.match});
     }
     const int64_t waiting_rows = d.cfg.median / 2 + (d.cfg.gap_interpolation ? 1 : 0) + 3;
     text += hls_streams("ap_uint<8>", {"confidences"},
-                        d.cfg.confidence ? num(waiting_rows * d.cfg.width + 2 * d.cfg.dmax + 4) : "");
+                        d.cfg.confidence ? num(waiting_rows * d.cfg.width + 2 * d.cfg.dmax + later + 4) : "");
     text += fmt::format("  select_base<C>({}, disparity, {}, confidences, W, H, uniqueness);\n", s.base, s.match);
     s.base = "disparity";
     return text;
@@ -1058,6 +1083,12 @@ class LrCheckStage : public Stage {
     // Without the right view, right_view is never written.
     return "\n  // Left-right check.\n" + hls_streams("Word<C>", {s.base, "right_view"}) +
            fmt::format("  lr_check<C>({}, {}, {}, right_view, W, H, lr_threshold);\n", in.base, in.match, s.base);
+  }
+  // With min-disp m < 0 each row reads min(-m, W) of Dm ahead of its first D.
+  HlsLoop hls_loop(const RtlDesign& d) const override {
+    if (d.cfg.min_disp >= 0) return {};
+    const int64_t W = d.cfg.width, H = d.cfg.height, lead = std::min<int64_t>(-d.cfg.min_disp, W);
+    return {"left-right check (Dm -m pixels ahead)", "H*(W+min(-m,W))", H * (W + lead)};
   }
 
  private:

@@ -26,8 +26,8 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1902828; frames follow on from 11 rows
-// Latency without stalls from the first input handshake to the first output handshake: 39833 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1902829; frames follow on from 11 rows
+// Latency without stalls from the first input handshake to the first output handshake: 39834 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
@@ -35,7 +35,7 @@
 //   cost reorder                         0     0    1   uf
 //   aggregation                          1     0    5   paths, p1, p2, dmax, uf
 //   LR1 match side                       0     0    0   lr, min-disp
-//   winner-take-all with uniqueness      0     0    8   uniqueness
+//   winner-take-all with uniqueness      0     0    9   uniqueness
 //   disparity reorder                    1     1    0   lr
 //   left-right check                     0     0    3   lr, lr-threshold, min-disp
 //   median filter                        2     2   26   median
@@ -377,7 +377,7 @@ module fps_census7_d128u32_e0d835_sgm_core (
     .second_sum(winner_second));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24880;
+  localparam OUT_START = 24881;
   reg out_on;
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
@@ -2685,7 +2685,8 @@ endmodule
 // Winner-take-all with the uniqueness check (docs/semantics.md, section 4): per step the range
 // summaries of one group's lanes (fps_census7_d128u32_e0d835_unique_tree), joined over the groups of the pixel
 // (fps_census7_d128u32_e0d835_unique_join), then registered; the next step registers the two products of the test,
-// and in the step after that (TREE_LAT + 2 steps after the pixel's last group) word is the winner
+// the one after compares their halves, and in the step after that (TREE_LAT + 3 steps after the
+// pixel's last group) word is the winner
 // or the invalid word when S2 * (100 - u) < S1 * 100, with S1 and S2 beside it (best_sum,
 // second_sum: the confidence uses them). The tag travels along. The tree is registered every
 // LEVELS_PER_STAGE joins; a join's compare-selects are several LUT levels deep, so 1 keeps a step
@@ -2729,7 +2730,7 @@ module fps_census7_d128u32_e0d835_wta_unique #(
   wire [TAG_W-1:0] tag_tree;
   fps_census7_d128u32_e0d835_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_tree, group_tree}));
-  fps_census7_d128u32_e0d835_delay #(.WIDTH(TAG_W + G_W), .DEPTH(2)) tag_to_word (
+  fps_census7_d128u32_e0d835_delay #(.WIDTH(TAG_W + G_W), .DEPTH(3)) tag_to_word (
     .clk(clk), .rst(restart), .en(adv), .in({tag_tree, group_tree}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  best, all, but_first, but_last, second;
   wire [LANE_W-1:0] lane;
@@ -2750,23 +2751,35 @@ module fps_census7_d128u32_e0d835_wta_unique #(
   wire [SUM_W-1:0]  s1 = running[S_W-1 -: SUM_W];
   wire [SUM_W-1:0]  s2 = running[S_W-4*SUM_W-1 -: SUM_W];
   // Invalid iff S2 * (100 - u) < S1 * 100: one integer comparison, no division (u = 0 never
-  // invalidates: S2 >= S1). The products are registered, then compared.
+  // invalidates: S2 >= S1). The products are registered, then compared in halves (a compare
+  // of their full width maps to a deep LUT chain), then the halves' results joined.
   reg  [7:0] keep;
   always @(posedge clk) keep <= 8'd100 - {1'b0, uniqueness};
-  reg  [SUM_W+7:0]  scaled_second, scaled_best;
-  reg  [SUM_W-1:0]  s1_q, s2_q;
-  reg  [DISP_W-1:0] winner;
+  localparam P_W = SUM_W + 8, LOW_W = P_W / 2;
+  reg  [P_W-1:0]    scaled_second, scaled_best;
+  reg  [SUM_W-1:0]  s1_q, s2_q, s1_c, s2_c;
+  reg  [DISP_W-1:0] winner, winner_c;
   always @(posedge clk)
     if (adv) begin
       /* verilator lint_off WIDTH */  // products widened to their full width
       scaled_second <= s2 * keep;
       scaled_best <= s1 * 8'd100;
       /* verilator lint_on WIDTH */
-      s1_q <= s1;
-      s2_q <= s2;
-      winner <= running[DISP_W+1:2];
+      s1_c <= s1;
+      s2_c <= s2;
+      winner_c <= running[DISP_W+1:2];
     end
-  assign word = (scaled_second < scaled_best) ? INVALID_WORD : {1'b0, winner};
+  reg high_below, high_equal, low_below;
+  always @(posedge clk)
+    if (adv) begin
+      high_below <= scaled_second[P_W-1:LOW_W] < scaled_best[P_W-1:LOW_W];
+      high_equal <= scaled_second[P_W-1:LOW_W] == scaled_best[P_W-1:LOW_W];
+      low_below <= scaled_second[LOW_W-1:0] < scaled_best[LOW_W-1:0];
+      s1_q <= s1_c;
+      s2_q <= s2_c;
+      winner <= winner_c;
+    end
+  assign word = (high_below || (high_equal && low_below)) ? INVALID_WORD : {1'b0, winner};
   assign best_sum = s1_q;
   assign second_sum = s2_q;
 endmodule
