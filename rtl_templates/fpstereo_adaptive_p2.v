@@ -5,9 +5,11 @@
 // from the base window's centre and its predecessors, delivered beside the cost lanes' words
 // (the same step as the costs of each group of the pixel). Timing: the pixels are taken from
 // the window as the transform takes its codes (at shift), their steps |I(p) - I(p - r)| are
-// registered at the next shift, as the cost stage takes the centre, and WAIT_SLOTS more shifts
-// (ZSAD's base window waits two); then per step the product, the penalty, and LAT - 2 steps of
-// delay, so that they leave with the costs the lanes compute LAT steps after the centre.
+// registered at the next shift, as the cost stage takes the centre, after WAIT_ROWS row-times of
+// ROW_SLOTS shifts in a block RAM ring (SHD's centre lags its code window's rows) and WAIT_SLOTS
+// more shifts (ZSAD's base window waits two, SHD's code window RS + 1, a negative min-disp -m);
+// then per step the product, the penalty, and LAT - 2 steps of delay, so that they leave with
+// the costs the lanes compute LAT steps after the centre.
 // Predecessors outside the image read whatever the window holds: the aggregation does not use
 // P2 there. One field of PATH_W bits per enabled path, in path order (0, 45, 90, 135), the
 // first at the least significant end.
@@ -19,6 +21,8 @@ module fpstereo_adaptive_p2 #(
   parameter GAIN = 4,
   parameter PATH_W = 8,
   parameter WAIT_SLOTS = 0,
+  parameter WAIT_ROWS = 0,
+  parameter ROW_SLOTS = 64,
   parameter LAT = 2
 ) (
   input  wire               clk,
@@ -33,7 +37,8 @@ module fpstereo_adaptive_p2 #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (N < 3 || N % 2 == 0 || GAIN < 1 || GAIN > 16 || LAT < 2 || WAIT_SLOTS < 0) begin : invalid
+    if (N < 3 || N % 2 == 0 || GAIN < 1 || GAIN > 16 || LAT < 2 || WAIT_SLOTS < 0 || WAIT_ROWS < 0 ||
+        WAIT_ROWS * ROW_SLOTS == 1) begin : invalid
       fpstereo_invalid_parameters_adaptive_p2_needs_odd_N_3_up_GAIN_1_to_16_and_LAT_2_up failed ();
     end
     if (NP != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2) begin : invalid_NP
@@ -59,16 +64,39 @@ module fpstereo_adaptive_p2 #(
       predecessors <= {window[UP_RIGHT*8 +: 8], window[UP*8 +: 8], window[UP_LEFT*8 +: 8], window[LEFT*8 +: 8]};
     end
 
+  // |I(p) - I(p - r)| of the four paths from both differences in parallel (unused paths'
+  // are dropped by synthesis).
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire [4*8-1:0] steps_now, steps_rows;
+  /* verilator lint_on UNUSEDSIGNAL */
   genvar r;
   generate
+    for (r = 0; r < 4; r = r + 1) begin : difference
+      wire [8:0] up = {1'b0, centre} - {1'b0, predecessors[r*8 +: 8]};
+      wire [7:0] down = predecessors[r*8 +: 8] - centre;
+      assign steps_now[r*8 +: 8] = up[8] ? down : up[7:0];
+    end
+    if (WAIT_ROWS > 0) begin : row_wait
+      // A ring of DEPTH entries: each shift writes at `at` and reads at `at + 1`, the entry
+      // written DEPTH - 1 shifts ago, whose read register holds it until the next shift.
+      localparam DEPTH = WAIT_ROWS * ROW_SLOTS;
+      localparam AW = $clog2(DEPTH);
+      localparam [AW-1:0] LAST = DEPTH - 1;
+      reg  [AW-1:0] at = {AW{1'b0}};
+      wire [AW-1:0] next_at = at == LAST ? {AW{1'b0}} : at + 1'b1;
+      always @(posedge clk)
+        if (shift) at <= next_at;
+      fpstereo_ram_sdp #(.WIDTH(4 * 8), .DEPTH(DEPTH), .ADDR_W(AW)) rows (
+        .clk(clk), .we(shift), .waddr(at), .wdata(steps_now), .re(shift), .raddr(next_at), .rdata(steps_rows));
+    end else begin : no_row_wait
+      assign steps_rows = steps_now;
+    end
     for (r = 0; r < 4; r = r + 1) begin : path
       if ((PATHS >> r) % 2 != 0) begin : enabled
         // Its field: the enabled paths below it.
         localparam integer FIELD = (r > 0 ? PATHS % 2 : 0) + (r > 1 ? (PATHS / 2) % 2 : 0) + (r > 2 ? (PATHS / 4) % 2 : 0);
-        // |I(p) - I(p - r)| from both differences in parallel, registered with the cost stage's centre.
-        wire [8:0] up = {1'b0, centre} - {1'b0, predecessors[r*8 +: 8]};
-        wire [7:0] down = predecessors[r*8 +: 8] - centre;
-        wire [7:0] step_now = up[8] ? down : up[7:0];
+        // The step, registered with the cost stage's centre.
+        wire [7:0] step_now = steps_rows[r*8 +: 8];
         wire [7:0] step;
         if (WAIT_SLOTS == 0) begin : no_wait
           reg [7:0] step_q;

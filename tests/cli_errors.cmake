@@ -121,9 +121,6 @@ expect_error("min-disp = 80: the hardware generators need dmax + |min-disp| <= w
              --width 200 --dmax 128 --min-disp 80)
 expect_error("min-disp = -80: the hardware generators need dmax + |min-disp| <= width" --emit hls --width 200
              --dmax 128 --min-disp -80 -o ${WORK}/hls_wide_range)
-expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --cost shd --p2-adapt 4)
-expect_error("p2-adapt = 4: not with cost shd in the hardware generators" --emit hls --cost shd --p2-adapt 4
-             -o ${WORK}/hls_shd_adapt)
 expect_error("right-view = on: needs a left-right check" --emit hls --right-view on -o ${WORK}/hls_right_view)
 set(FPSTEREO ${FPSTEREO_MAIN})
 expect_error("a KITTI PNG cannot hold the negative disparity"

@@ -292,11 +292,6 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
-  // Adaptive P2 takes the pixels beside the cost stage's centre; SHD's centre lags its window by
-  // rows (its code window), which would need a line buffer of steps.
-  if (cfg.p2_adapt != 0 && cfg.cost == CostFunction::Shd && cfg.shd_window > 1)
-    throw ConfigError("p2-adapt = " + std::to_string(cfg.p2_adapt) +
-                      ": not with cost shd in the hardware generators (the golden model has it)");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)

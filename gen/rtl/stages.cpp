@@ -335,21 +335,30 @@ class CostStage : public Stage {
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
   // fpstereo_offset_delays); the lanes take their register stages.
   Latency latency(const RtlDesign& d) const override {
-    const int64_t rs = cost_ == CostFunction::Shd ? d.cfg.shd_window / 2 : 0;
+    const Latency wait = base_wait(d.cfg);
+    return {wait.rows, 1 + wait.slots, d.cost_latency};
+  }
+  // What the base waits beside the match ring (adaptive P2's steps wait as long).
+  Latency base_wait(const StereoConfig& c) const {
+    const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
     const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
-    return {rs, 1 + wait + base_offset_slots(d.cfg), d.cost_latency};
+    return {rs, wait + base_offset_slots(c), 0};
   }
   static int base_offset_slots(const StereoConfig& c) { return std::max(0, -c.min_disp); }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
     if (cost_ != CostFunction::Shd) return {};
     const int64_t bits = int64_t(d.cfg.shd_window - 1) * std::max(1, d.widths.code);
-    return {{"core.cost.base_codes.line_buffer.mem", d.row_slots, bits},
-            {"core.cost.match_codes.line_buffer.mem", d.row_slots, bits}};
+    std::vector<StageMemory> m = {{"core.cost.base_codes.line_buffer.mem", d.row_slots, bits},
+                                  {"core.cost.match_codes.line_buffer.mem", d.row_slots, bits}};
+    // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2).
+    if (d.cfg.p2_adapt != 0 && base_wait(d.cfg).rows > 0)
+      m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(d.cfg).rows * d.row_slots, 4 * 8});
+    return m;
   }
   std::vector<std::string> modules(const RtlDesign& d) const override {
     std::vector<std::string> m = cost_modules();
     m.insert(m.end(), {"fpstereo_offset_delays", "fpstereo_delay"});
-    if (d.cfg.p2_adapt != 0) m.push_back("fpstereo_adaptive_p2");
+    if (d.cfg.p2_adapt != 0) m.insert(m.end(), {"fpstereo_adaptive_p2", "fpstereo_ram_sdp"});
     return m;
   }
   std::vector<std::string> cost_modules() const {
@@ -433,7 +442,9 @@ class CostStage : public Stage {
                      {"NP", num(c.path_count())},
                      {"GAIN", num(c.p2_adapt)},
                      {"PATH_W", num(w.path_cost)},
-                     {"WAIT_SLOTS", num((cost_ == CostFunction::Zsad ? 2 : 0) + base_offset_slots(c))},
+                     {"WAIT_SLOTS", num(base_wait(c).slots)},
+                     {"WAIT_ROWS", num(base_wait(c).rows)},
+                     {"ROW_SLOTS", num(d.row_slots)},
                      {"LAT", num(d.cost_latency)}},
                     {{"clk", "clk"},
                      {"adv", "adv"},
