@@ -297,6 +297,8 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   if (cfg.p2_adapt != 0 && cfg.cost == CostFunction::Shd && cfg.shd_window > 1)
     throw ConfigError("p2-adapt = " + std::to_string(cfg.p2_adapt) +
                       ": not with cost shd in the hardware generators (the golden model has it)");
+  // MGM reads two predecessors per path; the aggregator RTL reads one.
+  if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
