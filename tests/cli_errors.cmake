@@ -117,6 +117,7 @@ expect_error("clock-mhz = -5: expected a positive frequency" --clock-mhz -5)
 expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --right-view on)
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
 expect_error("min-disp = -300: must be in -256 .. 256" --min-disp -300)
+expect_error("mgm = on: not in the hardware generators (the models have it)" --mgm on)
 expect_error("min-disp = 80: the hardware generators need dmax + |min-disp| <= width (208 > 200)"
              --width 200 --dmax 128 --min-disp 80)
 expect_error("min-disp = -80: the hardware generators need dmax + |min-disp| <= width" --emit hls --width 200

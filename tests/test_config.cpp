@@ -96,11 +96,14 @@ TEST_CASE("parameters parse from text", "[config]") {
   set_param(c, "median", "off");
   set_param(c, "gap-interp", "on");
   set_param(c, "lr", "lr2");
+  CHECK_FALSE(c.mgm);  // off by default
+  set_param(c, "mgm", "on");
   CHECK(c.cost == CostFunction::Sad);
   CHECK(c.paths == (kPath0 | kPath90));
   CHECK(c.median == 0);
   CHECK(c.gap_interpolation);
   CHECK(c.lr == LrCheck::Lr2);
+  CHECK(c.mgm);
   // Every parameter prints back to text that parses to the same value.
   StereoConfig copy;
   for (const auto& spec : param_specs()) set_param(copy, spec.name, spec.get(c));
@@ -140,6 +143,7 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"median", "4", "median = 4: expected 0 (off), 3, 5 or 7"},
       {"median", "9", "median = 9: expected 0 (off), 3, 5 or 7"},
       {"gap-interp", "maybe", "gap-interp = 'maybe': expected on or off"},
+      {"mgm", "2", "mgm = '2': expected on or off"},
       {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135"},
       {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135"},
       {"dmax", "+64", "dmax = '+64': expected an integer"},

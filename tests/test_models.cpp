@@ -1,10 +1,14 @@
 // The golden model against the naive model (full cost volume, explicit recursion) on many
 // random configurations and images: zero mismatching pixels, borders included.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <limits>
 #include <random>
 
 #include "compare.hpp"
 #include "golden_model.hpp"
+#include "golden_stages.hpp"
+#include "widths.hpp"
 #include "naive_model.hpp"
 #include "test_support.hpp"
 
@@ -32,6 +36,7 @@ StereoConfig random_config(std::mt19937& rng) {
   c.p1 = std::uniform_int_distribution<int>(0, 40)(rng);
   c.p2 = c.p1 + std::uniform_int_distribution<int>(0, 200)(rng);
   c.p2_adapt = pick(rng, {0, 0, 1, 4, 16});
+  c.mgm = pick(rng, {false, true});
   c.min_disp = pick(rng, {0, 0, 3, -5, -20});
   c.lr = pick(rng, {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2});
   c.lr_threshold = pick(rng, {0, 1, 2});
@@ -116,11 +121,19 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"gap-interp", "on"},
                            {"subpixel-bits", "4"},
                            {"p2-adapt", "6"},
+                           {"mgm", "on"},
                            {"min-disp", "2"},
                            {"min-disp", "-7"}}) {
     StereoConfig c = base;
     set_param(c, spec.first, spec.second);
     variants.emplace_back(std::string(spec.first) + "=" + spec.second, c);
+  }
+  for (const char* paths : {"0", "45", "90", "135"}) {
+    StereoConfig c = base;
+    c.mgm = true;
+    c.p2_adapt = 6;
+    set_param(c, "paths", paths);
+    variants.emplace_back(std::string("mgm=on p2-adapt=6 paths=") + paths, c);
   }
   StereoConfig parabola = base;
   parabola.subpixel_bits = 2;
@@ -132,6 +145,61 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
     const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
     INFO(name << ": " << cmp.report());
     CHECK(cmp.equal());
+  }
+}
+
+TEST_CASE("mgm: paths 0 and 90 are one recursion, and so are 45 and 135", "[models]") {
+  // With mgm the paths 0 and 90 both read (x-1, y) and (x, y-1), the paths 45 and 135 both
+  // (x-1, y-1) and (x+1, y-1): four paths are two, counted twice (section 3).
+  std::mt19937 rng(3);
+  StereoConfig c;
+  c.width = 64;
+  c.height = 16;
+  c.dmax = 32;
+  c.uf = 8;
+  c.median = 0;
+  c.mgm = true;
+  c.p2_adapt = 4;
+  c.subpixel_bits = 3;
+  const auto [left, right] = test::shifted_pair(c.width, c.height, rng, [](int x, int y) { return (x + y) / 8; });
+  auto run = [&](const char* paths) {
+    StereoConfig cfg = c;
+    set_param(cfg, "paths", paths);
+    return run_golden(cfg, left, right);
+  };
+  CHECK(compare_words(run("0"), run("90")).equal());
+  CHECK(compare_words(run("45"), run("135")).equal());
+  CHECK(compare_words(run("0,45"), run("all")).equal());
+  c.mgm = false;
+  CHECK_FALSE(compare_words(run("0"), run("90")).equal());
+}
+
+TEST_CASE("mgm: path costs stay within Cmax + P2, the width of section 'Bit widths'", "[models]") {
+  // Cost 0 at disparity 3, Cmax elsewhere: the other disparities' path costs grow to Cmax + P2
+  // (both predecessor terms capped at P2, and their mean too), never beyond.
+  for (int p2 : {0, 7, 86, 301}) {
+    StereoConfig cfg;
+    cfg.window = 5;
+    cfg.dmax = 16;
+    cfg.uf = 16;
+    cfg.p1 = std::min(p2, 255);
+    cfg.p2 = p2;
+    cfg.mgm = true;
+    const Widths w = derive_widths(cfg);
+    const int width = 64, height = 32;
+    std::vector<uint32_t> costs(size_t(width) * 16, uint32_t(w.cost_max)), sum(costs.size());
+    for (int x = 0; x < width; ++x) costs[size_t(x) * 16 + 3] = 0;
+    golden::PathAggregator<uint32_t> aggregator(cfg, width, std::numeric_limits<uint32_t>::max() / 2, 0);
+    const GrayImage flat(width, height);
+    uint64_t max_path = 0, max_sum = 0;
+    for (int y = 0; y < height; ++y) {
+      aggregator.push_row(y, costs.data(), sum.data(), flat);
+      max_path = std::max<uint64_t>(max_path, aggregator.max_path_cost());
+      max_sum = std::max<uint64_t>(max_sum, *std::max_element(sum.begin(), sum.end()));
+    }
+    INFO("P2 " << p2);
+    CHECK(max_path == w.path_cost_max);
+    CHECK(max_sum == w.aggregated_max);
   }
 }
 

@@ -53,6 +53,9 @@ struct StereoConfig {
   // Intensity-adaptive P2 (docs/semantics.md, section 3): along a path, P2 falls by p2_adapt / 4
   // per grey level of the base image's step from the predecessor, down to P1; 0 = constant P2.
   int p2_adapt = 0;
+  // MGM-style aggregation (docs/semantics.md, section 3): each path's recursion averages the
+  // terms of two causal predecessors, p - r and the one a right angle away.
+  bool mgm = false;
   LrCheck lr = LrCheck::None;
   int lr_threshold = 1;  // max |D_b - D_m| that passes the left-right check
   int uniqueness = 0;    // percent; 0 = off

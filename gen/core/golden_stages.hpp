@@ -207,6 +207,8 @@ class CostRows {
 // ---------------------------------------------------------------------------------------------
 // Section 3: path costs and their sum, one row at a time. Each path keeps the row it is writing
 // and the previous row; the 0-degree path reads its predecessor from the row being written.
+// With mgm on, each path also reads a second predecessor, a right angle from the first
+// (section 3, "MGM"): the 0-degree path's is (x, y-1), the 90-degree path's (x-1, y).
 template <class T>
 class PathAggregator {
  public:
@@ -215,8 +217,8 @@ class PathAggregator {
       : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt) {
     for (const auto& dir : path_directions())
       if (cfg.paths & dir.mask)
-        paths_.push_back(
-            PathState{dir, RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)});
+        paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{}, RowBuffer(width, stride_, sentinel),
+                                   RowBuffer(width, stride_, sentinel)});
   }
 
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
@@ -225,16 +227,33 @@ class PathAggregator {
     const int dmax = cfg_.dmax;
     std::fill(sum, sum + size_t(width_) * size_t(dmax), T(0));
     for (auto& path : paths_) {
+      // A predecessor at offset (dx, dy) is in the image; its row of path costs.
+      auto inside = [&](int x, int dx, int dy) { return x + dx >= 0 && x + dx < width_ && (dy == 0 || y > 0); };
+      auto row_of = [&](int dy) -> const RowBuffer& { return dy == 0 ? path.current : path.previous; };
+      const Offset first{path.dir.dx, path.dir.dy}, second = path.second;
       for (int x = 0; x < width_; ++x) {
-        const int px = x + path.dir.dx;
-        const bool has_pred = px >= 0 && px < width_ && (path.dir.dy == 0 || y > 0);
-        const RowBuffer& pred_row = path.dir.dy == 0 ? path.current : path.previous;
+        const bool has_first = inside(x, first.dx, first.dy);
+        const bool has_second = second.used && inside(x, second.dx, second.dy);
         const size_t at = size_t(x) * size_t(dmax);
-        path.current.minimum[size_t(x)] =
-            has_pred ? step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)],
-                            path.current.costs(x), sum + at,
-                            penalty2(guide.at(x, y), guide.at(px, y + path.dir.dy)))
-                     : start(cost + at, path.current.costs(x), sum + at);
+        T* L = path.current.costs(x);
+        T minimum;
+        if (has_first && has_second) {
+          const int x1 = x + first.dx, x2 = x + second.dx;
+          const RowBuffer &row1 = row_of(first.dy), &row2 = row_of(second.dy);
+          minimum = step2(cost + at, row1.costs(x1), row1.minimum[size_t(x1)],
+                          penalty2(guide.at(x, y), guide.at(x1, y + first.dy)), row2.costs(x2),
+                          row2.minimum[size_t(x2)], penalty2(guide.at(x, y), guide.at(x2, y + second.dy)), L,
+                          sum + at);
+        } else if (has_first || has_second) {
+          const Offset o = has_first ? first : second;
+          const int px = x + o.dx;
+          const RowBuffer& pred_row = row_of(o.dy);
+          minimum = step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)], L, sum + at,
+                         penalty2(guide.at(x, y), guide.at(px, y + o.dy)));
+        } else {
+          minimum = start(cost + at, L, sum + at);
+        }
+        path.current.minimum[size_t(x)] = minimum;
       }
       std::swap(path.current, path.previous);
     }
@@ -263,8 +282,23 @@ class PathAggregator {
     std::vector<T> values;
     std::vector<T> minimum;
   };
+  // A predecessor's offset from the pixel; used = false: none.
+  struct Offset {
+    int dx = 0, dy = 0;
+    bool used = false;
+  };
+  // MGM's second predecessor: the first turned by a right angle, towards the causal side.
+  static Offset mgm_offset(const PathDirection& dir) {
+    switch (dir.angle) {
+      case 0: return {0, -1, true};    // after (x-1, y): (x, y-1)
+      case 45: return {1, -1, true};   // after (x-1, y-1): (x+1, y-1)
+      case 90: return {-1, 0, true};   // after (x, y-1): (x-1, y)
+      default: return {-1, -1, true};  // 135, after (x+1, y-1): (x-1, y-1)
+    }
+  }
   struct PathState {
     PathDirection dir;
+    Offset second;
     RowBuffer current, previous;
   };
 
@@ -292,6 +326,23 @@ class PathAggregator {
     for (int d = 0; d < cfg_.dmax; ++d) {
       const T neighbour = T(std::min(pred[d - 1], pred[d + 1]) + p1);
       const T l = T(C[d] + std::min(std::min(pred[d], jump), neighbour) - pred_min);
+      L[d] = l;
+      S[d] = T(S[d] + l);
+      minimum = std::min(minimum, l);
+    }
+    return minimum;
+  }
+
+  // MGM's recursion with two predecessors: C plus the floor of the mean of the two predecessor
+  // terms, each as in step() against its own predecessor and P2; adds L to S and returns min_d L.
+  T step2(const T* C, const T* pred1, T min1, int p2_1, const T* pred2, T min2, int p2_2, T* L, T* S) const {
+    const T p1 = T(cfg_.p1);
+    const T jump1 = T(min1 + p2_1), jump2 = T(min2 + p2_2);
+    T minimum = std::numeric_limits<T>::max();
+    for (int d = 0; d < cfg_.dmax; ++d) {
+      const T t1 = T(std::min(std::min(pred1[d], jump1), T(std::min(pred1[d - 1], pred1[d + 1]) + p1)) - min1);
+      const T t2 = T(std::min(std::min(pred2[d], jump2), T(std::min(pred2[d - 1], pred2[d + 1]) + p1)) - min2);
+      const T l = T(C[d] + ((t1 + t2) >> 1));
       L[d] = l;
       S[d] = T(S[d] + l);
       minimum = std::min(minimum, l);

@@ -175,27 +175,49 @@ int64_t jump_penalty(const StereoConfig& cfg, const GrayImage* guide, int x, int
   return std::max<int64_t>(cfg.p1, cfg.p2 - cfg.p2_adapt * step / 4);
 }
 
+// MGM's second predecessor of the path whose first is (dx, dy) (section 3): the one a right
+// angle away on the causal side. Returns false for none (mgm off).
+bool second_predecessor(const StereoConfig& cfg, int dx, int dy, int& sx, int& sy) {
+  if (!cfg.mgm) return false;
+  if (dx == -1 && dy == 0) { sx = 0; sy = -1; }         // path 0: (x, y-1)
+  else if (dx == -1 && dy == -1) { sx = 1; sy = -1; }   // path 45: (x+1, y-1)
+  else if (dx == 0 && dy == -1) { sx = -1; sy = 0; }    // path 90: (x-1, y)
+  else { sx = -1; sy = -1; }                            // path 135: (x-1, y-1)
+  return true;
+}
+
 // One path's L_r volume by explicit recursion (section 3). Raster order suffices because
 // every predecessor (x-1,y), (x-1,y-1), (x,y-1), (x+1,y-1) is earlier in raster order.
+// With mgm, L_r = C + floor((T1 + T2) / 2) over the predecessors in the image (one: its T).
 Volume path_costs(const StereoConfig& cfg, const Volume& c, const GrayImage* guide, int dx, int dy) {
   const int w = c.width, h = c.height, D = c.depth;
   Volume l(w, h, D);
+  auto in_image = [&](int qx, int qy) { return qx >= 0 && qy >= 0 && qx < w && qy < h; };
+  // The predecessor term min(L(q,d), L(q,d-1)+P1, L(q,d+1)+P1, min L(q) + P2) - min L(q).
+  auto term = [&](int x, int y, int qx, int qy, int d) {
+    int64_t m = std::numeric_limits<int64_t>::max();
+    for (int i = 0; i < D; ++i) m = std::min(m, l.at(qx, qy, i));
+    int64_t best = l.at(qx, qy, d);
+    if (d >= 1) best = std::min(best, l.at(qx, qy, d - 1) + int64_t(cfg.p1));
+    if (d <= D - 2) best = std::min(best, l.at(qx, qy, d + 1) + int64_t(cfg.p1));
+    best = std::min(best, m + jump_penalty(cfg, guide, x, y, qx, qy));
+    return best - m;
+  };
+  int sx = 0, sy = 0;
+  const bool mgm = second_predecessor(cfg, dx, dy, sx, sy);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const int px = x + dx, py = y + dy;
-      const bool start = px < 0 || py < 0 || px >= w || py >= h;
-      if (start) {
-        for (int d = 0; d < D; ++d) l.at(x, y, d) = c.at(x, y, d);
-        continue;
-      }
-      int64_t m = std::numeric_limits<int64_t>::max();
-      for (int i = 0; i < D; ++i) m = std::min(m, l.at(px, py, i));
+      const bool first = in_image(x + dx, y + dy);
+      const bool second = mgm && in_image(x + sx, y + sy);
       for (int d = 0; d < D; ++d) {
-        int64_t best = l.at(px, py, d);
-        if (d >= 1) best = std::min(best, l.at(px, py, d - 1) + int64_t(cfg.p1));
-        if (d <= D - 2) best = std::min(best, l.at(px, py, d + 1) + int64_t(cfg.p1));
-        best = std::min(best, m + jump_penalty(cfg, guide, x, y, px, py));
-        l.at(x, y, d) = c.at(x, y, d) + best - m;
+        int64_t add = 0;
+        if (first && second)
+          add = (term(x, y, x + dx, y + dy, d) + term(x, y, x + sx, y + sy, d)) / 2;
+        else if (first)
+          add = term(x, y, x + dx, y + dy, d);
+        else if (second)
+          add = term(x, y, x + sx, y + sy, d);
+        l.at(x, y, d) = c.at(x, y, d) + add;
       }
     }
   }

@@ -292,6 +292,9 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
+  // One-pass MGM lost accuracy to SGM on every dataset (README, "Accuracy beyond the paper"), so
+  // the aggregator keeps one predecessor per path.
+  if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)

@@ -590,7 +590,7 @@ Values aggregator_parameters(const RtlDesign& d) {
 class AggregationStage : public Stage {
  public:
   std::string title() const override { return "aggregation"; }
-  std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "dmax", "uf"}; }
+  std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "mgm", "dmax", "uf"}; }
   std::string start_parameter() const override { return "AGG_START"; }
   Latency latency(const RtlDesign& d) const override { return {d.chains - 1, 0, 5}; }
   std::vector<StageMemory> memories(const RtlDesign& d) const override {
