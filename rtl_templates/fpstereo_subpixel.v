@@ -6,9 +6,7 @@
 // its sums by TREE_LAT): in the step after the pixel's word the high bits of D select a chunk of the sums
 // (2^LO_W of them and one on each side), in the next its low bits pick the three sums (sums
 // beyond the range read as 0; fpstereo_subpixel_fit keeps D whole there): two narrow
-// multiplexers in two register steps instead of one dmax:1, each a decode and an OR of the
-// selected inputs (an indexed part-select with a stride that is not a power of two would be a
-// barrel shifter). Then the fit takes K + 3 steps.
+// multiplexers in two register steps instead of one dmax:1. Then the fit takes K + 3 steps.
 // Latency K + 6 steps; the tag travels along. An invalid word stays the invalid word (the flag
 // alone).
 module fpstereo_subpixel #(
@@ -35,7 +33,7 @@ module fpstereo_subpixel #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (UF < 1 || G < 1 || DMAX != UF * G || DMAX - 1 >= (1 << DISP_W)) begin : invalid_DMAX
+    if (UF < 1 || G < 1 || DMAX != UF * G || DMAX - 1 >= (1 << DISP_W) || DISP_W < 2) begin : invalid_DMAX
       fpstereo_invalid_parameters_subpixel_DMAX_is_not_UF_times_G_within_DISP_W failed ();
     end
     if (TREE_LAT < 1) begin : invalid_TREE_LAT
@@ -56,61 +54,64 @@ module fpstereo_subpixel #(
     if (adv) history <= {history[(DEPTH-1)*ROW_W-1:0], sums};
 
   // In the first selection step, disparity g * UF + l is lane l of entry G + TREE_LAT - 1 - g.
-  // padded[v + 1] is S(v) for v = -1 .. SLOTS, 0 outside the range.
+  // padded S(v) for v = -1 .. SLOTS, 0 outside the range. Entries and chunks sit at strides that
+  // are powers of two (SUM_P, WINDOW_P bits), so that each selection is a shift by D's bits: a
+  // multiplexer tree of one level per two bits.
   localparam HI_W = DISP_W / 2;
   localparam LO_W = DISP_W - HI_W;
   localparam CHUNK = 1 << LO_W;
   localparam CHUNKS = 1 << HI_W;
   localparam WINDOW = CHUNK + 2;
-  wire [(SLOTS+2)*SUM_W-1:0] padded;
-  wire [CHUNKS*WINDOW*SUM_W-1:0] windows;  // chunk c: S(c * CHUNK - 1) .. S(c * CHUNK + CHUNK)
+  localparam SUM_P = 1 << $clog2(SUM_W);
+  localparam WINDOW_P = 1 << $clog2(WINDOW * SUM_P);
+  wire [(SLOTS+2)*SUM_P-1:0]   padded;
+  wire [CHUNKS*WINDOW_P-1:0]   windows;  // chunk c: S(c * CHUNK - 1) .. S(c * CHUNK + CHUNK)
   genvar v, c;
   generate
     for (v = -1; v <= SLOTS; v = v + 1) begin : slot
       if (v >= 0 && v < DMAX) begin : in_range
-        assign padded[(v+1)*SUM_W +: SUM_W] = history[((G + TREE_LAT - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W];
+        assign padded[(v+1)*SUM_P +: SUM_P] =
+            {{(SUM_P-SUM_W){1'b0}}, history[((G + TREE_LAT - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W]};
       end else begin : beyond
-        assign padded[(v+1)*SUM_W +: SUM_W] = {SUM_W{1'b0}};
+        assign padded[(v+1)*SUM_P +: SUM_P] = {SUM_P{1'b0}};
       end
     end
     for (c = 0; c < CHUNKS; c = c + 1) begin : chunk
-      assign windows[c*WINDOW*SUM_W +: WINDOW*SUM_W] = padded[c*CHUNK*SUM_W +: WINDOW*SUM_W];
+      if (WINDOW_P > WINDOW * SUM_P) begin : pad
+        assign windows[c*WINDOW_P + WINDOW*SUM_P +: WINDOW_P - WINDOW*SUM_P] = {(WINDOW_P - WINDOW*SUM_P){1'b0}};
+      end
+      assign windows[c*WINDOW_P +: WINDOW*SUM_P] = padded[c*CHUNK*SUM_P +: WINDOW*SUM_P];
     end
   endgenerate
 
   reg [DISP_W-1:0]       d_q, d_chunk, d_selected;
-  reg [WINDOW*SUM_W-1:0] window_q;
+  /* verilator lint_off UNUSEDSIGNAL */  // the entries' and the window's padding
+  reg [WINDOW_P-1:0]     window_q;
+  /* verilator lint_on UNUSEDSIGNAL */
   reg [SUM_W-1:0]        left_q, best_q, right_q;
-  // The chunk of D's high bits; then S(D - 1), S(D), S(D + 1): its window's entries lo .. lo + 2.
-  reg [WINDOW*SUM_W-1:0] chunk_selected;
-  reg [SUM_W-1:0]        left_selected, best_selected, right_selected;
-  integer k;
-  /* verilator lint_off WIDTH */  // the high and low bits of D against the loop's integer
-  always @* begin
-    chunk_selected = {WINDOW*SUM_W{1'b0}};
-    for (k = 0; k < CHUNKS; k = k + 1)
-      chunk_selected = chunk_selected | (d_q[DISP_W-1:LO_W] == k ? windows[k*WINDOW*SUM_W +: WINDOW*SUM_W]
-                                                                  : {WINDOW*SUM_W{1'b0}});
-    left_selected = {SUM_W{1'b0}};
-    best_selected = {SUM_W{1'b0}};
-    right_selected = {SUM_W{1'b0}};
-    for (k = 0; k < CHUNK; k = k + 1)
-      if (d_chunk[LO_W-1:0] == k) begin
-        left_selected = left_selected | window_q[k*SUM_W +: SUM_W];
-        best_selected = best_selected | window_q[(k+1)*SUM_W +: SUM_W];
-        right_selected = right_selected | window_q[(k+2)*SUM_W +: SUM_W];
-      end
-  end
-  /* verilator lint_on WIDTH */
+  // The chunk of D's high bits; then S(D - 1), S(D), S(D + 1): its window's entries lo .. lo + 2,
+  // each a shift by lo of the window moved by 0, 1 or 2 entries.
+  wire [HI_W-1:0] hi = d_q[DISP_W-1:LO_W];
+  wire [LO_W-1:0] lo = d_chunk[LO_W-1:0];
+  /* verilator lint_off UNUSEDSIGNAL */  // the chunks above the selected one
+  wire [CHUNKS*WINDOW_P-1:0] chunks_from = windows >> (hi * WINDOW_P);
+  /* verilator lint_on UNUSEDSIGNAL */
+  wire [WINDOW_P-1:0] chunk_selected = chunks_from[WINDOW_P-1:0];
+  wire [WINDOW_P-1:0] from_best = window_q >> SUM_P, from_right = window_q >> (2 * SUM_P);
+  /* verilator lint_off UNUSEDSIGNAL */  // the bits above the selected entry
+  wire [WINDOW_P-1:0] left_selected = window_q >> (lo * SUM_P);
+  wire [WINDOW_P-1:0] best_selected = from_best >> (lo * SUM_P);
+  wire [WINDOW_P-1:0] right_selected = from_right >> (lo * SUM_P);
+  /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk)
     if (adv) begin
       d_q <= word[DISP_W-1:0];
       d_chunk <= d_q;
       window_q <= chunk_selected;
       d_selected <= d_chunk;
-      left_q <= left_selected;
-      best_q <= best_selected;
-      right_q <= right_selected;
+      left_q <= left_selected[SUM_W-1:0];
+      best_q <= best_selected[SUM_W-1:0];
+      right_q <= right_selected[SUM_W-1:0];
     end
 
   wire [OUT_W-1:0] refined;
