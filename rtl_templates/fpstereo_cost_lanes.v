@@ -4,7 +4,8 @@
 // Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
 // lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
-// then their sum and the border's COST_MAX.
+// then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
+// 7x7) take a step more: sums of up to 8 counts, then their total.
 module fpstereo_cost_lanes #(
   // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
   parameter HAMMING = 1,
@@ -17,7 +18,8 @@ module fpstereo_cost_lanes #(
   parameter X_W = 11,
   // the smallest disparity (docs/semantics.md, section 2)
   parameter MIN_DISP = 0,
-  // the latency the instantiating stage plans with (checked: 2)
+  // the latency the instantiating stage plans with (checked: 2, 3 for census codes of more than
+  // 48 bits)
   parameter LAT = 2
 ) (
   input  wire                 clk,
@@ -39,7 +41,7 @@ module fpstereo_cost_lanes #(
     if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
       fpstereo_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
     end
-    if (LAT != 2) begin : invalid_LAT
+    if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
       fpstereo_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
@@ -56,6 +58,9 @@ module fpstereo_cost_lanes #(
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
   localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+  // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
+  localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
+  localparam SETS = (CHUNKS + 7) / 8;
 
   genvar l;
   generate
@@ -70,6 +75,7 @@ module fpstereo_cost_lanes #(
       if (HAMMING) begin : hamming
         wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
         reg  [PART_W-1:0]   counts;
+        reg  [SETS*COST_W-1:0] set_sums;
         reg  [COST_W-1:0]   total;
         integer k, b;
         always @* begin
@@ -77,11 +83,25 @@ module fpstereo_cost_lanes #(
             counts[k*3 +: 3] = 3'd0;
             for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
           end
-          total = 0;
-          for (k = 0; k < CHUNKS; k = k + 1) total = total + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
+          set_sums = {SETS*COST_W{1'b0}};
+          for (k = 0; k < CHUNKS; k = k + 1)
+            set_sums[(k/8)*COST_W +: COST_W] = set_sums[(k/8)*COST_W +: COST_W] + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
         end
         always @(posedge clk)
           if (en) part <= counts;
+        if (SPLIT) begin : in_sets
+          // Step 2: the sets' sums; step 3 (below): their total.
+          reg [SETS*COST_W-1:0] set_sums_q;
+          always @(posedge clk)
+            if (en) set_sums_q <= set_sums;
+          integer j;
+          always @* begin
+            total = {COST_W{1'b0}};
+            for (j = 0; j < SETS; j = j + 1) total = total + set_sums_q[j*COST_W +: COST_W];
+          end
+        end else begin : at_once
+          always @* total = set_sums[COST_W-1:0];
+        end
         assign cost = total;
       end else begin : absolute_difference
         // rank values and costs have the same width
@@ -91,9 +111,18 @@ module fpstereo_cost_lanes #(
       end
       always @(posedge clk)
         if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
-      // Step 2: the cost.
+      // The border flag waits for the sets' step; then (step 2, or 3) the cost.
+      wire beyond_d;
+      if (SPLIT) begin : beyond_wait
+        reg beyond_q;
+        always @(posedge clk)
+          if (en) beyond_q <= beyond;
+        assign beyond_d = beyond_q;
+      end else begin : beyond_now
+        assign beyond_d = beyond;
+      end
       always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= beyond ? COST_MAX[COST_W-1:0] : cost;
+        if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
     end
   endgenerate
 endmodule

@@ -316,7 +316,9 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // difference).
   const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad ||
                              (cfg.cost == CostFunction::Shd && cfg.shd_window > 1);
-  d.cost_latency = !windowed_cost ? 2 : cfg.cost == CostFunction::Zsad ? 8 : 4;
+  // Census codes of more than 8 chunks of 6 bits sum their counts in sets first (one step more).
+  const bool long_codes = !windowed_cost && cfg.cost != CostFunction::Rank && d.widths.code > 48;
+  d.cost_latency = !windowed_cost ? (long_codes ? 3 : 2) : cfg.cost == CostFunction::Zsad ? 8 : 4;
   d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
   std::tie(d.mean_mul, d.mean_shift) =
