@@ -1,4 +1,4 @@
-// The stage objects (gen/rtl/stages.*): every setting belongs to a stage, every template is used
+// The stage objects (gen/pipeline/stages/): every setting belongs to a stage, every template is used
 // by some configuration, and the schedule is the sum of the stages' latencies.
 #include <catch2/catch.hpp>
 
@@ -54,21 +54,13 @@ TEST_CASE("every configuration parameter is owned by a stage", "[stages]") {
   }
 }
 
-TEST_CASE("every template is used by some configuration, and every module a stage names exists", "[stages]") {
+TEST_CASE("every template is used by some configuration", "[stages]") {
   std::set<std::string> used;
   for (const auto& cfg : covering_configs()) {
     const rtl::RtlDesign d = rtl::plan(cfg);
     for (const auto& file : rtl::emit(d))
       for (const auto& [name, text] : rtl::templates())
         if (file.name == d.prefix + name.substr(std::string("fpstereo").size()) + ".v") used.insert(name);
-  }
-  for (const auto& cfg : covering_configs()) {
-    const rtl::RtlDesign d = rtl::plan(cfg);
-    for (const auto& stage : d.stages)
-      for (const auto& module : stage->modules(d)) {
-        INFO(stage->title() << " names " << module);
-        CHECK(rtl::templates().count(module) == 1);
-      }
   }
   for (const auto& [name, text] : rtl::templates()) {
     INFO("template " << name);

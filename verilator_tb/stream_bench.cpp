@@ -173,8 +173,6 @@ std::string timeout_message(uint64_t cycles, const OutputMonitor& out, size_t ex
 
 }  // namespace
 
-int word_lane_bits(const Widths& widths) { return widths.output_word <= 8 ? 8 : 16; }
-
 void ProtocolErrors::add(const std::string& message) {
   if (first.size() < kKeptProtocolErrors) first.push_back(message);
   ++count;
@@ -288,7 +286,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
   // With confidence, tdata's top 8 bits are the confidence, the word's lane below them.
   OutputMonitor monitor("m_axis_disp", plan.output_sizes,
                         {run.outputs, run.frame_start_cycle, run.frame_end_cycle,
-                         has_confidence() ? &run.confidences : nullptr, word_lane_bits(derive_widths(cfg))},
+                         has_confidence() ? &run.confidences : nullptr, derive_widths(cfg).output_lane},
                         run.protocol);
   // The right view's frames, when the design has it: their cycles are not reported.
   std::vector<uint64_t> right_start_cycle, right_end_cycle;

@@ -92,8 +92,6 @@ bool has_control();
 bool has_right_view();
 // Whether the output words carry the confidence (the top 8 bits of m_axis_disp_tdata).
 bool has_confidence();
-// The bits of m_axis_disp_tdata that hold the output word (zero-extended): 8 or 16.
-int word_lane_bits(const Widths& widths);
 
 // Resets the design, then runs the plan until every expected output pixel has arrived, the
 // reads at the end are done and a drain period has shown no extra output, or until the timeout.

@@ -583,7 +583,7 @@ int run_bench(const Options& opt) {
   const StatedTiming stated = read_stated_timing(FPSTEREO_TB_TOP_FILE);
   const Widths widths = derive_widths(cfg);
   // The word's lane, and the confidence above it; Verilator holds 24 bits in 32.
-  const int tdata_bits = word_lane_bits(widths) + (cfg.confidence ? 8 : 0);
+  const int tdata_bits = widths.output_lane + (cfg.confidence ? 8 : 0);
   const int port_bits = tdata_bits <= 8 ? 8 : tdata_bits <= 16 ? 16 : 32;
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
   fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,

@@ -47,6 +47,7 @@ Widths derive_widths(const StereoConfig& cfg) {
   w.output_disparity = bits_for(uint64_t(cfg.dmax - 1) << std::clamp(cfg.subpixel_bits, 0, 8));
   w.output_word = w.output_disparity + 1;
   w.invalid_word = uint16_t(1u << w.output_disparity);
+  w.output_lane = w.output_word <= 8 ? 8 : 16;
   w.uniqueness_product = bits_for(w.aggregated_max * 100);
   return w;
 }

@@ -24,6 +24,7 @@ struct Widths {
   int output_disparity = 0;  // bits for 0 .. (dmax-1) << subpixel_bits, the output's disparity
   int output_word = 0;       // output disparity bits plus the invalid flag in the top bit
   uint16_t invalid_word = 0;
+  int output_lane = 0;       // the output word's byte-aligned lane in a stream: 8 or 16 bits
   int uniqueness_product = 0;  // bits of aggregated_max * 100 (the uniqueness comparison)
 };
 

@@ -85,7 +85,7 @@ std::string banner(const rtl::RtlDesign& d, const std::string& comment) {
      << w.cost_max << "), path cost " << w.path_cost << " (max " << w.path_cost_max << "), sum "
      << w.aggregated << " (max " << w.aggregated_max << "), disparity " << w.disparity << ", output word "
      << w.output_word << " (invalid = " << w.invalid_word << "), m_axis_disp tdata "
-     << (w.output_word > 8 ? 16 : 8) << "\n"
+     << w.output_lane << "\n"
      << "Top functions: " << top_name(cfg) << " (AXI4-Stream video, AXI4-Lite control), " << top_name(cfg)
      << "_mm (m_axi frames, for XRT)\n\n"
      << "Expected throughput (the paper's Eq. 1, II = 1): cycles = IL + II x (H x W x dmax/uf - 1)\n"
@@ -158,7 +158,7 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kWordBits = " << w.output_word << ";\n"
      << "  static constexpr int kInvalidWord = " << w.invalid_word << ";\n"
      << "  static constexpr int kUniquenessBits = " << w.uniqueness_product << ";\n"
-     << "  static constexpr int kLaneBits = " << (w.output_word > 8 ? 16 : 8) << ";  // the word's byte-aligned lane\n"
+     << "  static constexpr int kLaneBits = " << w.output_lane << ";  // the word's byte-aligned lane\n"
      << "  static constexpr bool kConfidence = " << (cfg.confidence ? "true" : "false")
      << ";  // the confidence in 8 bits above the lane\n"
      << "  static constexpr int kOutBits = kLaneBits + (kConfidence ? 8 : 0);  // tdata\n"

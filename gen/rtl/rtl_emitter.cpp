@@ -9,43 +9,31 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core_builder.hpp"
 #include "rtl_templates.hpp"
 
 namespace fpstereo::rtl {
 namespace {
 
-int ceil_div(int64_t a, int64_t b) { return int((a + b - 1) / b); }
-int clog2(int64_t v) {
-  int bits = 0;
-  while ((int64_t(1) << bits) < v) ++bits;
-  return bits;
+// Templates a Verilog text instantiates (`fpstereo_name #(` or `fpstereo_name instance (`), in
+// order of first appearance.
+std::vector<std::string> instantiated_templates(const std::string& verilog) {
+  static const std::regex instance(R"(\b(fpstereo_\w+)\s*(?:#\s*\(|\w+\s*\())");
+  std::vector<std::string> found;
+  for (auto it = std::sregex_iterator(verilog.begin(), verilog.end(), instance); it != std::sregex_iterator(); ++it) {
+    const std::string name = (*it)[1];
+    if (templates().count(name) && std::find(found.begin(), found.end(), name) == found.end()) found.push_back(name);
+  }
+  return found;
 }
 
-// Latency of fpstereo_min_tree over n values (see the module's header comment).
-int min_tree_latency(int n, int levels_per_stage) {
-  const int levels = n > 1 ? clog2(n) : 0;
-  return std::max(1, ceil_div(levels, levels_per_stage));
-}
-
-// Templates the design uses: the core's stages', in order, each once.
-std::vector<std::string> used_modules(const RtlDesign& d) {
-  std::vector<std::string> modules;
-  for (const auto& stage : d.stages)
-    for (const auto& m : stage->modules(d))
+// The templates the top and the core use, directly or below, each once.
+std::vector<std::string> used_modules(const std::string& top_and_core) {
+  std::vector<std::string> modules = instantiated_templates(top_and_core);
+  for (size_t i = 0; i < modules.size(); ++i)
+    for (const auto& m : instantiated_templates(templates().at(modules[i])))
       if (std::find(modules.begin(), modules.end(), m) == modules.end()) modules.push_back(m);
   return modules;
-}
-
-// floor(s / divisor) == (s * mul) >> shift for every s in 0 .. max_value: the smallest shift
-// whose rounded-up reciprocal is exact over the range (checked exhaustively).
-std::pair<uint64_t, int> reciprocal(uint64_t divisor, uint64_t max_value) {
-  for (int shift = 0; shift < 48; ++shift) {
-    const uint64_t mul = ((uint64_t(1) << shift) + divisor - 1) / divisor;
-    bool exact = true;
-    for (uint64_t v = 0; v <= max_value && exact; ++v) exact = (v * mul) >> shift == v / divisor;
-    if (exact) return {mul, shift};
-  }
-  throw std::logic_error("no exact reciprocal");
 }
 
 std::string banner(const RtlDesign& d) {
@@ -141,12 +129,12 @@ std::string top_module(const RtlDesign& d) {
   for (const char* side : {"left", "right"})
     os << fmt::format(
         "  wire [9:0] {0}_beat;\n  wire {0}_valid, {0}_ready;\n"
-        "  {1}_axis_skid #(.DATA_W(10)) {0}_slice (\n"
+        "  fpstereo_axis_skid #(.DATA_W(10)) {0}_slice (\n"
         "    .clk(aclk), .rst(rst),\n"
         "    .s_data({{s_axis_{0}_tuser, s_axis_{0}_tlast, s_axis_{0}_tdata}}), .s_valid(s_axis_{0}_tvalid), "
         ".s_ready(s_axis_{0}_tready),\n"
         "    .m_data({0}_beat), .m_valid({0}_valid), .m_ready({0}_ready));\n",
-        side, d.prefix);
+        side);
   os << fmt::format(
       "\n  // The frame's settings, fixed while the core runs it.\n"
       "  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;\n"
@@ -161,14 +149,14 @@ std::string top_module(const RtlDesign& d) {
     std::string info;
     for (size_t i = words.size(); i-- > 0;) info += fmt::format("32'd{}{}", words[i].second, i ? ", " : "");
     os << fmt::format(
-        "  {}_control #(\n"
+        "  fpstereo_control #(\n"
         "    .X_W({}), .Y_W({}), .PATH_W({}), .MIN_WIDTH({}), .MAX_WIDTH({}), .MIN_HEIGHT({}), .MAX_HEIGHT({}),\n"
         "    .P1_INIT({}), .P2_INIT({}), .P2_MAX({}), .UNIQUENESS_SETTABLE({}), .UNIQUENESS_INIT({}),\n"
         "    .LR_SETTABLE({}), .LR_THRESHOLD_INIT({}), .VERSION(32'h{:08x}), .CONFIG_ID(32'h{:08x}),\n"
         "    .INFO({{{}}})\n"
         "  ) control (\n"
         "    .clk(aclk), .rst(rst),\n",
-        d.prefix, d.x_bits, d.y_bits, w.path_cost, d.min_width, c.width, d.min_height, c.height, c.p1, c.p2,
+        d.x_bits, d.y_bits, w.path_cost, d.min_width, c.width, d.min_height, c.height, c.p1, c.p2,
         c.p2, c.uniqueness != 0 ? 1 : 0, c.uniqueness, c.lr != LrCheck::None ? 1 : 0, c.lr_threshold,
         version_word(), config_id(d), info);
     for (const auto& port : control_ports()) os << fmt::format("    .s_axi_{0}(s_axi_ctrl_{0}),\n", port.name);
@@ -188,7 +176,7 @@ std::string top_module(const RtlDesign& d) {
   os << fmt::format(
       "\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n"
       "  wire framed_valid, framed_ready;\n  wire [7:0] framed_left, framed_right;\n"
-      "  {0}_video_in #(.X_W({1}), .Y_W({2})) framing (\n"
+      "  fpstereo_video_in #(.X_W({1}), .Y_W({2})) framing (\n"
       "    .clk(aclk), .rst(rst), .enable(enable),\n"
       "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
       "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
@@ -200,7 +188,7 @@ std::string top_module(const RtlDesign& d) {
       "\n  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the\n"
       "  // framing checks through the core's enable.\n"
       "  wire core_valid, take;\n  wire [7:0] core_left, core_right;\n"
-      "  {0}_axis_skid #(.DATA_W(16)) pixel_slice (\n"
+      "  fpstereo_axis_skid #(.DATA_W(16)) pixel_slice (\n"
       "    .clk(aclk), .rst(rst),\n"
       "    .s_data({{framed_left, framed_right}}), .s_valid(framed_valid), .s_ready(framed_ready),\n"
       "    .m_data({{core_left, core_right}}), .m_valid(core_valid), .m_ready(take));\n",
@@ -230,7 +218,7 @@ std::string top_module(const RtlDesign& d) {
   auto slice = [&](const std::string& name, const std::string& core, const std::string& port, int port_bits,
                    int word_bits, const std::string& above = "") {
     const int pad = port_bits - word_bits - (above.empty() ? 0 : 8);
-    os << fmt::format("  {}_axis_skid #(.DATA_W({})) {} (\n", d.prefix, port_bits + 2, name)
+    os << fmt::format("  fpstereo_axis_skid #(.DATA_W({})) {} (\n", port_bits + 2, name)
        << "    .clk(aclk), .rst(rst),\n"
        << fmt::format("    .s_data({{{0}_first, {0}_last, {2}{1}{0}_word}}), .s_valid({0}_push), .s_ready({0}_ready),\n",
                       core, pad > 0 ? fmt::format("{}'d0, ", pad) : std::string(),
@@ -245,149 +233,63 @@ std::string top_module(const RtlDesign& d) {
   return os.str();
 }
 
-// The core: the stages between the input and output register slices, chained by the emitter
-// (docs/architecture.md, "Stages"). Every stage advances with adv, so the pipeline stalls as one.
+// The core: the stages between the input and output register slices, each adding its nets and
+// instances (docs/architecture.md, "Stages"). Every stage advances with adv, so the pipeline stalls
+// as one.
 std::string core_module(const RtlDesign& d) {
   const Widths& w = d.widths;
-  std::ostringstream os;
-  os << "`resetall\n`default_nettype none\n"
-     << "// The SGM pipeline between the input and output register slices, stage by stage:\n";
-  for (const auto& stage : d.stages) os << "//   " << stage->title() << "\n";
-  os << "module " << d.prefix << "_sgm_core (\n"
-     << "  input  wire clk,\n  input  wire rst,\n"
-     << "  // Frames: while accepting (a register), start begins one: in an idle core, or following on\n"
-     << "  // while the written settings equal the frame's (settings_held); the settings hold until the\n"
-     << "  // core is idle again.\n"
-     << "  input  wire start,\n  output wire idle,\n  input  wire settings_held,\n  output wire accepting,\n"
-     << fmt::format("  input  wire [{}:0] frame_width,\n  input  wire [{}:0] frame_height,\n", d.x_bits - 1,
-                    d.y_bits - 1)
-     << fmt::format("  input  wire [{0}:0] p1,\n  input  wire [{0}:0] p2,\n", w.path_cost - 1);
-  const bool unique = d.cfg.uniqueness != 0, lr = d.cfg.lr != LrCheck::None;
-  if (!unique || !lr) os << "  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the check\n";
-  os << "  input  wire [6:0] uniqueness,\n  input  wire [3:0] lr_threshold,\n";
-  if (!unique || !lr) os << "  /* verilator lint_on UNUSEDSIGNAL */\n";
-  os << "  // one pixel of each image, taken when in_take is high\n"
-     << "  input  wire in_valid,\n  input  wire [7:0] in_left,\n  input  wire [7:0] in_right,\n"
-     << "  output wire in_take,\n"
-     << "  // output word (invalid flag above the disparity), pushed when out_push is high\n"
-     << "  input  wire out_ready,\n  output wire out_push,\n"
-     << fmt::format("  output wire [{}:0] out_word,\n", w.output_disparity)
-     << "  output wire out_first,\n  output wire out_last,\n"
-     << (d.cfg.confidence ? "  // the pixel's confidence, beside out_word\n  output wire [7:0] out_confidence,\n" : "")
-     << (d.cfg.right_view ? fmt::format("  // the right view's word, pushed when view_push is high\n"
-                                        "  input  wire view_ready,\n  output wire view_push,\n"
-                                        "  output wire [{}:0] view_word,\n"
-                                        "  output wire view_first,\n  output wire view_last,\n",
-                                        w.disparity - 1)
-                          : std::string())
-     << "  // high in the cycle that pushes the frame's last pixel\n"
-     << "  output wire frame_end\n);\n";
-  PixelStream stream;
-  for (const auto& stage : d.stages) os << stage->core_verilog(d, stream);
-  os << "endmodule\n`resetall\n";
-  return os.str();
+  CoreBuilder core;
+  core.input("clk", 1);
+  core.input("rst", 1);
+  core.input("start", 1,
+             "Frames: while accepting (a register), start begins one: in an idle core, or following on\n"
+             "  // while the written settings equal the frame's (settings_held); the settings hold until the\n"
+             "  // core is idle again.");
+  core.output("idle", 1);
+  core.input("settings_held", 1);
+  core.output("accepting", 1);
+  core.input("frame_width", d.x_bits);
+  core.input("frame_height", d.y_bits);
+  core.input("p1", w.path_cost);
+  core.input("p2", w.path_cost);
+  core.input("uniqueness", 7);
+  core.input("lr_threshold", 4);
+  core.input("in_valid", 1, "one pixel of each image, taken when in_take is high");
+  core.input("in_left", 8);
+  core.input("in_right", 8);
+  core.output("in_take", 1);
+  core.input("out_ready", 1, "output word (invalid flag above the disparity), pushed when out_push is high");
+  core.output("out_push", 1);
+  core.output("out_word", w.output_word);
+  core.output("out_first", 1);
+  core.output("out_last", 1);
+  if (d.cfg.confidence) core.output("out_confidence", kConfidenceBits, "the pixel's confidence, beside out_word");
+  if (d.cfg.right_view) {
+    core.input("view_ready", 1, "the right view's word, pushed when view_push is high");
+    core.output("view_push", 1);
+    core.output("view_word", w.disparity);
+    core.output("view_first", 1);
+    core.output("view_last", 1);
+  }
+  core.output("frame_end", 1, "high in the cycle that pushes the frame's last pixel");
+  CoreStreams streams;
+  for (const auto& stage : d.stages) {
+    core.stage(stage->title());
+    stage->core_verilog(d, core, streams);
+  }
+  std::string text = "`resetall\n`default_nettype none\n"
+                     "// The SGM pipeline between the input and output register slices, stage by stage:\n";
+  for (const auto& stage : d.stages) text += "//   " + stage->title() + "\n";
+  return text + core.module_text(d.prefix + "_sgm_core") + "`resetall\n";
 }
 
 }  // namespace
 
-RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
-  validate(cfg);
-  // One-pass MGM lost accuracy to SGM on every dataset (README, "Accuracy beyond the paper"), so
-  // the aggregator keeps one predecessor per path.
-  if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
-  // A search range wider than the row searches nothing: the hardware keeps LR2's match side
-  // (dmax + min-disp slots behind) and the offset's delays within a row-time.
-  if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
-    throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
-                      std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
-  RtlDesign d;
-  d.cfg = cfg;
-  d.options = options;
-  // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate),
-  // and a row that holds the whole search range (above).
-  d.min_width = std::max(8, cfg.dmax + std::abs(cfg.min_disp));
-  d.min_height = 4;
-  d.widths = derive_widths(cfg);
-  d.prefix = config_tag(cfg);
-  d.window_radius = cfg.window / 2;
-  d.groups = cfg.dmax / cfg.uf;
-  // The cost lanes' register steps: fpstereo_cost_lanes 2; fpstereo_window_cost_lanes 4, with
-  // four more for ZSAD (the masked column sums, the match window's sum, its mean, the means'
-  // difference).
-  const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad ||
-                             (cfg.cost == CostFunction::Shd && cfg.shd_window > 1);
-  // Census codes of more than 8 chunks of 6 bits sum their counts in sets first (one step more).
-  const bool long_codes = !windowed_cost && cfg.cost != CostFunction::Rank && d.widths.code > 48;
-  d.cost_latency = !windowed_cost ? (long_codes ? 3 : 2) : cfg.cost == CostFunction::Zsad ? 8 : 4;
-  d.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
-  const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
-  std::tie(d.mean_mul, d.mean_shift) =
-      cfg.cost == CostFunction::Zsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
-  d.path_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
-  d.wta_tree_latency = min_tree_latency(cfg.uf, d.levels_per_stage);
-  d.unique_tree_latency = min_tree_latency(cfg.uf, RtlDesign::kUniqueLevelsPerStage);
-  d.wta_word_lag = finds_second_best(cfg) ? d.unique_tree_latency + RtlDesign::kUniqueWordSteps
-                                                         : d.wta_tree_latency;
-  // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
-  // path lanes (two steps, fpstereo_path_lanes), the tree and the running minimum take
-  // G - 1 + 2 + latency + 1 steps; K chains give it K * G (fpstereo_aggregator checks it).
-  constexpr int kPathLanesLatency = 2;
-  d.chains = std::max(2, 1 + ceil_div(d.path_tree_latency + kPathLanesLatency, d.groups));
-  // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
-  // where dmax < 128 (width >= 16) and K <= 6 otherwise.
-  d.segment = ceil_div(cfg.width + (d.groups == 1 ? kFollowBubbles : 0), d.chains);
-  d.row_slots = d.chains * d.segment;
-  const int lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
-  d.cost_rows = d.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
-  d.out_rows = d.chains + 1 + lr_rows;
-
-  // The schedule: the stages' latencies summed in data order (docs/architecture.md, "Stages").
-  // A stage's own schedule starts start_offset after its input; the step that pushes pixel
-  // (x, y) is (y * R + x) * G steps after the one that pushes pixel (0, 0).
-  d.stages = pipeline_stages(cfg);
-  const int64_t R = d.row_slots, G = d.groups;
-  int64_t at = 0;
-  for (const auto& stage : d.stages) {
-    if (!stage->start_parameter().empty())
-      d.start_steps[stage->start_parameter()] = at + stage->start_offset(d).in_steps(R, G);
-    at += stage->latency(d).in_steps(R, G);
-  }
-  // The output stage is the last: its latency ends with the kStepsAfterPush from the push of
-  // pixel (0, 0) on.
-  const int64_t push_first = at - kStepsAfterPush;
-  const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
-  d.lone_frame_cycles = at + last_pixel * G;
-  // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
-  // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
-  // and a frame is done before the one after the next begins).
-  d.overlap_height = int(ceil_div(push_first, R * G) + 2);
-  d.cycles_per_frame = cfg.height >= d.overlap_height ? int64_t(cfg.height) * R * G : d.lone_frame_cycles;
-  // At the ports: the input register slice, the cycle in which the framing stage starts the core
-  // and the one in which the sequencer starts (step 0 follows), and the output register slice.
-  d.first_output_latency = push_first + 4;
-  d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
-  // The word's lane (8 or 16 bits), and with confidence 8 bits above it.
-  d.output_bits = (d.widths.output_word <= 8 ? 8 : 16) + (cfg.confidence ? 8 : 0);
-  d.x_bits = bits_for(uint64_t(R));
-  d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
-  d.signed_y_bits = d.y_bits + 2;
-  d.group_bits = bits_for(uint64_t(G - 1));
-  d.chain_bits = bits_for(uint64_t(d.chains - 1));
-  d.lane_bits = std::max(1, clog2(cfg.uf));
-  d.step_bits = bits_for(uint64_t(d.lone_frame_cycles + 16));
-  d.cost_row_bits = clog2(d.cost_rows);
-  d.out_row_bits = clog2(d.out_rows);
-  d.cost_addr_bits = clog2(d.cost_depth());
-  d.disp_addr_bits = clog2(d.disp_depth());
-  d.end_addr_bits = clog2(int64_t(d.out_rows) * G);
-  return d;
-}
-
 std::vector<EmittedFile> emit(const RtlDesign& design) {
-  const std::string head = banner(design);
-  std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + top_module(design)},
-                                    {design.prefix + "_sgm_core.v", head + with_prefix(core_module(design), design.prefix)}};
-  for (const auto& module : used_modules(design)) {
+  const std::string head = banner(design), top = top_module(design), core = core_module(design);
+  std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + with_prefix(top, design.prefix)},
+                                    {design.prefix + "_sgm_core.v", head + with_prefix(core, design.prefix)}};
+  for (const auto& module : used_modules(top + core)) {
     const std::string renamed = with_prefix(module, design.prefix);
     files.push_back({renamed + ".v", head + with_prefix(templates().at(module), design.prefix)});
   }

@@ -45,7 +45,7 @@
 `default_nettype none
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
 // tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,
-// with the invalid flag in bit 7. Frames are at most 1242 x 375 pixels; fpstereo_video_in checks the input's
+// with the invalid flag in bit 7. Frames are at most 1242 x 375 pixels; fps_census7_d128u32_865f3c_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
 // Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_865f3c_regs.h).
 module fps_census7_d128u32_865f3c_top (
@@ -210,8 +210,10 @@ module fps_census7_d128u32_865f3c_sgm_core (
   input  wire [8:0] frame_height,
   input  wire [7:0] p1,
   input  wire [7:0] p2,
-  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the check
+  /* verilator lint_off UNUSEDSIGNAL */  // read where the configuration uses it
   input  wire [6:0] uniqueness,
+  /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // read where the configuration uses it
   input  wire [3:0] lr_threshold,
   /* verilator lint_on UNUSEDSIGNAL */
   // one pixel of each image, taken when in_take is high
@@ -264,7 +266,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [10:0] transform_x;
   wire signed [10:0] transform_y;
   wire transform_slot;
-  /* verilator lint_off UNUSEDSIGNAL */  // only the SAD and ZSAD costs use it
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_front_end #(
@@ -300,7 +302,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
     .history_slot(history_slot), .costs(costs));
 
   // Cost reorder RAM.
-  /* verilator lint_off UNUSEDSIGNAL */  // LR2's lane banks take the cost words' positions
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire cost_valid;
   wire [10:0] cost_x;
   wire cost_row_slot;
@@ -328,7 +330,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [10:0] agg_x;
   wire [1:0] agg_group;
   wire [1:0] agg_slot;
-  /* verilator lint_off UNUSEDSIGNAL */  // only LR1 follows the chains
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_aggregator #(
@@ -342,17 +344,17 @@ module fps_census7_d128u32_865f3c_sgm_core (
     .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
-  wire [1:0] wta_group;
-  wire wta_active;
-  wire [10:0] wta_x;
-  wire [1:0] wta_slot;
-  wire [7:0] wta_word;
+  wire [1:0] winner_group;
+  wire winner_active;
+  wire [10:0] winner_x;
+  wire [1:0] winner_slot;
+  wire [7:0] winner_word;
   fps_census7_d128u32_865f3c_wta #(
     .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
-    .tag({agg_active, agg_x, agg_slot}), .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}),
-    .word(wta_word));
+    .tag({agg_active, agg_x, agg_slot}), .group_out(winner_group),
+    .tag_out({winner_active, winner_x, winner_slot}), .word(winner_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
   localparam OUT_START = 19907;
@@ -360,14 +362,14 @@ module fps_census7_d128u32_865f3c_sgm_core (
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
     else if (adv && step == OUT_START - 1) out_on <= 1'b1;
-  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire read_event;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [10:0] read_x;
   wire [8:0] read_y;
   wire [7:0] read_word;
-  /* verilator lint_on UNUSEDSIGNAL */
-  /* verilator lint_off UNUSEDSIGNAL */  // the left-right check reads with it
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [1:0] read_slot_row;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_disparity_reorder #(
@@ -375,17 +377,15 @@ module fps_census7_d128u32_865f3c_sgm_core (
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
-    .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
-    .word({wta_word}), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
-    .read_slot_row(read_slot_row), .read_word(read_word));
+    .frame_height(frame_height), .active(winner_active), .x(winner_x), .slot(winner_slot),
+    .group(winner_group), .word({winner_word}), .read_done(read_done), .read_event(read_event),
+    .read_x(read_x), .read_y(read_y), .read_slot_row(read_slot_row), .read_word(read_word));
 
   // Median filter.
-  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire median_event;
   wire [10:0] median_x;
   wire [8:0] median_y;
   wire [7:0] median_word;
-  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_median #(
     .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(0), .X_W(11), .Y_W(9), .YS_W(11)
   ) median (
@@ -416,89 +416,6 @@ module fps_census7_d128u32_865f3c_sgm_core (
     else if (adv) frame_done_q <= median_event && median_x == frame_width - 1'b1 && median_y == frame_height - 1'b1;
   assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
-// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has its
-// first pixel by then); from then on the step counter advances in every cycle where adv is high,
-// and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
-// while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
-// runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
-// a register, from the next cycle until the window stage takes it, which it can while
-// follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
-// the next frame follows on (continuing), restart clears the stages' valid flags then, as at
-// reset, and a next frame that was not taken starts as from idle.
-// accepting tells the framing stage that it may start a frame: while idle, or while the window
-// stage can take a following frame with the same settings (settings_held). It is a register, so
-// that no path runs from this block's state through the framing checks into the input slices:
-// exact for idle (made from the next state) and after a start or an end, one cycle late for
-// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
-// any other and begins when the frame ends; the settings cannot have changed (settings_held
-// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
-// start taken while accepting is lost (tests/formal/sequencer_props.v).
-module fps_census7_d128u32_865f3c_sequencer #(
-  parameter STEP_W = 20
-) (
-  input  wire              clk,
-  input  wire              rst,
-  input  wire              start,
-  output wire              idle,
-  // the written settings equal the running frame's (a register, fps_census7_d128u32_865f3c_control)
-  input  wire              settings_held,
-  output reg               accepting,
-  input  wire              follow_open,
-  output wire              next_frame,
-  input  wire              next_taken,
-  input  wire              continuing,
-  input  wire              in_due,
-  input  wire              in_valid,
-  input  wire              out_due,
-  input  wire              out_ready,
-  input  wire              view_due,
-  input  wire              view_ready,
-  input  wire              frame_done,
-  output wire              adv,
-  output reg  [STEP_W-1:0] step,
-  output wire              restart
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (STEP_W < 1) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_sequencer_STEP_W_below_1 failed ();
-    end
-  endgenerate
-  reg starting, in_frame, pending;
-  wire follow = in_frame && follow_open && !pending;
-  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
-  wire ends = adv && frame_done && !continuing;
-  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
-  // as from idle: the framing stage is already passing its pixels.
-  wire starting_next = (start && idle) || (ends && (pending || start));
-  wire in_frame_next = in_frame ? !ends : starting;
-  always @(posedge clk)
-    if (rst) begin
-      starting <= 1'b0;
-      in_frame <= 1'b0;
-      accepting <= 1'b1;
-    end else begin
-      starting <= starting_next;
-      in_frame <= in_frame_next;
-      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
-    end
-  assign idle = !in_frame && !starting;
-  assign next_frame = pending;
-  always @(posedge clk)
-    if (restart || next_taken) pending <= 1'b0;
-    else if (start && in_frame) pending <= 1'b1;
-  // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
-  always @(posedge clk)
-    if (rst) step <= 0;
-    else if (adv) step <= ends ? {STEP_W{1'b0}} : step + 1'b1;
-  assign restart = rst || ends;
 endmodule
 `resetall
 
@@ -551,178 +468,6 @@ module fps_census7_d128u32_865f3c_axis_skid #(
       skid_valid_q <= 1'b1;
     end
   end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
-// the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
-// tlast on each row's last.
-// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
-// larger): the position flags are registers, set for the next pixel as one is taken.
-//   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
-//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
-//         If one stream skipped at least half a frame's rows more than the other, the other's
-//         frame is the counterpart of what was skipped (a start of frame missing or repeated on
-//         one stream only) and is skipped as well, so that the streams pair up again.
-//   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
-//         not ends the frame early: it is left for SEEK (it may start the next frame).
-//   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
-//         frame is complete and well-formed and nothing waits for input that will not come.
-//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
-// Every event is a one-cycle pulse for the status counters. Skipped data counts as one
-// protocol error per stretch, unless it follows an error already counted or a dropped frame.
-module fps_census7_d128u32_865f3c_video_in #(
-  parameter X_W = 7,
-  parameter Y_W = 6
-) (
-  input  wire           clk,
-  input  wire           rst,
-  // new frames are taken while high, skipped (and counted as dropped) while low
-  input  wire           enable,
-  // the streams after their register slices: {tuser, tlast, tdata}
-  input  wire [9:0]     left,
-  input  wire           left_valid,
-  output wire           left_ready,
-  input  wire [9:0]     right,
-  input  wire           right_valid,
-  output wire           right_ready,
-  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
-  // a following frame); its size holds from the next cycle until the frame is done
-  input  wire           core_accepting,
-  output wire           core_start,
-  input  wire [X_W-1:0] frame_width,
-  input  wire [Y_W-1:0] frame_height,
-  output wire           in_valid,
-  output wire [7:0]     in_left,
-  output wire [7:0]     in_right,
-  input  wire           in_take,
-  // events
-  output wire           frame_dropped,
-  output wire           frame_truncated,
-  output wire           protocol_error
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (X_W < 2 || Y_W < 2) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
-    end
-  endgenerate
-  localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
-  reg [1:0]     state;
-  reg           quiet;  // skipped data is already accounted for
-  reg [X_W-1:0] x;
-  reg [Y_W-1:0] y;
-
-  wire left_user = left[9], left_last = left[8];
-  wire right_user = right[9], right_last = right[8];
-  wire both = left_valid && right_valid;
-  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
-  // on the path from the streams to the core.
-  reg  first, row_end, last_row;
-  localparam [X_W-1:0] TWO_X = 2;
-  localparam [Y_W-1:0] TWO_Y = 2;
-  wire frame_end = row_end && last_row;
-  wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
-
-  // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
-  wire starts = state == SEEK && both && left_user && right_user;
-  wire skip_left = state == SEEK && left_valid && !left_user;
-  wire skip_right = state == SEEK && right_valid && !right_user;
-  // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
-  // The comparison is a register, made with the counts it will see (the frame height changes
-  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
-  reg  [Y_W:0] left_rows, right_rows;
-  wire [Y_W:0] left_rows_next, right_rows_next;
-  wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
-  reg  left_stale, right_stale;
-  wire aligned = !left_stale && !right_stale;
-  assign core_start = starts && aligned && core_accepting && enable;
-  wire drop = starts && aligned && core_accepting && !enable;
-
-  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
-  // returns to SEEK in the next cycle, so that the state does not wait for the take).
-  reg  done;
-  wire fault = state == RUN && !done && both && !flags_match;
-  wire passing = state == RUN && !done && both && flags_match;
-  assign in_valid = passing || (state == PAD && !done);
-  assign in_left = passing ? left[7:0] : 8'd0;
-  assign in_right = passing ? right[7:0] : 8'd0;
-  wire pass_take = passing && in_take;
-  assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
-  assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
-
-  assign frame_dropped = drop;
-  assign frame_truncated = fault;
-  assign protocol_error = ((skip_left || skip_right) && !quiet) || fault;
-
-  always @(posedge clk)
-    if (rst) begin
-      state <= SEEK;
-      quiet <= 1'b0;
-    end else begin
-      case (state)
-        SEEK:
-          if (core_start) begin
-            state <= RUN;
-            quiet <= 1'b0;
-          end else if (drop || skip_left || skip_right) quiet <= 1'b1;
-        RUN:
-          if (done) state <= SEEK;
-          else if (fault) begin
-            state <= PAD;
-            quiet <= 1'b1;
-          end
-        default:  // PAD
-          if (done) state <= SEEK;
-      endcase
-    end
-  always @(posedge clk)
-    if (rst || done) done <= 1'b0;
-    else done <= in_take && frame_end;
-
-  localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
-  wire restart_rows = rst || core_start || drop;
-  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
-  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
-  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
-  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
-  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
-  // the three cases compared in parallel from the registers and then chosen.
-  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
-  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
-  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
-  always @(posedge clk) begin
-    left_rows <= left_rows_next;
-    right_rows <= right_rows_next;
-    if (restart_rows) begin
-      left_stale <= !rst && half == 0;
-      right_stale <= !rst && half == 0;
-    end else begin
-      left_stale <= left_inc == right_inc ? left_reach <= right_wide
-                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
-      right_stale <= left_inc == right_inc ? right_reach <= left_wide
-                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
-    end
-  end
-
-  always @(posedge clk)
-    if (rst || core_start) begin
-      x <= 0;
-      y <= 0;
-      first <= 1'b1;
-      row_end <= 1'b0;
-      last_row <= 1'b0;
-    end else if (in_take) begin
-      x <= row_end ? {X_W{1'b0}} : x + 1'b1;
-      first <= 1'b0;
-      row_end <= !row_end && x == frame_width - TWO_X;
-      if (row_end) begin
-        y <= y + 1'b1;
-        last_row <= y == frame_height - TWO_Y;
-      end
-    end
 endmodule
 `resetall
 
@@ -983,6 +728,261 @@ endmodule
 
 `resetall
 `default_nettype none
+// Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
+// the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
+// tlast on each row's last.
+// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
+// larger): the position flags are registers, set for the next pixel as one is taken.
+//   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
+//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
+//         If one stream skipped at least half a frame's rows more than the other, the other's
+//         frame is the counterpart of what was skipped (a start of frame missing or repeated on
+//         one stream only) and is skipped as well, so that the streams pair up again.
+//   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
+//         not ends the frame early: it is left for SEEK (it may start the next frame).
+//   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
+//         frame is complete and well-formed and nothing waits for input that will not come.
+//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
+// Every event is a one-cycle pulse for the status counters. Skipped data counts as one
+// protocol error per stretch, unless it follows an error already counted or a dropped frame.
+module fps_census7_d128u32_865f3c_video_in #(
+  parameter X_W = 7,
+  parameter Y_W = 6
+) (
+  input  wire           clk,
+  input  wire           rst,
+  // new frames are taken while high, skipped (and counted as dropped) while low
+  input  wire           enable,
+  // the streams after their register slices: {tuser, tlast, tdata}
+  input  wire [9:0]     left,
+  input  wire           left_valid,
+  output wire           left_ready,
+  input  wire [9:0]     right,
+  input  wire           right_valid,
+  output wire           right_ready,
+  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
+  // a following frame); its size holds from the next cycle until the frame is done
+  input  wire           core_accepting,
+  output wire           core_start,
+  input  wire [X_W-1:0] frame_width,
+  input  wire [Y_W-1:0] frame_height,
+  output wire           in_valid,
+  output wire [7:0]     in_left,
+  output wire [7:0]     in_right,
+  input  wire           in_take,
+  // events
+  output wire           frame_dropped,
+  output wire           frame_truncated,
+  output wire           protocol_error
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (X_W < 2 || Y_W < 2) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+    end
+  endgenerate
+  localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
+  reg [1:0]     state;
+  reg           quiet;  // skipped data is already accounted for
+  reg [X_W-1:0] x;
+  reg [Y_W-1:0] y;
+
+  wire left_user = left[9], left_last = left[8];
+  wire right_user = right[9], right_last = right[8];
+  wire both = left_valid && right_valid;
+  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
+  // on the path from the streams to the core.
+  reg  first, row_end, last_row;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  wire frame_end = row_end && last_row;
+  wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
+
+  // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
+  wire starts = state == SEEK && both && left_user && right_user;
+  wire skip_left = state == SEEK && left_valid && !left_user;
+  wire skip_right = state == SEEK && right_valid && !right_user;
+  // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  // The comparison is a register, made with the counts it will see (the frame height changes
+  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
+  reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] left_rows_next, right_rows_next;
+  wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
+  reg  left_stale, right_stale;
+  wire aligned = !left_stale && !right_stale;
+  assign core_start = starts && aligned && core_accepting && enable;
+  wire drop = starts && aligned && core_accepting && !enable;
+
+  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
+  // returns to SEEK in the next cycle, so that the state does not wait for the take).
+  reg  done;
+  wire fault = state == RUN && !done && both && !flags_match;
+  wire passing = state == RUN && !done && both && flags_match;
+  assign in_valid = passing || (state == PAD && !done);
+  assign in_left = passing ? left[7:0] : 8'd0;
+  assign in_right = passing ? right[7:0] : 8'd0;
+  wire pass_take = passing && in_take;
+  assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
+  assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
+
+  assign frame_dropped = drop;
+  assign frame_truncated = fault;
+  assign protocol_error = ((skip_left || skip_right) && !quiet) || fault;
+
+  always @(posedge clk)
+    if (rst) begin
+      state <= SEEK;
+      quiet <= 1'b0;
+    end else begin
+      case (state)
+        SEEK:
+          if (core_start) begin
+            state <= RUN;
+            quiet <= 1'b0;
+          end else if (drop || skip_left || skip_right) quiet <= 1'b1;
+        RUN:
+          if (done) state <= SEEK;
+          else if (fault) begin
+            state <= PAD;
+            quiet <= 1'b1;
+          end
+        default:  // PAD
+          if (done) state <= SEEK;
+      endcase
+    end
+  always @(posedge clk)
+    if (rst || done) done <= 1'b0;
+    else done <= in_take && frame_end;
+
+  localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
+  wire restart_rows = rst || core_start || drop;
+  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
+  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
+  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
+  // the three cases compared in parallel from the registers and then chosen.
+  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
+  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
+  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
+  always @(posedge clk) begin
+    left_rows <= left_rows_next;
+    right_rows <= right_rows_next;
+    if (restart_rows) begin
+      left_stale <= !rst && half == 0;
+      right_stale <= !rst && half == 0;
+    end else begin
+      left_stale <= left_inc == right_inc ? left_reach <= right_wide
+                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
+      right_stale <= left_inc == right_inc ? right_reach <= left_wide
+                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
+    end
+  end
+
+  always @(posedge clk)
+    if (rst || core_start) begin
+      x <= 0;
+      y <= 0;
+      first <= 1'b1;
+      row_end <= 1'b0;
+      last_row <= 1'b0;
+    end else if (in_take) begin
+      x <= row_end ? {X_W{1'b0}} : x + 1'b1;
+      first <= 1'b0;
+      row_end <= !row_end && x == frame_width - TWO_X;
+      if (row_end) begin
+        y <= y + 1'b1;
+        last_row <= y == frame_height - TWO_Y;
+      end
+    end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
+// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has its
+// first pixel by then); from then on the step counter advances in every cycle where adv is high,
+// and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
+// while a stage is due to take an input pixel that is not there (in_due) or to push an output word
+// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
+// runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
+// a register, from the next cycle until the window stage takes it, which it can while
+// follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
+// the next frame follows on (continuing), restart clears the stages' valid flags then, as at
+// reset, and a next frame that was not taken starts as from idle.
+// accepting tells the framing stage that it may start a frame: while idle, or while the window
+// stage can take a following frame with the same settings (settings_held). It is a register, so
+// that no path runs from this block's state through the framing checks into the input slices:
+// exact for idle (made from the next state) and after a start or an end, one cycle late for
+// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
+// any other and begins when the frame ends; the settings cannot have changed (settings_held
+// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
+// start taken while accepting is lost (tests/formal/sequencer_props.v).
+module fps_census7_d128u32_865f3c_sequencer #(
+  parameter STEP_W = 20
+) (
+  input  wire              clk,
+  input  wire              rst,
+  input  wire              start,
+  output wire              idle,
+  // the written settings equal the running frame's (a register, fps_census7_d128u32_865f3c_control)
+  input  wire              settings_held,
+  output reg               accepting,
+  input  wire              follow_open,
+  output wire              next_frame,
+  input  wire              next_taken,
+  input  wire              continuing,
+  input  wire              in_due,
+  input  wire              in_valid,
+  input  wire              out_due,
+  input  wire              out_ready,
+  input  wire              view_due,
+  input  wire              view_ready,
+  input  wire              frame_done,
+  output wire              adv,
+  output reg  [STEP_W-1:0] step,
+  output wire              restart
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (STEP_W < 1) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+    end
+  endgenerate
+  reg starting, in_frame, pending;
+  wire follow = in_frame && follow_open && !pending;
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
+  wire ends = adv && frame_done && !continuing;
+  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
+  // as from idle: the framing stage is already passing its pixels.
+  wire starting_next = (start && idle) || (ends && (pending || start));
+  wire in_frame_next = in_frame ? !ends : starting;
+  always @(posedge clk)
+    if (rst) begin
+      starting <= 1'b0;
+      in_frame <= 1'b0;
+      accepting <= 1'b1;
+    end else begin
+      starting <= starting_next;
+      in_frame <= in_frame_next;
+      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
+    end
+  assign idle = !in_frame && !starting;
+  assign next_frame = pending;
+  always @(posedge clk)
+    if (restart || next_taken) pending <= 1'b0;
+    else if (start && in_frame) pending <= 1'b1;
+  // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
+  always @(posedge clk)
+    if (rst) step <= 0;
+    else if (adv) step <= ends ? {STEP_W{1'b0}} : step + 1'b1;
+  assign restart = rst || ends;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // Window stage (docs/architecture.md, "Front end"): takes one left and one right pixel per slot
 // in raster order, keeps N - 1 rows of each image in line buffers and forms the N x N windows,
 // with the positions of their centres and which window rows and columns lie inside the image
@@ -1219,209 +1219,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
-// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
-// row-time returns to 0 after the frame's last (fps_census7_d128u32_865f3c_frame_row); the RAM row counts on modulo
-// K regardless, so that the next frame's rows take the RAM rows that follow.
-module fps_census7_d128u32_865f3c_raster_counter #(
-  parameter G = 4,
-  parameter ROW_SLOTS = 64,
-  parameter K = 2,
-  parameter G_W = 2,
-  parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter K_W = 1
-) (
-  input  wire           clk,
-  input  wire           restart,
-  input  wire           en,
-  input  wire           wrap,
-  input  wire [Y_W-1:0] height,
-  output reg  [G_W-1:0] group,
-  output reg  [X_W-1:0] slot,
-  output wire [Y_W-1:0] row,
-  output reg  [K_W-1:0] row_slot,
-  output wire           slot_end
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
-      fps_census7_d128u32_865f3c_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
-    end
-    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
-      fps_census7_d128u32_865f3c_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
-    end
-  endgenerate
-  localparam integer LAST_GROUP_I = G - 1;
-  localparam integer LAST_CHAIN_I = K - 1;
-  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
-  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-
-  assign slot_end = group == LAST_GROUP;
-  always @(posedge clk)
-    if (restart) begin
-      group <= 0;
-      slot <= 0;
-      row_slot <= 0;
-    end else if (en) begin
-      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
-      if (slot_end) begin
-        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
-        if (slot == LAST_SLOT)
-          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
-      end
-    end
-  /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_865f3c_frame_row #(.Y_W(Y_W)) frame_row (
-    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
-    .row(row), .last());
-  /* verilator lint_on PINCONNECTEMPTY */
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// A stage's row-time counter (docs/architecture.md, "Back-to-back frames"): it advances by one at
-// each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
-// so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
-// past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
-// as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
-// starts at START < 0 (two's complement: rows above the first frame).
-module fps_census7_d128u32_865f3c_frame_row #(
-  parameter Y_W = 6,
-  parameter START = 0
-) (
-  input  wire           clk,
-  input  wire           restart,
-  input  wire           next,
-  input  wire           wrap,
-  input  wire [Y_W-1:0] height,
-  output reg  [Y_W-1:0] row,
-  output reg            last
-);
-  localparam [Y_W-1:0] TWO = 2;
-  reg [Y_W-1:0] before_last;
-  always @(posedge clk) before_last <= height - TWO;
-  wire wraps = wrap && last;
-  localparam integer START_I = START;
-  localparam [Y_W-1:0] FIRST = START_I[Y_W-1:0];
-  always @(posedge clk)
-    if (restart) begin
-      row <= FIRST;
-      last <= 1'b0;
-    end else if (next) begin
-      row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
-      last <= !wraps && row == before_last;
-    end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Line buffer and N x N window over a raster stream of WORD_W-bit words (pixels, or transform
-// codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
-// one slot ahead); the window is a register array that shifts in one column per slot.
-// window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
-module fps_census7_d128u32_865f3c_window #(
-  // window side
-  parameter N = 7,
-  // bits per word
-  parameter WORD_W = 8,
-  // columns per row-time (line buffer depth)
-  parameter ROW_SLOTS = 64,
-  // column address bits
-  parameter ADDR_W = 6
-) (
-  input  wire              clk,
-  // high in the step where this slot's word enters
-  input  wire              shift,
-  // column of the entering word, and the column of the next slot (below ROW_SLOTS)
-  /* verilator lint_off UNUSEDSIGNAL */  // wider than the line buffer address when ROW_SLOTS is a power of two
-  input  wire [ADDR_W-1:0] col,
-  input  wire [ADDR_W-1:0] next_col,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [WORD_W-1:0] word,
-  output wire [N*N*WORD_W-1:0] window
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 3) begin : invalid_N
-      fps_census7_d128u32_865f3c_invalid_parameters_window_N_below_3 failed ();
-    end
-    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
-      fps_census7_d128u32_865f3c_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
-    end
-  endgenerate
-  localparam STORED_W = (N - 1) * WORD_W;
-  localparam LB_AW = $clog2(ROW_SLOTS);
-
-  // stored[i*WORD_W +: WORD_W] is the word i + 1 rows above the entering one.
-  wire [STORED_W-1:0] stored;
-  // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
-  wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
-
-  fps_census7_d128u32_865f3c_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
-    .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
-    .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
-
-  reg [N*N*WORD_W-1:0] window_q;
-  assign window = window_q;
-
-  integer i, j;
-  always @(posedge clk)
-    if (shift)
-      for (i = 0; i < N; i = i + 1) begin
-        for (j = 0; j < N - 1; j = j + 1) window_q[(i*N + j)*WORD_W +: WORD_W] <= window_q[(i*N + j + 1)*WORD_W +: WORD_W];
-        window_q[(i*N + N - 1)*WORD_W +: WORD_W] <= (i == N - 1) ? word : stored[(N - 2 - i)*WORD_W +: WORD_W];
-      end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
-// image (docs/semantics.md, section 1: outside, a window reads zeros).
-module fps_census7_d128u32_865f3c_window_bounds #(
-  parameter SIDE = 5,
-  parameter X_W = 7,
-  // signed row width
-  parameter YS_W = 8
-) (
-  input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
-  input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
-  output wire [SIDE-1:0]        row_valid,
-  output wire [SIDE-1:0]        col_valid
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
-    end
-  endgenerate
-  localparam LAG = SIDE / 2;
-
-  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
-  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
-  genvar v;
-  generate
-    for (v = 0; v < SIDE; v = v + 1) begin : position
-      localparam signed [31:0] OFFSET = LAG - v;
-      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
-      wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
-      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
 // centres, registered once per slot (docs/semantics.md, section 2).
 module fps_census7_d128u32_865f3c_transform #(
@@ -1468,41 +1265,6 @@ module fps_census7_d128u32_865f3c_transform #(
       code_base  <= code_left;
       code_match <= code_right;
     end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Census code of an N x N window: one bit per neighbour in raster order (the centre skipped,
-// the first position in the most significant bit), 1 where the centre is brighter. Pixels
-// outside the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
-module fps_census7_d128u32_865f3c_census #(
-  // window side
-  parameter N = 7
-) (
-  input  wire [N*N*8-1:0] window,
-  input  wire [N-1:0]     row_valid,
-  input  wire [N-1:0]     col_valid,
-  output wire [N*N-2:0]   code
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 3 || N % 2 == 0) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
-    end
-  endgenerate
-  localparam CENTRE = (N / 2) * N + N / 2;
-  wire [7:0] centre = window[CENTRE*8 +: 8];
-
-  genvar p;
-  generate
-    for (p = 0; p < N * N; p = p + 1) begin : position
-      if (p != CENTRE) begin : neighbour
-        wire [7:0] q = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] : 8'd0;
-        assign code[N*N - 2 - (p < CENTRE ? p : p - 1)] = centre > q;
-      end
-    end
-  endgenerate
 endmodule
 `resetall
 
@@ -1579,259 +1341,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_census7_d128u32_865f3c_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
-) (
-  input  wire                            clk,
-  input  wire                            en,
-  input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
-    end
-  endgenerate
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
-
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
-
-  integer p;
-  always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
-// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
-// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
-// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
-// then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
-// 7x7) take a step more: sums of up to 8 counts, then their total.
-module fps_census7_d128u32_865f3c_cost_lanes #(
-  // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
-  parameter HAMMING = 1,
-  parameter CODE_W = 48,
-  parameter UF = 32,
-  parameter COST_W = 6,
-  parameter COST_MAX = 48,
-  // bits of the group index and of the x coordinate
-  parameter GROUP_W = 2,
-  parameter X_W = 11,
-  // the smallest disparity (docs/semantics.md, section 2)
-  parameter MIN_DISP = 0,
-  // the latency the instantiating stage plans with (checked: 2, 3 for census codes of more than
-  // 48 bits)
-  parameter LAT = 2
-) (
-  input  wire                 clk,
-  input  wire                 en,
-  input  wire [CODE_W-1:0]    base_code,
-  input  wire [UF*CODE_W-1:0] match_codes,
-  input  wire [GROUP_W-1:0]   group,
-  input  wire [X_W-1:0]       x,
-  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
-  input  wire [X_W-1:0]       width,
-  /* verilator lint_on UNUSEDSIGNAL */
-  output reg  [UF*COST_W-1:0] costs
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
-    end
-    if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
-      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
-    end
-    if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
-      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
-    end
-  endgenerate
-  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
-  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
-  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
-  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
-  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
-  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
-  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
-  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
-
-  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
-  localparam CHUNKS = (CODE_W + 5) / 6;
-  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
-  // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
-  localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
-  localparam SETS = (CHUNKS + 7) / 8;
-
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
-      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
-      // Step 1: the partial counts (or the difference) and whether the match pixel lies
-      // outside the row (right of it only when MIN_DISP < 0).
-      reg  [PART_W-1:0] part;
-      reg               beyond;
-      wire [COST_W-1:0] cost;
-      if (HAMMING) begin : hamming
-        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
-        reg  [PART_W-1:0]   counts;
-        reg  [SETS*COST_W-1:0] set_sums;
-        reg  [COST_W-1:0]   total;
-        integer k, b;
-        always @* begin
-          for (k = 0; k < CHUNKS; k = k + 1) begin
-            counts[k*3 +: 3] = 3'd0;
-            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
-          end
-          set_sums = {SETS*COST_W{1'b0}};
-          for (k = 0; k < CHUNKS; k = k + 1)
-            set_sums[(k/8)*COST_W +: COST_W] = set_sums[(k/8)*COST_W +: COST_W] + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
-        end
-        always @(posedge clk)
-          if (en) part <= counts;
-        if (SPLIT) begin : in_sets
-          // Step 2: the sets' sums; step 3 (below): their total.
-          reg [SETS*COST_W-1:0] set_sums_q;
-          always @(posedge clk)
-            if (en) set_sums_q <= set_sums;
-          integer j;
-          always @* begin
-            total = {COST_W{1'b0}};
-            for (j = 0; j < SETS; j = j + 1) total = total + set_sums_q[j*COST_W +: COST_W];
-          end
-        end else begin : at_once
-          always @* total = set_sums[COST_W-1:0];
-        end
-        assign cost = total;
-      end else begin : absolute_difference
-        // rank values and costs have the same width
-        always @(posedge clk)
-          if (en) part <= base_code > m ? base_code - m : m - base_code;
-        assign cost = part;
-      end
-      always @(posedge clk)
-        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
-      // The border flag waits for the sets' step; then (step 2, or 3) the cost.
-      wire beyond_d;
-      if (SPLIT) begin : beyond_wait
-        reg beyond_q;
-        always @(posedge clk)
-          if (en) beyond_q <= beyond;
-        assign beyond_d = beyond_q;
-      end else begin : beyond_now
-        assign beyond_d = beyond;
-      end
-      always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
-// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
-// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
-// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
-// that the ring already holds the match columns right of it. Shift registers, advanced once per
-// slot; pass-through at MIN_DISP = 0.
-module fps_census7_d128u32_865f3c_offset_delays #(
-  parameter BASE_W = 8,
-  parameter MATCH_W = 8,
-  parameter MIN_DISP = 0
-) (
-  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
-  input  wire               clk,
-  input  wire               shift,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [BASE_W-1:0]  base,
-  input  wire [MATCH_W-1:0] match,
-  output wire [BASE_W-1:0]  base_out,
-  output wire [MATCH_W-1:0] match_out
-);
-  generate
-    if (MIN_DISP > 0) begin : match_late
-      fps_census7_d128u32_865f3c_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
-    end else begin : match_now
-      assign match_out = match;
-    end
-    if (MIN_DISP < 0) begin : base_late
-      fps_census7_d128u32_865f3c_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
-    end else begin : base_now
-      assign base_out = base;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_census7_d128u32_865f3c_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
-) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
-    end
-  endgenerate
-  reg [WIDTH*DEPTH-1:0] line;
-  generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
-    end
-  endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Cost reorder RAM (docs/architecture.md): the cost words, written in raster order as the cost
 // lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
@@ -1893,41 +1402,6 @@ module fps_census7_d128u32_865f3c_cost_reorder #(
   fps_census7_d128u32_865f3c_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
-// register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_census7_d128u32_865f3c_ram_sdp #(
-  // word width in bits
-  parameter WIDTH = 8,
-  // number of words
-  parameter DEPTH = 16,
-  // address bits, at least clog2(DEPTH)
-  parameter ADDR_W = 4
-) (
-  input  wire              clk,
-  input  wire              we,
-  input  wire [ADDR_W-1:0] waddr,
-  input  wire [WIDTH-1:0]  wdata,
-  input  wire              re,
-  input  wire [ADDR_W-1:0] raddr,
-  output reg  [WIDTH-1:0]  rdata
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
-    end
-  endgenerate
-  reg [WIDTH-1:0] mem [0:DEPTH-1];
-
-  always @(posedge clk) begin
-    if (we) mem[waddr] <= wdata;
-    if (re) rdata <= mem[raddr];
-  end
 endmodule
 `resetall
 
@@ -2326,241 +1800,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// One aggregation path for UF lanes (docs/semantics.md, section 3):
-//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
-// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
-// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
-// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
-module fps_census7_d128u32_865f3c_path_lanes #(
-  parameter UF = 32,
-  parameter COST_W = 6,
-  parameter PATH_W = 8
-) (
-  input  wire                 clk,
-  input  wire                 en,
-  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
-  input  wire [PATH_W-1:0]    p1,
-  input  wire [PATH_W-1:0]    p2,
-  input  wire [UF*COST_W-1:0] cost,
-  input  wire                 has_pred,
-  input  wire [UF*PATH_W-1:0] prev,
-  input  wire [PATH_W-1:0]    prev_below,
-  input  wire [PATH_W-1:0]    prev_above,
-  input  wire [PATH_W-1:0]    prev_min,
-  output reg  [UF*PATH_W-1:0] path
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
-    end
-  endgenerate
-  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
-  localparam EXT_W = PATH_W + 1;
-  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
-  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
-
-  // Step 1 also keeps what step 2 needs besides the candidates.
-  reg [UF*COST_W-1:0] cost_q;
-  reg [PATH_W-1:0]    prev_min_q;
-  reg                 has_pred_q;
-  always @(posedge clk)
-    if (en) begin
-      cost_q <= cost;
-      prev_min_q <= prev_min;
-      has_pred_q <= has_pred;
-    end
-
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
-      reg  [EXT_W-1:0] neighbour, stay;
-      always @(posedge clk)
-        if (en) begin
-          neighbour <= (below < above ? below : above) + {1'b0, p1};
-          stay <= same < jump ? same : jump;
-        end
-      // Step 2: the best, and the path cost.
-      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
-      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
-      /* verilator lint_on UNUSEDSIGNAL */
-      always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
-// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
-// result in the step where the tree delivers its last group (group == G - 1).
-module fps_census7_d128u32_865f3c_path_minimum #(
-  parameter UF = 32,
-  parameter PATH_W = 8,
-  parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
-) (
-  input  wire               clk,
-  input  wire               en,
-  input  wire [UF*PATH_W-1:0] path,
-  // group of the values the tree delivers in this step
-  input  wire [G_W-1:0]     group,
-  output wire [PATH_W-1:0]  minimum
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
-  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
-  wire [PATH_W-1:0] group_min;
-  wire [LANE_W-1:0] unused_lane;
-  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
-
-  reg [PATH_W-1:0] running;
-  assign minimum = (group == 0 || group_min < running) ? group_min : running;
-  always @(posedge clk)
-    if (en) running <= minimum;
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
-// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
-// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_census7_d128u32_865f3c_min_tree #(
-  // number of values
-  parameter N = 8,
-  // value width
-  parameter W = 8,
-  // index width, at least clog2(N) (at least 1)
-  parameter IDX_W = 3,
-  // compare-select levels between registers
-  parameter LEVELS_PER_STAGE = 3
-) (
-  input  wire             clk,
-  input  wire             en,
-  input  wire [N*W-1:0]   values,
-  output wire [W-1:0]     min_value,
-  output wire [IDX_W-1:0] min_index
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_N_or_W_below_1 failed ();
-    end
-    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
-    end
-    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
-
-  genvar l, i;
-  generate
-    for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      // Level l holds ceil(N / 2^l) candidates.
-      localparam COUNT = (N + (1 << l) - 1) >> l;
-      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
-      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*W-1:0]     v_d;
-      wire [COUNT*IDX_W-1:0] x_d;
-      wire [COUNT*W-1:0]     v;
-      wire [COUNT*IDX_W-1:0] x;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (l == 0) begin : leaf
-          assign v_d[i*W +: W]         = values[i*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = i;
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
-          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
-          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
-          wire             take_b = b < a;
-          assign v_d[i*W +: W]         = take_b ? b : a;
-          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
-        end else begin : single
-          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-        end
-      end
-      if (REGISTERED) begin : stage
-        reg [COUNT*W-1:0]     v_q;
-        reg [COUNT*IDX_W-1:0] x_q;
-        always @(posedge clk)
-          if (en) begin
-            v_q <= v_d;
-            x_q <= x_d;
-          end
-        assign v = v_q;
-        assign x = x_q;
-      end else begin : wire_through
-        assign v = v_d;
-        assign x = x_d;
-      end
-    end
-  endgenerate
-
-  assign min_value = level[LEVELS].v[W-1:0];
-  assign min_index = level[LEVELS].x[IDX_W-1:0];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
-// read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
-// cycle see the old word.
-module fps_census7_d128u32_865f3c_ram_async #(
-  // word width in bits
-  parameter WIDTH = 8,
-  // number of words
-  parameter DEPTH = 4,
-  // address bits, at least clog2(DEPTH)
-  parameter ADDR_W = 2
-) (
-  input  wire              clk,
-  input  wire              we,
-  input  wire [ADDR_W-1:0] waddr,
-  input  wire [WIDTH-1:0]  wdata,
-  input  wire [ADDR_W-1:0] raddr_a,
-  output wire [WIDTH-1:0]  rdata_a,
-  input  wire [ADDR_W-1:0] raddr_b,
-  output wire [WIDTH-1:0]  rdata_b
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
-    end
-  endgenerate
-  reg [WIDTH-1:0] mem [0:DEPTH-1];
-
-  always @(posedge clk)
-    if (we) mem[waddr] <= wdata;
-
-  assign rdata_a = mem[raddr_a];
-  assign rdata_b = mem[raddr_b];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Winner-take-all (docs/semantics.md, section 4): per step the minimum over the UF lanes of one
 // group (fps_census7_d128u32_865f3c_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
@@ -2810,6 +2049,806 @@ module fps_census7_d128u32_865f3c_median #(
   // One more register holds the word of the pixel in out_x / out_y.
   always @(posedge clk)
     if (adv) out_word <= selected;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
+// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
+// row-time returns to 0 after the frame's last (fps_census7_d128u32_865f3c_frame_row); the RAM row counts on modulo
+// K regardless, so that the next frame's rows take the RAM rows that follow.
+module fps_census7_d128u32_865f3c_raster_counter #(
+  parameter G = 4,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter G_W = 2,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter K_W = 1
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           en,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
+  output reg  [G_W-1:0] group,
+  output reg  [X_W-1:0] slot,
+  output wire [Y_W-1:0] row,
+  output reg  [K_W-1:0] row_slot,
+  output wire           slot_end
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
+      fps_census7_d128u32_865f3c_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+    end
+    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
+      fps_census7_d128u32_865f3c_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+    end
+  endgenerate
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam integer LAST_CHAIN_I = K - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+
+  assign slot_end = group == LAST_GROUP;
+  always @(posedge clk)
+    if (restart) begin
+      group <= 0;
+      slot <= 0;
+      row_slot <= 0;
+    end else if (en) begin
+      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
+      if (slot_end) begin
+        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
+        if (slot == LAST_SLOT)
+          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
+      end
+    end
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_census7_d128u32_865f3c_frame_row #(.Y_W(Y_W)) frame_row (
+    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
+    .row(row), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Line buffer and N x N window over a raster stream of WORD_W-bit words (pixels, or transform
+// codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
+// one slot ahead); the window is a register array that shifts in one column per slot.
+// window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
+module fps_census7_d128u32_865f3c_window #(
+  // window side
+  parameter N = 7,
+  // bits per word
+  parameter WORD_W = 8,
+  // columns per row-time (line buffer depth)
+  parameter ROW_SLOTS = 64,
+  // column address bits
+  parameter ADDR_W = 6
+) (
+  input  wire              clk,
+  // high in the step where this slot's word enters
+  input  wire              shift,
+  // column of the entering word, and the column of the next slot (below ROW_SLOTS)
+  /* verilator lint_off UNUSEDSIGNAL */  // wider than the line buffer address when ROW_SLOTS is a power of two
+  input  wire [ADDR_W-1:0] col,
+  input  wire [ADDR_W-1:0] next_col,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [WORD_W-1:0] word,
+  output wire [N*N*WORD_W-1:0] window
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3) begin : invalid_N
+      fps_census7_d128u32_865f3c_invalid_parameters_window_N_below_3 failed ();
+    end
+    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
+      fps_census7_d128u32_865f3c_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+    end
+  endgenerate
+  localparam STORED_W = (N - 1) * WORD_W;
+  localparam LB_AW = $clog2(ROW_SLOTS);
+
+  // stored[i*WORD_W +: WORD_W] is the word i + 1 rows above the entering one.
+  wire [STORED_W-1:0] stored;
+  // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
+  wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
+
+  fps_census7_d128u32_865f3c_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+    .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
+    .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
+
+  reg [N*N*WORD_W-1:0] window_q;
+  assign window = window_q;
+
+  integer i, j;
+  always @(posedge clk)
+    if (shift)
+      for (i = 0; i < N; i = i + 1) begin
+        for (j = 0; j < N - 1; j = j + 1) window_q[(i*N + j)*WORD_W +: WORD_W] <= window_q[(i*N + j + 1)*WORD_W +: WORD_W];
+        window_q[(i*N + N - 1)*WORD_W +: WORD_W] <= (i == N - 1) ? word : stored[(N - 2 - i)*WORD_W +: WORD_W];
+      end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// A stage's row-time counter (docs/architecture.md, "Back-to-back frames"): it advances by one at
+// each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
+// so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
+// past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
+// as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
+// starts at START < 0 (two's complement: rows above the first frame).
+module fps_census7_d128u32_865f3c_frame_row #(
+  parameter Y_W = 6,
+  parameter START = 0
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           next,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
+  output reg  [Y_W-1:0] row,
+  output reg            last
+);
+  localparam [Y_W-1:0] TWO = 2;
+  reg [Y_W-1:0] before_last;
+  always @(posedge clk) before_last <= height - TWO;
+  wire wraps = wrap && last;
+  localparam integer START_I = START;
+  localparam [Y_W-1:0] FIRST = START_I[Y_W-1:0];
+  always @(posedge clk)
+    if (restart) begin
+      row <= FIRST;
+      last <= 1'b0;
+    end else if (next) begin
+      row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
+      last <= !wraps && row == before_last;
+    end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
+// image (docs/semantics.md, section 1: outside, a window reads zeros).
+module fps_census7_d128u32_865f3c_window_bounds #(
+  parameter SIDE = 5,
+  parameter X_W = 7,
+  // signed row width
+  parameter YS_W = 8
+) (
+  input  wire [X_W-1:0]         x,
+  input  wire signed [YS_W-1:0] y,
+  input  wire [X_W:0]           width,
+  input  wire signed [YS_W-1:0] height,
+  output wire [SIDE-1:0]        row_valid,
+  output wire [SIDE-1:0]        col_valid
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+    end
+  endgenerate
+  localparam LAG = SIDE / 2;
+
+  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
+  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
+  genvar v;
+  generate
+    for (v = 0; v < SIDE; v = v + 1) begin : position
+      localparam signed [31:0] OFFSET = LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      wire signed [X_W+2:0] column = $signed({3'b000, x});
+      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Rank of an N x N window's centre: the number of neighbours darker than it. Pixels outside
+// the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
+module fps_census7_d128u32_865f3c_rank #(
+  // window side
+  parameter N = 7,
+  // result width: clog2(N*N)
+  parameter RANK_W = 6
+) (
+  input  wire [N*N*8-1:0] window,
+  input  wire [N-1:0]     row_valid,
+  input  wire [N-1:0]     col_valid,
+  output reg  [RANK_W-1:0] rank
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid_N
+      fps_census7_d128u32_865f3c_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
+    end
+    if (N * N - 1 >= (1 << RANK_W)) begin : invalid_RANK_W
+      fps_census7_d128u32_865f3c_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
+    end
+  endgenerate
+  localparam CENTRE = (N / 2) * N + N / 2;
+  wire [7:0] centre = window[CENTRE*8 +: 8];
+
+  integer p;
+  reg [7:0] q;
+  always @* begin
+    rank = 0;
+    for (p = 0; p < N * N; p = p + 1) begin
+      q = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] : 8'd0;
+      if (p != CENTRE && q < centre) rank = rank + 1'b1;
+    end
+  end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Census code of an N x N window: one bit per neighbour in raster order (the centre skipped,
+// the first position in the most significant bit), 1 where the centre is brighter. Pixels
+// outside the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
+module fps_census7_d128u32_865f3c_census #(
+  // window side
+  parameter N = 7
+) (
+  input  wire [N*N*8-1:0] window,
+  input  wire [N-1:0]     row_valid,
+  input  wire [N-1:0]     col_valid,
+  output wire [N*N-2:0]   code
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3 || N % 2 == 0) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
+    end
+  endgenerate
+  localparam CENTRE = (N / 2) * N + N / 2;
+  wire [7:0] centre = window[CENTRE*8 +: 8];
+
+  genvar p;
+  generate
+    for (p = 0; p < N * N; p = p + 1) begin : position
+      if (p != CENTRE) begin : neighbour
+        wire [7:0] q = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] : 8'd0;
+        assign code[N*N - 2 - (p < CENTRE ? p : p - 1)] = centre > q;
+      end
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
+// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
+// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
+// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
+// that the ring already holds the match columns right of it. Shift registers, advanced once per
+// slot; pass-through at MIN_DISP = 0.
+module fps_census7_d128u32_865f3c_offset_delays #(
+  parameter BASE_W = 8,
+  parameter MATCH_W = 8,
+  parameter MIN_DISP = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
+  input  wire               clk,
+  input  wire               shift,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [BASE_W-1:0]  base,
+  input  wire [MATCH_W-1:0] match,
+  output wire [BASE_W-1:0]  base_out,
+  output wire [MATCH_W-1:0] match_out
+);
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_census7_d128u32_865f3c_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
+    end else begin : match_now
+      assign match_out = match;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_census7_d128u32_865f3c_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
+    end else begin : base_now
+      assign base_out = base;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
+module fps_census7_d128u32_865f3c_match_ring #(
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
+  // disparity range
+  parameter DMAX = 128,
+  // disparities per step
+  parameter UF = 32
+) (
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
+  always @(posedge clk)
+    if (en)
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
+// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
+// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
+// then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
+// 7x7) take a step more: sums of up to 8 counts, then their total.
+module fps_census7_d128u32_865f3c_cost_lanes #(
+  // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
+  parameter HAMMING = 1,
+  parameter CODE_W = 48,
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter COST_MAX = 48,
+  // bits of the group index and of the x coordinate
+  parameter GROUP_W = 2,
+  parameter X_W = 11,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
+  // the latency the instantiating stage plans with (checked: 2, 3 for census codes of more than
+  // 48 bits)
+  parameter LAT = 2
+) (
+  input  wire                 clk,
+  input  wire                 en,
+  input  wire [CODE_W-1:0]    base_code,
+  input  wire [UF*CODE_W-1:0] match_codes,
+  input  wire [GROUP_W-1:0]   group,
+  input  wire [X_W-1:0]       x,
+  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
+  input  wire [X_W-1:0]       width,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output reg  [UF*COST_W-1:0] costs
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
+      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+    end
+    if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
+      fps_census7_d128u32_865f3c_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
+    end
+  endgenerate
+  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
+  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
+  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
+
+  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
+  localparam CHUNKS = (CODE_W + 5) / 6;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+  // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
+  localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
+  localparam SETS = (CHUNKS + 7) / 8;
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies
+      // outside the row (right of it only when MIN_DISP < 0).
+      reg  [PART_W-1:0] part;
+      reg               beyond;
+      wire [COST_W-1:0] cost;
+      if (HAMMING) begin : hamming
+        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
+        reg  [PART_W-1:0]   counts;
+        reg  [SETS*COST_W-1:0] set_sums;
+        reg  [COST_W-1:0]   total;
+        integer k, b;
+        always @* begin
+          for (k = 0; k < CHUNKS; k = k + 1) begin
+            counts[k*3 +: 3] = 3'd0;
+            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
+          end
+          set_sums = {SETS*COST_W{1'b0}};
+          for (k = 0; k < CHUNKS; k = k + 1)
+            set_sums[(k/8)*COST_W +: COST_W] = set_sums[(k/8)*COST_W +: COST_W] + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
+        end
+        always @(posedge clk)
+          if (en) part <= counts;
+        if (SPLIT) begin : in_sets
+          // Step 2: the sets' sums; step 3 (below): their total.
+          reg [SETS*COST_W-1:0] set_sums_q;
+          always @(posedge clk)
+            if (en) set_sums_q <= set_sums;
+          integer j;
+          always @* begin
+            total = {COST_W{1'b0}};
+            for (j = 0; j < SETS; j = j + 1) total = total + set_sums_q[j*COST_W +: COST_W];
+          end
+        end else begin : at_once
+          always @* total = set_sums[COST_W-1:0];
+        end
+        assign cost = total;
+      end else begin : absolute_difference
+        // rank values and costs have the same width
+        always @(posedge clk)
+          if (en) part <= base_code > m ? base_code - m : m - base_code;
+        assign cost = part;
+      end
+      always @(posedge clk)
+        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
+      // The border flag waits for the sets' step; then (step 2, or 3) the cost.
+      wire beyond_d;
+      if (SPLIT) begin : beyond_wait
+        reg beyond_q;
+        always @(posedge clk)
+          if (en) beyond_q <= beyond;
+        assign beyond_d = beyond_q;
+      end else begin : beyond_now
+        assign beyond_d = beyond;
+      end
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_census7_d128u32_865f3c_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
+// register only loads when re is high, so a stalled pipeline keeps its read data.
+module fps_census7_d128u32_865f3c_ram_sdp #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 16,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 4
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire              re,
+  input  wire [ADDR_W-1:0] raddr,
+  output reg  [WIDTH-1:0]  rdata
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+
+  always @(posedge clk) begin
+    if (we) mem[waddr] <= wdata;
+    if (re) rdata <= mem[raddr];
+  end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
+// read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
+// cycle see the old word.
+module fps_census7_d128u32_865f3c_ram_async #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 4,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 2
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire [ADDR_W-1:0] raddr_a,
+  output wire [WIDTH-1:0]  rdata_a,
+  input  wire [ADDR_W-1:0] raddr_b,
+  output wire [WIDTH-1:0]  rdata_b
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+
+  always @(posedge clk)
+    if (we) mem[waddr] <= wdata;
+
+  assign rdata_a = mem[raddr_a];
+  assign rdata_b = mem[raddr_b];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// One aggregation path for UF lanes (docs/semantics.md, section 3):
+//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
+// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
+// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
+// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
+// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
+module fps_census7_d128u32_865f3c_path_lanes #(
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter PATH_W = 8
+) (
+  input  wire                 clk,
+  input  wire                 en,
+  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
+  input  wire [UF*COST_W-1:0] cost,
+  input  wire                 has_pred,
+  input  wire [UF*PATH_W-1:0] prev,
+  input  wire [PATH_W-1:0]    prev_below,
+  input  wire [PATH_W-1:0]    prev_above,
+  input  wire [PATH_W-1:0]    prev_min,
+  output reg  [UF*PATH_W-1:0] path
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+    end
+  endgenerate
+  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
+  localparam EXT_W = PATH_W + 1;
+  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
+  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
+
+  // Step 1 also keeps what step 2 needs besides the candidates.
+  reg [UF*COST_W-1:0] cost_q;
+  reg [PATH_W-1:0]    prev_min_q;
+  reg                 has_pred_q;
+  always @(posedge clk)
+    if (en) begin
+      cost_q <= cost;
+      prev_min_q <= prev_min;
+      has_pred_q <= has_pred;
+    end
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
+      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
+      reg  [EXT_W-1:0] neighbour, stay;
+      always @(posedge clk)
+        if (en) begin
+          neighbour <= (below < above ? below : above) + {1'b0, p1};
+          stay <= same < jump ? same : jump;
+        end
+      // Step 2: the best, and the path cost.
+      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
+      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      always @(posedge clk)
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
+// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
+// result in the step where the tree delivers its last group (group == G - 1).
+module fps_census7_d128u32_865f3c_path_minimum #(
+  parameter UF = 32,
+  parameter PATH_W = 8,
+  parameter G_W = 2,
+  parameter LEVELS_PER_STAGE = 3
+) (
+  input  wire               clk,
+  input  wire               en,
+  input  wire [UF*PATH_W-1:0] path,
+  // group of the values the tree delivers in this step
+  input  wire [G_W-1:0]     group,
+  output wire [PATH_W-1:0]  minimum
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
+  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
+  wire [PATH_W-1:0] group_min;
+  wire [LANE_W-1:0] unused_lane;
+  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
+
+  reg [PATH_W-1:0] running;
+  assign minimum = (group == 0 || group_min < running) ? group_min : running;
+  always @(posedge clk)
+    if (en) running <= minimum;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
+// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
+// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+module fps_census7_d128u32_865f3c_min_tree #(
+  // number of values
+  parameter N = 8,
+  // value width
+  parameter W = 8,
+  // index width, at least clog2(N) (at least 1)
+  parameter IDX_W = 3,
+  // compare-select levels between registers
+  parameter LEVELS_PER_STAGE = 3
+) (
+  input  wire             clk,
+  input  wire             en,
+  input  wire [N*W-1:0]   values,
+  output wire [W-1:0]     min_value,
+  output wire [IDX_W-1:0] min_index
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+
+  genvar l, i;
+  generate
+    for (l = 0; l <= LEVELS; l = l + 1) begin : level
+      // Level l holds ceil(N / 2^l) candidates.
+      localparam COUNT = (N + (1 << l) - 1) >> l;
+      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
+      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
+      wire [COUNT*W-1:0]     v_d;
+      wire [COUNT*IDX_W-1:0] x_d;
+      wire [COUNT*W-1:0]     v;
+      wire [COUNT*IDX_W-1:0] x;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (l == 0) begin : leaf
+          assign v_d[i*W +: W]         = values[i*W +: W];
+          assign x_d[i*IDX_W +: IDX_W] = i;
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
+          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
+          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
+          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
+          wire             take_b = b < a;
+          assign v_d[i*W +: W]         = take_b ? b : a;
+          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
+        end else begin : single
+          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
+          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
+        end
+      end
+      if (REGISTERED) begin : stage
+        reg [COUNT*W-1:0]     v_q;
+        reg [COUNT*IDX_W-1:0] x_q;
+        always @(posedge clk)
+          if (en) begin
+            v_q <= v_d;
+            x_q <= x_d;
+          end
+        assign v = v_q;
+        assign x = x_q;
+      end else begin : wire_through
+        assign v = v_d;
+        assign x = x_d;
+      end
+    end
+  endgenerate
+
+  assign min_value = level[LEVELS].v[W-1:0];
+  assign min_index = level[LEVELS].x[IDX_W-1:0];
 endmodule
 `resetall
 

@@ -46,7 +46,7 @@
 `default_nettype none
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
 // tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,
-// with the invalid flag in bit 7. Frames are at most 1242 x 375 pixels; fpstereo_video_in checks the input's
+// with the invalid flag in bit 7. Frames are at most 1242 x 375 pixels; fps_sad5_d128u32_251435_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
 // Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_sad5_d128u32_251435_regs.h).
 module fps_sad5_d128u32_251435_top (
@@ -212,10 +212,10 @@ module fps_sad5_d128u32_251435_sgm_core (
   input  wire [8:0] frame_height,
   input  wire [12:0] p1,
   input  wire [12:0] p2,
-  /* verilator lint_off UNUSEDSIGNAL */  // used where the design has the check
+  /* verilator lint_off UNUSEDSIGNAL */  // read where the configuration uses it
   input  wire [6:0] uniqueness,
-  input  wire [3:0] lr_threshold,
   /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [3:0] lr_threshold,
   // one pixel of each image, taken when in_take is high
   input  wire in_valid,
   input  wire [7:0] in_left,
@@ -324,8 +324,8 @@ module fps_sad5_d128u32_251435_sgm_core (
     .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .DMAX(128), .DISP_W(7),
     .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
   ) lr2_match (
-    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .match_on(match_on), .overlap(overlap), .wrapped(wrapped), .p1(p1), .p2(p2), .cost_valid(cost_valid),
+    .clk(clk), .restart(restart), .adv(adv), .match_on(match_on), .overlap(overlap), .wrapped(wrapped),
+    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid),
     .cost_x(cost_x), .cost_row_slot(cost_row_slot), .cost_group(cost_group), .costs(costs),
     .completed_we(completed_we), .completed_waddr(completed_waddr), .completed_wdata(completed_wdata));
 
@@ -340,7 +340,7 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [10:0] agg_x;
   wire [1:0] agg_group;
   wire [2:0] agg_slot;
-  /* verilator lint_off UNUSEDSIGNAL */  // only LR1 follows the chains
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_251435_aggregator #(
@@ -354,17 +354,17 @@ module fps_sad5_d128u32_251435_sgm_core (
     .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
-  wire [1:0] wta_group;
-  wire wta_active;
-  wire [10:0] wta_x;
-  wire [2:0] wta_slot;
-  wire [7:0] wta_word;
+  wire [1:0] winner_group;
+  wire winner_active;
+  wire [10:0] winner_x;
+  wire [2:0] winner_slot;
+  wire [7:0] winner_word;
   fps_sad5_d128u32_251435_wta #(
     .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
-    .tag({agg_active, agg_x, agg_slot}), .group_out(wta_group), .tag_out({wta_active, wta_x, wta_slot}),
-    .word(wta_word));
+    .tag({agg_active, agg_x, agg_slot}), .group_out(winner_group),
+    .tag_out({winner_active, winner_x, winner_slot}), .word(winner_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
   localparam OUT_START = 24873;
@@ -372,32 +372,30 @@ module fps_sad5_d128u32_251435_sgm_core (
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
     else if (adv && step == OUT_START - 1) out_on <= 1'b1;
-  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
   wire read_done;
   wire read_event;
   wire [10:0] read_x;
   wire [8:0] read_y;
   wire [7:0] read_word;
-  /* verilator lint_on UNUSEDSIGNAL */
   wire [2:0] read_slot_row;
   fps_sad5_d128u32_251435_disparity_reorder #(
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_K_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
-    .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .group(wta_group),
-    .word({wta_word}), .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y),
-    .read_slot_row(read_slot_row), .read_word(read_word));
+    .frame_height(frame_height), .active(winner_active), .x(winner_x), .slot(winner_slot),
+    .group(winner_group), .word({winner_word}), .read_done(read_done), .read_event(read_event),
+    .read_x(read_x), .read_y(read_y), .read_slot_row(read_slot_row), .read_word(read_word));
 
   // Left-right check.
-  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read what they need
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire checked_done;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire checked_event;
   wire [10:0] checked_x;
   wire [8:0] checked_y;
   wire [7:0] checked_word;
-  /* verilator lint_on UNUSEDSIGNAL */
-  /* verilator lint_off UNUSEDSIGNAL */  // only the right view reads it
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_251435_lr_check #(
@@ -434,89 +432,6 @@ module fps_sad5_d128u32_251435_sgm_core (
     else if (adv) frame_done_q <= checked_event && checked_x == frame_width - 1'b1 && checked_y == frame_height - 1'b1;
   assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
-// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has its
-// first pixel by then); from then on the step counter advances in every cycle where adv is high,
-// and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
-// while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
-// runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
-// a register, from the next cycle until the window stage takes it, which it can while
-// follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
-// the next frame follows on (continuing), restart clears the stages' valid flags then, as at
-// reset, and a next frame that was not taken starts as from idle.
-// accepting tells the framing stage that it may start a frame: while idle, or while the window
-// stage can take a following frame with the same settings (settings_held). It is a register, so
-// that no path runs from this block's state through the framing checks into the input slices:
-// exact for idle (made from the next state) and after a start or an end, one cycle late for
-// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
-// any other and begins when the frame ends; the settings cannot have changed (settings_held
-// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
-// start taken while accepting is lost (tests/formal/sequencer_props.v).
-module fps_sad5_d128u32_251435_sequencer #(
-  parameter STEP_W = 20
-) (
-  input  wire              clk,
-  input  wire              rst,
-  input  wire              start,
-  output wire              idle,
-  // the written settings equal the running frame's (a register, fps_sad5_d128u32_251435_control)
-  input  wire              settings_held,
-  output reg               accepting,
-  input  wire              follow_open,
-  output wire              next_frame,
-  input  wire              next_taken,
-  input  wire              continuing,
-  input  wire              in_due,
-  input  wire              in_valid,
-  input  wire              out_due,
-  input  wire              out_ready,
-  input  wire              view_due,
-  input  wire              view_ready,
-  input  wire              frame_done,
-  output wire              adv,
-  output reg  [STEP_W-1:0] step,
-  output wire              restart
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (STEP_W < 1) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_sequencer_STEP_W_below_1 failed ();
-    end
-  endgenerate
-  reg starting, in_frame, pending;
-  wire follow = in_frame && follow_open && !pending;
-  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
-  wire ends = adv && frame_done && !continuing;
-  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
-  // as from idle: the framing stage is already passing its pixels.
-  wire starting_next = (start && idle) || (ends && (pending || start));
-  wire in_frame_next = in_frame ? !ends : starting;
-  always @(posedge clk)
-    if (rst) begin
-      starting <= 1'b0;
-      in_frame <= 1'b0;
-      accepting <= 1'b1;
-    end else begin
-      starting <= starting_next;
-      in_frame <= in_frame_next;
-      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
-    end
-  assign idle = !in_frame && !starting;
-  assign next_frame = pending;
-  always @(posedge clk)
-    if (restart || next_taken) pending <= 1'b0;
-    else if (start && in_frame) pending <= 1'b1;
-  // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
-  always @(posedge clk)
-    if (rst) step <= 0;
-    else if (adv) step <= ends ? {STEP_W{1'b0}} : step + 1'b1;
-  assign restart = rst || ends;
 endmodule
 `resetall
 
@@ -569,178 +484,6 @@ module fps_sad5_d128u32_251435_axis_skid #(
       skid_valid_q <= 1'b1;
     end
   end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
-// the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
-// tlast on each row's last.
-// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
-// larger): the position flags are registers, set for the next pixel as one is taken.
-//   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
-//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
-//         If one stream skipped at least half a frame's rows more than the other, the other's
-//         frame is the counterpart of what was skipped (a start of frame missing or repeated on
-//         one stream only) and is skipped as well, so that the streams pair up again.
-//   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
-//         not ends the frame early: it is left for SEEK (it may start the next frame).
-//   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
-//         frame is complete and well-formed and nothing waits for input that will not come.
-//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
-// Every event is a one-cycle pulse for the status counters. Skipped data counts as one
-// protocol error per stretch, unless it follows an error already counted or a dropped frame.
-module fps_sad5_d128u32_251435_video_in #(
-  parameter X_W = 7,
-  parameter Y_W = 6
-) (
-  input  wire           clk,
-  input  wire           rst,
-  // new frames are taken while high, skipped (and counted as dropped) while low
-  input  wire           enable,
-  // the streams after their register slices: {tuser, tlast, tdata}
-  input  wire [9:0]     left,
-  input  wire           left_valid,
-  output wire           left_ready,
-  input  wire [9:0]     right,
-  input  wire           right_valid,
-  output wire           right_ready,
-  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
-  // a following frame); its size holds from the next cycle until the frame is done
-  input  wire           core_accepting,
-  output wire           core_start,
-  input  wire [X_W-1:0] frame_width,
-  input  wire [Y_W-1:0] frame_height,
-  output wire           in_valid,
-  output wire [7:0]     in_left,
-  output wire [7:0]     in_right,
-  input  wire           in_take,
-  // events
-  output wire           frame_dropped,
-  output wire           frame_truncated,
-  output wire           protocol_error
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (X_W < 2 || Y_W < 2) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
-    end
-  endgenerate
-  localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
-  reg [1:0]     state;
-  reg           quiet;  // skipped data is already accounted for
-  reg [X_W-1:0] x;
-  reg [Y_W-1:0] y;
-
-  wire left_user = left[9], left_last = left[8];
-  wire right_user = right[9], right_last = right[8];
-  wire both = left_valid && right_valid;
-  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
-  // on the path from the streams to the core.
-  reg  first, row_end, last_row;
-  localparam [X_W-1:0] TWO_X = 2;
-  localparam [Y_W-1:0] TWO_Y = 2;
-  wire frame_end = row_end && last_row;
-  wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
-
-  // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
-  wire starts = state == SEEK && both && left_user && right_user;
-  wire skip_left = state == SEEK && left_valid && !left_user;
-  wire skip_right = state == SEEK && right_valid && !right_user;
-  // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
-  // The comparison is a register, made with the counts it will see (the frame height changes
-  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
-  reg  [Y_W:0] left_rows, right_rows;
-  wire [Y_W:0] left_rows_next, right_rows_next;
-  wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
-  reg  left_stale, right_stale;
-  wire aligned = !left_stale && !right_stale;
-  assign core_start = starts && aligned && core_accepting && enable;
-  wire drop = starts && aligned && core_accepting && !enable;
-
-  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
-  // returns to SEEK in the next cycle, so that the state does not wait for the take).
-  reg  done;
-  wire fault = state == RUN && !done && both && !flags_match;
-  wire passing = state == RUN && !done && both && flags_match;
-  assign in_valid = passing || (state == PAD && !done);
-  assign in_left = passing ? left[7:0] : 8'd0;
-  assign in_right = passing ? right[7:0] : 8'd0;
-  wire pass_take = passing && in_take;
-  assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
-  assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
-
-  assign frame_dropped = drop;
-  assign frame_truncated = fault;
-  assign protocol_error = ((skip_left || skip_right) && !quiet) || fault;
-
-  always @(posedge clk)
-    if (rst) begin
-      state <= SEEK;
-      quiet <= 1'b0;
-    end else begin
-      case (state)
-        SEEK:
-          if (core_start) begin
-            state <= RUN;
-            quiet <= 1'b0;
-          end else if (drop || skip_left || skip_right) quiet <= 1'b1;
-        RUN:
-          if (done) state <= SEEK;
-          else if (fault) begin
-            state <= PAD;
-            quiet <= 1'b1;
-          end
-        default:  // PAD
-          if (done) state <= SEEK;
-      endcase
-    end
-  always @(posedge clk)
-    if (rst || done) done <= 1'b0;
-    else done <= in_take && frame_end;
-
-  localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
-  wire restart_rows = rst || core_start || drop;
-  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
-  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
-  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
-  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
-  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
-  // the three cases compared in parallel from the registers and then chosen.
-  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
-  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
-  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
-  always @(posedge clk) begin
-    left_rows <= left_rows_next;
-    right_rows <= right_rows_next;
-    if (restart_rows) begin
-      left_stale <= !rst && half == 0;
-      right_stale <= !rst && half == 0;
-    end else begin
-      left_stale <= left_inc == right_inc ? left_reach <= right_wide
-                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
-      right_stale <= left_inc == right_inc ? right_reach <= left_wide
-                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
-    end
-  end
-
-  always @(posedge clk)
-    if (rst || core_start) begin
-      x <= 0;
-      y <= 0;
-      first <= 1'b1;
-      row_end <= 1'b0;
-      last_row <= 1'b0;
-    end else if (in_take) begin
-      x <= row_end ? {X_W{1'b0}} : x + 1'b1;
-      first <= 1'b0;
-      row_end <= !row_end && x == frame_width - TWO_X;
-      if (row_end) begin
-        y <= y + 1'b1;
-        last_row <= y == frame_height - TWO_Y;
-      end
-    end
 endmodule
 `resetall
 
@@ -1001,6 +744,261 @@ endmodule
 
 `resetall
 `default_nettype none
+// Input framing (docs/architecture.md, "Robust video input"): pairs the left and right pixels for
+// the core and holds them to the Xilinx video convention, tuser on a frame's first pixel and
+// tlast on each row's last.
+// The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
+// larger): the position flags are registers, set for the next pixel as one is taken.
+//   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
+//         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
+//         If one stream skipped at least half a frame's rows more than the other, the other's
+//         frame is the counterpart of what was skipped (a start of frame missing or repeated on
+//         one stream only) and is skipped as well, so that the streams pair up again.
+//   RUN:  each pair goes to the core while its flags match its position. A pair whose flags do
+//         not ends the frame early: it is left for SEEK (it may start the next frame).
+//   PAD:  the core gets zero pixels for the rest of the truncated frame, so that its output
+//         frame is complete and well-formed and nothing waits for input that will not come.
+//   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
+// Every event is a one-cycle pulse for the status counters. Skipped data counts as one
+// protocol error per stretch, unless it follows an error already counted or a dropped frame.
+module fps_sad5_d128u32_251435_video_in #(
+  parameter X_W = 7,
+  parameter Y_W = 6
+) (
+  input  wire           clk,
+  input  wire           rst,
+  // new frames are taken while high, skipped (and counted as dropped) while low
+  input  wire           enable,
+  // the streams after their register slices: {tuser, tlast, tdata}
+  input  wire [9:0]     left,
+  input  wire           left_valid,
+  output wire           left_ready,
+  input  wire [9:0]     right,
+  input  wire           right_valid,
+  output wire           right_ready,
+  // the core: a frame begins with core_start while the core accepts one (idle, or able to take
+  // a following frame); its size holds from the next cycle until the frame is done
+  input  wire           core_accepting,
+  output wire           core_start,
+  input  wire [X_W-1:0] frame_width,
+  input  wire [Y_W-1:0] frame_height,
+  output wire           in_valid,
+  output wire [7:0]     in_left,
+  output wire [7:0]     in_right,
+  input  wire           in_take,
+  // events
+  output wire           frame_dropped,
+  output wire           frame_truncated,
+  output wire           protocol_error
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (X_W < 2 || Y_W < 2) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+    end
+  endgenerate
+  localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
+  reg [1:0]     state;
+  reg           quiet;  // skipped data is already accounted for
+  reg [X_W-1:0] x;
+  reg [Y_W-1:0] y;
+
+  wire left_user = left[9], left_last = left[8];
+  wire right_user = right[9], right_last = right[8];
+  wire both = left_valid && right_valid;
+  // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
+  // on the path from the streams to the core.
+  reg  first, row_end, last_row;
+  localparam [X_W-1:0] TWO_X = 2;
+  localparam [Y_W-1:0] TWO_Y = 2;
+  wire frame_end = row_end && last_row;
+  wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
+
+  // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
+  wire starts = state == SEEK && both && left_user && right_user;
+  wire skip_left = state == SEEK && left_valid && !left_user;
+  wire skip_right = state == SEEK && right_valid && !right_user;
+  // Rows skipped on each stream since the last frame began (saturating below 2^Y_W).
+  // The comparison is a register, made with the counts it will see (the frame height changes
+  // only in the cycle after a start, when both counts are 0 and neither stream is stale).
+  reg  [Y_W:0] left_rows, right_rows;
+  wire [Y_W:0] left_rows_next, right_rows_next;
+  wire [Y_W:0] half = {2'b00, frame_height[Y_W-1:1]};
+  reg  left_stale, right_stale;
+  wire aligned = !left_stale && !right_stale;
+  assign core_start = starts && aligned && core_accepting && enable;
+  wire drop = starts && aligned && core_accepting && !enable;
+
+  // RUN and PAD: the core's pixel stream, until the frame's last pixel is taken (done: the state
+  // returns to SEEK in the next cycle, so that the state does not wait for the take).
+  reg  done;
+  wire fault = state == RUN && !done && both && !flags_match;
+  wire passing = state == RUN && !done && both && flags_match;
+  assign in_valid = passing || (state == PAD && !done);
+  assign in_left = passing ? left[7:0] : 8'd0;
+  assign in_right = passing ? right[7:0] : 8'd0;
+  wire pass_take = passing && in_take;
+  assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
+  assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
+
+  assign frame_dropped = drop;
+  assign frame_truncated = fault;
+  assign protocol_error = ((skip_left || skip_right) && !quiet) || fault;
+
+  always @(posedge clk)
+    if (rst) begin
+      state <= SEEK;
+      quiet <= 1'b0;
+    end else begin
+      case (state)
+        SEEK:
+          if (core_start) begin
+            state <= RUN;
+            quiet <= 1'b0;
+          end else if (drop || skip_left || skip_right) quiet <= 1'b1;
+        RUN:
+          if (done) state <= SEEK;
+          else if (fault) begin
+            state <= PAD;
+            quiet <= 1'b1;
+          end
+        default:  // PAD
+          if (done) state <= SEEK;
+      endcase
+    end
+  always @(posedge clk)
+    if (rst || done) done <= 1'b0;
+    else done <= in_take && frame_end;
+
+  localparam [Y_W:0] ROWS_MAX = {1'b0, {Y_W{1'b1}}};
+  wire restart_rows = rst || core_start || drop;
+  wire left_inc = skip_left && left_last && left_rows != ROWS_MAX;
+  wire right_inc = skip_right && right_last && right_rows != ROWS_MAX;
+  assign left_rows_next = restart_rows ? {(Y_W+1){1'b0}} : left_rows + {{Y_W{1'b0}}, left_inc};
+  assign right_rows_next = restart_rows ? {(Y_W+1){1'b0}} : right_rows + {{Y_W{1'b0}}, right_inc};
+  // Stale after this cycle's skips: rows + half + (own skip) - (other's skip) <= other's rows,
+  // the three cases compared in parallel from the registers and then chosen.
+  wire [Y_W+1:0] left_reach = {1'b0, left_rows} + {1'b0, half};
+  wire [Y_W+1:0] right_reach = {1'b0, right_rows} + {1'b0, half};
+  wire [Y_W+1:0] left_wide = {1'b0, left_rows}, right_wide = {1'b0, right_rows};
+  always @(posedge clk) begin
+    left_rows <= left_rows_next;
+    right_rows <= right_rows_next;
+    if (restart_rows) begin
+      left_stale <= !rst && half == 0;
+      right_stale <= !rst && half == 0;
+    end else begin
+      left_stale <= left_inc == right_inc ? left_reach <= right_wide
+                  : left_inc ? left_reach < right_wide : left_reach <= right_wide + 1'b1;
+      right_stale <= left_inc == right_inc ? right_reach <= left_wide
+                   : right_inc ? right_reach < left_wide : right_reach <= left_wide + 1'b1;
+    end
+  end
+
+  always @(posedge clk)
+    if (rst || core_start) begin
+      x <= 0;
+      y <= 0;
+      first <= 1'b1;
+      row_end <= 1'b0;
+      last_row <= 1'b0;
+    end else if (in_take) begin
+      x <= row_end ? {X_W{1'b0}} : x + 1'b1;
+      first <= 1'b0;
+      row_end <= !row_end && x == frame_width - TWO_X;
+      if (row_end) begin
+        y <= y + 1'b1;
+        last_row <= y == frame_height - TWO_Y;
+      end
+    end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Frame sequencing of the SGM core (docs/architecture.md, "Time base"): while idle, start begins
+// a frame, whose step 0 is two cycles later (the pixel register slice in front of the core has its
+// first pixel by then); from then on the step counter advances in every cycle where adv is high,
+// and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
+// while a stage is due to take an input pixel that is not there (in_due) or to push an output word
+// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
+// runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
+// a register, from the next cycle until the window stage takes it, which it can while
+// follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
+// the next frame follows on (continuing), restart clears the stages' valid flags then, as at
+// reset, and a next frame that was not taken starts as from idle.
+// accepting tells the framing stage that it may start a frame: while idle, or while the window
+// stage can take a following frame with the same settings (settings_held). It is a register, so
+// that no path runs from this block's state through the framing checks into the input slices:
+// exact for idle (made from the next state) and after a start or an end, one cycle late for
+// following on otherwise. A start in that late cycle, after follow_open fell, is pending like
+// any other and begins when the frame ends; the settings cannot have changed (settings_held
+// falls in the cycle after a write is taken, and the write is applied a cycle later). So no
+// start taken while accepting is lost (tests/formal/sequencer_props.v).
+module fps_sad5_d128u32_251435_sequencer #(
+  parameter STEP_W = 20
+) (
+  input  wire              clk,
+  input  wire              rst,
+  input  wire              start,
+  output wire              idle,
+  // the written settings equal the running frame's (a register, fps_sad5_d128u32_251435_control)
+  input  wire              settings_held,
+  output reg               accepting,
+  input  wire              follow_open,
+  output wire              next_frame,
+  input  wire              next_taken,
+  input  wire              continuing,
+  input  wire              in_due,
+  input  wire              in_valid,
+  input  wire              out_due,
+  input  wire              out_ready,
+  input  wire              view_due,
+  input  wire              view_ready,
+  input  wire              frame_done,
+  output wire              adv,
+  output reg  [STEP_W-1:0] step,
+  output wire              restart
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (STEP_W < 1) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+    end
+  endgenerate
+  reg starting, in_frame, pending;
+  wire follow = in_frame && follow_open && !pending;
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
+  wire ends = adv && frame_done && !continuing;
+  // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
+  // as from idle: the framing stage is already passing its pixels.
+  wire starting_next = (start && idle) || (ends && (pending || start));
+  wire in_frame_next = in_frame ? !ends : starting;
+  always @(posedge clk)
+    if (rst) begin
+      starting <= 1'b0;
+      in_frame <= 1'b0;
+      accepting <= 1'b1;
+    end else begin
+      starting <= starting_next;
+      in_frame <= in_frame_next;
+      accepting <= (!in_frame_next && !starting_next) || (follow && settings_held && !start && !ends);
+    end
+  assign idle = !in_frame && !starting;
+  assign next_frame = pending;
+  always @(posedge clk)
+    if (restart || next_taken) pending <= 1'b0;
+    else if (start && in_frame) pending <= 1'b1;
+  // With frames following on, the step counter wraps unnoticed: the start flags it sets stay set.
+  always @(posedge clk)
+    if (rst) step <= 0;
+    else if (adv) step <= ends ? {STEP_W{1'b0}} : step + 1'b1;
+  assign restart = rst || ends;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // Window stage (docs/architecture.md, "Front end"): takes one left and one right pixel per slot
 // in raster order, keeps N - 1 rows of each image in line buffers and forms the N x N windows,
 // with the positions of their centres and which window rows and columns lie inside the image
@@ -1237,209 +1235,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
-// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
-// row-time returns to 0 after the frame's last (fps_sad5_d128u32_251435_frame_row); the RAM row counts on modulo
-// K regardless, so that the next frame's rows take the RAM rows that follow.
-module fps_sad5_d128u32_251435_raster_counter #(
-  parameter G = 4,
-  parameter ROW_SLOTS = 64,
-  parameter K = 2,
-  parameter G_W = 2,
-  parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter K_W = 1
-) (
-  input  wire           clk,
-  input  wire           restart,
-  input  wire           en,
-  input  wire           wrap,
-  input  wire [Y_W-1:0] height,
-  output reg  [G_W-1:0] group,
-  output reg  [X_W-1:0] slot,
-  output wire [Y_W-1:0] row,
-  output reg  [K_W-1:0] row_slot,
-  output wire           slot_end
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
-      fps_sad5_d128u32_251435_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
-    end
-    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
-      fps_sad5_d128u32_251435_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
-    end
-  endgenerate
-  localparam integer LAST_GROUP_I = G - 1;
-  localparam integer LAST_CHAIN_I = K - 1;
-  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
-  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
-
-  assign slot_end = group == LAST_GROUP;
-  always @(posedge clk)
-    if (restart) begin
-      group <= 0;
-      slot <= 0;
-      row_slot <= 0;
-    end else if (en) begin
-      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
-      if (slot_end) begin
-        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
-        if (slot == LAST_SLOT)
-          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
-      end
-    end
-  /* verilator lint_off PINCONNECTEMPTY */
-  fps_sad5_d128u32_251435_frame_row #(.Y_W(Y_W)) frame_row (
-    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
-    .row(row), .last());
-  /* verilator lint_on PINCONNECTEMPTY */
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// A stage's row-time counter (docs/architecture.md, "Back-to-back frames"): it advances by one at
-// each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
-// so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
-// past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
-// as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
-// starts at START < 0 (two's complement: rows above the first frame).
-module fps_sad5_d128u32_251435_frame_row #(
-  parameter Y_W = 6,
-  parameter START = 0
-) (
-  input  wire           clk,
-  input  wire           restart,
-  input  wire           next,
-  input  wire           wrap,
-  input  wire [Y_W-1:0] height,
-  output reg  [Y_W-1:0] row,
-  output reg            last
-);
-  localparam [Y_W-1:0] TWO = 2;
-  reg [Y_W-1:0] before_last;
-  always @(posedge clk) before_last <= height - TWO;
-  wire wraps = wrap && last;
-  localparam integer START_I = START;
-  localparam [Y_W-1:0] FIRST = START_I[Y_W-1:0];
-  always @(posedge clk)
-    if (restart) begin
-      row <= FIRST;
-      last <= 1'b0;
-    end else if (next) begin
-      row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
-      last <= !wraps && row == before_last;
-    end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Line buffer and N x N window over a raster stream of WORD_W-bit words (pixels, or transform
-// codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
-// one slot ahead); the window is a register array that shifts in one column per slot.
-// window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
-module fps_sad5_d128u32_251435_window #(
-  // window side
-  parameter N = 7,
-  // bits per word
-  parameter WORD_W = 8,
-  // columns per row-time (line buffer depth)
-  parameter ROW_SLOTS = 64,
-  // column address bits
-  parameter ADDR_W = 6
-) (
-  input  wire              clk,
-  // high in the step where this slot's word enters
-  input  wire              shift,
-  // column of the entering word, and the column of the next slot (below ROW_SLOTS)
-  /* verilator lint_off UNUSEDSIGNAL */  // wider than the line buffer address when ROW_SLOTS is a power of two
-  input  wire [ADDR_W-1:0] col,
-  input  wire [ADDR_W-1:0] next_col,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [WORD_W-1:0] word,
-  output wire [N*N*WORD_W-1:0] window
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 3) begin : invalid_N
-      fps_sad5_d128u32_251435_invalid_parameters_window_N_below_3 failed ();
-    end
-    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
-      fps_sad5_d128u32_251435_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
-    end
-  endgenerate
-  localparam STORED_W = (N - 1) * WORD_W;
-  localparam LB_AW = $clog2(ROW_SLOTS);
-
-  // stored[i*WORD_W +: WORD_W] is the word i + 1 rows above the entering one.
-  wire [STORED_W-1:0] stored;
-  // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
-  wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
-
-  fps_sad5_d128u32_251435_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
-    .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
-    .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
-
-  reg [N*N*WORD_W-1:0] window_q;
-  assign window = window_q;
-
-  integer i, j;
-  always @(posedge clk)
-    if (shift)
-      for (i = 0; i < N; i = i + 1) begin
-        for (j = 0; j < N - 1; j = j + 1) window_q[(i*N + j)*WORD_W +: WORD_W] <= window_q[(i*N + j + 1)*WORD_W +: WORD_W];
-        window_q[(i*N + N - 1)*WORD_W +: WORD_W] <= (i == N - 1) ? word : stored[(N - 2 - i)*WORD_W +: WORD_W];
-      end
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
-// image (docs/semantics.md, section 1: outside, a window reads zeros).
-module fps_sad5_d128u32_251435_window_bounds #(
-  parameter SIDE = 5,
-  parameter X_W = 7,
-  // signed row width
-  parameter YS_W = 8
-) (
-  input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
-  input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
-  output wire [SIDE-1:0]        row_valid,
-  output wire [SIDE-1:0]        col_valid
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
-    end
-  endgenerate
-  localparam LAG = SIDE / 2;
-
-  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
-  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
-  genvar v;
-  generate
-    for (v = 0; v < SIDE; v = v + 1) begin : position
-      localparam signed [31:0] OFFSET = LAG - v;
-      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
-      wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
-      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Cost stage for SAD and ZSAD: the zero-extended base window, and the match window's newest
 // column, which enters the match ring (plus, for ZSAD, the base window's mean and the column's
 // sum). The ring serves later centres too, so the column is zero-extended by its own position.
@@ -1593,502 +1388,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// Zero extension (docs/semantics.md, section 1): words of an N x N window whose row or column
-// lies outside the image read as 0.
-module fps_sad5_d128u32_251435_window_mask #(
-  // window side
-  parameter N = 5,
-  // bits per word
-  parameter WORD_W = 8
-) (
-  input  wire [N*N*WORD_W-1:0] window,
-  input  wire [N-1:0]          row_valid,
-  input  wire [N-1:0]          col_valid,
-  output wire [N*N*WORD_W-1:0] masked
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 1 || WORD_W < 1) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
-    end
-  endgenerate
-  genvar p;
-  generate
-    for (p = 0; p < N * N; p = p + 1) begin : position
-      assign masked[p*WORD_W +: WORD_W] = (row_valid[p / N] && col_valid[p % N]) ? window[p*WORD_W +: WORD_W]
-                                                                                 : {WORD_W{1'b0}};
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_sad5_d128u32_251435_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
-) (
-  input  wire                            clk,
-  input  wire                            en,
-  input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
-    end
-  endgenerate
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
-
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
-
-  integer p;
-  always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// UF window-based matching costs per step (docs/semantics.md, section 2), lane l = disparity
-// d = group*UF + l: the sum over a SPAN x SPAN window of
-//   SAD:  |b - m|                      over pixels
-//   ZSAD: |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2) (ZERO_MEAN)
-//   SHD:  popcount(b xor m)            over census codes (HAMMING)
-// b is the (already zero-extended) base window; the match window of lane l is view columns
-// l .. l + SPAN - 1 (fps_sad5_d128u32_251435_match_ring), newest first; its columns outside the image read as 0
-// (at the right border the ring already holds the next row's first columns).
-// Lane l's disparity is MIN_DISP + d; where its match centre x - MIN_DISP - d lies outside the
-// row the cost is COST_MAX. Register steps
-// (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
-// the match window's sum, its mean, the difference of the means (with the masked view); the
-// magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
-// (fps_sad5_d128u32_251435_sum_tree).
-module fps_sad5_d128u32_251435_window_cost_lanes #(
-  // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
-  parameter ZERO_MEAN = 0,
-  parameter HAMMING = 0,
-  // bits per window element (8 for pixels, the code width for SHD)
-  parameter ELEM_W = 8,
-  parameter SPAN = 5,
-  parameter UF = 32,
-  parameter COST_W = 13,
-  parameter COST_MAX = 6375,
-  parameter GROUP_W = 2,
-  parameter X_W = 11,
-  // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
-  parameter COLSUM_W = 11,
-  parameter MEAN_MUL = 1,
-  parameter MEAN_SHIFT = 0,
-  // the smallest disparity (docs/semantics.md, section 2)
-  parameter MIN_DISP = 0,
-  // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
-  parameter LAT = 4
-) (
-  input  wire                                clk,
-  input  wire                                en,
-  input  wire [SPAN*SPAN*ELEM_W-1:0]         base,
-  /* verilator lint_off UNUSEDSIGNAL */  // the means serve ZSAD only
-  input  wire [7:0]                          base_mean,
-  input  wire [(UF+SPAN-1)*COLSUM_W-1:0]     view_sums,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
-  input  wire [GROUP_W-1:0]                  group,
-  input  wire [X_W-1:0]                      x,
-  input  wire [X_W-1:0]                      width,
-  output reg  [UF*COST_W-1:0]                costs
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (SPAN < 1 || SPAN % 2 == 0 || (ZERO_MEAN != 0 && SPAN > 16)) begin : invalid_SPAN
-      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
-    end
-    if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
-    end
-    if ((HAMMING == 0 && ELEM_W != 8) || ELEM_W < 1) begin : invalid_ELEM_W
-      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
-    end
-    if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
-      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
-    end
-    if (LAT != (ZERO_MEAN != 0 ? 4 : 0) + (SPAN > 1 ? 1 : 0) + 3) begin : invalid_LAT
-      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
-    end
-  endgenerate
-  localparam R = SPAN / 2;
-  localparam COLUMN_W = SPAN * ELEM_W;
-  localparam VIEW_COLS = UF + SPAN - 1;
-  // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
-  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
-  // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
-  localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
-  // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
-  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
-  localparam SIGNS_W = $clog2(SPAN + 1);
-  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
-  localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
-  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
-  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
-  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
-  // Match positions x - MIN_DISP - ..., compared as x + AHEAD against ... + BEHIND.
-  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
-  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
-  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
-
-  // View column c lies at x - MIN_DISP - group*UF + (SPAN - 1 - R - c) in the image for every
-  // lane that reads it (lane l: window column j = l + SPAN - 1 - c, at x - MIN_DISP - d + j - R),
-  // so one mask per view column serves all lanes. Inside: 0 <= that < width, here with
-  // group*UF + UF + R + BEHIND added.
-  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0] + BEHIND[D_W-1:0];
-  wire [D_W-1:0] inside_high = inside_low + width_wide;
-  wire [VIEW_COLS-1:0] view_valid;
-  genvar c;
-  generate
-    for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
-      localparam OFFSET = VIEW_COLS - c;
-      wire [D_W-1:0] position = x_ahead + OFFSET[D_W-1:0];
-      assign view_valid[c] = position >= inside_low && position < inside_high;
-    end
-  endgenerate
-
-  // Step 1: the masks and the windows.
-  reg  [VIEW_COLS-1:0]          view_valid_q;
-  reg  [VIEW_COLS*COLUMN_W-1:0] view_q;
-  always @(posedge clk)
-    if (en) begin
-      view_valid_q <= view_valid;
-      view_q <= view;
-    end
-  // The view as the terms read it, its columns outside the image zeroed; ZSAD: the match
-  // windows' column sums, masked the same way.
-  wire [VIEW_COLS*COLUMN_W-1:0] view_d;
-  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
-  wire [7:0]                    base_mean_d;
-  /* verilator lint_on UNUSEDSIGNAL */
-  generate
-    if (ZERO_MEAN != 0) begin : late_mask
-      // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
-      // view waits three steps more for the means, and is masked into the register of step 5
-      // (the terms start from flip-flops, not from a shift register's read).
-      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
-      wire [VIEW_COLS*COLUMN_W-1:0] view_late;
-      wire [VIEW_COLS-1:0]          valid_late;
-      reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
-      fps_sad5_d128u32_251435_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
-        .clk(clk), .rst(1'b0), .en(en), .in({view_q, view_valid_q}), .out({view_late, valid_late}));
-      integer n;
-      always @(posedge clk)
-        if (en) begin
-          view_sums_q <= view_sums;
-          for (n = 0; n < VIEW_COLS; n = n + 1) begin
-            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
-                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
-            view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
-          end
-        end
-      assign view_d = view_masked_q;
-      assign view_sums_masked = view_sums_masked_q;
-      // the base window's mean meets the match window's (step 4)
-      fps_sad5_d128u32_251435_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
-        .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
-    end else begin : early_mask
-      for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
-        assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
-      end
-      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
-      assign base_mean_d = 8'd0;
-    end
-  endgenerate
-  wire [SPAN*SPAN*ELEM_W-1:0] base_d;
-  fps_sad5_d128u32_251435_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
-    .clk(clk), .rst(1'b0), .en(en), .in(base), .out(base_d));
-
-  genvar l, i, k;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [D_W-1:0] d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
-      // The border flag, registered at step 1, waits for the total.
-      reg  outside_q;
-      wire outside_d;
-      always @(posedge clk)
-        if (en) outside_q <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
-      fps_sad5_d128u32_251435_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
-        .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
-
-      // ZSAD, steps 3 to 5: the match window's sum from its masked column sums, its mean, and
-      // the difference of the means, negated: the terms are b - m + (mean_m - mean_b).
-      /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-      wire signed [TERM_W-1:0] mean_offset;
-      /* verilator lint_on UNUSEDSIGNAL */
-      if (ZERO_MEAN != 0) begin : zero_mean
-        wire [WINSUM_W-1:0] match_sum;
-        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
-          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
-        reg [WINSUM_W-1:0] match_sum_q;
-        reg [7:0]          match_mean_q;
-        reg signed [TERM_W-1:0] mean_offset_q;
-        always @(posedge clk)
-          if (en) begin
-            match_sum_q <= match_sum;
-            /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-            match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
-            /* verilator lint_on WIDTH */
-            mean_offset_q <= $signed({2'b00, match_mean_q}) - $signed({2'b00, base_mean_d});
-          end
-        assign mean_offset = mean_offset_q;
-      end else begin : no_mean
-        assign mean_offset = {TERM_W{1'b0}};
-      end
-
-      // Step 7 (ZSAD; SAD and SHD step 3): the row sums of the elements' magnitudes.
-      wire [SPAN*COST_W-1:0] row_sums;
-      for (i = 0; i < SPAN; i = i + 1) begin : row
-        wire [SPAN*MAG_W-1:0] magnitudes;
-        wire [SPAN-1:0]       negative;
-        for (k = 0; k < SPAN; k = k + 1) begin : element
-          // window column k (left to right) is view column l + SPAN - 1 - k
-          wire [ELEM_W-1:0] b = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
-          wire [ELEM_W-1:0] m = view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W];
-          if (HAMMING != 0) begin : code
-            reg [MAG_W-1:0] distance;
-            integer e;
-            always @* begin
-              distance = 0;
-              for (e = 0; e < ELEM_W; e = e + 1)
-                distance = distance + {{(MAG_W-1){1'b0}}, b[e] ^ m[e]};
-            end
-            assign magnitudes[k*MAG_W +: MAG_W] = distance;
-            assign negative[k] = 1'b0;
-          end else begin : pixel
-            wire [TERM_W-1:0] term;
-            if (ZERO_MEAN != 0) begin : zero_mean
-              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m} + mean_offset;
-            end else begin : plain
-              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m};
-            end
-            // |term| = (term xor sign) + sign: the xor joins the row sum's first adders, and
-            // the row's signs are counted and added once.
-            assign negative[k] = term[TERM_W-1];
-            assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
-          end
-        end
-        // The pairs' sums are registered (ZSAD step 6, otherwise step 2), so that the terms and
-        // the row sum are not one path.
-        wire [COST_W-1:0]  magnitude_sum;
-        wire [SIGNS_W-1:0] sign_count;
-        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
-          .clk(clk), .en(en), .values(magnitudes), .sum(magnitude_sum));
-        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
-          .clk(clk), .en(en), .values(negative), .sum(sign_count));
-        reg [COST_W-1:0] row_sum_q;
-        always @(posedge clk)
-          if (en) row_sum_q <= magnitude_sum + {{(COST_W-SIGNS_W){1'b0}}, sign_count};
-        assign row_sums[i*COST_W +: COST_W] = row_sum_q;
-      end
-
-      // The total.
-      wire [COST_W-1:0] total;
-      fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
-        .clk(clk), .en(en), .values(row_sums), .sum(total));
-      always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The sum of N unsigned values as a balanced tree of two-input adders: ceil(log2 N) adders
-// deep, where a chain of additions would be N - 1 deep. Level v's nodes are IN_W + v bits wide
-// (at most SUM_W), so no adder is wider than its operands need. The sum is taken modulo
-// 2^SUM_W: the caller sizes SUM_W for its largest sum. Combinational, or with the partial sums
-// of level REGISTER_LEVEL registered (latency 1), which splits the tree's logic from whatever
-// computes the values.
-module fps_sad5_d128u32_251435_sum_tree #(
-  parameter N = 7,
-  parameter IN_W = 8,
-  parameter SUM_W = 11,
-  // 0: combinational; 1 .. ceil(log2 N): that level's partial sums are registered
-  parameter REGISTER_LEVEL = 0
-) (
-  /* verilator lint_off UNUSEDSIGNAL */  // with REGISTER_LEVEL 0
-  input  wire              clk,
-  input  wire              en,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [N*IN_W-1:0] values,
-  output wire [SUM_W-1:0]  sum
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 1 || IN_W < 1) begin : invalid_N
-      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
-    end
-    if (SUM_W < IN_W) begin : invalid_SUM_W
-      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
-    end
-    if (REGISTER_LEVEL < 0 || REGISTER_LEVEL > ((N > 1) ? $clog2(N) : 0)) begin : invalid_REGISTER_LEVEL
-      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
-    end
-  endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
-
-  genvar v, i;
-  generate
-    for (v = 0; v <= LEVELS; v = v + 1) begin : level
-      // Level v holds ceil(N / 2^v) partial sums of LEVEL_W bits.
-      localparam COUNT = (N + (1 << v) - 1) >> v;
-      localparam PREV_COUNT = (N + (1 << v) / 2 - 1) / ((1 << v) / 2 > 0 ? (1 << v) / 2 : 1);
-      localparam LEVEL_W = IN_W + v < SUM_W ? IN_W + v : SUM_W;
-      localparam PREV_W = IN_W + v - 1 < SUM_W ? IN_W + v - 1 : SUM_W;
-      wire [COUNT*LEVEL_W-1:0] nodes_d;  // the level's sums
-      wire [COUNT*LEVEL_W-1:0] nodes;    // as the next level reads them
-      if (v > 0 && v == REGISTER_LEVEL) begin : stage
-        reg [COUNT*LEVEL_W-1:0] nodes_q;
-        always @(posedge clk)
-          if (en) nodes_q <= nodes_d;
-        assign nodes = nodes_q;
-      end else begin : wire_through
-        assign nodes = nodes_d;
-      end
-      // a level's nodes are one bit wider than the level below, until SUM_W
-      localparam GROWS = LEVEL_W > PREV_W;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (v == 0) begin : leaf
-          assign nodes_d[i*LEVEL_W +: LEVEL_W] = values[i*IN_W +: IN_W];
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
-          wire [PREV_W-1:0] b = level[v-1].nodes[(2*i+1)*PREV_W +: PREV_W];
-          if (GROWS) begin : wider
-            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a} + {1'b0, b};
-          end else begin : capped
-            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a + b;
-          end
-        end else begin : single  // the last node of an odd level passes up alone
-          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
-          if (GROWS) begin : wider
-            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a};
-          end else begin : capped
-            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a;
-          end
-        end
-      end
-    end
-  endgenerate
-
-  localparam TOP_W = IN_W + LEVELS < SUM_W ? IN_W + LEVELS : SUM_W;
-  generate
-    if (TOP_W < SUM_W) begin : widen
-      assign sum = {{(SUM_W-TOP_W){1'b0}}, level[LEVELS].nodes};
-    end else begin : full
-      assign sum = level[LEVELS].nodes;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
-// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
-// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
-// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
-// that the ring already holds the match columns right of it. Shift registers, advanced once per
-// slot; pass-through at MIN_DISP = 0.
-module fps_sad5_d128u32_251435_offset_delays #(
-  parameter BASE_W = 8,
-  parameter MATCH_W = 8,
-  parameter MIN_DISP = 0
-) (
-  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
-  input  wire               clk,
-  input  wire               shift,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [BASE_W-1:0]  base,
-  input  wire [MATCH_W-1:0] match,
-  output wire [BASE_W-1:0]  base_out,
-  output wire [MATCH_W-1:0] match_out
-);
-  generate
-    if (MIN_DISP > 0) begin : match_late
-      fps_sad5_d128u32_251435_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
-    end else begin : match_now
-      assign match_out = match;
-    end
-    if (MIN_DISP < 0) begin : base_late
-      fps_sad5_d128u32_251435_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
-    end else begin : base_now
-      assign base_out = base;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
-module fps_sad5_d128u32_251435_delay #(
-  parameter WIDTH = 8,
-  parameter DEPTH = 1
-) (
-  input  wire             clk,
-  input  wire             rst,
-  input  wire             en,
-  input  wire [WIDTH-1:0] in,
-  output wire [WIDTH-1:0] out
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
-    end
-  endgenerate
-  reg [WIDTH*DEPTH-1:0] line;
-  generate
-    if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
-    end else begin : several
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
-    end
-  endgenerate
-  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Cost reorder RAM (docs/architecture.md): the cost words, written in raster order as the cost
 // lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
@@ -2150,41 +1449,6 @@ module fps_sad5_d128u32_251435_cost_reorder #(
   fps_sad5_d128u32_251435_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
-// register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_sad5_d128u32_251435_ram_sdp #(
-  // word width in bits
-  parameter WIDTH = 8,
-  // number of words
-  parameter DEPTH = 16,
-  // address bits, at least clog2(DEPTH)
-  parameter ADDR_W = 4
-) (
-  input  wire              clk,
-  input  wire              we,
-  input  wire [ADDR_W-1:0] waddr,
-  input  wire [WIDTH-1:0]  wdata,
-  input  wire              re,
-  input  wire [ADDR_W-1:0] raddr,
-  output reg  [WIDTH-1:0]  rdata
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
-    end
-  endgenerate
-  reg [WIDTH-1:0] mem [0:DEPTH-1];
-
-  always @(posedge clk) begin
-    if (we) mem[waddr] <= wdata;
-    if (re) rdata <= mem[raddr];
-  end
 endmodule
 `resetall
 
@@ -2763,241 +2027,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
-// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
-// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_sad5_d128u32_251435_min_tree #(
-  // number of values
-  parameter N = 8,
-  // value width
-  parameter W = 8,
-  // index width, at least clog2(N) (at least 1)
-  parameter IDX_W = 3,
-  // compare-select levels between registers
-  parameter LEVELS_PER_STAGE = 3
-) (
-  input  wire             clk,
-  input  wire             en,
-  input  wire [N*W-1:0]   values,
-  output wire [W-1:0]     min_value,
-  output wire [IDX_W-1:0] min_index
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 1 || W < 1) begin : invalid_N
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_N_or_W_below_1 failed ();
-    end
-    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
-    end
-    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
-
-  genvar l, i;
-  generate
-    for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      // Level l holds ceil(N / 2^l) candidates.
-      localparam COUNT = (N + (1 << l) - 1) >> l;
-      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
-      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*W-1:0]     v_d;
-      wire [COUNT*IDX_W-1:0] x_d;
-      wire [COUNT*W-1:0]     v;
-      wire [COUNT*IDX_W-1:0] x;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (l == 0) begin : leaf
-          assign v_d[i*W +: W]         = values[i*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = i;
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
-          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
-          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
-          wire             take_b = b < a;
-          assign v_d[i*W +: W]         = take_b ? b : a;
-          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
-        end else begin : single
-          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-        end
-      end
-      if (REGISTERED) begin : stage
-        reg [COUNT*W-1:0]     v_q;
-        reg [COUNT*IDX_W-1:0] x_q;
-        always @(posedge clk)
-          if (en) begin
-            v_q <= v_d;
-            x_q <= x_d;
-          end
-        assign v = v_q;
-        assign x = x_q;
-      end else begin : wire_through
-        assign v = v_d;
-        assign x = x_d;
-      end
-    end
-  endgenerate
-
-  assign min_value = level[LEVELS].v[W-1:0];
-  assign min_index = level[LEVELS].x[IDX_W-1:0];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// One aggregation path for UF lanes (docs/semantics.md, section 3):
-//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
-// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
-// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
-// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
-// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
-module fps_sad5_d128u32_251435_path_lanes #(
-  parameter UF = 32,
-  parameter COST_W = 6,
-  parameter PATH_W = 8
-) (
-  input  wire                 clk,
-  input  wire                 en,
-  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
-  input  wire [PATH_W-1:0]    p1,
-  input  wire [PATH_W-1:0]    p2,
-  input  wire [UF*COST_W-1:0] cost,
-  input  wire                 has_pred,
-  input  wire [UF*PATH_W-1:0] prev,
-  input  wire [PATH_W-1:0]    prev_below,
-  input  wire [PATH_W-1:0]    prev_above,
-  input  wire [PATH_W-1:0]    prev_min,
-  output reg  [UF*PATH_W-1:0] path
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
-    end
-  endgenerate
-  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
-  localparam EXT_W = PATH_W + 1;
-  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
-  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
-
-  // Step 1 also keeps what step 2 needs besides the candidates.
-  reg [UF*COST_W-1:0] cost_q;
-  reg [PATH_W-1:0]    prev_min_q;
-  reg                 has_pred_q;
-  always @(posedge clk)
-    if (en) begin
-      cost_q <= cost;
-      prev_min_q <= prev_min;
-      has_pred_q <= has_pred;
-    end
-
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
-      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
-      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
-      reg  [EXT_W-1:0] neighbour, stay;
-      always @(posedge clk)
-        if (en) begin
-          neighbour <= (below < above ? below : above) + {1'b0, p1};
-          stay <= same < jump ? same : jump;
-        end
-      // Step 2: the best, and the path cost.
-      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
-      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
-      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
-      /* verilator lint_off UNUSEDSIGNAL */
-      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
-      /* verilator lint_on UNUSEDSIGNAL */
-      always @(posedge clk)
-        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
-// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
-// result in the step where the tree delivers its last group (group == G - 1).
-module fps_sad5_d128u32_251435_path_minimum #(
-  parameter UF = 32,
-  parameter PATH_W = 8,
-  parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
-) (
-  input  wire               clk,
-  input  wire               en,
-  input  wire [UF*PATH_W-1:0] path,
-  // group of the values the tree delivers in this step
-  input  wire [G_W-1:0]     group,
-  output wire [PATH_W-1:0]  minimum
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
-  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
-  wire [PATH_W-1:0] group_min;
-  wire [LANE_W-1:0] unused_lane;
-  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
-    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
-
-  reg [PATH_W-1:0] running;
-  assign minimum = (group == 0 || group_min < running) ? group_min : running;
-  always @(posedge clk)
-    if (en) running <= minimum;
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
-// read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
-// cycle see the old word.
-module fps_sad5_d128u32_251435_ram_async #(
-  // word width in bits
-  parameter WIDTH = 8,
-  // number of words
-  parameter DEPTH = 4,
-  // address bits, at least clog2(DEPTH)
-  parameter ADDR_W = 2
-) (
-  input  wire              clk,
-  input  wire              we,
-  input  wire [ADDR_W-1:0] waddr,
-  input  wire [WIDTH-1:0]  wdata,
-  input  wire [ADDR_W-1:0] raddr_a,
-  output wire [WIDTH-1:0]  rdata_a,
-  input  wire [ADDR_W-1:0] raddr_b,
-  output wire [WIDTH-1:0]  rdata_b
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
-    end
-  endgenerate
-  reg [WIDTH-1:0] mem [0:DEPTH-1];
-
-  always @(posedge clk)
-    if (we) mem[waddr] <= wdata;
-
-  assign rdata_a = mem[raddr_a];
-  assign rdata_b = mem[raddr_b];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // Disparity reorder RAM and the output's raster order (docs/architecture.md): the winner-take-all
 // writes each pixel's word in its last group's step, in chain order; from out_on on, one word is
 // read per slot in raster order. Rows below the image (the median's last rows need them, and
@@ -3246,6 +2275,975 @@ module fps_sad5_d128u32_251435_lr_check #(
       always @(posedge clk) right_word <= {DISP_W{1'b0}};
     end
   endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
+// row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
+// row-time returns to 0 after the frame's last (fps_sad5_d128u32_251435_frame_row); the RAM row counts on modulo
+// K regardless, so that the next frame's rows take the RAM rows that follow.
+module fps_sad5_d128u32_251435_raster_counter #(
+  parameter G = 4,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter G_W = 2,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter K_W = 1
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           en,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
+  output reg  [G_W-1:0] group,
+  output reg  [X_W-1:0] slot,
+  output wire [Y_W-1:0] row,
+  output reg  [K_W-1:0] row_slot,
+  output wire           slot_end
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
+      fps_sad5_d128u32_251435_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+    end
+    if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
+      fps_sad5_d128u32_251435_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+    end
+  endgenerate
+  localparam integer LAST_GROUP_I = G - 1;
+  localparam integer LAST_CHAIN_I = K - 1;
+  localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
+  localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
+  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+
+  assign slot_end = group == LAST_GROUP;
+  always @(posedge clk)
+    if (restart) begin
+      group <= 0;
+      slot <= 0;
+      row_slot <= 0;
+    end else if (en) begin
+      group <= slot_end ? {G_W{1'b0}} : group + 1'b1;
+      if (slot_end) begin
+        slot <= (slot == LAST_SLOT) ? {X_W{1'b0}} : slot + 1'b1;
+        if (slot == LAST_SLOT)
+          row_slot <= (row_slot == LAST_ROW_SLOT) ? {K_W{1'b0}} : row_slot + 1'b1;
+      end
+    end
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_sad5_d128u32_251435_frame_row #(.Y_W(Y_W)) frame_row (
+    .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
+    .row(row), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Line buffer and N x N window over a raster stream of WORD_W-bit words (pixels, or transform
+// codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
+// one slot ahead); the window is a register array that shifts in one column per slot.
+// window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
+module fps_sad5_d128u32_251435_window #(
+  // window side
+  parameter N = 7,
+  // bits per word
+  parameter WORD_W = 8,
+  // columns per row-time (line buffer depth)
+  parameter ROW_SLOTS = 64,
+  // column address bits
+  parameter ADDR_W = 6
+) (
+  input  wire              clk,
+  // high in the step where this slot's word enters
+  input  wire              shift,
+  // column of the entering word, and the column of the next slot (below ROW_SLOTS)
+  /* verilator lint_off UNUSEDSIGNAL */  // wider than the line buffer address when ROW_SLOTS is a power of two
+  input  wire [ADDR_W-1:0] col,
+  input  wire [ADDR_W-1:0] next_col,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [WORD_W-1:0] word,
+  output wire [N*N*WORD_W-1:0] window
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 3) begin : invalid_N
+      fps_sad5_d128u32_251435_invalid_parameters_window_N_below_3 failed ();
+    end
+    if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
+      fps_sad5_d128u32_251435_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+    end
+  endgenerate
+  localparam STORED_W = (N - 1) * WORD_W;
+  localparam LB_AW = $clog2(ROW_SLOTS);
+
+  // stored[i*WORD_W +: WORD_W] is the word i + 1 rows above the entering one.
+  wire [STORED_W-1:0] stored;
+  // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
+  wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
+
+  fps_sad5_d128u32_251435_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+    .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
+    .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
+
+  reg [N*N*WORD_W-1:0] window_q;
+  assign window = window_q;
+
+  integer i, j;
+  always @(posedge clk)
+    if (shift)
+      for (i = 0; i < N; i = i + 1) begin
+        for (j = 0; j < N - 1; j = j + 1) window_q[(i*N + j)*WORD_W +: WORD_W] <= window_q[(i*N + j + 1)*WORD_W +: WORD_W];
+        window_q[(i*N + N - 1)*WORD_W +: WORD_W] <= (i == N - 1) ? word : stored[(N - 2 - i)*WORD_W +: WORD_W];
+      end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// A stage's row-time counter (docs/architecture.md, "Back-to-back frames"): it advances by one at
+// each `next` and, while `wrap` is high, returns to 0 after the frame's last row (height - 1),
+// so that the next frame's rows follow this frame's without a restart. Without wrap it counts on
+// past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
+// as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
+// starts at START < 0 (two's complement: rows above the first frame).
+module fps_sad5_d128u32_251435_frame_row #(
+  parameter Y_W = 6,
+  parameter START = 0
+) (
+  input  wire           clk,
+  input  wire           restart,
+  input  wire           next,
+  input  wire           wrap,
+  input  wire [Y_W-1:0] height,
+  output reg  [Y_W-1:0] row,
+  output reg            last
+);
+  localparam [Y_W-1:0] TWO = 2;
+  reg [Y_W-1:0] before_last;
+  always @(posedge clk) before_last <= height - TWO;
+  wire wraps = wrap && last;
+  localparam integer START_I = START;
+  localparam [Y_W-1:0] FIRST = START_I[Y_W-1:0];
+  always @(posedge clk)
+    if (restart) begin
+      row <= FIRST;
+      last <= 1'b0;
+    end else if (next) begin
+      row <= wraps ? {Y_W{1'b0}} : row + 1'b1;
+      last <= !wraps && row == before_last;
+    end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
+// image (docs/semantics.md, section 1: outside, a window reads zeros).
+module fps_sad5_d128u32_251435_window_bounds #(
+  parameter SIDE = 5,
+  parameter X_W = 7,
+  // signed row width
+  parameter YS_W = 8
+) (
+  input  wire [X_W-1:0]         x,
+  input  wire signed [YS_W-1:0] y,
+  input  wire [X_W:0]           width,
+  input  wire signed [YS_W-1:0] height,
+  output wire [SIDE-1:0]        row_valid,
+  output wire [SIDE-1:0]        col_valid
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+    end
+  endgenerate
+  localparam LAG = SIDE / 2;
+
+  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
+  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
+  genvar v;
+  generate
+    for (v = 0; v < SIDE; v = v + 1) begin : position
+      localparam signed [31:0] OFFSET = LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      wire signed [X_W+2:0] column = $signed({3'b000, x});
+      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Zero extension (docs/semantics.md, section 1): words of an N x N window whose row or column
+// lies outside the image read as 0.
+module fps_sad5_d128u32_251435_window_mask #(
+  // window side
+  parameter N = 5,
+  // bits per word
+  parameter WORD_W = 8
+) (
+  input  wire [N*N*WORD_W-1:0] window,
+  input  wire [N-1:0]          row_valid,
+  input  wire [N-1:0]          col_valid,
+  output wire [N*N*WORD_W-1:0] masked
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || WORD_W < 1) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
+    end
+  endgenerate
+  genvar p;
+  generate
+    for (p = 0; p < N * N; p = p + 1) begin : position
+      assign masked[p*WORD_W +: WORD_W] = (row_valid[p / N] && col_valid[p % N]) ? window[p*WORD_W +: WORD_W]
+                                                                                 : {WORD_W{1'b0}};
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The sum of N unsigned values as a balanced tree of two-input adders: ceil(log2 N) adders
+// deep, where a chain of additions would be N - 1 deep. Level v's nodes are IN_W + v bits wide
+// (at most SUM_W), so no adder is wider than its operands need. The sum is taken modulo
+// 2^SUM_W: the caller sizes SUM_W for its largest sum. Combinational, or with the partial sums
+// of level REGISTER_LEVEL registered (latency 1), which splits the tree's logic from whatever
+// computes the values.
+module fps_sad5_d128u32_251435_sum_tree #(
+  parameter N = 7,
+  parameter IN_W = 8,
+  parameter SUM_W = 11,
+  // 0: combinational; 1 .. ceil(log2 N): that level's partial sums are registered
+  parameter REGISTER_LEVEL = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // with REGISTER_LEVEL 0
+  input  wire              clk,
+  input  wire              en,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [N*IN_W-1:0] values,
+  output wire [SUM_W-1:0]  sum
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || IN_W < 1) begin : invalid_N
+      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
+    end
+    if (SUM_W < IN_W) begin : invalid_SUM_W
+      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
+    end
+    if (REGISTER_LEVEL < 0 || REGISTER_LEVEL > ((N > 1) ? $clog2(N) : 0)) begin : invalid_REGISTER_LEVEL
+      fps_sad5_d128u32_251435_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
+    end
+  endgenerate
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+
+  genvar v, i;
+  generate
+    for (v = 0; v <= LEVELS; v = v + 1) begin : level
+      // Level v holds ceil(N / 2^v) partial sums of LEVEL_W bits.
+      localparam COUNT = (N + (1 << v) - 1) >> v;
+      localparam PREV_COUNT = (N + (1 << v) / 2 - 1) / ((1 << v) / 2 > 0 ? (1 << v) / 2 : 1);
+      localparam LEVEL_W = IN_W + v < SUM_W ? IN_W + v : SUM_W;
+      localparam PREV_W = IN_W + v - 1 < SUM_W ? IN_W + v - 1 : SUM_W;
+      wire [COUNT*LEVEL_W-1:0] nodes_d;  // the level's sums
+      wire [COUNT*LEVEL_W-1:0] nodes;    // as the next level reads them
+      if (v > 0 && v == REGISTER_LEVEL) begin : stage
+        reg [COUNT*LEVEL_W-1:0] nodes_q;
+        always @(posedge clk)
+          if (en) nodes_q <= nodes_d;
+        assign nodes = nodes_q;
+      end else begin : wire_through
+        assign nodes = nodes_d;
+      end
+      // a level's nodes are one bit wider than the level below, until SUM_W
+      localparam GROWS = LEVEL_W > PREV_W;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (v == 0) begin : leaf
+          assign nodes_d[i*LEVEL_W +: LEVEL_W] = values[i*IN_W +: IN_W];
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          wire [PREV_W-1:0] b = level[v-1].nodes[(2*i+1)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a} + {1'b0, b};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a + b;
+          end
+        end else begin : single  // the last node of an odd level passes up alone
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a;
+          end
+        end
+      end
+    end
+  endgenerate
+
+  localparam TOP_W = IN_W + LEVELS < SUM_W ? IN_W + LEVELS : SUM_W;
+  generate
+    if (TOP_W < SUM_W) begin : widen
+      assign sum = {{(SUM_W-TOP_W){1'b0}}, level[LEVELS].nodes};
+    end else begin : full
+      assign sum = level[LEVELS].nodes;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
+// valid flag travelling in it never starts out set).
+module fps_sad5_d128u32_251435_delay #(
+  parameter WIDTH = 8,
+  parameter DEPTH = 1
+) (
+  input  wire             clk,
+  input  wire             rst,
+  input  wire             en,
+  input  wire [WIDTH-1:0] in,
+  output wire [WIDTH-1:0] out
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || WIDTH < 1) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+    end
+  endgenerate
+  reg [WIDTH*DEPTH-1:0] line;
+  generate
+    if (DEPTH == 1) begin : one
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= in;
+    end else begin : several
+      always @(posedge clk)
+        if (rst) line <= {WIDTH*DEPTH{1'b0}};
+        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+  endgenerate
+  assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
+// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
+// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
+// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
+// that the ring already holds the match columns right of it. Shift registers, advanced once per
+// slot; pass-through at MIN_DISP = 0.
+module fps_sad5_d128u32_251435_offset_delays #(
+  parameter BASE_W = 8,
+  parameter MATCH_W = 8,
+  parameter MIN_DISP = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
+  input  wire               clk,
+  input  wire               shift,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [BASE_W-1:0]  base,
+  input  wire [MATCH_W-1:0] match,
+  output wire [BASE_W-1:0]  base_out,
+  output wire [MATCH_W-1:0] match_out
+);
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_sad5_d128u32_251435_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
+    end else begin : match_now
+      assign match_out = match;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_sad5_d128u32_251435_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
+    end else begin : base_now
+      assign base_out = base;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
+module fps_sad5_d128u32_251435_match_ring #(
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
+  // disparity range
+  parameter DMAX = 128,
+  // disparities per step
+  parameter UF = 32
+) (
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
+  always @(posedge clk)
+    if (en)
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// UF window-based matching costs per step (docs/semantics.md, section 2), lane l = disparity
+// d = group*UF + l: the sum over a SPAN x SPAN window of
+//   SAD:  |b - m|                      over pixels
+//   ZSAD: |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2) (ZERO_MEAN)
+//   SHD:  popcount(b xor m)            over census codes (HAMMING)
+// b is the (already zero-extended) base window; the match window of lane l is view columns
+// l .. l + SPAN - 1 (fps_sad5_d128u32_251435_match_ring), newest first; its columns outside the image read as 0
+// (at the right border the ring already holds the next row's first columns).
+// Lane l's disparity is MIN_DISP + d; where its match centre x - MIN_DISP - d lies outside the
+// row the cost is COST_MAX. Register steps
+// (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
+// the match window's sum, its mean, the difference of the means (with the masked view); the
+// magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
+// (fps_sad5_d128u32_251435_sum_tree).
+module fps_sad5_d128u32_251435_window_cost_lanes #(
+  // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
+  parameter ZERO_MEAN = 0,
+  parameter HAMMING = 0,
+  // bits per window element (8 for pixels, the code width for SHD)
+  parameter ELEM_W = 8,
+  parameter SPAN = 5,
+  parameter UF = 32,
+  parameter COST_W = 13,
+  parameter COST_MAX = 6375,
+  parameter GROUP_W = 2,
+  parameter X_W = 11,
+  // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
+  parameter COLSUM_W = 11,
+  parameter MEAN_MUL = 1,
+  parameter MEAN_SHIFT = 0,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
+  // the latency the instantiating stage plans with (checked: 4, ZSAD 8; 3 for SPAN 1)
+  parameter LAT = 4
+) (
+  input  wire                                clk,
+  input  wire                                en,
+  input  wire [SPAN*SPAN*ELEM_W-1:0]         base,
+  /* verilator lint_off UNUSEDSIGNAL */  // the means serve ZSAD only
+  input  wire [7:0]                          base_mean,
+  input  wire [(UF+SPAN-1)*COLSUM_W-1:0]     view_sums,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
+  input  wire [GROUP_W-1:0]                  group,
+  input  wire [X_W-1:0]                      x,
+  input  wire [X_W-1:0]                      width,
+  output reg  [UF*COST_W-1:0]                costs
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (SPAN < 1 || SPAN % 2 == 0 || (ZERO_MEAN != 0 && SPAN > 16)) begin : invalid_SPAN
+      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
+    end
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if ((HAMMING == 0 && ELEM_W != 8) || ELEM_W < 1) begin : invalid_ELEM_W
+      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
+      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
+    end
+    if (LAT != (ZERO_MEAN != 0 ? 4 : 0) + (SPAN > 1 ? 1 : 0) + 3) begin : invalid_LAT
+      fps_sad5_d128u32_251435_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
+    end
+  endgenerate
+  localparam R = SPAN / 2;
+  localparam COLUMN_W = SPAN * ELEM_W;
+  localparam VIEW_COLS = UF + SPAN - 1;
+  // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
+  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
+  // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
+  localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
+  // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
+  localparam MAG_W = HAMMING != 0 ? $clog2(ELEM_W + 1) : TERM_W - 1;
+  localparam SIGNS_W = $clog2(SPAN + 1);
+  localparam MEAN_STEPS = ZERO_MEAN != 0 ? 4 : 0;
+  localparam PAIR_STEP = SPAN > 1 ? 1 : 0;
+  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
+  // Match positions x - MIN_DISP - ..., compared as x + AHEAD against ... + BEHIND.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
+
+  // View column c lies at x - MIN_DISP - group*UF + (SPAN - 1 - R - c) in the image for every
+  // lane that reads it (lane l: window column j = l + SPAN - 1 - c, at x - MIN_DISP - d + j - R),
+  // so one mask per view column serves all lanes. Inside: 0 <= that < width, here with
+  // group*UF + UF + R + BEHIND added.
+  wire [D_W-1:0] inside_low = group_base + UF[D_W-1:0] + R[D_W-1:0] + BEHIND[D_W-1:0];
+  wire [D_W-1:0] inside_high = inside_low + width_wide;
+  wire [VIEW_COLS-1:0] view_valid;
+  genvar c;
+  generate
+    for (c = 0; c < VIEW_COLS; c = c + 1) begin : view_column
+      localparam OFFSET = VIEW_COLS - c;
+      wire [D_W-1:0] position = x_ahead + OFFSET[D_W-1:0];
+      assign view_valid[c] = position >= inside_low && position < inside_high;
+    end
+  endgenerate
+
+  // Step 1: the masks and the windows.
+  reg  [VIEW_COLS-1:0]          view_valid_q;
+  reg  [VIEW_COLS*COLUMN_W-1:0] view_q;
+  always @(posedge clk)
+    if (en) begin
+      view_valid_q <= view_valid;
+      view_q <= view;
+    end
+  // The view as the terms read it, its columns outside the image zeroed; ZSAD: the match
+  // windows' column sums, masked the same way.
+  wire [VIEW_COLS*COLUMN_W-1:0] view_d;
+  /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
+  wire [7:0]                    base_mean_d;
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (ZERO_MEAN != 0) begin : late_mask
+      // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
+      // view waits three steps more for the means, and is masked into the register of step 5
+      // (the terms start from flip-flops, not from a shift register's read).
+      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
+      wire [VIEW_COLS*COLUMN_W-1:0] view_late;
+      wire [VIEW_COLS-1:0]          valid_late;
+      reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
+      fps_sad5_d128u32_251435_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in({view_q, view_valid_q}), .out({view_late, valid_late}));
+      integer n;
+      always @(posedge clk)
+        if (en) begin
+          view_sums_q <= view_sums;
+          for (n = 0; n < VIEW_COLS; n = n + 1) begin
+            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
+                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
+            view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+          end
+        end
+      assign view_d = view_masked_q;
+      assign view_sums_masked = view_sums_masked_q;
+      // the base window's mean meets the match window's (step 4)
+      fps_sad5_d128u32_251435_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
+    end else begin : early_mask
+      for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
+        assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
+      end
+      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
+      assign base_mean_d = 8'd0;
+    end
+  endgenerate
+  wire [SPAN*SPAN*ELEM_W-1:0] base_d;
+  fps_sad5_d128u32_251435_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
+    .clk(clk), .rst(1'b0), .en(en), .in(base), .out(base_d));
+
+  genvar l, i, k;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [D_W-1:0] d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // The border flag, registered at step 1, waits for the total.
+      reg  outside_q;
+      wire outside_d;
+      always @(posedge clk)
+        if (en) outside_q <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
+      fps_sad5_d128u32_251435_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
+
+      // ZSAD, steps 3 to 5: the match window's sum from its masked column sums, its mean, and
+      // the difference of the means, negated: the terms are b - m + (mean_m - mean_b).
+      /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
+      wire signed [TERM_W-1:0] mean_offset;
+      /* verilator lint_on UNUSEDSIGNAL */
+      if (ZERO_MEAN != 0) begin : zero_mean
+        wire [WINSUM_W-1:0] match_sum;
+        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
+          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
+        reg [WINSUM_W-1:0] match_sum_q;
+        reg [7:0]          match_mean_q;
+        reg signed [TERM_W-1:0] mean_offset_q;
+        always @(posedge clk)
+          if (en) begin
+            match_sum_q <= match_sum;
+            /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+            match_mean_q <= (match_sum_q * MEAN_MUL) >> MEAN_SHIFT;
+            /* verilator lint_on WIDTH */
+            mean_offset_q <= $signed({2'b00, match_mean_q}) - $signed({2'b00, base_mean_d});
+          end
+        assign mean_offset = mean_offset_q;
+      end else begin : no_mean
+        assign mean_offset = {TERM_W{1'b0}};
+      end
+
+      // Step 7 (ZSAD; SAD and SHD step 3): the row sums of the elements' magnitudes.
+      wire [SPAN*COST_W-1:0] row_sums;
+      for (i = 0; i < SPAN; i = i + 1) begin : row
+        wire [SPAN*MAG_W-1:0] magnitudes;
+        wire [SPAN-1:0]       negative;
+        for (k = 0; k < SPAN; k = k + 1) begin : element
+          // window column k (left to right) is view column l + SPAN - 1 - k
+          wire [ELEM_W-1:0] b = base_d[(i*SPAN + k)*ELEM_W +: ELEM_W];
+          wire [ELEM_W-1:0] m = view_d[(l + SPAN - 1 - k)*COLUMN_W + i*ELEM_W +: ELEM_W];
+          if (HAMMING != 0) begin : code
+            reg [MAG_W-1:0] distance;
+            integer e;
+            always @* begin
+              distance = 0;
+              for (e = 0; e < ELEM_W; e = e + 1)
+                distance = distance + {{(MAG_W-1){1'b0}}, b[e] ^ m[e]};
+            end
+            assign magnitudes[k*MAG_W +: MAG_W] = distance;
+            assign negative[k] = 1'b0;
+          end else begin : pixel
+            wire [TERM_W-1:0] term;
+            if (ZERO_MEAN != 0) begin : zero_mean
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m} + mean_offset;
+            end else begin : plain
+              assign term = {{(TERM_W-ELEM_W){1'b0}}, b} - {{(TERM_W-ELEM_W){1'b0}}, m};
+            end
+            // |term| = (term xor sign) + sign: the xor joins the row sum's first adders, and
+            // the row's signs are counted and added once.
+            assign negative[k] = term[TERM_W-1];
+            assign magnitudes[k*MAG_W +: MAG_W] = term[MAG_W-1:0] ^ {MAG_W{negative[k]}};
+          end
+        end
+        // The pairs' sums are registered (ZSAD step 6, otherwise step 2), so that the terms and
+        // the row sum are not one path.
+        wire [COST_W-1:0]  magnitude_sum;
+        wire [SIGNS_W-1:0] sign_count;
+        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
+          .clk(clk), .en(en), .values(magnitudes), .sum(magnitude_sum));
+        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
+          .clk(clk), .en(en), .values(negative), .sum(sign_count));
+        reg [COST_W-1:0] row_sum_q;
+        always @(posedge clk)
+          if (en) row_sum_q <= magnitude_sum + {{(COST_W-SIGNS_W){1'b0}}, sign_count};
+        assign row_sums[i*COST_W +: COST_W] = row_sum_q;
+      end
+
+      // The total.
+      wire [COST_W-1:0] total;
+      fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
+        .clk(clk), .en(en), .values(row_sums), .sum(total));
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
+// register only loads when re is high, so a stalled pipeline keeps its read data.
+module fps_sad5_d128u32_251435_ram_sdp #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 16,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 4
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire              re,
+  input  wire [ADDR_W-1:0] raddr,
+  output reg  [WIDTH-1:0]  rdata
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+
+  always @(posedge clk) begin
+    if (we) mem[waddr] <= wdata;
+    if (re) rdata <= mem[raddr];
+  end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
+// read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
+// cycle see the old word.
+module fps_sad5_d128u32_251435_ram_async #(
+  // word width in bits
+  parameter WIDTH = 8,
+  // number of words
+  parameter DEPTH = 4,
+  // address bits, at least clog2(DEPTH)
+  parameter ADDR_W = 2
+) (
+  input  wire              clk,
+  input  wire              we,
+  input  wire [ADDR_W-1:0] waddr,
+  input  wire [WIDTH-1:0]  wdata,
+  input  wire [ADDR_W-1:0] raddr_a,
+  output wire [WIDTH-1:0]  rdata_a,
+  input  wire [ADDR_W-1:0] raddr_b,
+  output wire [WIDTH-1:0]  rdata_b
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+    end
+  endgenerate
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+
+  always @(posedge clk)
+    if (we) mem[waddr] <= wdata;
+
+  assign rdata_a = mem[raddr_a];
+  assign rdata_b = mem[raddr_b];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// One aggregation path for UF lanes (docs/semantics.md, section 3):
+//   L(d) = C(d) + min(P(d), P(d-1) + P1, P(d+1) + P1, m + P2) - m
+// where P are the predecessor's path costs and m their minimum; without a predecessor L = C.
+// prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
+// the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
+// (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
+module fps_sad5_d128u32_251435_path_lanes #(
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter PATH_W = 8
+) (
+  input  wire                 clk,
+  input  wire                 en,
+  // penalties, at most the path cost's maximum minus the largest cost (docs/semantics.md)
+  input  wire [PATH_W-1:0]    p1,
+  input  wire [PATH_W-1:0]    p2,
+  input  wire [UF*COST_W-1:0] cost,
+  input  wire                 has_pred,
+  input  wire [UF*PATH_W-1:0] prev,
+  input  wire [PATH_W-1:0]    prev_below,
+  input  wire [PATH_W-1:0]    prev_above,
+  input  wire [PATH_W-1:0]    prev_min,
+  output reg  [UF*PATH_W-1:0] path
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+    end
+  endgenerate
+  // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
+  localparam EXT_W = PATH_W + 1;
+  wire [(UF+2)*PATH_W-1:0] around = {prev_above, prev, prev_below};  // lane l at (l+1)
+  wire [EXT_W-1:0] jump = {1'b0, prev_min} + {1'b0, p2};
+
+  // Step 1 also keeps what step 2 needs besides the candidates.
+  reg [UF*COST_W-1:0] cost_q;
+  reg [PATH_W-1:0]    prev_min_q;
+  reg                 has_pred_q;
+  always @(posedge clk)
+    if (en) begin
+      cost_q <= cost;
+      prev_min_q <= prev_min;
+      has_pred_q <= has_pred;
+    end
+
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [EXT_W-1:0] below = {1'b0, around[l*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] same  = {1'b0, around[(l+1)*PATH_W +: PATH_W]};
+      wire [EXT_W-1:0] above = {1'b0, around[(l+2)*PATH_W +: PATH_W]};
+      // Step 1: the smaller neighbour plus P1, and the smaller of the same disparity and the jump.
+      reg  [EXT_W-1:0] neighbour, stay;
+      always @(posedge clk)
+        if (en) begin
+          neighbour <= (below < above ? below : above) + {1'b0, p1};
+          stay <= same < jump ? same : jump;
+        end
+      // Step 2: the best, and the path cost.
+      wire [EXT_W-1:0] best = stay < neighbour ? stay : neighbour;
+      wire [EXT_W-1:0] c = {{(EXT_W-COST_W){1'b0}}, cost_q[l*COST_W +: COST_W]};
+      // best - prev_min lies in 0 .. P2, so the sum fits PATH_W bits (its top bit is 0).
+      /* verilator lint_off UNUSEDSIGNAL */
+      wire [EXT_W-1:0] sum = c + best - {1'b0, prev_min_q};
+      /* verilator lint_on UNUSEDSIGNAL */
+      always @(posedge clk)
+        if (en) path[l*PATH_W +: PATH_W] <= has_pred_q ? sum[PATH_W-1:0] : c[PATH_W-1:0];
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
+// the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
+// result in the step where the tree delivers its last group (group == G - 1).
+module fps_sad5_d128u32_251435_path_minimum #(
+  parameter UF = 32,
+  parameter PATH_W = 8,
+  parameter G_W = 2,
+  parameter LEVELS_PER_STAGE = 3
+) (
+  input  wire               clk,
+  input  wire               en,
+  input  wire [UF*PATH_W-1:0] path,
+  // group of the values the tree delivers in this step
+  input  wire [G_W-1:0]     group,
+  output wire [PATH_W-1:0]  minimum
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
+  localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
+  wire [PATH_W-1:0] group_min;
+  wire [LANE_W-1:0] unused_lane;
+  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+    .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
+
+  reg [PATH_W-1:0] running;
+  assign minimum = (group == 0 || group_min < running) ? group_min : running;
+  always @(posedge clk)
+    if (en) running <= minimum;
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
+// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
+// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+module fps_sad5_d128u32_251435_min_tree #(
+  // number of values
+  parameter N = 8,
+  // value width
+  parameter W = 8,
+  // index width, at least clog2(N) (at least 1)
+  parameter IDX_W = 3,
+  // compare-select levels between registers
+  parameter LEVELS_PER_STAGE = 3
+) (
+  input  wire             clk,
+  input  wire             en,
+  input  wire [N*W-1:0]   values,
+  output wire [W-1:0]     min_value,
+  output wire [IDX_W-1:0] min_index
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fps_sad5_d128u32_251435_invalid_parameters_min_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fps_sad5_d128u32_251435_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fps_sad5_d128u32_251435_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+  endgenerate
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+
+  genvar l, i;
+  generate
+    for (l = 0; l <= LEVELS; l = l + 1) begin : level
+      // Level l holds ceil(N / 2^l) candidates.
+      localparam COUNT = (N + (1 << l) - 1) >> l;
+      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
+      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
+      wire [COUNT*W-1:0]     v_d;
+      wire [COUNT*IDX_W-1:0] x_d;
+      wire [COUNT*W-1:0]     v;
+      wire [COUNT*IDX_W-1:0] x;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (l == 0) begin : leaf
+          assign v_d[i*W +: W]         = values[i*W +: W];
+          assign x_d[i*IDX_W +: IDX_W] = i;
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
+          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
+          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
+          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
+          wire             take_b = b < a;
+          assign v_d[i*W +: W]         = take_b ? b : a;
+          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
+        end else begin : single
+          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
+          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
+        end
+      end
+      if (REGISTERED) begin : stage
+        reg [COUNT*W-1:0]     v_q;
+        reg [COUNT*IDX_W-1:0] x_q;
+        always @(posedge clk)
+          if (en) begin
+            v_q <= v_d;
+            x_q <= x_d;
+          end
+        assign v = v_q;
+        assign x = x_q;
+      end else begin : wire_through
+        assign v = v_d;
+        assign x = x_d;
+      end
+    end
+  endgenerate
+
+  assign min_value = level[LEVELS].v[W-1:0];
+  assign min_index = level[LEVELS].x[IDX_W-1:0];
 endmodule
 `resetall
 

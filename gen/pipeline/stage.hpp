@@ -1,7 +1,8 @@
-// The pipeline's stages as objects (docs/architecture.md, "Stages"): each knows its latency in
-// the core's time base, the memories it instantiates, the Verilog it adds to the core and the
-// templates that Verilog uses. plan() chains them; the banner, the INFO registers, the resource
-// model and the DSE read the one plan they make.
+// A stage of the pipeline (docs/architecture.md, "Stages"; docs/contributing.md, "Adding a
+// stage"): it knows its latency in the core's time base and the memories it instantiates, both from
+// the plan's geometry, adds its nets, logic and instances to the core (core_builder.hpp) and its
+// kernel calls to the HLS pipeline. plan() chains the stages; the banner, the INFO registers, the
+// resource model and the DSE read the one plan they make. One file a stage, in stages/.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,8 @@
 
 namespace fpstereo::rtl {
 
+class CoreBuilder;
+struct Geometry;
 struct RtlDesign;
 
 // A time in the core's time base: row-times of R slots, slots of G steps, and steps.
@@ -43,11 +46,18 @@ struct StageMemory {
   bool sync_read = true;
 };
 
-// The names of the pixel stream between the output stages: done in the step after each slot's
-// word (empty once the stream has left the slot schedule), event for the frame's pixels, their
-// position and word. Each output stage reads the stream and names its own.
+// The streams between the core's stages, by the names of their nets. Up to the disparity reorder
+// RAM, the words in chain order: nets <words>_active, _x, _slot, _group, _word (and _whole when
+// the geometry carries_whole), one a pixel in its last group's step. After it, the pixel stream
+// in raster order: done in the step after each slot's word (empty once the stream has left the slot
+// schedule), event for the frame's pixels, their position and word. Each stage reads the streams
+// it is handed and names the ones it drives after itself.
 struct PixelStream {
   std::string done, event, x, y, word;
+};
+struct CoreStreams {
+  std::string words;
+  PixelStream pixels;
 };
 
 // The HLS side (gen/hls): the names of the hls::streams between the kernel calls of the generated
@@ -74,16 +84,15 @@ class Stage {
   // The configuration parameters (param_specs names) that shape the stage.
   virtual std::vector<std::string> knobs() const = 0;
   // Steps from the first word of the stage's input stream to the first of its output stream.
-  virtual Latency latency(const RtlDesign& d) const = 0;
+  virtual Latency latency(const Geometry& g) const = 0;
   // Stages with a schedule of their own start it start_offset after their input starts; the
   // core compares the step counter with that sum, the localparam named start_parameter().
   virtual std::string start_parameter() const { return ""; }
-  virtual Latency start_offset(const RtlDesign&) const { return {}; }
-  virtual std::vector<StageMemory> memories(const RtlDesign&) const { return {}; }
-  // Templates of rtl_templates/ the stage's Verilog instantiates, directly or below.
-  virtual std::vector<std::string> modules(const RtlDesign& d) const = 0;
-  // Its part of the core: the wires it drives and its instances.
-  virtual std::string core_verilog(const RtlDesign& d, PixelStream& stream) const = 0;
+  virtual Latency start_offset(const Geometry&) const { return {}; }
+  virtual std::vector<StageMemory> memories(const Geometry&) const { return {}; }
+  // Its part of the core: the nets it drives, its logic and its instances; it reads the streams
+  // and replaces those it drives.
+  virtual void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const = 0;
 
   // The HLS side. Its part of the pipeline's body: declarations of the streams it writes (with
   // their STREAM pragmas) and its kernel calls, or a comment naming the kernel that does its work.
@@ -91,15 +100,11 @@ class Stage {
   // Its kernels' longest loop, at II = 1, if it may bound the frame time: empty for stages without
   // kernels of their own and for those whose loops (W*H, W*H*dmax/uf, (H+1)*W) never exceed the
   // aggregation's. And the rows by which its kernels delay the stream (the fill latency).
-  virtual HlsLoop hls_loop(const RtlDesign&) const { return {}; }
-  virtual int hls_fill_rows(const RtlDesign&) const { return 0; }
+  virtual HlsLoop hls_loop(const Geometry&) const { return {}; }
+  virtual int hls_fill_rows(const Geometry&) const { return 0; }
 };
 
 using StagePtr = std::shared_ptr<const Stage>;
-
-// Whether the winner-take-all finds the second-best sum too (fpstereo_wta_unique): the
-// uniqueness check and the confidence need it.
-inline bool finds_second_best(const StereoConfig& c) { return c.uniqueness != 0 || c.confidence; }
 
 // The stages of a configuration in the order data flows through them; stages that run beside
 // the main stream (the match side of the left-right check) follow the stage they read from and

@@ -1,0 +1,151 @@
+#include "plan.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+#include <tuple>
+
+#include "stage_list.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+int ceil_div(int64_t a, int64_t b) { return int((a + b - 1) / b); }
+int clog2(int64_t v) {
+  int bits = 0;
+  while ((int64_t(1) << bits) < v) ++bits;
+  return bits;
+}
+
+// floor(s / divisor) == (s * mul) >> shift for every s in 0 .. max_value: the smallest shift
+// whose rounded-up reciprocal is exact over the range (checked exhaustively).
+std::pair<uint64_t, int> reciprocal(uint64_t divisor, uint64_t max_value) {
+  for (int shift = 0; shift < 48; ++shift) {
+    const uint64_t mul = ((uint64_t(1) << shift) + divisor - 1) / divisor;
+    bool exact = true;
+    for (uint64_t v = 0; v <= max_value && exact; ++v) exact = (v * mul) >> shift == v / divisor;
+    if (exact) return {mul, shift};
+  }
+  throw std::logic_error("no exact reciprocal");
+}
+
+// The hardware's own rules beyond validate()'s.
+void check_hardware_rules(const StereoConfig& cfg) {
+  validate(cfg);
+  // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md), so the aggregator keeps
+  // one predecessor per path.
+  if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
+  // A search range wider than the row searches nothing: the hardware keeps LR2's match side
+  // (dmax + min-disp slots behind) and the offset's delays within a row-time.
+  if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
+    throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
+                      std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
+}
+
+}  // namespace
+
+int min_tree_latency(int n, int levels_per_stage) {
+  const int levels = n > 1 ? clog2(n) : 0;
+  return std::max(1, ceil_div(levels, levels_per_stage));
+}
+
+Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
+  check_hardware_rules(cfg);
+  Geometry g;
+  g.cfg = cfg;
+  g.options = options;
+  // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate),
+  // and a row that holds the whole search range (above).
+  g.min_width = std::max(8, cfg.dmax + std::abs(cfg.min_disp));
+  g.min_height = 4;
+  g.widths = derive_widths(cfg);
+  g.prefix = config_tag(cfg);
+  g.window_radius = cfg.window / 2;
+  const bool point_cost = cfg.cost == CostFunction::Census || cfg.cost == CostFunction::Rank;
+  g.cost_window = point_cost ? 1 : cfg.cost == CostFunction::Shd ? cfg.shd_window : cfg.window;
+  g.window_fill_rows = (cfg.cost == CostFunction::Sad ? 0 : g.window_radius) + g.cost_window / 2;
+  g.groups = cfg.dmax / cfg.uf;
+  // The cost lanes' register steps: fpstereo_cost_lanes 2; fpstereo_window_cost_lanes 4, with
+  // four more for ZSAD (the masked column sums, the match window's sum, its mean, the means'
+  // difference).
+  const bool windowed_cost = cfg.cost == CostFunction::Sad || cfg.cost == CostFunction::Zsad ||
+                             (cfg.cost == CostFunction::Shd && cfg.shd_window > 1);
+  // Census codes of more than 8 chunks of 6 bits sum their counts in sets first (one step more).
+  const bool long_codes = !windowed_cost && cfg.cost != CostFunction::Rank && g.widths.code > 48;
+  g.cost_latency = !windowed_cost ? (long_codes ? 3 : 2) : cfg.cost == CostFunction::Zsad ? 8 : 4;
+  g.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
+  const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
+  std::tie(g.mean_mul, g.mean_shift) =
+      cfg.cost == CostFunction::Zsad ? reciprocal(n, 255 * n) : std::pair<uint64_t, int>{1, 0};
+  g.path_tree_latency = min_tree_latency(cfg.uf, g.levels_per_stage);
+  g.wta_tree_latency = min_tree_latency(cfg.uf, g.levels_per_stage);
+  g.unique_tree_latency = min_tree_latency(cfg.uf, Geometry::kUniqueLevelsPerStage);
+  g.finds_second_best = cfg.uniqueness != 0 || cfg.confidence;
+  g.wta_word_lag = g.finds_second_best ? g.unique_tree_latency + Geometry::kUniqueWordSteps : g.wta_tree_latency;
+  g.subpixel_steps = cfg.subpixel_bits != 0 ? cfg.subpixel_bits + 6 : 0;
+  // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
+  // path lanes (two steps, fpstereo_path_lanes), the tree and the running minimum take
+  // G - 1 + 2 + latency + 1 steps; K chains give it K * G (fpstereo_aggregator checks it).
+  constexpr int kPathLanesLatency = 2;
+  g.chains = std::max(2, 1 + ceil_div(g.path_tree_latency + kPathLanesLatency, g.groups));
+  // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
+  // where dmax < 128 (width >= 16) and K <= 6 otherwise.
+  g.segment = ceil_div(cfg.width + (g.groups == 1 ? kFollowBubbles : 0), g.chains);
+  g.row_slots = g.chains * g.segment;
+  g.lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
+  g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
+  g.out_rows = g.chains + 1 + g.lr_rows;
+  g.carries_whole = cfg.subpixel_bits != 0 && cfg.lr != LrCheck::None;
+  g.reorder_word_bits = g.widths.output_word + (g.carries_whole ? g.widths.disparity : 0);
+  g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
+  g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
+  g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
+  g.output_bits = g.widths.output_lane + (cfg.confidence ? kConfidenceBits : 0);
+  const int64_t R = g.row_slots, G = g.groups;
+  g.x_bits = bits_for(uint64_t(R));
+  g.group_bits = bits_for(uint64_t(G - 1));
+  g.chain_bits = bits_for(uint64_t(g.chains - 1));
+  g.lane_bits = std::max(1, clog2(cfg.uf));
+  g.cost_row_bits = clog2(g.cost_rows);
+  g.out_row_bits = clog2(g.out_rows);
+  g.cost_addr_bits = clog2(g.cost_depth());
+  g.disp_addr_bits = clog2(g.disp_depth());
+  g.end_addr_bits = clog2(int64_t(g.out_rows) * G);
+  return g;
+}
+
+RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
+  RtlDesign d;
+  static_cast<Geometry&>(d) = plan_geometry(cfg, options);
+  // The schedule: the stages' latencies summed in data order (docs/architecture.md, "Stages").
+  // A stage's own schedule starts start_offset after its input; the step that pushes pixel
+  // (x, y) is (y * R + x) * G steps after the one that pushes pixel (0, 0).
+  d.stages = pipeline_stages(cfg);
+  const int64_t R = d.row_slots, G = d.groups;
+  int64_t at = 0;
+  for (const auto& stage : d.stages) {
+    if (!stage->start_parameter().empty())
+      d.start_steps[stage->start_parameter()] = at + stage->start_offset(d).in_steps(R, G);
+    at += stage->latency(d).in_steps(R, G);
+  }
+  // The output stage is the last: its latency ends with the kStepsAfterPush from the push of
+  // pixel (0, 0) on.
+  const int64_t push_first = at - kStepsAfterPush;
+  const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
+  d.lone_frame_cycles = at + last_pixel * G;
+  // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
+  // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
+  // and a frame is done before the one after the next begins).
+  d.overlap_height = int(ceil_div(push_first, R * G) + 2);
+  d.cycles_per_frame = cfg.height >= d.overlap_height ? int64_t(cfg.height) * R * G : d.lone_frame_cycles;
+  // At the ports: the input register slice, the cycle in which the framing stage starts the core
+  // and the one in which the sequencer starts (step 0 follows), and the output register slice.
+  d.first_output_latency = push_first + 4;
+  d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
+  d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
+  d.signed_y_bits = d.y_bits + 2;
+  d.step_bits = bits_for(uint64_t(d.lone_frame_cycles + 16));
+  return d;
+}
+
+}  // namespace fpstereo::rtl

@@ -1,0 +1,109 @@
+// The plan of a configuration's hardware (docs/architecture.md): first its geometry, every width,
+// count and word layout derived once from the configuration; then the stages in data order; then
+// the schedule, the sum of the stages' latencies. The RTL and HLS emitters, the register map, the
+// resource model, the DSE and the test bench read this one plan.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "config.hpp"
+#include "stage.hpp"
+#include "widths.hpp"
+
+namespace fpstereo::rtl {
+
+// Choices of the generated design that are not part of the stereo configuration.
+struct RtlOptions {
+  bool control = true;  // AXI4-Lite control and status (otherwise the settings are fixed)
+};
+
+// Bits of the confidence (0..255) that rides above each word from the winner-take-all on.
+constexpr int kConfidenceBits = 8;
+
+// The geometry: what the configuration fixes before any stage is placed. Stages read it to state
+// their latencies and memories.
+struct Geometry {
+  StereoConfig cfg;
+  RtlOptions options;
+  Widths widths;
+  std::string prefix;       // module name prefix, unique per configuration
+  int window_radius = 0;    // r
+  // The side of the window a cost sums over: 1 for census and rank, the SHD window for SHD, N for
+  // SAD and ZSAD; and the rows by which the windows delay the stream up to the cost.
+  int cost_window = 1;
+  int window_fill_rows = 0;
+  int cost_latency = 1;     // register stages of the cost lanes
+  int column_sum_bits = 0;  // SAD/ZSAD: bits of a window column's pixel sum
+  uint64_t mean_mul = 1;    // ZSAD: floor(s / N^2) == (s * mean_mul) >> mean_shift
+  int mean_shift = 0;
+  int groups = 0;     // G = dmax / uf: steps per pixel
+  int chains = 0;     // K
+  int segment = 0;    // ceil(W / K): pixels per chain per row
+  int row_slots = 0;  // R = K * segment: slots per row-time
+  // Row-times the output waits for the left-right check's match side: 0, 1 (LR1) or 2 (LR2).
+  int lr_rows = 0;
+  // rows of the cost reorder RAM (K, one more with LR2, whose match side reads a row longer) and
+  // of the disparity RAMs (K, one more for the output's lag, and lr_rows more)
+  int cost_rows = 0, out_rows = 0;
+  int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * groups; }
+  int64_t disp_depth() const { return int64_t(out_rows) * row_slots; }
+  int levels_per_stage = 3;
+  int path_tree_latency = 0;
+  int wta_tree_latency = 0;
+  // The uniqueness tree's joins are deeper than the minimum trees' compare-selects: it is
+  // registered after each join (fpstereo_wta_unique); its word leaves three steps after the tree.
+  static constexpr int kUniqueLevelsPerStage = 1, kUniqueWordSteps = 3;
+  int unique_tree_latency = 0;
+  // Whether the winner-take-all finds the second-best sum too (the uniqueness check and the
+  // confidence need it).
+  bool finds_second_best = false;
+  // Steps from the winner-take-all's sums to its word: the tree, and with uniqueness (or
+  // confidence) the group join's and the test's registers.
+  int wta_word_lag = 0;
+  int subpixel_steps = 0;  // the sub-pixel fit's: subpixel-bits + 6 (0 without it)
+  // The words from the winner-take-all to the disparity reorder RAM: with sub-pixel output and a
+  // left-right check they carry the whole D under the refined disparity, as the check compares
+  // whole disparities (semantics section 5); the RAM keeps the confidence above them.
+  bool carries_whole = false;
+  int reorder_word_bits = 0, reorder_ram_bits = 0;
+  // With adaptive P2 the cost words carry, above the uf costs, each enabled path's P2.
+  int penalty_bits = 0, cost_word_bits = 0;
+  // The output streams' tdata: the word's byte lane (8 or 16 bits), and with confidence 8 above.
+  int output_bits = 0;
+  // the range of the run-time image size (the configured size is the largest)
+  int min_width = 0, min_height = 0;
+  int x_bits = 0, group_bits = 0, chain_bits = 0, lane_bits = 0;
+  int cost_row_bits = 0, out_row_bits = 0;  // row slot of the cost and disparity RAMs
+  int cost_addr_bits = 0, disp_addr_bits = 0, end_addr_bits = 0;
+};
+
+// The geometry, the stages and their schedule.
+struct RtlDesign : Geometry {
+  // the stages in data order (stage.hpp); the schedule below is the sum of their latencies
+  std::vector<StagePtr> stages;
+  // steps from a frame's first step to the start of each stage with a schedule of its own, by
+  // its start parameter (AGG_START: aggregation, MATCH_START: LR2's match side, OUT_START: output)
+  std::map<std::string, int64_t> start_steps;
+  int64_t cycles_per_frame = 0;      // from a frame's start to the next's without stalls, back to back
+  int64_t lone_frame_cycles = 0;     // the same when the next frame waits for this one to drain
+  int overlap_height = 0;            // the smallest frame height at which frames follow on
+  int64_t extra_cycles = 0;          // cycles_per_frame - W * H * G: bubble slots, or the drain
+  int64_t first_output_latency = 0;  // cycles from the first input handshake to the first output one
+  // Counters that run through the drain after the frame: rows (signed ones for window centres
+  // above the image) and steps.
+  int y_bits = 0, signed_y_bits = 0, step_bits = 0;
+};
+
+// The geometry alone; throws ConfigError if the configuration is invalid for the hardware.
+Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options = {});
+// The whole plan; throws ConfigError if the configuration is invalid for the hardware.
+RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options = {});
+
+// Latency of fpstereo_min_tree over n values at levels_per_stage compare levels a register
+// (the template's own function, min_tree_latency, in fpstereo_min_tree_latency.vh).
+int min_tree_latency(int n, int levels_per_stage);
+
+}  // namespace fpstereo::rtl

@@ -1,0 +1,61 @@
+// Aggregation in K interleaved chains (fpstereo_aggregator); a row's last chain runs K - 1
+// row-times after its first, and the sums leave the aggregator's five register stages (S0 .. S5).
+#include <fmt/core.h>
+
+#include "hls_text.hpp"
+#include "stage_list.hpp"
+#include "stage_support.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+class AggregationStage : public Stage {
+ public:
+  std::string title() const override { return "aggregation"; }
+  std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "mgm", "dmax", "uf"}; }
+  std::string start_parameter() const override { return "AGG_START"; }
+  Latency latency(const Geometry& g) const override { return {g.chains - 1, 0, 5}; }
+  std::vector<StageMemory> memories(const Geometry& g) const override {
+    return aggregator_memories(g, "core.aggregation");
+  }
+
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    core.text("\n  // Aggregation in K interleaved chains, from step AGG_START.\n");
+    start_flag(core, d, *this, "agg_on");
+    core.wire("agg_sums", d.cfg.uf * d.widths.aggregated);
+    core.wire("agg_active", 1);
+    core.wire("agg_x", d.x_bits);
+    core.wire("agg_group", d.group_bits);
+    core.wire("agg_slot", d.out_row_bits);
+    core.wire("agg_chain", d.chain_bits);  // LR1 follows the chains
+    Connections side = {{"MATCH_SIDE", "0"}};
+    if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.cfg.path_count())});
+    core.instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + side,
+                  {{"sums", "agg_sums"},
+                   {"sums_active", "agg_active"},
+                   {"sums_x", "agg_x"},
+                   {"sums_group", "agg_group"},
+                   {"sums_chain", "agg_chain"},
+                   {"sums_slot", "agg_slot"}});
+  }
+
+  // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which
+  // delay the stream by a row-time.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string costs = s.base;
+    s.base = "sums";
+    return "\n  // Aggregation.\n" + hls::stream_declarations("SumWord<C>", {s.base}, "kDepth") +
+           fmt::format("  aggregate<C, 0>({}, {}, W, H, p1, p2);\n", costs, s.base);
+  }
+  HlsLoop hls_loop(const Geometry& g) const override {
+    const int64_t W = g.cfg.width, H = g.cfg.height;
+    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf", (H + 1) * 2 * ((W + 1) / 2) * g.groups};
+  }
+  int hls_fill_rows(const Geometry&) const override { return 1; }
+};
+
+}  // namespace
+
+StagePtr aggregation_stage() { return std::make_shared<AggregationStage>(); }
+
+}  // namespace fpstereo::rtl

@@ -1,0 +1,54 @@
+// Confidence (fpstereo_confidence): each pixel's 255 (S2 - S1) / S2 from the winner-take-all's two
+// best sums, divided in kSteps steps while its word waits beside; it then travels above the word
+// through the disparity reorder RAM and, rows later, to the output (output.cpp).
+#include <fmt/core.h>
+
+#include "stage_list.hpp"
+#include "stage_support.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+class ConfidenceStage : public Stage {
+ public:
+  static constexpr int kSteps = 10;
+  std::string title() const override { return "confidence"; }
+  std::vector<std::string> knobs() const override { return {"confidence"}; }
+  Latency latency(const Geometry&) const override { return {0, 0, kSteps}; }
+
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    const bool whole = d.carries_whole;
+    const int data_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + d.widths.output_word +
+                          (whole ? d.widths.disparity : 0);
+    auto data = [&](const std::string& words) {
+      const std::string t = word_tag(words, true);
+      return t.substr(0, t.size() - 1) + ", " + words + "_word" + (whole ? ", " + words + "_whole}" : "}");
+    };
+    const std::string in = streams.words, out = "rated";
+    core.text("\n  // Confidence: the word waits beside the division.\n");
+    word_wires(core, d, out, d.widths.output_word, whole);
+    core.wire(out + "_confidence", kConfidenceBits);
+    // The sub-pixel fit, when there, holds the words its latency after the sums.
+    core.instance("fpstereo_confidence", "confidence_divider",
+                  {{"SUM_W", num(d.widths.aggregated)},
+                   {"DATA_W", num(data_bits)},
+                   {"IN_DELAY", num(d.subpixel_steps)},
+                   {"LAT", num(kSteps)}},
+                  {{"best", "winner_best"},
+                   {"second", "winner_second"},
+                   {"data_in", data(in)},
+                   {"data_out", data(out)},
+                   {"confidence", out + "_confidence"}});
+    streams.words = out;
+  }
+  // ---- HLS: select_base computes it (Winner::confidence).
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Confidence: none, select_base computes it.\n";
+  }
+};
+
+}  // namespace
+
+StagePtr confidence_stage() { return std::make_shared<ConfidenceStage>(); }
+
+}  // namespace fpstereo::rtl

@@ -1,0 +1,141 @@
+// Matching costs: uf per step from the match ring and the cost lanes of the cost function; with
+// adaptive P2, each path's P2 for the pixel beside its costs (fpstereo_adaptive_p2).
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "hls_text.hpp"
+#include "stage_list.hpp"
+#include "stage_support.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+class CostStage : public Stage {
+ public:
+  explicit CostStage(const StereoConfig& c)
+      : cost_(c.cost == CostFunction::Shd && c.shd_window == 1 ? CostFunction::Census : c.cost) {}
+  std::string title() const override { return "cost"; }
+  // min-disp delays the match columns (or, below 0, the base) before the match ring.
+  std::vector<std::string> knobs() const override {
+    return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt", "min-disp"};
+  }
+  // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
+  // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
+  // fpstereo_offset_delays); the lanes take their register stages.
+  Latency latency(const Geometry& g) const override {
+    const Latency wait = base_wait(g.cfg);
+    return {wait.rows, 1 + wait.slots, g.cost_latency};
+  }
+  std::vector<StageMemory> memories(const Geometry& g) const override {
+    if (cost_ != CostFunction::Shd) return {};
+    const int64_t bits = int64_t(g.cfg.shd_window - 1) * std::max(1, g.widths.code);
+    std::vector<StageMemory> m = {{"core.cost.base_codes.line_buffer.mem", g.row_slots, bits},
+                                  {"core.cost.match_codes.line_buffer.mem", g.row_slots, bits}};
+    // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2).
+    if (g.cfg.p2_adapt != 0 && base_wait(g.cfg).rows > 0)
+      m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(g.cfg).rows * g.row_slots, 4 * 8});
+    return m;
+  }
+
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
+    const int code_bits = std::max(1, w.code);
+    std::string module;
+    Connections parameters;
+    switch (cost_) {
+      case CostFunction::Census:
+      case CostFunction::Rank:
+        module = "fpstereo_point_cost";
+        parameters = {{"HAMMING", cost_ == CostFunction::Census ? "1" : "0"}, {"CODE_W", num(code_bits)}};
+        break;
+      case CostFunction::Sad:
+      case CostFunction::Zsad:
+        module = "fpstereo_pixel_window_cost";
+        parameters = {{"N", num(c.window)},
+                      {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                      {"COLSUM_W", num(d.column_sum_bits)},
+                      {"MEAN_MUL", num(int64_t(d.mean_mul))},
+                      {"MEAN_SHIFT", num(d.mean_shift)}};
+        break;
+      case CostFunction::Shd:
+        module = "fpstereo_code_window_cost";
+        parameters = {{"SHD_K", num(c.shd_window)},    {"CODE_W", num(code_bits)},
+                      {"ROW_SLOTS", num(d.row_slots)}, {"COLSUM_W", num(d.column_sum_bits)},
+                      {"COST_ROWS", num(d.cost_rows)}, {"Y_W", num(d.y_bits)}};
+        break;
+    }
+    core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    core.wire("history_x", d.x_bits);
+    core.wire("history_y", d.signed_y_bits, true);
+    core.wire("history_slot", d.cost_row_bits);
+    core.wire("costs", c.uf * w.cost);
+    core.instance(module, "cost",
+                  parameters + Connections{{"DMAX", num(c.dmax)},
+                                           {"UF", num(c.uf)},
+                                           {"COST_W", num(w.cost)},
+                                           {"COST_MAX", num(int64_t(w.cost_max))},
+                                           {"COST_K_W", num(d.cost_row_bits)},
+                                           {"X_W", num(d.x_bits)},
+                                           {"YS_W", num(d.signed_y_bits)},
+                                           {"G_W", num(d.group_bits)},
+                                           {"MIN_DISP", num(c.min_disp)},
+                                           {"LAT", num(d.cost_latency)}});
+    if (c.p2_adapt == 0) return;
+    core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
+    core.wire("cost_penalties", d.penalty_bits);
+    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
+                  {{"N", num(c.window)},
+                   {"PATHS", num(c.paths)},
+                   {"NP", num(c.path_count())},
+                   {"GAIN", num(c.p2_adapt)},
+                   {"PATH_W", num(w.path_cost)},
+                   {"WAIT_SLOTS", num(base_wait(c).slots)},
+                   {"WAIT_ROWS", num(base_wait(c).rows)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"LAT", num(d.cost_latency)}},
+                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
+  }
+
+  // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.
+  std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
+    using hls::stream_declarations;
+    const HlsStreams in = s;
+    s = {"costs", "match_side_base_costs"};
+    std::string text = "\n  // Cost.\n" + stream_declarations("CostWord<C>", {s.base, s.match}, "kDepth");
+    if (d.cfg.p2_adapt == 0)
+      return text + fmt::format("  cost_stage<C>({}, {}, {}, {}, W, H);\n", in.base, in.match, s.base, s.match);
+    // Adaptive P2: the pixels' penalties join their cost words. The penalties wait for the costs,
+    // which the windows delay by rows: their FIFO holds those rows and one more (and with
+    // min-disp m < 0 the -m pixels the cost stage's match runs ahead).
+    const int64_t waiting = (d.window_fill_rows + 1) * int64_t(d.cfg.width) + std::max(0, -d.cfg.min_disp);
+    return text + stream_declarations("CostWord<C>", {"plain_costs"}, "kDepth") +
+           stream_declarations("Penalties<C>", {"penalties"}, num(waiting)) +
+           fmt::format("  cost_stage<C>({}, {}, plain_costs, {}, W, H);\n", in.base, in.match, s.match) +
+           "  penalty_stage<C>(guide_pixels, penalties, W, H, p1, p2);\n" +
+           fmt::format("  attach_penalties<C>(plain_costs, penalties, {}, W, H);\n", s.base);
+  }
+  // With min-disp m < 0 each row opens with -m iterations that read match windows ahead.
+  HlsLoop hls_loop(const Geometry& g) const override {
+    if (g.cfg.min_disp >= 0) return {};
+    const int64_t W = g.cfg.width, H = g.cfg.height, lead = -g.cfg.min_disp;
+    return {"cost (the match -m pixels ahead)", "H*(W*dmax/uf-m)", H * (W * g.groups + lead)};
+  }
+
+ private:
+  // What the base waits beside the match ring (adaptive P2's steps wait as long).
+  Latency base_wait(const StereoConfig& c) const {
+    const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
+    const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
+    return {rs, wait + std::max(0, -c.min_disp), 0};
+  }
+
+  CostFunction cost_;  // SHD over a 1 x 1 window is census
+};
+
+}  // namespace
+
+StagePtr cost_stage(const StereoConfig& cfg) { return std::make_shared<CostStage>(cfg); }
+
+}  // namespace fpstereo::rtl

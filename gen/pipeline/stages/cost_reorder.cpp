@@ -1,0 +1,56 @@
+// Cost reorder RAM: the cost words in raster order in, in chain order out.
+#include "stage_list.hpp"
+#include "stage_support.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+class CostReorderStage : public Stage {
+ public:
+  std::string title() const override { return "cost reorder"; }
+  std::vector<std::string> knobs() const override { return {"uf"}; }
+  Latency latency(const Geometry&) const override { return {0, 0, 1}; }  // written, then read
+  std::vector<StageMemory> memories(const Geometry& g) const override {
+    return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
+  }
+
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    Connections parameters = {{"ROW_SLOTS", num(d.row_slots)},
+                              {"G", num(d.groups)},
+                              {"UF", num(d.cfg.uf)},
+                              {"COST_W", num(d.widths.cost)},
+                              {"LAT", num(d.cost_latency)},
+                              {"COST_ROWS", num(d.cost_rows)},
+                              {"COST_K_W", num(d.cost_row_bits)},
+                              {"COST_AW", num(d.cost_addr_bits)},
+                              {"X_W", num(d.x_bits)},
+                              {"Y_W", num(d.y_bits)},
+                              {"YS_W", num(d.signed_y_bits)},
+                              {"G_W", num(d.group_bits)}};
+    Connections ports;
+    if (d.penalty_bits != 0) {
+      parameters.push_back({"EXTRA_W", num(d.penalty_bits)});
+      ports.push_back({"costs", "{cost_penalties, costs}"});
+    }
+    // The cost words' positions: LR2's lane banks take them.
+    core.text("\n  // Cost reorder RAM.\n");
+    core.wire("cost_valid", 1);
+    core.wire("cost_x", d.x_bits);
+    core.wire("cost_row_slot", d.cost_row_bits);
+    core.wire("cost_group", d.group_bits);
+    core.wire("cost_raddr", d.cost_addr_bits);
+    core.wire("cost_q", d.cost_word_bits);
+    core.instance("fpstereo_cost_reorder", "cost_reorder", parameters, ports);
+  }
+
+  // ---- HLS: aggregate's to_chain_order.
+  std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
+    return "\n  // Cost reorder: in aggregate (to_chain_order).\n";
+  }
+};
+
+}  // namespace
+
+StagePtr cost_reorder_stage() { return std::make_shared<CostReorderStage>(); }
+
+}  // namespace fpstereo::rtl

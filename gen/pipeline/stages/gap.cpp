@@ -1,0 +1,55 @@
+// Gap interpolation (fpstereo_gap_fill), one row behind its input.
+#include <fmt/core.h>
+
+#include "hls_text.hpp"
+#include "stage_list.hpp"
+#include "stage_support.hpp"
+
+namespace fpstereo::rtl {
+namespace {
+
+class GapStage : public Stage {
+ public:
+  std::string title() const override { return "gap interpolation"; }
+  std::vector<std::string> knobs() const override { return {"gap-interp"}; }
+  Latency latency(const Geometry&) const override { return {1, 0, 3}; }
+  std::vector<StageMemory> memories(const Geometry& g) const override {
+    return {{"core.gap.words.mem", 2 * int64_t(g.cfg.width), g.widths.output_word + g.x_bits},
+            {"core.gap.right_neighbours.mem", 2 * int64_t(g.cfg.width), g.widths.output_word}};
+  }
+
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    const PixelStream in = streams.pixels;
+    const PixelStream& out = streams.pixels = {"", "gap_event", "gap_x", "gap_y", "gap_word"};
+    core.text("\n  // Gap interpolation.\n");
+    stream_wires(core, d, out);
+    core.instance("fpstereo_gap_fill", "gap",
+                  {{"W", num(d.cfg.width)},
+                   {"WORD_W", num(d.widths.output_word)},
+                   {"X_W", num(d.x_bits)},
+                   {"Y_W", num(d.y_bits)}},
+                  {{"in_event", in.event},
+                   {"in_x", in.x},
+                   {"in_y", in.y},
+                   {"in_word", in.word},
+                   {"out_event", out.event},
+                   {"out_x", out.x},
+                   {"out_y", out.y},
+                   {"out_word", out.word}});
+  }
+
+  // ---- HLS: one row behind its input.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string in = s.base;
+    s.base = "filled";
+    return "\n  // Gap interpolation.\n" + hls::stream_declarations("Word<C>", {s.base}) +
+           fmt::format("  gap_fill<C>({}, {}, W, H);\n", in, s.base);
+  }
+  int hls_fill_rows(const Geometry&) const override { return 1; }
+};
+
+}  // namespace
+
+StagePtr gap_stage() { return std::make_shared<GapStage>(); }
+
+}  // namespace fpstereo::rtl

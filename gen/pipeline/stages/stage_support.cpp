@@ -1,0 +1,113 @@
+#include "stage_support.hpp"
+
+#include <fmt/core.h>
+
+namespace fpstereo::rtl {
+
+void start_flag(CoreBuilder& core, const RtlDesign& d, const Stage& stage, const std::string& flag) {
+  const std::string start = stage.start_parameter();
+  const int64_t step = d.start_steps.at(start);
+  core.logic(fmt::format("  localparam {0} = {1};\n"
+                         "  reg {2};\n"
+                         "  always @(posedge clk)\n"
+                         "    if (restart) {2} <= 1'b{3};\n"
+                         "    else if (adv && step == {0} - 1) {2} <= 1'b1;\n",
+                         start, step, flag, step == 0 ? 1 : 0),
+             {}, {{flag, 1}});
+}
+
+void stream_wires(CoreBuilder& core, const RtlDesign& d, const PixelStream& s, int word_bits) {
+  if (!s.done.empty()) core.wire(s.done, 1);
+  core.wire(s.event, 1);
+  core.wire(s.x, d.x_bits);
+  core.wire(s.y, d.y_bits);
+  core.wire(s.word, word_bits != 0 ? word_bits : d.widths.output_word);
+}
+
+void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, int word_bits, bool with_whole) {
+  core.wire(words + "_group", g.group_bits);
+  core.wire(words + "_active", 1);
+  core.wire(words + "_x", g.x_bits);
+  core.wire(words + "_slot", g.out_row_bits);
+  core.wire(words + "_word", word_bits);
+  if (with_whole) core.wire(words + "_whole", g.widths.disparity);
+}
+
+std::string word_tag(const std::string& words, bool with_group) {
+  return fmt::format("{{{0}_active, {0}_x, {0}_slot", words) + (with_group ? fmt::format(", {}_group}}", words) : "}");
+}
+
+std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope) {
+  const StereoConfig& c = g.cfg;
+  const int64_t lanes_w = int64_t(c.uf) * g.widths.path_cost;
+  const int64_t row_depth = int64_t(c.width + 1) * g.groups;
+  const int64_t state_depth = int64_t(g.chains) * g.groups;
+  std::vector<StageMemory> out;
+  if (c.paths & kPath0) out.push_back({scope + ".path0.state.mem", state_depth, lanes_w, false});
+  if (c.paths & kPath45) {
+    out.push_back({scope + ".path45.row.mem", row_depth, lanes_w});
+    out.push_back({scope + ".path45.row_min.mem", c.width + 1, g.widths.path_cost});
+    out.push_back({scope + ".path45.state.mem", state_depth, lanes_w, false});
+  }
+  for (int v = 0; v < 2; ++v) {
+    if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
+    const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
+    out.push_back({p + ".row.mem", row_depth, lanes_w});
+    out.push_back({p + ".row_min.mem", c.width + 1, g.widths.path_cost});
+  }
+  return out;
+}
+
+Connections aggregator_parameters(const RtlDesign& g) {
+  const StereoConfig& c = g.cfg;
+  return {{"W", num(c.width)},
+          {"ROW_SLOTS", num(g.row_slots)},
+          {"K", num(g.chains)},
+          {"SLEN", num(g.segment)},
+          {"G", num(g.groups)},
+          {"UF", num(c.uf)},
+          {"COST_W", num(g.widths.cost)},
+          {"COST_MAX", num(int64_t(g.widths.cost_max))},
+          {"PATH_W", num(g.widths.path_cost)},
+          {"SUM_W", num(g.widths.aggregated)},
+          {"PATHS", num(c.paths)},
+          {"LEVELS_PER_STAGE", num(g.levels_per_stage)},
+          {"PATH_TREE_LAT", num(g.path_tree_latency)},
+          {"OUT_ROWS", num(g.out_rows)},
+          {"OUT_K_W", num(g.out_row_bits)},
+          {"COST_AW", num(g.cost_addr_bits)},
+          {"X_W", num(g.x_bits)},
+          {"Y_W", num(g.y_bits)},
+          {"G_W", num(g.group_bits)},
+          {"K_W", num(g.chain_bits)},
+          {"COST_ROWS", num(g.cost_rows)},
+          {"COST_K_W", num(g.cost_row_bits)}};
+}
+
+void output_register(CoreBuilder& core, const std::string& prefix, const PixelStream& stream, const std::string& event,
+                     const std::string& word, int word_bits) {
+  core.logic(fmt::format("  reg {0}_event_q, {0}_first_q, {0}_last_q;\n"
+                         "  reg [{5}:0] {0}_word_q;\n"
+                         "  always @(posedge clk)\n"
+                         "    if (restart) {0}_event_q <= 1'b0;\n"
+                         "    else if (adv) {0}_event_q <= {1};\n"
+                         "  always @(posedge clk)\n"
+                         "    if (adv) begin\n"
+                         "      {0}_word_q <= {4};\n"
+                         "      {0}_first_q <= {2} == 0 && {3} == 0;\n"
+                         "      {0}_last_q <= {2} == frame_width - 1'b1;\n"
+                         "    end\n"
+                         "  assign {0}_due    = {0}_event_q;\n"
+                         "  assign {0}_push   = adv && {0}_event_q;\n"
+                         "  assign {0}_word   = {0}_word_q;\n"
+                         "  assign {0}_first  = {0}_first_q;\n"
+                         "  assign {0}_last   = {0}_last_q;\n",
+                         prefix, event, stream.x, stream.y, word, word_bits - 1),
+             {prefix + "_due", prefix + "_push", prefix + "_word", prefix + "_first", prefix + "_last"});
+}
+
+HlsLoop hls_window_loop(const Geometry& g, const std::string& what, int r) {
+  return {what, fmt::format("(W+{0})*(H+{0})", r), (int64_t(g.cfg.width) + r) * (int64_t(g.cfg.height) + r)};
+}
+
+}  // namespace fpstereo::rtl

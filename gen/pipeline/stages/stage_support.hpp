@@ -1,0 +1,48 @@
+// What several stages share: number text, the start flag of a stage with a schedule of its own,
+// the stream nets, the aggregator's parameters and memories (the base side's and LR2's match
+// side's), the output registers (the disparity's and the right view's).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core_builder.hpp"
+#include "plan.hpp"
+
+namespace fpstereo::rtl {
+
+inline std::string num(int64_t v) { return std::to_string(v); }
+
+inline Connections operator+(Connections a, const Connections& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The stage's first step as a localparam, and `flag`, a register high from that step on (a
+// compare with the step counter would lie on the path to every enable the flag gates).
+void start_flag(CoreBuilder& core, const RtlDesign& d, const Stage& stage, const std::string& flag);
+
+// A pixel stream's nets, the word word_bits wide (the output word's by default).
+void stream_wires(CoreBuilder& core, const RtlDesign& d, const PixelStream& s, int word_bits = 0);
+
+// The nets of the words in chain order named `words`: _group, _active, _x, _slot, a _word of
+// word_bits and, with_whole, the whole D (_whole).
+void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, int word_bits, bool with_whole);
+// Their position as one tag: {_active, _x, _slot} and, with_group, _group.
+std::string word_tag(const std::string& words, bool with_group);
+
+// The aggregator's memories below scope (fpstereo_aggregator.v), and its parameters but
+// MATCH_SIDE, which LR2's match side sets itself.
+std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope);
+Connections aggregator_parameters(const RtlDesign& d);
+
+// An output register: the stream's word with its first and last flags, pushed in the step after
+// `event` (the sequencer stalls while the output register slice is full). `prefix`_due is the
+// sequencer's input; the core's ports are `prefix`_push, _word, _first and _last.
+void output_register(CoreBuilder& core, const std::string& prefix, const PixelStream& stream, const std::string& event,
+                     const std::string& word, int word_bits);
+
+// The HLS loop of a window of radius r: its centre lags the input by r rows and r pixels.
+HlsLoop hls_window_loop(const Geometry& g, const std::string& what, int r);
+
+}  // namespace fpstereo::rtl
