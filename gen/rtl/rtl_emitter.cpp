@@ -292,7 +292,7 @@ std::string core_module(const RtlDesign& d) {
 
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   validate(cfg);
-  // One-pass MGM lost accuracy to SGM on every dataset (README, "Accuracy beyond the paper"), so
+  // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md, "MGM-style aggregation"), so
   // the aggregator keeps one predecessor per path.
   if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
