@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Accuracy of the options beyond the paper against OpenCV's StereoSGBM (MODE_SGBM and MODE_HH4),
 # per dataset of a stereo data folder, for the two KITTI sets pooled and for every pair pooled,
-# as the README's table "Accuracy beyond the paper" (markdown on stdout):
+# as the table of docs/accuracy.md, "Accuracy beyond the paper" (markdown on stdout):
 #   bench/accuracy-beyond.sh [--build-dir B] [DATA]      (DATA: ../shared/data/stereo)
 # Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
 # after KITTI background interpolation of invalid pixels.

@@ -1,5 +1,5 @@
 # The single-file output (`fpstereo-rtl ... > top.v`) lints clean with verilator --lint-only -Wall,
-# as the README promises. Run by ctest with FPSTEREO_RTL and WORK set.
+# as docs/command-line.md promises. Run by ctest with FPSTEREO_RTL and WORK set.
 find_program(VERILATOR verilator REQUIRED)
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${FPSTEREO_RTL} --width 32 --height 8 --dmax 16 --uf 4 --window 5 --median 3

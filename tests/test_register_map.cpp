@@ -1,7 +1,7 @@
-// The AXI4-Lite register map: the C header and the README are printed from rtl::register_map(),
-// the hardware decodes the A_* constants of fpstereo_control.v; the two must agree, register by
-// register. The Verilator benches then drive the registers through the generated header. The
-// README's table is checked against the map here, row by row.
+// The AXI4-Lite register map: the C header and the documented table are printed from
+// rtl::register_map(), the hardware decodes the A_* constants of fpstereo_control.v; the two must
+// agree, register by register. The Verilator benches then drive the registers through the
+// generated header. The table in docs/hardware.md is checked against the map here, row by row.
 #include <fmt/core.h>
 
 #include <catch2/catch.hpp>
@@ -64,7 +64,7 @@ TEST_CASE("the register header names the design and its expected identity") {
 
 namespace {
 
-// One register as a row of the README's table shows it: "0x18 UNIQUENESS rw if generated with".
+// One register as a row of the documented table shows it: "0x18 UNIQUENESS rw if generated with".
 struct RegisterRow {
   uint32_t offset;
   std::string name, access;
@@ -123,11 +123,13 @@ std::vector<std::string> split_list(const std::string& s, const std::string& sep
   }
 }
 
-// The register rows of the README's table under the "Settings and status" heading, each with the
-// table line it comes from. A row may name several registers: "0x20, 0x24" or "0x30 .. 0x3C"
+// The register rows of docs/hardware.md's table under the "Settings and status" heading, each with
+// the table line it comes from. A row may name several registers: "0x20, 0x24" or "0x30 .. 0x3C"
 // (every word in between) with as many names.
-std::vector<std::pair<RegisterRow, std::string>> readme_rows(const std::string& readme) {
-  std::istringstream in(readme.substr(readme.find("**Settings and status (AXI4-Lite, `s_axi_ctrl`).**")));
+std::vector<std::pair<RegisterRow, std::string>> documented_rows(const std::string& doc) {
+  const size_t heading = doc.find("\n## Settings and status (AXI4-Lite, `s_axi_ctrl`)\n");
+  REQUIRE(heading != std::string::npos);
+  std::istringstream in(doc.substr(heading));
   std::vector<std::pair<RegisterRow, std::string>> rows;
   bool in_table = false;
   for (std::string line; std::getline(in, line);) {
@@ -148,7 +150,7 @@ std::vector<std::pair<RegisterRow, std::string>> readme_rows(const std::string& 
     }
     const std::vector<std::string> names = split_list(c[1], ",");
     if (names.size() != offsets.size())
-      FAIL("README.md register row `" << line << "`: " << offsets.size() << " offsets but " << names.size()
+      FAIL("docs/hardware.md register row `" << line << "`: " << offsets.size() << " offsets but " << names.size()
                                       << " names");
     const std::string access =
         c[2].rfind("rw if generated with", 0) == 0 ? std::string("rw if generated with") : c[2];
@@ -157,25 +159,25 @@ std::vector<std::pair<RegisterRow, std::string>> readme_rows(const std::string& 
   return rows;
 }
 
-// The first README row that differs from the map, or "" when they agree.
-std::string first_difference(const std::string& readme) {
-  const auto documented = readme_rows(readme);
+// The first documented row that differs from the map, or "" when they agree.
+std::string first_difference(const std::string& doc) {
+  const auto documented = documented_rows(doc);
   const std::vector<RegisterRow> expected = map_rows();
   for (size_t i = 0; i < std::max(documented.size(), expected.size()); ++i) {
     if (i >= documented.size())
-      return fmt::format("README.md lacks register {} (register_map())", expected[i].text());
+      return fmt::format("docs/hardware.md lacks register {} (register_map())", expected[i].text());
     const auto& [row, line] = documented[i];
     if (i >= expected.size())
-      return fmt::format("README.md register row `{}` has {}, which register_map() lacks", line, row.text());
+      return fmt::format("docs/hardware.md register row `{}` has {}, which register_map() lacks", line, row.text());
     if (row.text() != expected[i].text())
-      return fmt::format("README.md register row `{}` has {}, register_map() has {}", line, row.text(),
+      return fmt::format("docs/hardware.md register row `{}` has {}, register_map() has {}", line, row.text(),
                          expected[i].text());
   }
   return "";
 }
 
-std::string readme_text() {
-  std::ifstream in(FPSTEREO_SOURCE_DIR "/README.md");
+std::string hardware_doc_text() {
+  std::ifstream in(FPSTEREO_SOURCE_DIR "/docs/hardware.md");
   REQUIRE(in);
   std::ostringstream s;
   s << in.rdbuf();
@@ -184,17 +186,17 @@ std::string readme_text() {
 
 }  // namespace
 
-TEST_CASE("the README's register table is the map's, row by row") {
-  CHECK(first_difference(readme_text()) == "");
+TEST_CASE("the register table of docs/hardware.md is the map's, row by row") {
+  CHECK(first_difference(hardware_doc_text()) == "");
 }
 
-TEST_CASE("a README register row that differs from the map is named") {
-  std::string readme = readme_text();
+TEST_CASE("a documented register row that differs from the map is named") {
+  std::string doc = hardware_doc_text();
   const std::string row = "| 0x20, 0x24 | WIDTH, HEIGHT | rw |";
-  const size_t at = readme.find(row);
+  const size_t at = doc.find(row);
   REQUIRE(at != std::string::npos);
-  readme.replace(at, row.size(), "| 0x20, 0x24 | WIDTH, HEIGHT | ro |");
-  CHECK_THAT(first_difference(readme),
-             Catch::StartsWith("README.md register row `| 0x20, 0x24 | WIDTH, HEIGHT | ro |") &&
+  doc.replace(at, row.size(), "| 0x20, 0x24 | WIDTH, HEIGHT | ro |");
+  CHECK_THAT(first_difference(doc),
+             Catch::StartsWith("docs/hardware.md register row `| 0x20, 0x24 | WIDTH, HEIGHT | ro |") &&
                  Catch::EndsWith("has 0x20 WIDTH ro, register_map() has 0x20 WIDTH rw"));
 }

@@ -268,7 +268,7 @@ StereoConfig preset(const std::string& name) {
     c.lr = LrCheck::Lr2;
   } else if (name == "A2" || name == "A3" || name == "A4") {
     // Beyond the paper: C2, C3 and C4 with a 9 x 9 census, adaptive P2, a 7 x 7 median and four
-    // fraction bits (README, "Accuracy beyond the paper").
+    // fraction bits (docs/accuracy.md, "Accuracy beyond the paper").
     census(9, 128, 32);
     c.lr = name == "A2" ? LrCheck::None : name == "A3" ? LrCheck::Lr1 : LrCheck::Lr2;
     c.p2_adapt = 4;

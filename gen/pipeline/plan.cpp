@@ -32,8 +32,8 @@ std::pair<uint64_t, int> reciprocal(uint64_t divisor, uint64_t max_value) {
 // The hardware's own rules beyond validate()'s.
 void check_hardware_rules(const StereoConfig& cfg) {
   validate(cfg);
-  // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md), so the aggregator keeps
-  // one predecessor per path.
+  // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md, "MGM-style
+  // aggregation"), so the aggregator keeps one predecessor per path.
   if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.

@@ -20,7 +20,8 @@ struct ControlPort {
 const std::vector<ControlPort>& control_ports();
 
 // The AXI4-Lite registers (fpstereo_control): byte offset, name, access and meaning, in address
-// order. The generated C header and the README's register map are printed from it.
+// order. The generated C header is printed from it; the table in docs/hardware.md is checked
+// against it (tests/test_register_map.cpp).
 struct Register {
   uint32_t offset;
   std::string name;

@@ -3,7 +3,7 @@
 //   fpstereo-rtl --preset C2 -o DIR                one file per module, filelist.f, config.json, the
 //                                                  register map <prefix>_regs.h and the Vivado files
 //                                                  (constraints/README.md)
-//   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, README "HLS path")
+//   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, docs/hls.md)
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>

@@ -9,12 +9,12 @@
 //     at most one outstanding of each kind, and each accepted request's response presented (a
 //     write's in the cycle after the one that takes it, when the write takes effect; a read's
 //     two cycles after, with the registers' values of the cycle after the one that takes it);
-//   - BRESP as the README's register map says: OKAY for a full-strobe write in range to a
+//   - BRESP as the register map of docs/hardware.md says: OKAY for a full-strobe write in range to a
 //     writable register, SLVERR out of range, to a read-only register (STATUS, VERSION,
 //     CONFIG_ID, UNIQUENESS when not generated, the counters, INFO) or with partial strobes;
 //   - RRESP OKAY, RDATA the register's value in the cycle after the address was taken (the
 //     settings as written, the identity words, INFO), 0 for unmapped and unaligned addresses.
-// The settings are modelled here from the README; the induction compares the model with the
+// The settings are modelled here from docs/hardware.md; the induction compares the model with the
 // unit's registers:
 // formal-probe: probe_enable dut.enable_q
 // formal-probe: probe_width dut.width_q
@@ -162,7 +162,7 @@ module control_props (
       if (r_take) assert(!ar_take);
     end
 
-  // ---- The register map (README), modelled.
+  // ---- The register map (docs/hardware.md), modelled.
   reg        m_enable;
   reg [31:0] m_width, m_height, m_p1, m_p2, m_lr;
   reg        good;     // the write taking effect is accepted

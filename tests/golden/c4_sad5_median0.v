@@ -489,7 +489,7 @@ endmodule
 
 `resetall
 `default_nettype none
-// AXI4-Lite control and status (register map: the generated <prefix>_regs.h and the README).
+// AXI4-Lite control and status (register map: the generated <prefix>_regs.h and docs/hardware.md).
 // Settings are written any time and take effect when the next frame starts: frame_start copies
 // them to the frame_* outputs, which hold for the whole frame. A write of a value out of range, of
 // a read-only register or with partial byte strobes changes nothing, answers SLVERR and is
