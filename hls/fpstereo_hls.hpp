@@ -3,7 +3,7 @@
 // struct C (the generated <prefix>_config.hpp: constants from StereoConfig and derive_widths), reads
 // hls::streams and writes hls::streams in raster order (the aggregation works in chain order
 // inside), and is meant to run under DATAFLOW with its main loop pipelined at II = 1. The generated
-// top's <top>_pipeline chains them: each stage of the plan (gen/rtl/stages.cpp, hls_calls) emits
+// top's <top>_pipeline chains them: each stage of the plan (gen/pipeline/stages/, hls_calls) emits
 // its calls and the streams between them, only those the configuration needs. Stages, in
 // data-flow order:
 //
@@ -75,25 +75,12 @@ using Feature =
     std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
                        std::conditional_t<C::kCost == Cost::Rank, ap_uint<C::kCodeBits>,
                                           std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>>;
-// Side of the window the cost sums over: 1 for census and rank (point costs of transformed
-// pixels), N for SAD and ZSAD, the SHD window for SHD.
-template <class C>
-constexpr int cost_window() {
-  return C::kCost == Cost::Census || C::kCost == Cost::Rank ? 1
-         : C::kCost == Cost::Shd                            ? C::kShdWindow
-                                                            : C::kWindow;
-}
-
 // With adaptive P2 a cost word carries, above its uf costs, the pixel's P2 for each of the four
-// paths (penalty_stage, attach_penalties; the aggregation's base instance reads them).
-template <class C>
-constexpr int penalty_bits() {
-  return C::kP2Adapt != 0 ? 4 * C::kPathCostBits : 0;
-}
+// paths, C::kPenaltyBits (penalty_stage, attach_penalties; the aggregation's base instance reads them).
 template <class C>
 using Penalties = ap_uint<4 * C::kPathCostBits>;  // a pixel's P2 on the 0, 45, 90, 135 degree paths
 template <class C>
-using CostWord = ap_uint<C::kUf * C::kCostBits + penalty_bits<C>()>;  // uf costs, disparity g * uf + lane
+using CostWord = ap_uint<C::kUf * C::kCostBits + C::kPenaltyBits>;  // uf costs, disparity g * uf + lane
 template <class C>
 using PathWord = ap_uint<C::kUf * C::kPathCostBits>;
 template <class C>
@@ -101,13 +88,9 @@ using SumWord = ap_uint<C::kUf * C::kSumBits>;
 template <class C>
 using Word = ap_uint<C::kWordBits>;  // the output word: disparity, invalid flag on top
 // The winner-take-all's word: with sub-pixel output and a left-right check, the whole D above the
-// word (the check compares whole disparities, semantics section 5); otherwise the word itself.
+// word, C::kWholeBits (the check compares whole disparities, semantics section 5).
 template <class C>
-constexpr int whole_bits() {
-  return C::kSubpixelBits != 0 && C::kLr != Lr::None ? C::kDisparityBits : 0;
-}
-template <class C>
-using BaseWord = ap_uint<C::kWordBits + whole_bits<C>()>;
+using BaseWord = ap_uint<C::kWordBits + C::kWholeBits>;
 template <class C>
 using VideoOut = ap_axiu<C::kOutBits, 1, 1, 1>;
 
@@ -269,9 +252,9 @@ inline int abs_diff(int a, int b) { return a > b ? a - b : b - a; }
 // The cost of the current pixel against the match window that spans history[at .. at + 2r]
 // (history[j] is a match column of the cost window, r its radius, the newest at j = 0).
 template <class C>
-int window_cost(const Window<Feature<C>, cost_window<C>()>& base,
-                const Feature<C> history[][cost_window<C>()], int at) {
-  constexpr int K = cost_window<C>(), r = K / 2;
+int window_cost(const Window<Feature<C>, C::kCostWindow>& base,
+                const Feature<C> history[][C::kCostWindow], int at) {
+  constexpr int K = C::kCostWindow, r = K / 2;
   int sum = 0;
   for (int row = 0; row < K; ++row)
     for (int col = 0; col < K; ++col) {
@@ -306,10 +289,10 @@ constexpr int match_lead() {
 // past the row's last match window zero columns enter (outside the image). With LR2 the costs also
 // go to the match side.
 template <class C>
-void cost_stage(hls::stream<Window<Feature<C>, cost_window<C>()>>& base_in,
-                hls::stream<Window<Feature<C>, cost_window<C>()>>& match_in, hls::stream<CostWord<C>>& out,
+void cost_stage(hls::stream<Window<Feature<C>, C::kCostWindow>>& base_in,
+                hls::stream<Window<Feature<C>, C::kCostWindow>>& match_in, hls::stream<CostWord<C>>& out,
                 hls::stream<CostWord<C>>& match_side_out, int width, int height) {
-  constexpr int K = cost_window<C>(), G = C::kGroups, kLead = match_lead<C>();
+  constexpr int K = C::kCostWindow, G = C::kGroups, kLead = match_lead<C>();
   constexpr int kShift = C::kMinDisp > 0 ? C::kMinDisp : 0, kHistory = C::kDmax + K - 1 + kShift;
   Feature<C> history[kHistory][K];
 #pragma HLS ARRAY_PARTITION variable = history complete dim = 0
@@ -400,7 +383,7 @@ attach_groups:
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight * C::kGroups
     if (g == 0) penalty = penalties.read();
     CostWord<C> word = costs.read();
-    word.range(kCostsBits + penalty_bits<C>() - 1, kCostsBits) = penalty;
+    word.range(kCostsBits + C::kPenaltyBits - 1, kCostsBits) = penalty;
     out.write(word);
     if (++g == C::kGroups) g = 0;
   }
@@ -800,7 +783,7 @@ select_rows:
       }
       if (++g == G) {
         const bool valid = C::kUniqueness == 0 || uniqueness == 0 || winner.unique(uniqueness);
-        const BaseWord<C> whole = whole_bits<C>() != 0 ? BaseWord<C>(winner.best_d) : BaseWord<C>(0);
+        const BaseWord<C> whole = C::kWholeBits != 0 ? BaseWord<C>(winner.best_d) : BaseWord<C>(0);
         disparity.write(BaseWord<C>((whole << C::kWordBits) |
                                     BaseWord<C>(valid ? winner.refined() : C::kInvalidWord)));
         if (C::kConfidence) confidences.write(winner.confidence());
@@ -868,7 +851,7 @@ lr_check_pixels:
       const BaseWord<C> in = disparity.read();
       Word<C> w = Word<C>(in.range(C::kWordBits - 1, 0));
       if (int(w) != C::kInvalidWord) {
-        const int d = whole_bits<C>() != 0 ? int(in >> C::kWordBits) : int(w), xm = x - C::kMinDisp - d;
+        const int d = C::kWholeBits != 0 ? int(in >> C::kWordBits) : int(w), xm = x - C::kMinDisp - d;
         const bool inside = xm >= 0 && xm < width;
         if (!inside || abs_diff(d, int(dm_row[inside ? xm : 0])) > threshold) w = C::kInvalidWord;
       }

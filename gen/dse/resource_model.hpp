@@ -23,7 +23,7 @@ struct MemoryEstimate {
   int bram18 = 0, bram36 = 0;
 };
 
-// The memories of a design: its stages' (stages.hpp), in data order.
+// The memories of a design: its stages' (gen/pipeline/stage.hpp), in data order.
 std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& design);
 
 // memory_libmap's choice for one words x bits memory with one write and one registered read port:

@@ -114,8 +114,9 @@ std::string pipeline_body(const rtl::RtlDesign& d) {
   return text;
 }
 
-std::string config_header(const StereoConfig& cfg, const std::string& config) {
-  const Widths w = derive_widths(cfg);
+std::string config_header(const rtl::Geometry& g, const std::string& config) {
+  const StereoConfig& cfg = g.cfg;
+  const Widths& w = g.widths;
   std::ostringstream os;
   os << "// Every constant the kernels of fpstereo_hls.hpp are templated on, for one configuration.\n"
      << "#pragma once\n\n#include \"fpstereo_hls.hpp\"\n\n"
@@ -161,7 +162,13 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
      << "  static constexpr int kLaneBits = " << w.output_lane << ";  // the word's byte-aligned lane\n"
      << "  static constexpr bool kConfidence = " << (cfg.confidence ? "true" : "false")
      << ";  // the confidence in 8 bits above the lane\n"
-     << "  static constexpr int kOutBits = kLaneBits + (kConfidence ? 8 : 0);  // tdata\n"
+     << "  static constexpr int kOutBits = " << g.output_bits << ";  // tdata\n"
+     << "  // The geometry (gen/pipeline/plan.hpp): the side of the window the cost sums over, the whole\n"
+     << "  // D above the winner's word (sub-pixel with a left-right check), the penalties above the costs.\n"
+     << "  static constexpr int kCostWindow = " << g.cost_window << ";\n"
+     << "  static constexpr int kWholeBits = " << (g.carries_whole ? w.disparity : 0) << ";\n"
+     << "  static constexpr int kPenaltyBits = " << (cfg.p2_adapt != 0 ? 4 * w.path_cost : 0)
+     << ";  // the four paths' P2, whichever are enabled\n"
      << "};\n"
      << "// The top functions' ports depend on them (the templates' #if).\n"
      << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n"
@@ -174,14 +181,13 @@ std::string config_header(const StereoConfig& cfg, const std::string& config) {
 std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top"; }
 
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
-  validate(cfg);
   if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
     throw std::invalid_argument("--part " + quoted(options.part) +
                                 ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");
   if (!(options.clock_mhz >= 10 && options.clock_mhz <= 1000))
     throw std::invalid_argument("--clock-mhz " + std::to_string(options.clock_mhz) + ": expected 10 .. 1000");
 
-  const rtl::RtlDesign design = rtl::plan(cfg);
+  const rtl::RtlDesign design = rtl::plan(cfg);  // validates the configuration
   const std::string top = top_name(cfg), config = config_tag(cfg) + "_config", header = config + ".hpp";
   std::ostringstream period;
   period.precision(6);
@@ -197,7 +203,7 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   };
   const std::string cpp = banner(design, "// "), tcl = banner(design, "# ");
   return {
-      {header, cpp + config_header(cfg, config)},
+      {header, cpp + config_header(design, config)},
       {top + ".hpp", cpp + fill(library_file("templates/top.hpp.in"))},
       {top + ".cpp", cpp + fill(library_file("templates/top.cpp.in"))},
       {"fpstereo_hls.hpp", cpp + library_file("fpstereo_hls.hpp")},

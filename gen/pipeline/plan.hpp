@@ -80,6 +80,22 @@ struct Geometry {
   int cost_addr_bits = 0, disp_addr_bits = 0, end_addr_bits = 0;
 };
 
+// An output stream of the design (docs/contributing.md, "Adding an output"): the top's AXI4-Stream
+// master <port>, fed by the core's handshake nets <core>_ready, _push, _first and _last and by its
+// word nets, each at its bit in tdata (the bits between are zero); and the fields that tdata
+// carries, which the register map, the test bench and the docs name.
+struct OutputNet {
+  std::string name;
+  int lsb = 0, bits = 0;
+};
+struct OutputStream {
+  std::string port, core, what;
+  int tdata_bits = 0;
+  std::vector<OutputNet> words;   // the core's nets, in tdata
+  std::vector<OutputNet> fields;  // "disparity", "fraction", "invalid", "confidence"
+};
+std::vector<OutputStream> output_streams(const Geometry& g);
+
 // The geometry, the stages and their schedule.
 struct RtlDesign : Geometry {
   // the stages in data order (stage.hpp); the schedule below is the sum of their latencies

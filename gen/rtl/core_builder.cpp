@@ -79,11 +79,17 @@ std::string names_only(const std::string& verilog) {
 
 void CoreBuilder::stage(const std::string& title) { stage_ = title; }
 
+void CoreBuilder::port_text(const std::string& verilog) { port_text_ += verilog; }
+
 void CoreBuilder::input(const std::string& name, int64_t bits, const std::string& comment) {
-  ports_.push_back(Port{NetDeclaration{name, bits, false}, true, comment});
+  port_text_ += comment.empty() ? "" : "  // " + comment + "\n";
+  ports_.push_back(Port{NetDeclaration{name, bits, false}, true, port_text_});
+  port_text_.clear();
 }
 void CoreBuilder::output(const std::string& name, int64_t bits, const std::string& comment) {
-  ports_.push_back(Port{NetDeclaration{name, bits, false}, false, comment});
+  port_text_ += comment.empty() ? "" : "  // " + comment + "\n";
+  ports_.push_back(Port{NetDeclaration{name, bits, false}, false, port_text_});
+  port_text_.clear();
 }
 
 CoreBuilder::Item& CoreBuilder::add(Item::Kind kind, const std::string& text) {
@@ -115,6 +121,12 @@ void CoreBuilder::instance(const std::string& module, const std::string& name, c
   item.name = name;
   item.parameters = parameters;
   item.connections = connections;
+}
+
+void CoreBuilder::instance(const ModuleSignature& module, const std::string& name, const Connections& parameters,
+                           const Connections& connections) {
+  instance(module.name, name, parameters, connections);
+  items_.back().signature = &module;
 }
 
 namespace {
@@ -238,7 +250,7 @@ std::string CoreBuilder::module_text(const std::string& name) const {
       continue;
     }
     if (item.kind != Item::Instance) continue;
-    const ModuleSignature& signature = template_signature(item.module);
+    const ModuleSignature& signature = item.signature ? *item.signature : template_signature(item.module);
     const auto widths = port_widths(signature, item.parameters);
     for (const auto& [port, expression] : item.connections)
       if (!signature.port(port))
@@ -297,7 +309,7 @@ std::string CoreBuilder::module_text(const std::string& name) const {
     const Port& p = ports_[i];
     const std::string line = fmt::format("  {} wire {}{}{}\n", p.input ? "input " : "output", range(p.net.bits),
                                          p.net.name, i + 1 < ports_.size() ? "," : "");
-    text += p.comment.empty() ? "" : "  // " + p.comment + "\n";
+    text += p.text;
     text += p.input && unread(p.net.name)
                 ? "  /* verilator lint_off UNUSEDSIGNAL */  // read where the configuration uses it\n" + line +
                       "  /* verilator lint_on UNUSEDSIGNAL */\n"

@@ -14,8 +14,16 @@
 
 namespace fpstereo::rtl {
 
+struct ModuleSignature;
+
 // Named values: an instance's parameters or its port connections (port, Verilog expression).
 using Connections = std::vector<std::pair<std::string, std::string>>;
+inline Connections operator+(Connections a, const Connections& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+// A parameter's value.
+inline std::string num(int64_t v) { return std::to_string(v); }
 
 struct NetDeclaration {
   std::string name;
@@ -31,6 +39,8 @@ class CoreBuilder {
   // A comment given goes on the line above.
   void input(const std::string& name, int64_t bits, const std::string& comment = "");
   void output(const std::string& name, int64_t bits, const std::string& comment = "");
+  // Lines written as they are above the next port (comments, attributes).
+  void port_text(const std::string& verilog);
   // Text between the items: comments, localparams.
   void text(const std::string& verilog);
   // A wire declared here; an instance's output or logic() drives it.
@@ -41,6 +51,9 @@ class CoreBuilder {
              const std::vector<NetDeclaration>& regs = {});
   // An instance of a template; every port not in `connections` connects to the net of its name.
   void instance(const std::string& module, const std::string& name, const Connections& parameters,
+                const Connections& connections = {});
+  // The same for a module of the design's own, by its signature (the top's core).
+  void instance(const ModuleSignature& module, const std::string& name, const Connections& parameters,
                 const Connections& connections = {});
 
   // Checks the nets (throws std::logic_error, one line) and writes the module: its header, the
@@ -55,14 +68,15 @@ class CoreBuilder {
     std::vector<NetDeclaration> regs;
     std::string module, name;
     Connections parameters, connections;
+    const ModuleSignature* signature = nullptr;  // a module not among the templates
   };
   struct Port {
     NetDeclaration net;
     bool input;
-    std::string comment;
+    std::string text;  // written above the port
   };
   Item& add(Item::Kind kind, const std::string& text);
-  std::string stage_ = "core";
+  std::string stage_ = "core", port_text_;
   std::vector<Port> ports_;
   std::vector<Item> items_;
 };

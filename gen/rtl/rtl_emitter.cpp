@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "core_builder.hpp"
+#include "module_signature.hpp"
 #include "rtl_templates.hpp"
 
 namespace fpstereo::rtl {
@@ -72,165 +73,184 @@ std::string with_prefix(const std::string& text, const std::string& prefix) {
   return std::regex_replace(text, module_name, prefix + "_$1");
 }
 
-std::string port_line(bool input, int bits, const std::string& name) {
-  const std::string range = bits > 1 ? fmt::format("[{}:0]", bits - 1) : "";
-  return fmt::format("  {} {:<7} {},\n", input ? "input  wire" : "output wire", range, name);
-}
-
-std::string top_module(const RtlDesign& d) {
+// The top: the input register slices, the framing checks and the control interface around the
+// core, and an output register slice for each output stream.
+std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature) {
   const Widths& w = d.widths;
   const StereoConfig& c = d.cfg;
-  std::ostringstream os;
-  os << "`resetall\n`default_nettype none\n"
-     << "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
-     << "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
-     << "// with the invalid flag in bit " << w.output_disparity
-     << (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string())
-     << (c.confidence ? fmt::format(", zero-extended to {} bits, with the pixel's confidence (0..255,\n// "
-                                    "docs/semantics.md section 4) in the top 8 bits",
-                                    d.output_bits - 8)
-                      : std::string())
-     << (c.right_view ? ". m_axis_disp_right: the right view's whole disparities (the\n// left-right check's match "
-                        "side), in raster order of the right image"
-                      : "")
-     << ". Frames are at most " << c.width << " x "
-     << c.height << " pixels; fpstereo_video_in checks the input's\n"
-     << "// framing and resynchronises on the next start of frame after an error.\n"
-     << (d.options.control ? "// Settings and status: AXI4-Lite s_axi_ctrl (register map in " + d.prefix + "_regs.h).\n"
-                           : "// The settings are the generated ones (no control interface).\n")
-     << "module " << d.prefix << "_top (\n"
-     << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:clock:1.0 aclk CLK\" *)\n"
-     << "  (* X_INTERFACE_PARAMETER = \"ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp"
-     << (c.right_view ? ":m_axis_disp_right" : "") << (d.options.control ? ":s_axi_ctrl" : "") << ", ASSOCIATED_RESET aresetn\" *)\n"
-     << "  input  wire        aclk,\n"
-     << "  (* X_INTERFACE_INFO = \"xilinx.com:signal:reset:1.0 aresetn RST\" *)\n"
-     << "  (* X_INTERFACE_PARAMETER = \"POLARITY ACTIVE_LOW\" *)\n"
-     << "  input  wire        aresetn,\n";
+  const auto outputs = output_streams(d);
+  std::string buses = "s_axis_left:s_axis_right";
+  for (const auto& o : outputs) buses += ":" + o.port;
+  if (d.options.control) buses += ":s_axi_ctrl";
+  CoreBuilder top;
+  top.port_text("  (* X_INTERFACE_INFO = \"xilinx.com:signal:clock:1.0 aclk CLK\" *)\n"
+                "  (* X_INTERFACE_PARAMETER = \"ASSOCIATED_BUSIF " + buses + ", ASSOCIATED_RESET aresetn\" *)\n");
+  top.input("aclk", 1);
+  top.port_text("  (* X_INTERFACE_INFO = \"xilinx.com:signal:reset:1.0 aresetn RST\" *)\n"
+                "  (* X_INTERFACE_PARAMETER = \"POLARITY ACTIVE_LOW\" *)\n");
+  top.input("aresetn", 1);
   if (d.options.control)
-    for (const auto& port : control_ports()) os << port_line(port.input, port.bits, "s_axi_ctrl_" + port.name);
-  for (const char* side : {"left", "right"})
-    os << fmt::format(
-        "  input  wire [7:0]  s_axis_{0}_tdata,\n  input  wire        s_axis_{0}_tvalid,\n"
-        "  output wire        s_axis_{0}_tready,\n  input  wire        s_axis_{0}_tuser,\n"
-        "  input  wire        s_axis_{0}_tlast,\n",
-        side);
-  // The disparity words, and with right-view the right view's (whole disparities, 8 bits).
-  std::vector<std::pair<std::string, int>> outputs = {{"m_axis_disp", d.output_bits}};
-  if (c.right_view) outputs.push_back({"m_axis_disp_right", 8});
-  for (size_t i = 0; i < outputs.size(); ++i)
-    os << fmt::format(
-        "  output wire [{1}:0] {0}_tdata,\n  output wire        {0}_tvalid,\n"
-        "  input  wire        {0}_tready,\n  output wire        {0}_tuser,\n"
-        "  output wire        {0}_tlast{2}\n",
-        outputs[i].first, outputs[i].second - 1, i + 1 < outputs.size() ? "," : "");
-  os << ");\n";
-  os << "  wire rst = !aresetn;\n\n"
-     << "  // Input register slices: {tuser, tlast, tdata}.\n";
-  for (const char* side : {"left", "right"})
-    os << fmt::format(
-        "  wire [9:0] {0}_beat;\n  wire {0}_valid, {0}_ready;\n"
-        "  fpstereo_axis_skid #(.DATA_W(10)) {0}_slice (\n"
-        "    .clk(aclk), .rst(rst),\n"
-        "    .s_data({{s_axis_{0}_tuser, s_axis_{0}_tlast, s_axis_{0}_tdata}}), .s_valid(s_axis_{0}_tvalid), "
-        ".s_ready(s_axis_{0}_tready),\n"
-        "    .m_data({0}_beat), .m_valid({0}_valid), .m_ready({0}_ready));\n",
-        side);
-  os << fmt::format(
-      "\n  // The frame's settings, fixed while the core runs it.\n"
-      "  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;\n"
-      "  wire frame_dropped, frame_truncated, protocol_error;\n"
-      "  wire [{}:0] frame_width;\n  wire [{}:0] frame_height;\n  wire [{}:0] p1, p2;\n"
-      "  wire [6:0] uniqueness;\n  wire [3:0] lr_threshold;\n",
-      d.x_bits - 1, d.y_bits - 1, w.path_cost - 1);
+    for (const auto& port : control_ports()) {
+      if (port.input) top.input("s_axi_ctrl_" + port.name, port.bits);
+      else top.output("s_axi_ctrl_" + port.name, port.bits);
+    }
+  for (const std::string side : {"left", "right"}) {
+    top.input("s_axis_" + side + "_tdata", 8);
+    top.input("s_axis_" + side + "_tvalid", 1);
+    top.output("s_axis_" + side + "_tready", 1);
+    top.input("s_axis_" + side + "_tuser", 1);
+    top.input("s_axis_" + side + "_tlast", 1);
+  }
+  for (const auto& o : outputs) {
+    top.output(o.port + "_tdata", o.tdata_bits);
+    top.output(o.port + "_tvalid", 1);
+    top.input(o.port + "_tready", 1);
+    top.output(o.port + "_tuser", 1);
+    top.output(o.port + "_tlast", 1);
+  }
+  top.logic("  wire rst = !aresetn;\n\n  // Input register slices: {tuser, tlast, tdata}.\n", {}, {{"rst", 1}});
+  const Connections clock = {{"clk", "aclk"}};
+  for (const std::string side : {"left", "right"}) {
+    top.wire(side + "_beat", 10);
+    top.wire(side + "_valid", 1);
+    top.wire(side + "_ready", 1);
+    const std::string s = "s_axis_" + side;
+    top.instance("fpstereo_axis_skid", side + "_slice", {{"DATA_W", "10"}},
+                 clock + Connections{{"s_data", "{" + s + "_tuser, " + s + "_tlast, " + s + "_tdata}"},
+                                     {"s_valid", s + "_tvalid"},
+                                     {"s_ready", s + "_tready"},
+                                     {"m_data", side + "_beat"},
+                                     {"m_valid", side + "_valid"},
+                                     {"m_ready", side + "_ready"}});
+  }
+  top.text("\n  // The frame's settings, fixed while the core runs it.\n");
+  for (const char* net : {"enable", "core_idle", "core_accepting", "settings_held", "core_start", "frame_done",
+                          "frame_dropped", "frame_truncated", "protocol_error"})
+    top.wire(net, 1);
+  top.wire("frame_width", d.x_bits);
+  top.wire("frame_height", d.y_bits);
+  top.wire("p1", w.path_cost);
+  top.wire("p2", w.path_cost);
+  top.wire("uniqueness", 7);
+  top.wire("lr_threshold", 4);
   if (d.options.control) {
     // INFO holds 16 words, word 0 in the low bits; the unused ones read 0.
     auto words = info_words(d);
     words.resize(16);
     std::string info;
     for (size_t i = words.size(); i-- > 0;) info += fmt::format("32'd{}{}", words[i].second, i ? ", " : "");
-    os << fmt::format(
-        "  fpstereo_control #(\n"
-        "    .X_W({}), .Y_W({}), .PATH_W({}), .MIN_WIDTH({}), .MAX_WIDTH({}), .MIN_HEIGHT({}), .MAX_HEIGHT({}),\n"
-        "    .P1_INIT({}), .P2_INIT({}), .P2_MAX({}), .UNIQUENESS_SETTABLE({}), .UNIQUENESS_INIT({}),\n"
-        "    .LR_SETTABLE({}), .LR_THRESHOLD_INIT({}), .VERSION(32'h{:08x}), .CONFIG_ID(32'h{:08x}),\n"
-        "    .INFO({{{}}})\n"
-        "  ) control (\n"
-        "    .clk(aclk), .rst(rst),\n",
-        d.x_bits, d.y_bits, w.path_cost, d.min_width, c.width, d.min_height, c.height, c.p1, c.p2,
-        c.p2, c.uniqueness != 0 ? 1 : 0, c.uniqueness, c.lr != LrCheck::None ? 1 : 0, c.lr_threshold,
-        version_word(), config_id(d), info);
-    for (const auto& port : control_ports()) os << fmt::format("    .s_axi_{0}(s_axi_ctrl_{0}),\n", port.name);
-    os << "    .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),\n"
-       << "    .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),\n"
-       << "    .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),\n"
-       << "    .frame_truncated(frame_truncated), .protocol_error(protocol_error), .settings_held(settings_held));\n";
+    Connections ports = clock;
+    for (const auto& port : control_ports()) ports.push_back({"s_axi_" + port.name, "s_axi_ctrl_" + port.name});
+    top.instance("fpstereo_control", "control",
+                 {{"X_W", num(d.x_bits)},
+                  {"Y_W", num(d.y_bits)},
+                  {"PATH_W", num(w.path_cost)},
+                  {"MIN_WIDTH", num(d.min_width)},
+                  {"MAX_WIDTH", num(c.width)},
+                  {"MIN_HEIGHT", num(d.min_height)},
+                  {"MAX_HEIGHT", num(c.height)},
+                  {"P1_INIT", num(c.p1)},
+                  {"P2_INIT", num(c.p2)},
+                  {"P2_MAX", num(c.p2)},
+                  {"UNIQUENESS_SETTABLE", c.uniqueness != 0 ? "1" : "0"},
+                  {"UNIQUENESS_INIT", num(c.uniqueness)},
+                  {"LR_SETTABLE", c.lr != LrCheck::None ? "1" : "0"},
+                  {"LR_THRESHOLD_INIT", num(c.lr_threshold)},
+                  {"VERSION", fmt::format("32'h{:08x}", version_word())},
+                  {"CONFIG_ID", fmt::format("32'h{:08x}", config_id(d))},
+                  {"INFO", "{" + info + "}"}},
+                 ports + Connections{{"busy", "!core_idle"},
+                                     {"frame_start", "core_start"},
+                                     {"frame_p1", "p1"},
+                                     {"frame_p2", "p2"},
+                                     {"frame_uniqueness", "uniqueness"},
+                                     {"frame_lr_threshold", "lr_threshold"}});
   } else {
-    os << fmt::format(
-        "  assign enable = 1'b1;\n  assign settings_held = 1'b1;\n  assign frame_width = {}'d{};\n  assign frame_height = {}'d{};\n"
-        "  assign p1 = {}'d{};\n  assign p2 = {}'d{};\n  assign uniqueness = 7'd{};\n  assign lr_threshold = 4'd{};\n"
-        "  // Without a control interface there is nothing to count into, and no status to show.\n"
-        "  wire unused_events = &{{1'b0, frame_done, frame_dropped, frame_truncated, protocol_error, core_idle}};\n",
-        d.x_bits, c.width, d.y_bits, c.height, w.path_cost, c.p1, w.path_cost, c.p2, c.uniqueness,
-        c.lr_threshold);
+    top.logic(fmt::format("  assign enable = 1'b1;\n  assign settings_held = 1'b1;\n  assign frame_width = {}'d{};\n"
+                          "  assign frame_height = {}'d{};\n  assign p1 = {}'d{};\n  assign p2 = {}'d{};\n"
+                          "  assign uniqueness = 7'd{};\n  assign lr_threshold = 4'd{};\n",
+                          d.x_bits, c.width, d.y_bits, c.height, w.path_cost, c.p1, w.path_cost, c.p2, c.uniqueness,
+                          c.lr_threshold),
+              {"enable", "settings_held", "frame_width", "frame_height", "p1", "p2", "uniqueness", "lr_threshold"});
   }
-  os << fmt::format(
-      "\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n"
-      "  wire framed_valid, framed_ready;\n  wire [7:0] framed_left, framed_right;\n"
-      "  fpstereo_video_in #(.X_W({1}), .Y_W({2})) framing (\n"
-      "    .clk(aclk), .rst(rst), .enable(enable),\n"
-      "    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),\n"
-      "    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),\n"
-      "    .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),\n"
-      "    .frame_height(frame_height),\n"
-      "    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),\n"
-      "    .in_take(framed_valid && framed_ready),\n"
-      "    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));\n"
-      "\n  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the\n"
-      "  // framing checks through the core's enable.\n"
-      "  wire core_valid, take;\n  wire [7:0] core_left, core_right;\n"
-      "  fpstereo_axis_skid #(.DATA_W(16)) pixel_slice (\n"
-      "    .clk(aclk), .rst(rst),\n"
-      "    .s_data({{framed_left, framed_right}}), .s_valid(framed_valid), .s_ready(framed_ready),\n"
-      "    .m_data({{core_left, core_right}}), .m_valid(core_valid), .m_ready(take));\n",
-      d.prefix, d.x_bits, d.y_bits);
-  os << "\n  wire out_ready, out_push, out_first, out_last;\n"
-     << fmt::format("  wire [{}:0] out_word;\n", w.output_disparity)
-     << (c.confidence ? "  wire [7:0] out_confidence;\n" : "");
-  if (c.right_view)
-    os << fmt::format("  wire view_ready, view_push, view_first, view_last;\n  wire [{}:0] view_word;\n",
-                      w.disparity - 1);
-  os << fmt::format(
-      "  {}_sgm_core core (\n"
-      "    .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),\n"
-      "    .accepting(core_accepting),\n"
-      "    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),\n"
-      "    .lr_threshold(lr_threshold),\n"
-      "    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),\n"
-      "    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),\n"
-      "    .out_last(out_last),{}{}\n"
-      "    .frame_end(frame_done));\n",
-      d.prefix, c.confidence ? " .out_confidence(out_confidence)," : "",
-      c.right_view ? "\n    .view_ready(view_ready), .view_push(view_push), .view_word(view_word),\n"
-                     "    .view_first(view_first), .view_last(view_last),"
-                   : "");
-  // Output register slices: {tuser, tlast, tdata}, the word zero-extended to its lane, the
-  // confidence (if any) above it.
-  auto slice = [&](const std::string& name, const std::string& core, const std::string& port, int port_bits,
-                   int word_bits, const std::string& above = "") {
-    const int pad = port_bits - word_bits - (above.empty() ? 0 : 8);
-    os << fmt::format("  fpstereo_axis_skid #(.DATA_W({})) {} (\n", port_bits + 2, name)
-       << "    .clk(aclk), .rst(rst),\n"
-       << fmt::format("    .s_data({{{0}_first, {0}_last, {2}{1}{0}_word}}), .s_valid({0}_push), .s_ready({0}_ready),\n",
-                      core, pad > 0 ? fmt::format("{}'d0, ", pad) : std::string(),
-                      above.empty() ? std::string() : above + ", ")
-       << fmt::format("    .m_data({{{0}_tuser, {0}_tlast, {0}_tdata}}), .m_valid({0}_tvalid),\n", port)
-       << fmt::format("    .m_ready({}_tready));\n", port);
-  };
-  os << "\n  // Output register slices.\n";
-  slice("disp_slice", "out", "m_axis_disp", d.output_bits, w.output_word, c.confidence ? "out_confidence" : "");
-  if (c.right_view) slice("disp_right_slice", "view", "m_axis_disp_right", 8, w.disparity);
-  os << "endmodule\n`resetall\n";
-  return os.str();
+  top.text("\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n");
+  top.wire("framed_valid", 1);
+  top.wire("framed_ready", 1);
+  top.wire("framed_left", 8);
+  top.wire("framed_right", 8);
+  top.instance("fpstereo_video_in", "framing", {{"X_W", num(d.x_bits)}, {"Y_W", num(d.y_bits)}},
+               clock + Connections{{"left", "left_beat"},
+                                   {"right", "right_beat"},
+                                   {"in_valid", "framed_valid"},
+                                   {"in_left", "framed_left"},
+                                   {"in_right", "framed_right"},
+                                   {"in_take", "framed_valid && framed_ready"}});
+  top.text("\n  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the\n"
+           "  // framing checks through the core's enable.\n");
+  top.wire("core_valid", 1);
+  top.wire("take", 1);
+  top.wire("core_left", 8);
+  top.wire("core_right", 8);
+  top.instance("fpstereo_axis_skid", "pixel_slice", {{"DATA_W", "16"}},
+               clock + Connections{{"s_data", "{framed_left, framed_right}"},
+                                   {"s_valid", "framed_valid"},
+                                   {"s_ready", "framed_ready"},
+                                   {"m_data", "{core_left, core_right}"},
+                                   {"m_valid", "core_valid"},
+                                   {"m_ready", "take"}});
+  top.text("\n");
+  Connections core_ports = clock + Connections{{"start", "core_start"},
+                                               {"idle", "core_idle"},
+                                               {"accepting", "core_accepting"},
+                                               {"in_valid", "core_valid"},
+                                               {"in_left", "core_left"},
+                                               {"in_right", "core_right"},
+                                               {"in_take", "take"},
+                                               {"frame_end", "frame_done"}};
+  for (const auto& o : outputs) {
+    for (const char* handshake : {"_ready", "_push", "_first", "_last"}) top.wire(o.core + handshake, 1);
+    for (const auto& word : o.words) top.wire(word.name, word.bits);
+  }
+  top.instance(core_signature, "core", {}, core_ports);
+  // Output register slices: {tuser, tlast, tdata}, the core's words at their bits, zeros between.
+  top.text("\n  // Output register slices.\n");
+  for (const auto& o : outputs) {
+    std::string tdata;
+    int at = 0;
+    for (const auto& word : o.words) {
+      if (word.lsb > at) tdata = fmt::format("{}'d0, ", word.lsb - at) + tdata;
+      tdata = word.name + (tdata.empty() ? "" : ", ") + tdata;
+      at = word.lsb + word.bits;
+    }
+    if (o.tdata_bits > at) tdata = fmt::format("{}'d0, ", o.tdata_bits - at) + tdata;
+    top.instance("fpstereo_axis_skid", o.port.substr(std::string("m_axis_").size()) + "_slice",
+                 {{"DATA_W", num(o.tdata_bits + 2)}},
+                 clock + Connections{{"s_data", fmt::format("{{{0}_first, {0}_last, {1}}}", o.core, tdata)},
+                                     {"s_valid", o.core + "_push"},
+                                     {"s_ready", o.core + "_ready"},
+                                     {"m_data", fmt::format("{{{0}_tuser, {0}_tlast, {0}_tdata}}", o.port)},
+                                     {"m_valid", o.port + "_tvalid"},
+                                     {"m_ready", o.port + "_tready"}});
+  }
+  std::string head =
+      "`resetall\n`default_nettype none\n"
+      "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
+      "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
+      "// with the invalid flag in bit " + num(w.output_disparity) +
+      (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string()) +
+      (c.confidence ? fmt::format(", zero-extended to {} bits, with the pixel's confidence (0..255,\n// "
+                                  "docs/semantics.md section 4) in the top 8 bits",
+                                  d.output_bits - 8)
+                    : std::string()) +
+      (c.right_view ? ". m_axis_disp_right: the right view's whole disparities (the\n// left-right check's match "
+                      "side), in raster order of the right image"
+                    : "") +
+      ". Frames are at most " + num(c.width) + " x " + num(c.height) +
+      " pixels; fpstereo_video_in checks the input's\n"
+      "// framing and resynchronises on the next start of frame after an error.\n" +
+      (d.options.control ? "// Settings and status: AXI4-Lite s_axi_ctrl (register map in " + d.prefix + "_regs.h).\n"
+                         : "// The settings are the generated ones (no control interface).\n");
+  return head + top.module_text(d.prefix + "_top") + "`resetall\n";
 }
 
 // The core: the stages between the input and output register slices, each adding its nets and
@@ -258,18 +278,12 @@ std::string core_module(const RtlDesign& d) {
   core.input("in_left", 8);
   core.input("in_right", 8);
   core.output("in_take", 1);
-  core.input("out_ready", 1, "output word (invalid flag above the disparity), pushed when out_push is high");
-  core.output("out_push", 1);
-  core.output("out_word", w.output_word);
-  core.output("out_first", 1);
-  core.output("out_last", 1);
-  if (d.cfg.confidence) core.output("out_confidence", kConfidenceBits, "the pixel's confidence, beside out_word");
-  if (d.cfg.right_view) {
-    core.input("view_ready", 1, "the right view's word, pushed when view_push is high");
-    core.output("view_push", 1);
-    core.output("view_word", w.disparity);
-    core.output("view_first", 1);
-    core.output("view_last", 1);
+  for (const auto& o : output_streams(d)) {
+    core.input(o.core + "_ready", 1, o.what + ", pushed when " + o.core + "_push is high");
+    core.output(o.core + "_push", 1);
+    for (const auto& word : o.words) core.output(word.name, word.bits);
+    core.output(o.core + "_first", 1);
+    core.output(o.core + "_last", 1);
   }
   core.output("frame_end", 1, "high in the cycle that pushes the frame's last pixel");
   CoreStreams streams;
@@ -286,7 +300,9 @@ std::string core_module(const RtlDesign& d) {
 }  // namespace
 
 std::vector<EmittedFile> emit(const RtlDesign& design) {
-  const std::string head = banner(design), top = top_module(design), core = core_module(design);
+  const std::string head = banner(design), core = core_module(design);
+  const ModuleSignature core_signature = parse_module_signature(core);
+  const std::string top = top_module(design, core_signature);
   std::vector<EmittedFile> files = {{design.prefix + "_top.v", head + with_prefix(top, design.prefix)},
                                     {design.prefix + "_sgm_core.v", head + with_prefix(core, design.prefix)}};
   for (const auto& module : used_modules(top + core)) {

@@ -1,4 +1,4 @@
-// What several stages share: number text, the start flag of a stage with a schedule of its own,
+// What several stages share: the start flag of a stage with a schedule of its own,
 // the stream nets, the aggregator's parameters and memories (the base side's and LR2's match
 // side's), the output registers (the disparity's and the right view's).
 #pragma once
@@ -10,13 +10,6 @@
 #include "plan.hpp"
 
 namespace fpstereo::rtl {
-
-inline std::string num(int64_t v) { return std::to_string(v); }
-
-inline Connections operator+(Connections a, const Connections& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
 
 // The stage's first step as a localparam, and `flag`, a register high from that step on (a
 // compare with the step counter would lie on the path to every enable the flag gates).

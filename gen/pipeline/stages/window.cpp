@@ -63,7 +63,7 @@ class WindowStage : public Stage {
     using hls::stream_declarations;
     const HlsStreams in = s;
     s = {"base_windows", "match_windows"};
-    const std::string window = "Window<Feature<C>, cost_window<C>()>";
+    const std::string window = "Window<Feature<C>, C::kCostWindow>";
     // With min-disp m < 0 the cost stage reads the match windows -m ahead: the base windows wait.
     std::string text = "\n  // Windows of the cost.\n" +
                        (d.cfg.min_disp < 0 ? stream_declarations(window, {s.base}, "2 - C::kMinDisp") +
@@ -84,7 +84,7 @@ class WindowStage : public Stage {
       text += fmt::format("  transform_stage<C>({0}_pixels, {0}_features, W, H);\n", side);
     for (const auto& [side, windows] : {std::pair{"left", s.base}, std::pair{"right", s.match}})
       text += fmt::format(
-          "  window_stage<Feature<C>, cost_window<C>(), C::kMaxWidth>({}_features, {}, W, H, "
+          "  window_stage<Feature<C>, C::kCostWindow, C::kMaxWidth>({}_features, {}, W, H, "
           "zero_value<Feature<C>>());\n",
           side, windows);
     return text;
