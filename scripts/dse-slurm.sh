@@ -7,7 +7,8 @@
 # DIR/dse.html. The DSE arguments are those of `fpstereo dse` (dataset folders, axes,
 # constraints, --yosys-front ...) without --shard, -o/--csv, --html and --cache, which this sets.
 # --sbatch passes options to both sbatch calls (partition, account, time limit). --wait returns
-# when the merge is done, with its status. Prints the two job ids.
+# when the merge is done, with its status. Prints the two job ids. Exits 2 for bad arguments, 1
+# when sbatch fails (or, with --wait, the sweep does).
 set -euo pipefail
 fail() { echo "dse-slurm: $*" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -65,5 +66,5 @@ for i in $(seq 1 "$tasks"); do shards+=("$out/shard-$i.csv"); done
 merge=$(sbatch --parsable --job-name=fpstereo-dse-merge --dependency=afterok:"$array" --kill-on-invalid-dep=yes \
   --output="$out/logs/merge.log" $wait "${sbatch_options[@]}" \
   --wrap "exec$(q "$fpstereo" dse merge "${shards[@]}" -o "$out/dse.csv" --html "$out/dse.html" "${report[@]}")") ||
-  fail "the sweep failed: see $out/logs"
+  { echo "dse-slurm: the sweep failed: see $out/logs" >&2; exit 1; }
 echo "dse-slurm: array job $array ($tasks tasks), merge job ${merge%%;*}; results in $out/dse.csv"

@@ -11,19 +11,20 @@ using namespace fpstereo;
 
 namespace {
 
-// Sets the array variables for one call and unsets them after; an empty value leaves one unset.
+const char* const kArrayVariables[] = {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_COUNT", "SLURM_ARRAY_TASK_MIN",
+                                       "SLURM_ARRAY_TASK_STEP"};
+
+void unset_array_variables() {
+  for (const char* name : kArrayVariables) ::unsetenv(name);
+}
+
+// resolve_shard("auto") with the array variables set for the call (an empty value: unset).
 std::string shard_in_task(const std::map<std::string, std::string>& variables) {
-  const char* names[] = {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_COUNT", "SLURM_ARRAY_TASK_MIN",
-                         "SLURM_ARRAY_TASK_STEP"};
-  for (const char* name : names) ::unsetenv(name);
+  unset_array_variables();
   for (const auto& [name, value] : variables)
     if (!value.empty()) ::setenv(name.c_str(), value.c_str(), 1);
   struct Unset {
-    ~Unset() {
-      for (const char* name : {"SLURM_ARRAY_TASK_ID", "SLURM_ARRAY_TASK_COUNT", "SLURM_ARRAY_TASK_MIN",
-                               "SLURM_ARRAY_TASK_STEP"})
-        ::unsetenv(name);
-    }
+    ~Unset() { unset_array_variables(); }
   } unset;
   return resolve_shard("auto");
 }
@@ -38,7 +39,7 @@ std::map<std::string, std::string> task(const std::string& id, const std::string
 
 }  // namespace
 
-TEST_CASE("--shard auto numbers the tasks of an array from 1", "[slurm]") {
+TEST_CASE("shard auto numbers the tasks of a Slurm array from 1", "[slurm]") {
   CHECK(resolve_shard("3/8") == "3/8");  // anything else is passed on as given
   CHECK(shard_in_task(task("1", "4", "1")) == "1/4");  // --array=1-4
   CHECK(shard_in_task(task("4", "4", "1")) == "4/4");
@@ -48,7 +49,7 @@ TEST_CASE("--shard auto numbers the tasks of an array from 1", "[slurm]") {
   CHECK(shard_in_task(task("2", "3", "", "")) == "3/3");  // MIN and STEP unset: from 0 in steps of 1
 }
 
-TEST_CASE("--shard auto outside an array, or in one with gaps, is an error", "[slurm]") {
+TEST_CASE("shard auto outside a Slurm array, or in one with gaps, is an error", "[slurm]") {
   CHECK_THROWS_WITH(shard_in_task({}), Catch::Contains("SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT are not set"));
   CHECK_THROWS_WITH(shard_in_task(task("2", "", "1")), Catch::Contains("not a Slurm array task"));
   CHECK_THROWS_WITH(shard_in_task(task("x", "4", "1")), Catch::Contains("SLURM_ARRAY_TASK_ID=x is not a task number"));

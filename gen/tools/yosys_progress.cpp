@@ -23,12 +23,13 @@ void YosysProgress::update() {
     std::string chunk((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     read_ += chunk.size();
     partial_ += chunk;
-    // Yosys numbers its passes: "4.12. Executing ABC9 pass." (sub-passes of a script nest).
-    static const std::regex pass(R"(^[0-9.]+ Executing (.*?)\.?$)");
+    // Yosys numbers its passes, the steps of a script nested under it: "4.12. Executing ABC9 pass."
+    // The number stays in the line: how far into the script the run is.
+    static const std::regex pass(R"(^([0-9.]+) Executing (.*?)\.?$)");
     std::smatch m;
     for (size_t end; (end = partial_.find('\n')) != std::string::npos; partial_.erase(0, end + 1)) {
       const std::string line = partial_.substr(0, end);
-      if (std::regex_match(line, m, pass)) pass_ = m[1];
+      if (std::regex_match(line, m, pass)) pass_ = m[1].str() + " " + m[2].str();
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
