@@ -9,6 +9,7 @@
 
 #include "config.hpp"
 #include "dataset.hpp"
+#include "files.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
 #include "metrics.hpp"
@@ -178,6 +179,8 @@ PYBIND11_MODULE(fpstereo, m) {
     } catch (const ConfigError& e) {
       PyErr_SetString(PyExc_ValueError, (std::string("invalid config: ") + e.what()).c_str());
     } catch (const InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const FileError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });

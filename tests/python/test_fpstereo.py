@@ -192,6 +192,12 @@ class Evaluate(unittest.TestCase):
                 compared += 1
         self.assertGreaterEqual(compared, 4 * len(metrics))  # cones and overall, valid only and filled
 
+    def test_bad_dataset_is_a_value_error(self):
+        with self.assertRaisesRegex(ValueError, "no such directory"):
+            fpstereo.StereoSGM().evaluate(os.path.join(CONES, "missing"))
+        with self.assertRaisesRegex(ValueError, "no pairs.csv"):
+            fpstereo.StereoSGM().evaluate(os.path.dirname(CONES))
+
 
 if __name__ == "__main__":
     unittest.main()
