@@ -41,7 +41,7 @@ export SLURM_CONF=$work/slurm.conf
 mkdir -p "$work/state" "$work/spool"
 cat >"$SLURM_CONF" <<CONF
 ClusterName=fpstereo-test
-SlurmctldHost=$host
+SlurmctldHost=$host(127.0.0.1)
 SlurmUser=root
 SlurmctldPort=16817
 SlurmdPort=16818
@@ -63,7 +63,7 @@ MpiDefault=none
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 ReturnToService=2
-NodeName=$host CPUs=$cpus State=UNKNOWN
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
 PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
 for _ in $(seq 50); do [ -S "$work/munge.sock" ] && break; sleep 0.1; done
