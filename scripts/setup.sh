@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages fpstereo needs; does nothing (quietly) when all are present.
+#   scripts/setup.sh [--slurm]
+# --slurm adds a one-node Slurm (slurmctld, slurmd, munge) for the opt-in test of
+# docs/cluster.md, ctest -L slurm; the daemons are not started.
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
   libopencv-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   verilator yosys z3 iverilog tcl
+  python3-dev python3-numpy pybind11-dev python3-pybind11 python3-opencv
 )
+case ${1:-} in
+  --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
+  "") ;;
+  *) echo "setup: unknown option '$1' (expected --slurm or nothing)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

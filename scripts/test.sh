@@ -3,5 +3,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-# The long fuzz run (label fuzz) is opt-in: ctest --test-dir build -L fuzz
-ctest --test-dir build --output-on-failure -j "$(nproc)" -LE "^fuzz$"
+# Opt-in: the long fuzz run (ctest -L fuzz) and the one-node Slurm cluster (ctest -L slurm, docs/cluster.md)
+ctest --test-dir build --output-on-failure -j "$(nproc)" -LE "^(fuzz|slurm)$"

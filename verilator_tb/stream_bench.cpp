@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <chrono>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <random>
@@ -198,6 +200,17 @@ bool has_confidence() { return false; }
 
 namespace {
 
+// On a terminal, the progress line is redrawn every this many simulated cycles (a fraction of a
+// second at the simulator's few hundred thousand cycles per second).
+constexpr uint64_t kProgressCycles = 1 << 16;
+
+void show_progress(size_t frames_done, size_t frames, uint64_t cycle, std::chrono::steady_clock::time_point start) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cerr << fmt::format("\r\033[Kfpstereo-tb: {}/{} frames, {} cycles, {:.0f} kcycles/s", frames_done, frames,
+                           cycle, seconds > 0 ? double(cycle) / seconds / 1e3 : 0.0)
+            << std::flush;
+}
+
 // AXI4-Lite master: one access at a time, from a queue; address and data of a write are offered
 // together, each held until its ready.
 class LiteMaster {
@@ -340,7 +353,10 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
   bool seen_input = false;
   uint64_t last_progress = 0;  // cycle of the last output handshake (or reset)
   uint64_t cycle = 0;
+  const auto start = std::chrono::steady_clock::now();
   for (;; ++cycle) {
+    if (settings.progress && cycle % kProgressCycles == 0 && cycle > 0)
+      show_progress(run.frame_end_cycle.size(), plan.output_sizes.size(), cycle, start);
     // Actions due: the left stream has had enough beats taken.
     while (next_action < plan.actions.size() && left.taken() >= plan.actions[next_action].after_taken) {
       const Action& action = plan.actions[next_action++];
@@ -410,6 +426,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
     right_ready = right_sink_ready();
   }
   run.cycles = cycle + 1;
+  if (settings.progress) std::cerr << "\r\033[K" << std::flush;  // the results take the line
   dut->final();
   return run;
 }

@@ -21,6 +21,7 @@ struct StreamSettings {
   uint64_t timeout = 0;     // cycles without an output handshake before giving up
   uint32_t seed = 1;        // idle and backpressure patterns, the design's initial state
   bool random_init = true;  // registers and memories start random rather than 0
+  bool progress = false;    // frames done and simulated cycles per second on stderr, one updated line
 };
 
 // One input beat: tdata, tuser (start of frame), tlast (end of row).

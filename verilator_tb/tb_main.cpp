@@ -19,6 +19,7 @@
 #include <optional>
 #include <random>
 #include <regex>
+#include <unistd.h>
 
 #include "compare.hpp"
 #include "config_cli.hpp"
@@ -611,6 +612,7 @@ int run_bench(const Options& opt) {
   settings.timeout = opt.timeout ? opt.timeout : 20 * ideal_cycles_per_frame(cfg) + 100000;
   settings.seed = opt.seed;
   settings.random_init = !opt.zero_init;
+  settings.progress = ::isatty(STDERR_FILENO);  // in a script, only the report
 
   Totals totals;
   const StreamRun measured = check_run(throughput_run(cfg, pairs), cfg, settings, totals);

@@ -110,10 +110,10 @@ std::string depth_text(int depth) {
   }
 }
 
-cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::string& role) {
+// `what` names the image in messages: "left image 'a.png'".
+cv::Mat1b to_gray(const cv::Mat& image, const std::string& what) {
   if (image.depth() != CV_8U)
-    throw InputError(
-        fmt::format("{} {}: {} image, expected 8-bit", role, quoted(path), depth_text(image.depth())));
+    throw InputError(fmt::format("{}: {} image, expected 8-bit", what, depth_text(image.depth())));
   cv::Mat1b gray;
   switch (image.channels()) {
     case 1:
@@ -126,8 +126,8 @@ cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::stri
       cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
       break;
     default:
-      throw InputError(fmt::format("{} {}: {} channels, expected gray, colour or colour with alpha", role,
-                                   quoted(path), image.channels()));
+      throw InputError(
+          fmt::format("{}: {} channels, expected gray, colour or colour with alpha", what, image.channels()));
   }
   return gray;
 }
@@ -290,7 +290,11 @@ GrayImage upscale(const GrayImage& image, int factor) {
 }
 
 GrayImage load_gray(const std::string& path, const std::string& role) {
-  const cv::Mat1b gray = to_gray(decode(read_bytes(path, role), path, role), path, role);
+  return to_gray_image(decode(read_bytes(path, role), path, role), role + " " + quoted(path));
+}
+
+GrayImage to_gray_image(const cv::Mat& decoded, const std::string& what) {
+  const cv::Mat1b gray = to_gray(decoded, what);
   GrayImage image(gray.cols, gray.rows);
   for (int y = 0; y < gray.rows; ++y) std::copy(gray[y], gray[y] + gray.cols, &image.at(0, y));
   return image;

@@ -22,6 +22,9 @@ class InputError : public std::runtime_error {
 // Reads any image OpenCV decodes and returns it as 8-bit gray (colour and alpha images are
 // converted with cv::cvtColor). `role` names the image in messages, e.g. "left image".
 GrayImage load_gray(const std::string& path, const std::string& role);
+// A decoded image (8-bit, 1, 3 or 4 channels) converted as load_gray converts a file; `what`
+// names it in messages. Throws InputError.
+GrayImage to_gray_image(const cv::Mat& decoded, const std::string& what);
 
 // The image enlarged `factor` times in each direction (bilinear): large test frames (1080p, 4K)
 // from the real pairs at hand.

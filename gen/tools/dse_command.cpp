@@ -15,6 +15,7 @@
 #include "dse.hpp"
 #include "files.hpp"
 #include "image_io.hpp"
+#include "slurm.hpp"
 #include "synth_command.hpp"
 #include "text.hpp"
 
@@ -180,7 +181,7 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   s.base = compose_config(o.preset, o.config_file, o.fixed);
   s.datasets = o.datasets;
   s.cache_dir = o.cache;
-  if (!o.shard.empty()) std::tie(s.shard_index, s.shard_count) = dse::parse_shard(o.shard);
+  if (!o.shard.empty()) std::tie(s.shard_index, s.shard_count) = dse::parse_shard(resolve_shard(o.shard));
   if (o.jobs < 1) throw InputError(fmt::format("--jobs {}: expected at least 1", o.jobs));
   s.jobs = o.jobs;
   if (!(o.clock_mhz > 0))
@@ -233,6 +234,10 @@ void run_merge(const MergeOptions& o, const std::string& command) {
     if (r.part != part) throw InputError(fmt::format("dse merge: rows for parts {} and {}", part, r.part));
   check_outputs(o.out);
   dse::mark_pareto(rows);
+  // A shard's front is wider than the whole sweep's: its Yosys figures off the merged front go, so
+  // that the merged CSV is the one a single sweep writes (with --yosys-front they come from the cache).
+  for (auto& r : rows)
+    if (!r.pareto) r.yosys_lut = r.yosys_ff = r.yosys_bram36 = r.yosys_dsp = NAN;
   dse::ReportInfo info;
   info.dataset = fmt::format("merged from {} CSV files", o.inputs.size());
   info.part = part;
@@ -325,7 +330,8 @@ void register_dse_command(CLI::App& app, int& exit_code) {
   sub->add_option("--jobs", o->jobs, "golden-model threads")->capture_default_str();
   sub->add_option(
       "--shard", o->shard,
-      "evaluate only shard i of N (1 <= i <= N) and write its partial CSV; combine with dse merge");
+      "evaluate only shard i of N (1 <= i <= N) and write its partial CSV; combine with dse merge. auto: this "
+      "Slurm array task's place in its array (docs/cluster.md)");
   sub->add_flag("--progress", o->progress, "progress bar even when stderr is not a terminal");
   add_output_options(*sub, o->out);
   sub->footer(

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -27,6 +28,7 @@
 #include "logic_depth.hpp"
 #include "rtl_emitter.hpp"
 #include "text.hpp"
+#include "yosys_progress.hpp"
 
 extern char** environ;
 
@@ -281,7 +283,9 @@ fs::path write_design(const fs::path& dir, const std::vector<rtl::EmittedFile>& 
 
 // Runs args[0] (searched in PATH) with stdin from /dev/null and stdout/stderr into files; returns
 // the wait status. Files rather than pipes: nothing to drain while Yosys runs for minutes.
-int run_process(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
+// `waiting`, when given, is called twice a second while the process runs.
+int run_process(const std::vector<std::string>& args, const fs::path& out, const fs::path& err,
+                const std::function<void()>& waiting = {}) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -295,8 +299,14 @@ int run_process(const std::vector<std::string>& args, const fs::path& out, const
   posix_spawn_file_actions_destroy(&actions);
   if (rc != 0) throw SynthError(fmt::format("cannot run {}: {}", args[0], std::strerror(rc)));
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw SynthError(fmt::format("waiting for {}: {}", args[0], std::strerror(errno)));
+  for (pid_t done; (done = waitpid(pid, &status, waiting ? WNOHANG : 0)) != pid;) {
+    if (done < 0 && errno != EINTR)
+      throw SynthError(fmt::format("waiting for {}: {}", args[0], std::strerror(errno)));
+    if (done == 0) {
+      waiting();
+      usleep(500000);
+    }
+  }
   return status;
 }
 
@@ -389,13 +399,19 @@ Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vec
   const std::string tag = config_tag(cfg);
   // Progress only on a terminal: to a script, a failure stays exactly one line on stderr.
   const bool progress = isatty(STDERR_FILENO);
-  if (progress) std::cerr << fmt::format("{} synth: {}: running Yosys...", kTool, tag) << std::flush;
+  // There, the pass Yosys is in, from its log (the one asked for, or one in the work directory).
+  SynthOptions logged = o;
+  if (progress && logged.log.empty()) logged.log = (work.path() / "yosys.log").string();
+  YosysProgress shown(logged.log, fmt::format("{} synth: {}", kTool, tag));
   const auto start = std::chrono::steady_clock::now();
   const fs::path netlist = o.netlist.empty() ? work.path() / "netlist.json" : fs::path(o.netlist);
-  const int status = run_process(script_args(o, script, filelist, netlist), work.path() / "synth.out",
-                                 work.path() / "synth.err");
+  const int status = run_process(script_args(logged, script, filelist, netlist), work.path() / "synth.out",
+                                 work.path() / "synth.err", progress ? [&] { shown.update(); } : std::function<void()>());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (progress) std::cerr << fmt::format(" {:.1f} s\n", seconds);
+  if (progress) {
+    shown.finish();
+    std::cerr << fmt::format("{} synth: {}: Yosys {:.1f} s\n", kTool, tag, seconds);
+  }
   const std::string out = read_text(work.path() / "synth.out").value_or("");
   const std::string err = read_text(work.path() / "synth.err").value_or("");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw SynthError(failure_message(err, status));
