@@ -35,29 +35,6 @@ std::string instance_text(const std::string& module, const std::string& name, co
 
 std::string range(int64_t bits) { return bits > 1 ? fmt::format("[{}:0] ", bits - 1) : ""; }
 
-std::string trim(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\n");
-  return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t\n") - b + 1);
-}
-
-// Top-level comma-separated parts of a concatenation's inside.
-std::vector<std::string> parts(const std::string& list) {
-  std::vector<std::string> out;
-  int depth = 0;
-  std::string part;
-  for (char ch : list) {
-    depth += (ch == '(' || ch == '[' || ch == '{') ? 1 : (ch == ')' || ch == ']' || ch == '}') ? -1 : 0;
-    if (ch == ',' && depth == 0) {
-      out.push_back(trim(part));
-      part.clear();
-    } else {
-      part += ch;
-    }
-  }
-  out.push_back(trim(part));
-  return out;
-}
-
 // Whether text[0] opens a brace that closes at its last character.
 bool one_concatenation(const std::string& text) {
   if (text.size() < 2 || text.front() != '{' || text.back() != '}') return false;
@@ -181,7 +158,7 @@ class NetTable {
     const std::string e = trim(expression);
     if (one_concatenation(e)) {
       std::vector<Reference> out;
-      for (const auto& part : parts(e.substr(1, e.size() - 2)))
+      for (const auto& part : verilog_list_items(e.substr(1, e.size() - 2)))
         for (const auto& r : references(part)) out.push_back(r);
       return out;
     }

@@ -177,12 +177,29 @@ std::string strip_comments(const std::string& text) {
   return std::regex_replace(text, comments, "");
 }
 
+}  // namespace
+
 std::string trim(const std::string& s) {
   const size_t b = s.find_first_not_of(" \t\n");
   return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t\n") - b + 1);
 }
 
-}  // namespace
+std::vector<std::string> verilog_list_items(const std::string& list) {
+  std::vector<std::string> out;
+  int depth = 0;
+  std::string item;
+  for (char ch : list) {
+    depth += (ch == '(' || ch == '[' || ch == '{') ? 1 : (ch == ')' || ch == ']' || ch == '}') ? -1 : 0;
+    if (ch == ',' && depth == 0) {
+      out.push_back(trim(item));
+      item.clear();
+    } else {
+      item += ch;
+    }
+  }
+  if (!trim(item).empty()) out.push_back(trim(item));
+  return out;
+}
 
 const PortSignature* ModuleSignature::port(const std::string& port_name) const {
   for (const auto& p : ports)
@@ -211,26 +228,9 @@ ModuleSignature parse_module_signature(const std::string& verilog) {
     if (depth != 0) fail("unbalanced parentheses");
     return text.substr(start, at - 1 - start);
   };
-  // Top-level comma-separated items.
-  auto items = [](const std::string& list) {
-    std::vector<std::string> out;
-    int depth = 0;
-    std::string item;
-    for (char ch : list) {
-      depth += (ch == '(' || ch == '[' || ch == '{') ? 1 : (ch == ')' || ch == ']' || ch == '}') ? -1 : 0;
-      if (ch == ',' && depth == 0) {
-        out.push_back(trim(item));
-        item.clear();
-      } else {
-        item += ch;
-      }
-    }
-    if (!trim(item).empty()) out.push_back(trim(item));
-    return out;
-  };
   if (m[2].matched) {
     static const std::regex parameter(R"(^parameter\s+(?:integer\s+|\[[^\]]*\]\s*)?(\w+)\s*=\s*([\s\S]+)$)");
-    for (const auto& item : items(enclosed())) {
+    for (const auto& item : verilog_list_items(enclosed())) {
       std::smatch p;
       if (!std::regex_match(item, p, parameter)) fail("cannot read parameter `" + item + "`");
       s.parameters.push_back({p[1], trim(p[2])});
@@ -239,7 +239,7 @@ ModuleSignature parse_module_signature(const std::string& verilog) {
   while (at < text.size() && text[at] != '(') ++at;
   if (at++ == text.size()) fail("no port list");
   static const std::regex port(R"(^(input|output)\s+(?:wire\s+|reg\s+)?(?:signed\s+)?(?:\[([\s\S]*):\s*0\s*\]\s*)?(\w+)$)");
-  for (const auto& item : items(enclosed())) {
+  for (const auto& item : verilog_list_items(enclosed())) {
     std::smatch p;
     if (!std::regex_match(item, p, port)) fail("cannot read port `" + item + "`");
     s.ports.push_back({p[3], p[1] == "input", p[2].matched ? trim(p[2]) : ""});

@@ -3,11 +3,8 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <regex>
 #include <sstream>
-#include <stdexcept>
-#include <tuple>
 
 #include "core_builder.hpp"
 #include "module_signature.hpp"

@@ -28,14 +28,7 @@ class GapStage : public Stage {
                    {"WORD_W", num(d.widths.output_word)},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)}},
-                  {{"in_event", in.event},
-                   {"in_x", in.x},
-                   {"in_y", in.y},
-                   {"in_word", in.word},
-                   {"out_event", out.event},
-                   {"out_x", out.x},
-                   {"out_y", out.y},
-                   {"out_word", out.word}});
+                  Connections{{"in_event", in.event}} + stream_connections(in, out));
   }
 
   // ---- HLS: one row behind its input.

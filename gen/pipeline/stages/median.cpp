@@ -35,14 +35,7 @@ class MedianStage : public Stage {
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
                    {"YS_W", num(d.signed_y_bits)}},
-                  {{"in_done", in.done},
-                   {"in_x", in.x},
-                   {"in_y", in.y},
-                   {"in_word", in.word},
-                   {"out_event", out.event},
-                   {"out_x", out.x},
-                   {"out_y", out.y},
-                   {"out_word", out.word}});
+                  Connections{{"in_done", in.done}} + stream_connections(in, out));
   }
 
   // ---- HLS: the median window (positions outside the image invalid) and the selection.

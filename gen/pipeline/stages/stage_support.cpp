@@ -24,6 +24,11 @@ void stream_wires(CoreBuilder& core, const RtlDesign& d, const PixelStream& s, i
   core.wire(s.word, word_bits != 0 ? word_bits : d.widths.output_word);
 }
 
+Connections stream_connections(const PixelStream& in, const PixelStream& out) {
+  return {{"in_x", in.x},          {"in_y", in.y}, {"in_word", in.word}, {"out_event", out.event},
+          {"out_x", out.x},        {"out_y", out.y}, {"out_word", out.word}};
+}
+
 void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, int word_bits, bool with_whole) {
   core.wire(words + "_group", g.group_bits);
   core.wire(words + "_active", 1);

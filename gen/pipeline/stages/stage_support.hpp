@@ -18,6 +18,10 @@ void start_flag(CoreBuilder& core, const RtlDesign& d, const Stage& stage, const
 // A pixel stream's nets, the word word_bits wide (the output word's by default).
 void stream_wires(CoreBuilder& core, const RtlDesign& d, const PixelStream& s, int word_bits = 0);
 
+// A stage's pixel stream in and out, as the connections of in_x, in_y, in_word, out_event, out_x,
+// out_y and out_word (the median's and gap interpolation's ports).
+Connections stream_connections(const PixelStream& in, const PixelStream& out);
+
 // The nets of the words in chain order named `words`: _group, _active, _x, _slot, a _word of
 // word_bits and, with_whole, the whole D (_whole).
 void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, int word_bits, bool with_whole);
