@@ -5,9 +5,14 @@
 
 #include <algorithm>
 #include <array>
+#include <condition_variable>
 #include <cstdlib>
+#include <memory>
+#include <mutex>
+#include <thread>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "gap_fill.hpp"
 #include "golden_stages.hpp"
@@ -21,20 +26,29 @@ using golden::PathAggregator;
 
 // ---------------------------------------------------------------------------------------------
 // Section 4: winner-take-all and uniqueness over one pixel's sums.
+// Sum and index in one key, the sum above the 8 index bits (dmax <= 256): the smallest key is
+// the smallest sum at its smallest d, found by one vectorisable min reduction.
+template <class T>
+using WinnerKey = std::conditional_t<sizeof(T) <= 2, uint32_t, uint64_t>;
+
 template <class T>
 int winner(const T* S, int dmax) {
-  // The minimum first (a vectorisable reduction), then its first position: the smallest d.
-  const T best = *std::min_element(S, S + dmax);
-  return int(std::find(S, S + dmax, best) - S);
+  WinnerKey<T> best = std::numeric_limits<WinnerKey<T>>::max();
+  for (int d = 0; d < dmax; ++d) best = std::min(best, WinnerKey<T>(WinnerKey<T>(S[d]) << 8 | WinnerKey<T>(d)));
+  return int(best & 0xff);
+}
+
+template <class T>
+T min_of(const T* S, int begin, int end) {
+  T m = std::numeric_limits<T>::max();
+  for (int d = begin; d < end; ++d) m = std::min(m, S[d]);
+  return m;
 }
 
 // The smallest sum at least two disparities from the winner (dmax >= 16: never empty).
 template <class T>
 uint64_t second_best(const T* S, int dmax, int best) {
-  uint64_t second = std::numeric_limits<uint64_t>::max();
-  for (int d = 0; d < dmax; ++d)
-    if (std::abs(d - best) >= 2) second = std::min<uint64_t>(second, S[d]);
-  return second;
+  return std::min(min_of(S, 0, std::max(0, best - 1)), min_of(S, std::min(dmax, best + 2), dmax));
 }
 
 template <class T>
@@ -68,8 +82,7 @@ int refined_disparity(const T* S, int dmax, int d, const StereoConfig& cfg) {
 // Section 5, LR1: Dm(x') = argmin_d S(x' + m + d, d) over d with x' + m + d in the row (the
 // smallest such d on ties; 0 if there is none).
 template <class T>
-std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dmax, int m) {
-  std::vector<int> dm(static_cast<size_t>(width));
+void match_disparities_from_base(const T* sum_row, int width, int dmax, int m, int* dm) {
   for (int xm = 0; xm < width; ++xm) {
     int best = 0;
     bool found = false;
@@ -82,68 +95,163 @@ std::vector<int> match_disparities_from_base(const T* sum_row, int width, int dm
         found = true;
       }
     }
-    dm[size_t(xm)] = best;
+    dm[xm] = best;
   }
-  return dm;
 }
 
 // ---------------------------------------------------------------------------------------------
-// Sections 6-7 on a map of disparities with -1 for invalid.
-constexpr int kInvalid = -1;
+// Sections 6-7 on the map of output words, `invalid` the invalid word (above every disparity).
 
-// Lower median of the valid in-image window values (0 .. values-1), with a histogram that
-// slides along the row (add the entering column, drop the leaving one) and a median pointer
-// that only moves as far as the counts changed.
-Image<int> median_filter(const Image<int>& in, int window, int values) {
-  const int r = window / 2;
-  Image<int> out = in;
+// Lower median of the valid in-image window values (0 .. values-1), in place: a ring keeps the
+// unfiltered rows the window still reads. A histogram slides along the row (add the entering
+// column, drop the leaving one) and a median pointer only moves as far as the counts changed.
+void median_filter(DisparityImage& map, int window, uint16_t invalid, int values) {
+  const int r = window / 2, width = map.width, height = map.height;
+  std::vector<uint16_t> ring(size_t(window) * size_t(width));
+  auto ring_row = [&](int y) { return ring.data() + size_t(y % window) * size_t(width); };
+  auto keep_row = [&](int y) {
+    if (y < height) std::copy(&map.at(0, y), &map.at(0, y) + width, ring_row(y));
+  };
+  for (int y = 0; y < r; ++y) keep_row(y);
   std::vector<int> histogram(static_cast<size_t>(values));
-  for (int y = 0; y < in.height; ++y) {
+  for (int y = 0; y < height; ++y) {
+    keep_row(y + r);
     std::fill(histogram.begin(), histogram.end(), 0);
     int count = 0, median = 0, below = 0;  // below: values smaller than median
     auto update_column = [&](int x, int delta) {
-      if (x < 0 || x >= in.width) return;
-      for (int yy = std::max(0, y - r); yy <= std::min(in.height - 1, y + r); ++yy) {
-        const int v = in.at(x, yy);
-        if (v == kInvalid) continue;
+      if (x < 0 || x >= width) return;
+      for (int yy = std::max(0, y - r); yy <= std::min(height - 1, y + r); ++yy) {
+        const int v = ring_row(yy)[x];
+        if (v == invalid) continue;
         histogram[size_t(v)] += delta;
         count += delta;
         if (v < median) below += delta;
       }
     };
     for (int x = -r; x < r; ++x) update_column(x, +1);
-    for (int x = 0; x < in.width; ++x) {
+    const uint16_t* centre = ring_row(y);
+    uint16_t* out = &map.at(0, y);
+    for (int x = 0; x < width; ++x) {
       update_column(x + r, +1);
-      if (in.at(x, y) != kInvalid) {
+      if (centre[x] != invalid) {
         const int target = (count - 1) / 2;  // index of the lower median in sorted order
         while (below > target) below -= histogram[size_t(--median)];
         while (below + histogram[size_t(median)] <= target) below += histogram[size_t(median++)];
-        out.at(x, y) = median;
+        out[x] = uint16_t(median);
       }
       update_column(x - r, -1);
     }
   }
-  return out;
 }
 
-void interpolate_gaps(Image<int>& map) {
+void interpolate_gaps(DisparityImage& map, uint16_t invalid) {
   for (int y = 0; y < map.height; ++y)
-    fill_row_gaps(&map.at(0, y), map.width, [](int v) { return v != kInvalid; });
+    fill_row_gaps(&map.at(0, y), map.width, [&](uint16_t v) { return v != invalid; });
 }
+
+// ---------------------------------------------------------------------------------------------
+// Within-frame parallelism. The paths are independent of each other, so a helper thread can
+// aggregate a share of them: it computes the cost rows itself (cheap next to the paths) and hands
+// its partial sums to the main thread through a ring of rows. Integer sums do not depend on the
+// order in which the paths are added, so the result is the same for any number of threads.
+
+// The configured paths dealt round-robin into `groups` masks (0,90 and 45,135 for two).
+std::vector<unsigned> path_groups(unsigned paths, int groups) {
+  std::vector<unsigned> masks(size_t(groups), 0);
+  int n = 0;
+  for (const auto& dir : path_directions())
+    if (paths & dir.mask) masks[size_t(n++ % groups)] |= dir.mask;
+  return masks;
+}
+
+template <class T>
+class PathGroupThread {
+ public:
+  PathGroupThread(const StereoConfig& group_cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
+                  T sentinel)
+      : cfg_(group_cfg), costs_(cfg_, widths, left, right), guide_(left), height_(left.height), row_size_(size_t(left.width) * size_t(cfg_.dmax)),
+        paths_(cfg_, left.width, sentinel, cfg_.p2_adapt), cost_(row_size_), ring_(kRingRows * row_size_),
+        thread_([this] { run(); }) {}
+  ~PathGroupThread() {
+    {
+      std::lock_guard<std::mutex> guard(mutex_);
+      cancelled_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+  }
+
+  // Adds this group's sums of row y to sum (rows in order 0, 1, ...).
+  void add_row(int y, T* sum) {
+    {
+      std::unique_lock<std::mutex> guard(mutex_);
+      changed_.wait(guard, [&] { return produced_ > y; });
+    }
+    const T* __restrict partial = slot(y);
+    T* __restrict out = sum;
+    for (size_t i = 0; i < row_size_; ++i) out[i] = T(out[i] + partial[i]);
+    {
+      std::lock_guard<std::mutex> guard(mutex_);
+      consumed_ = y + 1;
+    }
+    changed_.notify_all();
+  }
+
+ private:
+  static constexpr int kRingRows = 8;
+  T* slot(int y) { return ring_.data() + size_t(y % kRingRows) * row_size_; }
+
+  void run() {
+    for (int y = 0; y < height_; ++y) {
+      {
+        std::unique_lock<std::mutex> guard(mutex_);
+        changed_.wait(guard, [&] { return cancelled_ || y - consumed_ < kRingRows; });
+        if (cancelled_) return;
+      }
+      costs_.compute(y, cost_.data());
+      paths_.push_row(y, cost_.data(), slot(y), guide_);
+      {
+        std::lock_guard<std::mutex> guard(mutex_);
+        produced_ = y + 1;
+      }
+      changed_.notify_all();
+    }
+  }
+
+  const StereoConfig cfg_;
+  CostRows<T> costs_;
+  const GrayImage& guide_;
+  const int height_;
+  const size_t row_size_;
+  PathAggregator<T> paths_;
+  std::vector<T> cost_, ring_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  int produced_ = 0, consumed_ = 0;
+  bool cancelled_ = false;
+  std::thread thread_;  // last: starts once everything above is built
+};
 
 // ---------------------------------------------------------------------------------------------
 // The pipeline, with T the storage type of costs and sums.
 template <class T>
 DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const GrayImage& left,
-                            const GrayImage& right, const SideViews& side) {
+                            const GrayImage& right, const SideViews& side, int threads) {
   const int width = left.width, height = left.height, dmax = cfg.dmax;
   const size_t row_size = size_t(width) * size_t(dmax);
   // Larger than any path cost plus P2, and sentinel + P1 still fits in T.
   const T sentinel = T(std::numeric_limits<T>::max() - 256);
 
   CostRows<T> base_costs(cfg, widths, left, right);
+  // The main thread aggregates the first group of paths, one helper thread each other group.
+  const std::vector<unsigned> groups = path_groups(cfg.paths, std::clamp(threads, 1, __builtin_popcount(cfg.paths)));
+  std::vector<StereoConfig> group_cfgs(groups.size(), cfg);
+  for (size_t g = 0; g < groups.size(); ++g) group_cfgs[g].paths = groups[g];
+  std::vector<std::unique_ptr<PathGroupThread<T>>> helpers;
+  for (size_t g = 1; g < groups.size(); ++g)
+    helpers.push_back(std::make_unique<PathGroupThread<T>>(group_cfgs[g], widths, left, right, sentinel));
   // P2 adapts to the base image's steps; LR2's match side keeps it constant (section 3).
-  PathAggregator<T> base_paths(cfg, width, sentinel, cfg.p2_adapt);
+  PathAggregator<T> base_paths(group_cfgs[0], width, sentinel, cfg.p2_adapt);
   PathAggregator<T> match_paths(cfg, width, sentinel, 0);
   std::vector<T> cost(row_size), sum(row_size), match_cost, match_sum;
   if (cfg.lr == LrCheck::Lr2) {
@@ -151,13 +259,17 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
     match_sum.resize(row_size);
   }
 
-  Image<int> disparity(width, height, kInvalid);
-  std::vector<int> refined(static_cast<size_t>(width));
+  // Per row: the whole disparities (kInvalid once a check fails), the refined ones, the match side's.
+  constexpr int kInvalid = -1;
+  std::vector<int> whole(static_cast<size_t>(width)), refined(static_cast<size_t>(width)),
+      match_disparity(static_cast<size_t>(width));
+  DisparityImage out(width, height);
   for (int y = 0; y < height; ++y) {
     base_costs.compute(y, cost.data());
     base_paths.push_row(y, cost.data(), sum.data(), left);
+    for (auto& helper : helpers) helper->add_row(y, sum.data());
 
-    int* row = &disparity.at(0, y);
+    int* row = whole.data();
     for (int x = 0; x < width; ++x) {
       const T* S = sum.data() + size_t(x) * size_t(dmax);
       const int d = winner(S, dmax);
@@ -166,8 +278,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       refined[size_t(x)] = refined_disparity(S, dmax, d, cfg);
     }
 
-    std::vector<int> match_disparity;
-    if (cfg.lr == LrCheck::Lr1) match_disparity = match_disparities_from_base(sum.data(), width, dmax, cfg.min_disp);
+    if (cfg.lr == LrCheck::Lr1) match_disparities_from_base(sum.data(), width, dmax, cfg.min_disp, match_disparity.data());
     if (cfg.lr == LrCheck::Lr2) {
       // Every cost is symmetric in its two images, so the match side's cost at (x', d) is the
       // base side's cost at (x' + m + d, d); beyond the row it is Cmax (section 5).
@@ -178,7 +289,6 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
               x >= 0 && x < width ? cost[size_t(x) * size_t(dmax) + size_t(d)] : T(widths.cost_max);
         }
       match_paths.push_row(y, match_cost.data(), match_sum.data(), right);
-      match_disparity.resize(size_t(width));
       for (int xm = 0; xm < width; ++xm)
         match_disparity[size_t(xm)] = winner(match_sum.data() + size_t(xm) * size_t(dmax), dmax);
     }
@@ -192,23 +302,19 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
           row[x] = kInvalid;
       }
     // The checks above use the whole disparity; the stages below the refined one.
-    for (int x = 0; x < width; ++x)
-      if (row[x] != kInvalid) row[x] = refined[size_t(x)];
+    uint16_t* words = &out.at(0, y);
+    for (int x = 0; x < width; ++x) words[x] = row[x] == kInvalid ? widths.invalid_word : uint16_t(refined[size_t(x)]);
   }
 
-  if (cfg.median != 0) disparity = median_filter(disparity, cfg.median, ((dmax - 1) << cfg.subpixel_bits) + 1);
-  if (cfg.gap_interpolation) interpolate_gaps(disparity);
-
-  DisparityImage out(width, height);
-  for (size_t i = 0; i < out.pixels.size(); ++i)
-    out.pixels[i] = disparity.pixels[i] == kInvalid ? widths.invalid_word : uint16_t(disparity.pixels[i]);
+  if (cfg.median != 0) median_filter(out, cfg.median, widths.invalid_word, ((dmax - 1) << cfg.subpixel_bits) + 1);
+  if (cfg.gap_interpolation) interpolate_gaps(out, widths.invalid_word);
   return out;
 }
 
 }  // namespace
 
 DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                          const SideViews& side) {
+                          const SideViews& side, int threads) {
   if (left.width != right.width || left.height != right.height || left.width > cfg.width ||
       left.height > cfg.height || left.width < 1 || left.height < 1)
     throw std::invalid_argument("run_golden: images must have equal sizes within the configured size");
@@ -221,8 +327,8 @@ DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const 
   // 16-bit storage whenever sums, and the sentinel above any path cost plus P2, fit.
   if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 &&
       widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
-    return run_pipeline<uint16_t>(cfg, widths, left, right, side);
-  return run_pipeline<uint32_t>(cfg, widths, left, right, side);
+    return run_pipeline<uint16_t>(cfg, widths, left, right, side, threads);
+  return run_pipeline<uint32_t>(cfg, widths, left, right, side, threads);
 }
 
 }  // namespace fpstereo
