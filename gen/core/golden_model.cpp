@@ -114,14 +114,17 @@ void median_filter(DisparityImage& map, int window, uint16_t invalid, int values
   };
   for (int y = 0; y < r; ++y) keep_row(y);
   std::vector<int> histogram(static_cast<size_t>(values));
+  std::vector<const uint16_t*> window_rows(static_cast<size_t>(window));
   for (int y = 0; y < height; ++y) {
     keep_row(y + r);
     std::fill(histogram.begin(), histogram.end(), 0);
+    int rows = 0;  // the window's rows inside the image
+    for (int yy = std::max(0, y - r); yy <= std::min(height - 1, y + r); ++yy) window_rows[size_t(rows++)] = ring_row(yy);
     int count = 0, median = 0, below = 0;  // below: values smaller than median
     auto update_column = [&](int x, int delta) {
       if (x < 0 || x >= width) return;
-      for (int yy = std::max(0, y - r); yy <= std::min(height - 1, y + r); ++yy) {
-        const int v = ring_row(yy)[x];
+      for (int i = 0; i < rows; ++i) {
+        const int v = window_rows[size_t(i)][x];
         if (v == invalid) continue;
         histogram[size_t(v)] += delta;
         count += delta;

@@ -280,7 +280,7 @@ class PathAggregator {
  public:
   // adapt: the gain k of the adaptive P2 (0: constant P2), for the side whose image guides it.
   PathAggregator(const StereoConfig& cfg, int width, T sentinel, int adapt)
-      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt) {
+      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt), zeros_(size_t(stride_), T(0)) {
     for (const auto& dir : path_directions())
       if (cfg.paths & dir.mask)
         paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{}, RowBuffer(width, stride_, sentinel),
@@ -290,13 +290,21 @@ class PathAggregator {
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
   // the image whose steps lower P2 (read only when adapt is not 0).
   void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
-    const size_t dmax = size_t(cfg_.dmax);
-    // Pixel by pixel, all paths at once, so that the pixel's costs and sums stay in the cache.
-    for (int x = 0; x < width_; ++x) {
-      const T* C = cost + size_t(x) * dmax;
-      T* S = sum + size_t(x) * dmax;
-      std::fill(S, S + dmax, T(0));
-      for (auto& path : paths_) path.current.minimum[size_t(x)] = push_pixel(path, x, y, C, S, guide);
+    if (!cfg_.mgm) {
+      switch (paths_.size()) {
+        case 1: push_row_fused<1>(y, cost, sum, guide); break;
+        case 2: push_row_fused<2>(y, cost, sum, guide); break;
+        case 3: push_row_fused<3>(y, cost, sum, guide); break;
+        default: push_row_fused<4>(y, cost, sum, guide); break;
+      }
+    } else {
+      const size_t dmax = size_t(cfg_.dmax);
+      for (int x = 0; x < width_; ++x) {
+        T* S = sum + size_t(x) * dmax;
+        std::fill(S, S + dmax, T(0));
+        for (auto& path : paths_)
+          path.current.minimum[size_t(x)] = push_mgm_pixel(path, x, y, cost + size_t(x) * dmax, S, guide);
+      }
     }
     for (auto& path : paths_) std::swap(path.current, path.previous);
   }
@@ -344,41 +352,51 @@ class PathAggregator {
     RowBuffer current, previous;
   };
 
-  // Path costs of pixel (x, y) on one path; adds them to S and returns their minimum.
-  T push_pixel(PathState& path, int x, int y, const T* C, T* S, const GrayImage& guide) const {
-    // A predecessor at offset (dx, dy) is in the image; its row of path costs.
-    auto inside = [&](int dx, int dy) { return x + dx >= 0 && x + dx < width_ && (dy == 0 || y > 0); };
-    auto row_of = [&](int dy) -> const RowBuffer& { return dy == 0 ? path.current : path.previous; };
-    const Offset first{path.dir.dx, path.dir.dy}, second = path.second;
-    const bool has_first = inside(first.dx, first.dy);
-    const bool has_second = second.used && inside(second.dx, second.dy);
-    T* L = path.current.costs(x);
-    if (has_first && has_second) {
-      const int x1 = x + first.dx, x2 = x + second.dx;
-      const RowBuffer &row1 = row_of(first.dy), &row2 = row_of(second.dy);
-      return step2(C, row1.costs(x1), row1.minimum[size_t(x1)], penalty2(guide.at(x, y), guide.at(x1, y + first.dy)),
-                   row2.costs(x2), row2.minimum[size_t(x2)], penalty2(guide.at(x, y), guide.at(x2, y + second.dy)),
-                   L, S);
-    }
-    if (has_first || has_second) {
-      const Offset o = has_first ? first : second;
-      const int px = x + o.dx;
-      const RowBuffer& pred_row = row_of(o.dy);
-      return step(C, pred_row.costs(px), pred_row.minimum[size_t(px)], L, S,
-                  penalty2(guide.at(x, y), guide.at(px, y + o.dy)));
-    }
-    return start(C, L, S);
+  // One predecessor in the recursion of section 3: its path costs, their minimum, and the jump
+  // minimum + P2. A path start reads a row of zeros (minimum 0, jump 0), which makes L = C.
+  struct Predecessor {
+    const T* costs;
+    T minimum, jump;
+  };
+  Predecessor predecessor(const PathState& path, Offset o, int x, int y, const GrayImage& guide) const {
+    if (x + o.dx < 0 || x + o.dx >= width_ || (o.dy != 0 && y == 0)) return {zeros_.data() + 1, 0, 0};
+    const RowBuffer& row = o.dy == 0 ? path.current : path.previous;
+    const int px = x + o.dx;
+    const T minimum = row.minimum[size_t(px)];
+    return {row.costs(px), minimum, T(minimum + penalty2(guide.at(x, y), guide.at(px, y + o.dy)))};
   }
 
-  // L = C at a path start; adds L to S and returns min_d L.
-  T start(const T* __restrict C, T* __restrict L, T* __restrict S) const {
-    T minimum = std::numeric_limits<T>::max();
-    for (int d = 0; d < cfg_.dmax; ++d) {
-      L[d] = C[d];
-      S[d] = T(S[d] + C[d]);
-      minimum = std::min(minimum, C[d]);
+  // Without MGM: every path of a pixel in one pass over the disparities, so that the pixel's
+  // costs are read and its sums written once.
+  template <int N>
+  void push_row_fused(int y, const T* cost, T* sum, const GrayImage& guide) {
+    const size_t dmax = size_t(cfg_.dmax);
+    std::array<Predecessor, N> pred;
+    std::array<T*, N> L;
+    std::array<T, N> minimum;
+    for (int x = 0; x < width_; ++x) {
+      T* S = sum + size_t(x) * dmax;
+      std::fill(S, S + dmax, T(0));
+      for (int p = 0; p < N; ++p) {
+        PathState& path = paths_[size_t(p)];
+        pred[size_t(p)] = predecessor(path, {path.dir.dx, path.dir.dy, true}, x, y, guide);
+        L[size_t(p)] = path.current.costs(x);
+      }
+      step_paths<N>(cost + size_t(x) * dmax, S, pred, L, minimum);
+      for (int p = 0; p < N; ++p) paths_[size_t(p)].current.minimum[size_t(x)] = minimum[size_t(p)];
     }
-    return minimum;
+  }
+
+  // With MGM: path costs of pixel (x, y) on one path; adds them to S and returns their minimum.
+  T push_mgm_pixel(PathState& path, int x, int y, const T* C, T* S, const GrayImage& guide) const {
+    const Offset first{path.dir.dx, path.dir.dy, true}, second = path.second;
+    auto inside = [&](Offset o) { return x + o.dx >= 0 && x + o.dx < width_ && (o.dy == 0 || y > 0); };
+    T* L = path.current.costs(x);
+    if (inside(first) && inside(second))
+      return step2(C, predecessor(path, first, x, y, guide), predecessor(path, second, x, y, guide), L, S);
+    std::array<T, 1> minimum;
+    step_paths<1>(C, S, {predecessor(path, inside(first) ? first : second, x, y, guide)}, {L}, minimum);
+    return minimum[0];
   }
 
   // Section 3's P2 between a pixel of intensity i and its predecessor's, j.
@@ -386,32 +404,42 @@ class PathAggregator {
     return adapt_ == 0 ? cfg_.p2 : std::max(cfg_.p1, cfg_.p2 - ((adapt_ * std::abs(i - j)) >> 2));
   }
 
-  // The recursion of section 3; adds L to S and returns min_d L.
-  T step(const T* __restrict C, const T* __restrict pred, T pred_min, T* __restrict L, T* __restrict S,
-         int p2) const {
+  // The recursion of section 3 on N paths, each against its own predecessor: writes each
+  // path's L and minimum and adds the L to S.
+  template <int N>
+  void step_paths(const T* __restrict C, T* __restrict S, const std::array<Predecessor, N>& pred,
+                  const std::array<T*, N>& L, std::array<T, N>& minimum) const {
     const T p1 = T(cfg_.p1);
-    const T jump = T(pred_min + p2);
-    T minimum = std::numeric_limits<T>::max();
+    minimum.fill(std::numeric_limits<T>::max());
+    // Each L is its own pixel's slot, apart from every predecessor, C and S.
+#pragma GCC ivdep
     for (int d = 0; d < cfg_.dmax; ++d) {
-      const T neighbour = T(std::min(pred[d - 1], pred[d + 1]) + p1);
-      const T l = T(C[d] + std::min(std::min(pred[d], jump), neighbour) - pred_min);
-      L[d] = l;
-      S[d] = T(S[d] + l);
-      minimum = std::min(minimum, l);
+      T s = S[d];
+      for (int p = 0; p < N; ++p) {
+        const T* q = pred[size_t(p)].costs;
+        const T neighbour = T(std::min(q[d - 1], q[d + 1]) + p1);
+        const T l = T(C[d] + std::min(std::min(q[d], pred[size_t(p)].jump), neighbour) - pred[size_t(p)].minimum);
+        L[size_t(p)][d] = l;
+        s = T(s + l);
+        minimum[size_t(p)] = std::min(minimum[size_t(p)], l);
+      }
+      S[d] = s;
     }
-    return minimum;
   }
 
   // MGM's recursion with two predecessors: C plus the floor of the mean of the two predecessor
-  // terms, each as in step() against its own predecessor and P2; adds L to S and returns min_d L.
-  T step2(const T* __restrict C, const T* __restrict pred1, T min1, int p2_1, const T* __restrict pred2, T min2,
-          int p2_2, T* __restrict L, T* __restrict S) const {
+  // terms, each as in step_paths() against its own predecessor; adds L to S and returns min_d L.
+  T step2(const T* __restrict C, const Predecessor& first, const Predecessor& second, T* __restrict L,
+          T* __restrict S) const {
     const T p1 = T(cfg_.p1);
-    const T jump1 = T(min1 + p2_1), jump2 = T(min2 + p2_2);
+    const T* __restrict pred1 = first.costs;
+    const T* __restrict pred2 = second.costs;
     T minimum = std::numeric_limits<T>::max();
     for (int d = 0; d < cfg_.dmax; ++d) {
-      const T t1 = T(std::min(std::min(pred1[d], jump1), T(std::min(pred1[d - 1], pred1[d + 1]) + p1)) - min1);
-      const T t2 = T(std::min(std::min(pred2[d], jump2), T(std::min(pred2[d - 1], pred2[d + 1]) + p1)) - min2);
+      const T t1 =
+          T(std::min(std::min(pred1[d], first.jump), T(std::min(pred1[d - 1], pred1[d + 1]) + p1)) - first.minimum);
+      const T t2 =
+          T(std::min(std::min(pred2[d], second.jump), T(std::min(pred2[d - 1], pred2[d + 1]) + p1)) - second.minimum);
       const T l = T(C[d] + ((t1 + t2) >> 1));
       L[d] = l;
       S[d] = T(S[d] + l);
@@ -423,6 +451,7 @@ class PathAggregator {
   const StereoConfig& cfg_;
   const int width_, stride_, adapt_;
   std::vector<PathState> paths_;
+  std::vector<T> zeros_;  // the predecessor of a path start
 };
 
 }  // namespace fpstereo::golden
