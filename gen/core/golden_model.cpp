@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <limits>
 #include <stdexcept>
@@ -154,9 +155,11 @@ void interpolate_gaps(DisparityImage& map, uint16_t invalid) {
 
 // ---------------------------------------------------------------------------------------------
 // Within-frame parallelism. The paths are independent of each other, so a helper thread can
-// aggregate a share of them: it computes the cost rows itself (cheap next to the paths) and hands
-// its partial sums to the main thread through a ring of rows. Integer sums do not depend on the
-// order in which the paths are added, so the result is the same for any number of threads.
+// aggregate a share of them. It computes the cost rows itself and hands them, with its partial
+// sums, to the main thread through a ring of rows; the main thread then aggregates its own paths
+// on the same cost rows and does the per-pixel stages, which balances two threads. Integer sums
+// do not depend on the order in which the paths are added, so the output is the same for any
+// number of threads.
 
 // The configured paths dealt round-robin into `groups` masks (0,90 and 45,135 for two).
 std::vector<unsigned> path_groups(unsigned paths, int groups) {
@@ -172,9 +175,9 @@ class PathGroupThread {
  public:
   PathGroupThread(const StereoConfig& group_cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
                   T sentinel)
-      : cfg_(group_cfg), costs_(cfg_, widths, left, right), guide_(left), height_(left.height), row_size_(size_t(left.width) * size_t(cfg_.dmax)),
-        paths_(cfg_, left.width, sentinel, cfg_.p2_adapt), cost_(row_size_), ring_(kRingRows * row_size_),
-        thread_([this] { run(); }) {}
+      : cfg_(group_cfg), costs_(cfg_, widths, left, right), guide_(left), height_(left.height),
+        row_size_(size_t(left.width) * size_t(cfg_.dmax)), paths_(cfg_, left.width, sentinel, cfg_.p2_adapt),
+        cost_ring_(kRingRows * row_size_), sum_ring_(kRingRows * row_size_), thread_([this] { run(); }) {}
   ~PathGroupThread() {
     {
       std::lock_guard<std::mutex> guard(mutex_);
@@ -184,15 +187,23 @@ class PathGroupThread {
     thread_.join();
   }
 
-  // Adds this group's sums of row y to sum (rows in order 0, 1, ...).
-  void add_row(int y, T* sum) {
-    {
-      std::unique_lock<std::mutex> guard(mutex_);
-      changed_.wait(guard, [&] { return produced_ > y; });
-    }
-    const T* __restrict partial = slot(y);
+  // The cost row y, once this thread has aggregated it (rows in order 0, 1, ...); valid until
+  // release(y).
+  const T* cost_row(int y) {
+    std::unique_lock<std::mutex> guard(mutex_);
+    changed_.wait(guard, [&] { return produced_ > y; });
+    return slot(cost_ring_, y);
+  }
+
+  // Adds this group's sums of row y to sum; after cost_row(y).
+  void add_sums(int y, T* sum) {
+    const T* __restrict partial = slot(sum_ring_, y);
     T* __restrict out = sum;
     for (size_t i = 0; i < row_size_; ++i) out[i] = T(out[i] + partial[i]);
+  }
+
+  // Row y's slots may be reused.
+  void release(int y) {
     {
       std::lock_guard<std::mutex> guard(mutex_);
       consumed_ = y + 1;
@@ -201,8 +212,8 @@ class PathGroupThread {
   }
 
  private:
-  static constexpr int kRingRows = 8;
-  T* slot(int y) { return ring_.data() + size_t(y % kRingRows) * row_size_; }
+  static constexpr int kRingRows = 4;
+  T* slot(std::vector<T>& ring, int y) { return ring.data() + size_t(y % kRingRows) * row_size_; }
 
   void run() {
     for (int y = 0; y < height_; ++y) {
@@ -211,8 +222,8 @@ class PathGroupThread {
         changed_.wait(guard, [&] { return cancelled_ || y - consumed_ < kRingRows; });
         if (cancelled_) return;
       }
-      costs_.compute(y, cost_.data());
-      paths_.push_row(y, cost_.data(), slot(y), guide_);
+      costs_.compute(y, slot(cost_ring_, y));
+      paths_.push_row(y, slot(cost_ring_, y), slot(sum_ring_, y), guide_);
       {
         std::lock_guard<std::mutex> guard(mutex_);
         produced_ = y + 1;
@@ -227,7 +238,7 @@ class PathGroupThread {
   const int height_;
   const size_t row_size_;
   PathAggregator<T> paths_;
-  std::vector<T> cost_, ring_;
+  std::vector<T> cost_ring_, sum_ring_;
   std::mutex mutex_;
   std::condition_variable changed_;
   int produced_ = 0, consumed_ = 0;
@@ -245,7 +256,6 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   // Larger than any path cost plus P2, and sentinel + P1 still fits in T.
   const T sentinel = T(std::numeric_limits<T>::max() - 256);
 
-  CostRows<T> base_costs(cfg, widths, left, right);
   // The main thread aggregates the first group of paths, one helper thread each other group.
   const std::vector<unsigned> groups = path_groups(cfg.paths, std::clamp(threads, 1, __builtin_popcount(cfg.paths)));
   std::vector<StereoConfig> group_cfgs(groups.size(), cfg);
@@ -253,10 +263,13 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   std::vector<std::unique_ptr<PathGroupThread<T>>> helpers;
   for (size_t g = 1; g < groups.size(); ++g)
     helpers.push_back(std::make_unique<PathGroupThread<T>>(group_cfgs[g], widths, left, right, sentinel));
+  // Cost rows from the first helper, or computed here if there is none.
+  std::optional<CostRows<T>> base_costs;
+  if (helpers.empty()) base_costs.emplace(cfg, widths, left, right);
   // P2 adapts to the base image's steps; LR2's match side keeps it constant (section 3).
   PathAggregator<T> base_paths(group_cfgs[0], width, sentinel, cfg.p2_adapt);
   PathAggregator<T> match_paths(cfg, width, sentinel, 0);
-  std::vector<T> cost(row_size), sum(row_size), match_cost, match_sum;
+  std::vector<T> own_cost(helpers.empty() ? row_size : 0), sum(row_size), match_cost, match_sum;
   if (cfg.lr == LrCheck::Lr2) {
     match_cost.resize(row_size);
     match_sum.resize(row_size);
@@ -268,9 +281,11 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
       match_disparity(static_cast<size_t>(width));
   DisparityImage out(width, height);
   for (int y = 0; y < height; ++y) {
-    base_costs.compute(y, cost.data());
-    base_paths.push_row(y, cost.data(), sum.data(), left);
-    for (auto& helper : helpers) helper->add_row(y, sum.data());
+    const T* cost = own_cost.data();
+    if (base_costs) base_costs->compute(y, own_cost.data());
+    for (auto& helper : helpers) cost = helper->cost_row(y);  // the same row from every helper
+    base_paths.push_row(y, cost, sum.data(), left);
+    for (auto& helper : helpers) helper->add_sums(y, sum.data());
 
     int* row = whole.data();
     for (int x = 0; x < width; ++x) {
@@ -307,6 +322,7 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
     // The checks above use the whole disparity; the stages below the refined one.
     uint16_t* words = &out.at(0, y);
     for (int x = 0; x < width; ++x) words[x] = row[x] == kInvalid ? widths.invalid_word : uint16_t(refined[size_t(x)]);
+    for (auto& helper : helpers) helper->release(y);
   }
 
   if (cfg.median != 0) median_filter(out, cfg.median, widths.invalid_word, ((dmax - 1) << cfg.subpixel_bits) + 1);
