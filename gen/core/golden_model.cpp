@@ -7,6 +7,7 @@
 #include <array>
 #include <condition_variable>
 #include <cstdlib>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -175,9 +176,8 @@ class PathGroupThread {
  public:
   PathGroupThread(const StereoConfig& group_cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
                   T sentinel)
-      : cfg_(group_cfg), costs_(cfg_, widths, left, right), guide_(left), height_(left.height),
-        row_size_(size_t(left.width) * size_t(cfg_.dmax)), paths_(cfg_, left.width, sentinel, cfg_.p2_adapt),
-        cost_ring_(kRingRows * row_size_), sum_ring_(kRingRows * row_size_), thread_([this] { run(); }) {}
+      : cfg_(group_cfg), widths_(widths), left_(left), right_(right), sentinel_(sentinel),
+        row_size_(size_t(left.width) * size_t(cfg_.dmax)), thread_([this] { run(); }) {}
   ~PathGroupThread() {
     {
       std::lock_guard<std::mutex> guard(mutex_);
@@ -191,7 +191,8 @@ class PathGroupThread {
   // release(y).
   const T* cost_row(int y) {
     std::unique_lock<std::mutex> guard(mutex_);
-    changed_.wait(guard, [&] { return produced_ > y; });
+    changed_.wait(guard, [&] { return produced_ > y || error_; });
+    if (error_) std::rethrow_exception(error_);
     return slot(cost_ring_, y);
   }
 
@@ -215,30 +216,44 @@ class PathGroupThread {
   static constexpr int kRingRows = 4;
   T* slot(std::vector<T>& ring, int y) { return ring.data() + size_t(y % kRingRows) * row_size_; }
 
+  // The thread's state is built on the thread, so that its memory is touched (page faults,
+  // initialisation) there rather than on the main thread.
   void run() {
-    for (int y = 0; y < height_; ++y) {
-      {
-        std::unique_lock<std::mutex> guard(mutex_);
-        changed_.wait(guard, [&] { return cancelled_ || y - consumed_ < kRingRows; });
-        if (cancelled_) return;
+    try {
+      CostRows<T> costs(cfg_, widths_, left_, right_);
+      PathAggregator<T> paths(cfg_, left_.width, sentinel_, cfg_.p2_adapt);
+      cost_ring_.resize(kRingRows * row_size_);
+      sum_ring_.resize(kRingRows * row_size_);
+      for (int y = 0; y < left_.height; ++y) {
+        {
+          std::unique_lock<std::mutex> guard(mutex_);
+          changed_.wait(guard, [&] { return cancelled_ || y - consumed_ < kRingRows; });
+          if (cancelled_) return;
+        }
+        costs.compute(y, slot(cost_ring_, y));
+        paths.push_row(y, slot(cost_ring_, y), slot(sum_ring_, y), left_);
+        {
+          std::lock_guard<std::mutex> guard(mutex_);
+          produced_ = y + 1;
+        }
+        changed_.notify_all();
       }
-      costs_.compute(y, slot(cost_ring_, y));
-      paths_.push_row(y, slot(cost_ring_, y), slot(sum_ring_, y), guide_);
+    } catch (...) {
       {
         std::lock_guard<std::mutex> guard(mutex_);
-        produced_ = y + 1;
+        error_ = std::current_exception();
       }
       changed_.notify_all();
     }
   }
 
   const StereoConfig cfg_;
-  CostRows<T> costs_;
-  const GrayImage& guide_;
-  const int height_;
+  const Widths widths_;
+  const GrayImage &left_, &right_;
+  const T sentinel_;
   const size_t row_size_;
-  PathAggregator<T> paths_;
   std::vector<T> cost_ring_, sum_ring_;
+  std::exception_ptr error_;
   std::mutex mutex_;
   std::condition_variable changed_;
   int produced_ = 0, consumed_ = 0;
