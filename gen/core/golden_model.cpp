@@ -162,12 +162,16 @@ void interpolate_gaps(DisparityImage& map, uint16_t invalid) {
 // do not depend on the order in which the paths are added, so the output is the same for any
 // number of threads.
 
-// The configured paths dealt round-robin into `groups` masks (0,90 and 45,135 for two).
+// The configured paths split into `groups` masks: the first path to the main thread (group 0),
+// which also runs the per-pixel stages, the others dealt round-robin to the helpers.
 std::vector<unsigned> path_groups(unsigned paths, int groups) {
   std::vector<unsigned> masks(size_t(groups), 0);
   int n = 0;
   for (const auto& dir : path_directions())
-    if (paths & dir.mask) masks[size_t(n++ % groups)] |= dir.mask;
+    if (paths & dir.mask) {
+      masks[n == 0 || groups == 1 ? 0 : size_t(1 + (n - 1) % (groups - 1))] |= dir.mask;
+      ++n;
+    }
   return masks;
 }
 
