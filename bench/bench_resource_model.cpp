@@ -2,9 +2,12 @@
 // model's LUT, FF, BRAM36 and DSP next to Yosys' (bench/resource_fit_data.csv) and the error, with
 // the summary over the held-out configurations (never used for fitting).
 //
-//   bench_resource_model                       compare, from the committed Yosys results
+//   bench_resource_model                       compare, from the committed Yosys results, and
+//                                              list the rows whose Verilog has changed since
+//                                              (stale: each row records its Verilog's hash)
 //   bench_resource_model --collect             run `fpstereo synth --kv` for every configuration
-//                                              (cached; serial) and rewrite the data file first
+//                                              without a current result (cached; serial) and
+//                                              rewrite the data file first
 //   bench_resource_model --refit --write FILE  fit LUT/FF/DSP on the "fit" rows, write the
 //                                              coefficients (gen/dse/resource_coefficients.inc)
 #include <fmt/core.h>
@@ -32,7 +35,10 @@ struct Row {
   double lut = 0, ff = 0, dsp = 0, bram36_equiv = 0, seconds = 0;
   int64_t bram18 = 0, bram36 = 0;
   std::string memories;  // name=words x bits:target;...
+  std::string verilog_hash;  // of the Verilog Yosys ran on (empty: not recorded)
   bool have_yosys = false;
+  // A result is stale once the generator emits other Verilog for the configuration.
+  bool stale() const { return have_yosys && verilog_hash != fpstereo::verilog_hash(cfg); }
 };
 
 StereoConfig parse_flags(const std::string& flags) {
@@ -62,7 +68,7 @@ std::vector<Row> read_configs(const std::string& path) {
   return rows;
 }
 
-const char* kHeader = "name,role,lut,ff,bram18,bram36,bram36_equiv,dsp,synth_seconds,memories";
+const char* kHeader = "name,role,lut,ff,bram18,bram36,bram36_equiv,dsp,synth_seconds,memories,verilog_hash";
 
 void read_data(const std::string& path, std::vector<Row>& rows) {
   std::ifstream in(path);
@@ -85,6 +91,7 @@ void read_data(const std::string& path, std::vector<Row>& rows) {
         r.dsp = std::stod(f[7]);
         r.seconds = std::stod(f[8]);
         r.memories = f[9];
+        r.verilog_hash = f.size() > 10 ? f[10] : "";
         r.have_yosys = true;
       }
   }
@@ -95,8 +102,8 @@ void write_data(const std::string& path, const std::vector<Row>& rows) {
   out << kHeader << "\n";
   for (const auto& r : rows)
     if (r.have_yosys)
-      out << fmt::format("{},{},{},{},{},{},{},{},{},{}\n", r.name, r.role, r.lut, r.ff, r.bram18, r.bram36,
-                         r.bram36_equiv, r.dsp, r.seconds, r.memories);
+      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.name, r.role, r.lut, r.ff, r.bram18, r.bram36,
+                         r.bram36_equiv, r.dsp, r.seconds, r.memories, r.verilog_hash);
 }
 
 // One `fpstereo synth --kv` run (served from synth's cache when it has the design).
@@ -111,6 +118,7 @@ void collect(Row& r, const std::string& fpstereo) {
   while ((n = fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, n);
   if (pclose(p) != 0) throw std::runtime_error("failed: " + cmd);
   const SynthReport rep = parse_kv(text);
+  r.verilog_hash = verilog_hash(r.cfg);
   r.lut = double(rep.lut);
   r.ff = double(rep.ff);
   r.bram18 = rep.bram18;
@@ -192,7 +200,8 @@ int main(int argc, char** argv) {
   bool do_collect = false, do_refit = false, memories = false;
   app.add_option("--configs", configs, "configuration list (name role flags)");
   app.add_option("--data", data, "Yosys results (CSV)");
-  app.add_flag("--collect", do_collect, "run fpstereo synth (cached) for configurations without results");
+  app.add_flag("--collect", do_collect,
+               "run fpstereo synth (cached) for configurations without results or with stale ones");
   app.add_option("--fpstereo", fpstereo, "the fpstereo binary for --collect");
   app.add_flag("--refit", do_refit, "fit LUT/FF/DSP coefficients on the fit rows");
   app.add_option("--write", write, "with --refit: write the coefficients to FILE (.inc)");
@@ -203,7 +212,7 @@ int main(int argc, char** argv) {
     read_data(data, rows);
     if (do_collect) {
       for (auto& r : rows)
-        if (!r.have_yosys) {
+        if (!r.have_yosys || r.stale()) {
           collect(r, fpstereo);
           write_data(data, rows);  // after each run: an interrupted collection keeps what it has
         }
@@ -238,9 +247,15 @@ int main(int argc, char** argv) {
       double lut_max = 0, ff_max = 0, lut_sum = 0, ff_sum = 0;
       int n = 0, bram_exact = 0;
     } fit, held;
-    std::string mismatches;
+    std::string mismatches, stale;
+    int stale_count = 0, recorded = 0;
     for (const auto& r : rows) {
       if (!r.have_yosys) continue;
+      recorded++;
+      if (r.stale()) {
+        stale += (stale.empty() ? "" : " ") + r.name;
+        stale_count++;
+      }
       const rtl::RtlDesign d = rtl::plan(r.cfg);
       const dse::ResourceEstimate e = dse::estimate(d, coef);
       const double el = pct(e.lut, r.lut), ef = pct(e.ff, r.ff);
@@ -265,6 +280,10 @@ int main(int argc, char** argv) {
             "{:.1f} %; |FF err| mean {:.1f} % max {:.1f} %\n",
             label, s.n, s.bram_exact, s.n, s.lut_sum / s.n, s.lut_max, s.ff_sum / s.n, s.ff_max);
     if (memories) std::cout << (mismatches.empty() ? "every memory mapped as Yosys maps it\n" : mismatches);
+    fmt::print(
+        "stale: {} of {} recorded rows came from other Verilog than the generator emits today (or record no "
+        "hash){}{}\n",
+        stale_count, recorded, stale.empty() ? "" : ": ", stale);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "bench_resource_model: " << e.what() << "\n";

@@ -14,6 +14,7 @@
 #include "image_io.hpp"
 #include "resource_model.hpp"
 #include "rtl_emitter.hpp"
+#include "synth_command.hpp"
 
 using namespace fpstereo;
 namespace fs = std::filesystem;
@@ -379,4 +380,49 @@ TEST_CASE("dse CSV: a bad cell is an error naming the file, line and column", "[
   CHECK(error_with("flags", "") == at + "flags: empty, expected the configuration's flags");
   CHECK(error_with("bram36", "3").empty());
   fs::remove(csv);
+}
+
+TEST_CASE("the Verilog hash follows the emitted Verilog and the resource data lists its stale rows", "[dse]") {
+  StereoConfig a, b;
+  b.dmax = 64;
+  CHECK(verilog_hash(a) == verilog_hash(StereoConfig{}));
+  CHECK(verilog_hash(a) != verilog_hash(b));
+  CHECK(verilog_hash(a).size() == 16);
+
+  // bench/resource_fit_configs.txt: "name role --flag value ...".
+  std::map<std::string, StereoConfig> configs;
+  std::ifstream list(std::string(FPSTEREO_SOURCE_DIR) + "/bench/resource_fit_configs.txt");
+  REQUIRE(list);
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream in(line);
+    std::string name, role, key, value;
+    in >> name >> role;
+    StereoConfig cfg;
+    while (in >> key >> value) set_param(cfg, key.substr(2), value);
+    configs[name] = cfg;
+  }
+  std::ifstream data(std::string(FPSTEREO_SOURCE_DIR) + "/bench/resource_fit_data.csv");
+  REQUIRE(data);
+  std::string header;
+  std::getline(data, header);
+  REQUIRE(header.size() >= 13);
+  CHECK(header.compare(header.size() - 13, 13, ",verilog_hash") == 0);
+  std::string stale;
+  int rows = 0, stale_rows = 0;
+  for (std::string line; std::getline(data, line);) {
+    const std::string name = line.substr(0, line.find(',')), hash = line.substr(line.rfind(',') + 1);
+    INFO("row " << name);
+    REQUIRE(configs.count(name) == 1);
+    CHECK((hash.empty() || hash.size() == 16));
+    rows++;
+    if (hash != verilog_hash(configs[name])) {
+      stale += " " + name;
+      stale_rows++;
+    }
+  }
+  CHECK(rows > 0);
+  if (stale_rows > 0)
+    WARN(stale_rows << " of " << rows << " rows of bench/resource_fit_data.csv are stale (the generator emits "
+                    "other Verilog for them now; `bench_resource_model --collect` reruns them):" << stale);
 }

@@ -67,7 +67,7 @@ std::pair<GrayImage, GrayImage> random_pair(const StereoConfig& c, std::mt19937&
 
 }  // namespace
 
-TEST_CASE("golden model equals the naive model on random configurations", "[models]") {
+TEST_CASE("golden model equals the naive model on random configurations, on 1 to 4 threads", "[models]") {
   std::mt19937 rng(20261121);
   const int cases = 400;
   for (int i = 0; i < cases; ++i) {
@@ -75,13 +75,14 @@ TEST_CASE("golden model equals the naive model on random configurations", "[mode
     validate(cfg);
     const auto [left, right] = random_pair(cfg, rng);
     // The confidences, and with a left-right check the right views (the match side's
-    // disparities) as well.
+    // disparities) as well. The golden model shares the paths among its threads.
     const bool views = cfg.lr != LrCheck::None;
+    const int threads = 1 + i % 4;
     DisparityImage naive_right, golden_right, naive_confidence, golden_confidence;
     const Comparison cmp = compare_words(
         run_naive(cfg, left, right, SideViews{views ? &naive_right : nullptr, &naive_confidence}),
-        run_golden(cfg, left, right, SideViews{views ? &golden_right : nullptr, &golden_confidence}));
-    INFO("case " << i << "\n" << describe(cfg) << cmp.report());
+        run_golden(cfg, left, right, SideViews{views ? &golden_right : nullptr, &golden_confidence}, threads));
+    INFO("case " << i << ", " << threads << " threads\n" << describe(cfg) << cmp.report());
     REQUIRE(cmp.equal());
     const Comparison confidence_cmp = compare_words(naive_confidence, golden_confidence);
     INFO("confidence: " << confidence_cmp.report());

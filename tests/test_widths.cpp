@@ -21,7 +21,7 @@ void check_width_is_minimal(uint64_t reached, int width, uint64_t bound) {
 
 std::vector<uint32_t> cost_row(const StereoConfig& cfg, const GrayImage& base, const GrayImage& match,
                                int y) {
-  const golden::CostRows<uint32_t> costs(cfg, derive_widths(cfg), base, match);
+  golden::CostRows<uint32_t> costs(cfg, derive_widths(cfg), base, match);
   std::vector<uint32_t> row(size_t(base.width) * size_t(cfg.dmax));
   costs.compute(y, row.data());
   return row;

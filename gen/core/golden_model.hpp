@@ -16,8 +16,10 @@ struct SideViews {
 };
 
 // Runs the full pipeline. Images must be width x height of the run (at most the configured
-// size); cfg must be valid. Returns output words (docs/semantics.md, "Output word").
+// size); cfg must be valid. Returns output words (docs/semantics.md, "Output word"). threads:
+// how many threads the frame may use (its paths are shared among them); the output is the same
+// for any number.
 DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                          const SideViews& side = {});
+                          const SideViews& side = {}, int threads = 1);
 
 }  // namespace fpstereo

@@ -19,9 +19,20 @@ namespace fpstereo::golden {
 // ---------------------------------------------------------------------------------------------
 // Section 1-2: transforms and matching cost rows.
 
-// Census codes of up to 120 bits (11x11 window), stored in 64-bit words.
+// Census codes of up to 120 bits (11x11 window), as planes of 64-bit words: plane 0 holds the
+// low 64 bits of every pixel's code, plane 1 the rest, so that the transform and the Hamming
+// distances run over contiguous words.
 constexpr int kMaxCodeWords = 2;
-using CensusCode = std::array<uint64_t, kMaxCodeWords>;
+struct CensusPlanes {
+  int words = 1;  // planes in use: 1 for codes of at most 64 bits
+  std::array<Image<uint64_t>, kMaxCodeWords> plane;
+  // popcount(a(xa) xor b(xb)) on row y.
+  static int hamming(const CensusPlanes& a, int xa, const CensusPlanes& b, int xb, int y) {
+    int h = 0;
+    for (int i = 0; i < a.words; ++i) h += __builtin_popcountll(a.plane[size_t(i)].at(xa, y) ^ b.plane[size_t(i)].at(xb, y));
+    return h;
+  }
+};
 
 inline int pixel_or_zero(const GrayImage& img, int x, int y) { return img.contains(x, y) ? img.at(x, y) : 0; }
 
@@ -50,22 +61,38 @@ void for_each_window_neighbour(const GrayImage& img, int window, Visit visit) {
     }
 }
 
-inline Image<CensusCode> census_transform(const GrayImage& img, int window) {
-  const int r = window / 2;
-  const GrayImage padded = zero_padded(img, r);
-  Image<CensusCode> codes(img.width, img.height);
+// Census codes of image row y into planes[0][x] (low 64 bits) and planes[1][x] (the rest, for
+// codes above 64 bits); padded: scratch for width + window - 1 pixels.
+inline void census_row(const GrayImage& img, int y, int window, uint8_t* padded,
+                       const std::array<uint64_t*, kMaxCodeWords>& planes) {
+  const int r = window / 2, bits = window * window - 1, width = img.width;
+  for (int i = 0; i < (bits + 63) / 64; ++i) std::fill(planes[size_t(i)], planes[size_t(i)] + width, 0);
+  const uint8_t* centre = &img.at(0, y);
+  int bit = bits - 1;  // the first window position in the most significant bit
+  for (int dy = -r; dy <= r; ++dy) {
+    // Row y + dy with r zeros on each side, all zeros outside the image (section 1).
+    std::fill(padded, padded + width + 2 * r, 0);
+    if (y + dy >= 0 && y + dy < img.height) std::copy(&img.at(0, y + dy), &img.at(0, y + dy) + width, padded + r);
+    for (int dx = -r; dx <= r; ++dx) {
+      if (dx == 0 && dy == 0) continue;
+      const uint8_t* neighbour = padded + r + dx;
+      uint64_t* codes = planes[size_t(bit / 64)];
+      const int shift = bit % 64;
+      for (int x = 0; x < width; ++x) codes[x] |= uint64_t(centre[x] > neighbour[x]) << shift;
+      --bit;
+    }
+  }
+}
+
+inline CensusPlanes census_transform(const GrayImage& img, int window) {
+  CensusPlanes codes;
+  codes.words = (window * window - 1 + 63) / 64;
+  for (int i = 0; i < codes.words; ++i) codes.plane[size_t(i)] = Image<uint64_t>(img.width, img.height, 0);
+  std::vector<uint8_t> padded(size_t(img.width + window - 1));
   for (int y = 0; y < img.height; ++y) {
-    const uint8_t* centre = &padded.at(r, y + r);
-    CensusCode* row_codes = &codes.at(0, y);
-    int bit = window * window - 2;  // the first window position in the most significant bit
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        if (dx == 0 && dy == 0) continue;
-        const uint8_t* neighbour = &padded.at(r + dx, y + r + dy);
-        for (int x = 0; x < img.width; ++x)
-          row_codes[x][bit / 64] |= uint64_t(centre[x] > neighbour[x]) << (bit % 64);
-        --bit;
-      }
+    std::array<uint64_t*, kMaxCodeWords> rows{};
+    for (int i = 0; i < codes.words; ++i) rows[size_t(i)] = &codes.plane[size_t(i)].at(0, y);
+    census_row(img, y, window, padded.data(), rows);
   }
   return codes;
 }
@@ -86,12 +113,6 @@ inline Image<int> window_means(const GrayImage& img, int window) {
   return sums;
 }
 
-inline int hamming(const CensusCode& a, const CensusCode& b) {
-  int h = 0;
-  for (int i = 0; i < kMaxCodeWords; ++i) h += __builtin_popcountll(a[i] ^ b[i]);
-  return h;
-}
-
 // Produces C(x, y, d) for one row, laid out [x * dmax + d].
 template <class T>
 class CostRows {
@@ -100,6 +121,11 @@ class CostRows {
       : cfg_(cfg), cost_max_(T(widths.cost_max)), base_(base), match_(match) {
     switch (cfg.cost) {
       case CostFunction::Census:
+        // Codes row by row as compute() needs them (section 1-2), in buffers kept across rows.
+        padded_.resize(size_t(base.width + cfg.window - 1));
+        for (auto* row : {&base_row_, &match_row_})
+          for (auto& plane : *row) plane.resize(size_t(base.width));
+        break;
       case CostFunction::Shd:
         base_codes_ = census_transform(base, cfg.window);
         match_codes_ = census_transform(match, cfg.window);
@@ -118,16 +144,14 @@ class CostRows {
   }
 
   // Index d is the disparity min_disp + d: base pixel x against match pixel x - min_disp - d.
-  void compute(int y, T* out) const {
+  void compute(int y, T* out) {
     const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
     // The indices whose match pixel lies in the row: d_lo(x) <= d < d_hi(x).
     auto d_lo = [&](int x) { return std::clamp(x - m - width + 1, 0, dmax); };
     auto d_hi = [&](int x) { return std::clamp(x - m + 1, 0, dmax); };
     switch (cfg_.cost) {
       case CostFunction::Census:
-        for (int x = 0; x < width; ++x)
-          for (int d = d_lo(x); d < d_hi(x); ++d)
-            out[x * dmax + d] = T(hamming(base_codes_.at(x, y), match_codes_.at(x - m - d, y)));
+        census_costs(y, out);
         break;
       case CostFunction::Rank:
         for (int x = 0; x < width; ++x)
@@ -141,7 +165,7 @@ class CostRows {
         break;
       case CostFunction::Shd:
         box_sum_row(y, cfg_.shd_window, out, [&](int xb, int yy, int d) {
-          return hamming(code_or_zero(base_codes_, xb, yy), code_or_zero(match_codes_, xb - m - d, yy));
+          return shd_term(xb, xb - m - d, yy);
         });
         break;
       case CostFunction::Zsad:
@@ -157,8 +181,47 @@ class CostRows {
   }
 
  private:
-  static CensusCode code_or_zero(const Image<CensusCode>& codes, int x, int y) {
-    return codes.contains(x, y) ? codes.at(x, y) : CensusCode{};
+  // Census costs of row y: per base pixel, the Hamming distances to the match codes of its
+  // disparity range, a loop over contiguous words that the compiler vectorises.
+  void census_costs(int y, T* out) {
+    const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
+    const bool two_words = cfg_.window * cfg_.window - 1 > 64;
+    census_row(base_, y, cfg_.window, padded_.data(), {base_row_[0].data(), base_row_[1].data()});
+    census_row(match_, y, cfg_.window, padded_.data(), {match_row_[0].data(), match_row_[1].data()});
+    // The match codes reversed: ascending disparities then read ascending addresses.
+    for (auto& plane : match_row_) std::reverse(plane.begin(), plane.end());
+    const uint64_t* base0 = base_row_[0].data();
+    const uint64_t* mirrored0 = match_row_[0].data();
+    const uint64_t* base1 = two_words ? base_row_[1].data() : nullptr;
+    const uint64_t* mirrored1 = two_words ? match_row_[1].data() : nullptr;
+    for (int x = 0; x < width; ++x) {
+      const int lo = std::clamp(x - m - width + 1, 0, dmax), hi = std::clamp(x - m + 1, 0, dmax);
+      T* __restrict costs = out + size_t(x) * size_t(dmax);
+      // The match pixel x - m - d sits at width - 1 - x + m + d of the mirrored row.
+      const ptrdiff_t at_d0 = width - 1 - x + m;
+      const uint64_t b0 = base0[x];
+      const uint64_t* __restrict m0 = mirrored0 + at_d0;
+      if (base1 == nullptr) {
+        for (int d = lo; d < hi; ++d) costs[d] = T(__builtin_popcountll(b0 ^ m0[d]));
+      } else {
+        const uint64_t b1 = base1[x];
+        const uint64_t* __restrict m1 = mirrored1 + at_d0;
+        for (int d = lo; d < hi; ++d) costs[d] = T(__builtin_popcountll(b0 ^ m0[d]) + __builtin_popcountll(b1 ^ m1[d]));
+      }
+    }
+  }
+
+  // One SHD term: the Hamming distance of two census codes, each zero outside the image.
+  int shd_term(int xb, int xm, int y) const {
+    const bool base_in = base_codes_.plane[0].contains(xb, y), match_in = base_codes_.plane[0].contains(xm, y);
+    if (base_in && match_in) return CensusPlanes::hamming(base_codes_, xb, match_codes_, xm, y);
+    int h = 0;
+    for (int i = 0; i < base_codes_.words; ++i) {
+      const uint64_t code = base_in ? base_codes_.plane[size_t(i)].at(xb, y)
+                            : match_in ? match_codes_.plane[size_t(i)].at(xm, y) : 0;
+      h += __builtin_popcountll(code);
+    }
+    return h;
   }
 
   // out[x, d] = sum over the window x offsets of (sum over the window rows of term(x', y', d)),
@@ -199,7 +262,10 @@ class CostRows {
   const T cost_max_;
   const GrayImage& base_;
   const GrayImage& match_;
-  Image<CensusCode> base_codes_, match_codes_;
+  CensusPlanes base_codes_, match_codes_;  // SHD
+  // Census: one row of codes per image (the match row reversed), and scratch for census_row.
+  std::array<std::vector<uint64_t>, kMaxCodeWords> base_row_, match_row_;
+  std::vector<uint8_t> padded_;
   Image<int> base_ranks_, match_ranks_;
   Image<int> base_means_, match_means_;
 };
@@ -214,7 +280,7 @@ class PathAggregator {
  public:
   // adapt: the gain k of the adaptive P2 (0: constant P2), for the side whose image guides it.
   PathAggregator(const StereoConfig& cfg, int width, T sentinel, int adapt)
-      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt) {
+      : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt), zeros_(size_t(stride_), T(0)) {
     for (const auto& dir : path_directions())
       if (cfg.paths & dir.mask)
         paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{}, RowBuffer(width, stride_, sentinel),
@@ -224,39 +290,23 @@ class PathAggregator {
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
   // the image whose steps lower P2 (read only when adapt is not 0).
   void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
-    const int dmax = cfg_.dmax;
-    std::fill(sum, sum + size_t(width_) * size_t(dmax), T(0));
-    for (auto& path : paths_) {
-      // A predecessor at offset (dx, dy) is in the image; its row of path costs.
-      auto inside = [&](int x, int dx, int dy) { return x + dx >= 0 && x + dx < width_ && (dy == 0 || y > 0); };
-      auto row_of = [&](int dy) -> const RowBuffer& { return dy == 0 ? path.current : path.previous; };
-      const Offset first{path.dir.dx, path.dir.dy}, second = path.second;
-      for (int x = 0; x < width_; ++x) {
-        const bool has_first = inside(x, first.dx, first.dy);
-        const bool has_second = second.used && inside(x, second.dx, second.dy);
-        const size_t at = size_t(x) * size_t(dmax);
-        T* L = path.current.costs(x);
-        T minimum;
-        if (has_first && has_second) {
-          const int x1 = x + first.dx, x2 = x + second.dx;
-          const RowBuffer &row1 = row_of(first.dy), &row2 = row_of(second.dy);
-          minimum = step2(cost + at, row1.costs(x1), row1.minimum[size_t(x1)],
-                          penalty2(guide.at(x, y), guide.at(x1, y + first.dy)), row2.costs(x2),
-                          row2.minimum[size_t(x2)], penalty2(guide.at(x, y), guide.at(x2, y + second.dy)), L,
-                          sum + at);
-        } else if (has_first || has_second) {
-          const Offset o = has_first ? first : second;
-          const int px = x + o.dx;
-          const RowBuffer& pred_row = row_of(o.dy);
-          minimum = step(cost + at, pred_row.costs(px), pred_row.minimum[size_t(px)], L, sum + at,
-                         penalty2(guide.at(x, y), guide.at(px, y + o.dy)));
-        } else {
-          minimum = start(cost + at, L, sum + at);
-        }
-        path.current.minimum[size_t(x)] = minimum;
+    if (!cfg_.mgm) {
+      switch (paths_.size()) {
+        case 1: push_row_fused<1>(y, cost, sum, guide); break;
+        case 2: push_row_fused<2>(y, cost, sum, guide); break;
+        case 3: push_row_fused<3>(y, cost, sum, guide); break;
+        default: push_row_fused<4>(y, cost, sum, guide); break;
       }
-      std::swap(path.current, path.previous);
+    } else {
+      const size_t dmax = size_t(cfg_.dmax);
+      for (int x = 0; x < width_; ++x) {
+        T* S = sum + size_t(x) * dmax;
+        std::fill(S, S + dmax, T(0));
+        for (auto& path : paths_)
+          path.current.minimum[size_t(x)] = push_mgm_pixel(path, x, y, cost + size_t(x) * dmax, S, guide);
+      }
     }
+    for (auto& path : paths_) std::swap(path.current, path.previous);
   }
 
   // The path costs of the last row pushed, for tests that check widths.
@@ -302,15 +352,51 @@ class PathAggregator {
     RowBuffer current, previous;
   };
 
-  // L = C at a path start; adds L to S and returns min_d L.
-  T start(const T* C, T* L, T* S) const {
-    T minimum = std::numeric_limits<T>::max();
-    for (int d = 0; d < cfg_.dmax; ++d) {
-      L[d] = C[d];
-      S[d] = T(S[d] + C[d]);
-      minimum = std::min(minimum, C[d]);
+  // One predecessor in the recursion of section 3: its path costs, their minimum, and the jump
+  // minimum + P2. A path start reads a row of zeros (minimum 0, jump 0), which makes L = C.
+  struct Predecessor {
+    const T* costs;
+    T minimum, jump;
+  };
+  Predecessor predecessor(const PathState& path, Offset o, int x, int y, const GrayImage& guide) const {
+    if (x + o.dx < 0 || x + o.dx >= width_ || (o.dy != 0 && y == 0)) return {zeros_.data() + 1, 0, 0};
+    const RowBuffer& row = o.dy == 0 ? path.current : path.previous;
+    const int px = x + o.dx;
+    const T minimum = row.minimum[size_t(px)];
+    return {row.costs(px), minimum, T(minimum + penalty2(guide.at(x, y), guide.at(px, y + o.dy)))};
+  }
+
+  // Without MGM: every path of a pixel in one pass over the disparities, so that the pixel's
+  // costs are read and its sums written once.
+  template <int N>
+  void push_row_fused(int y, const T* cost, T* sum, const GrayImage& guide) {
+    const size_t dmax = size_t(cfg_.dmax);
+    std::array<Predecessor, N> pred;
+    std::array<T*, N> L;
+    std::array<T, N> minimum;
+    for (int x = 0; x < width_; ++x) {
+      T* S = sum + size_t(x) * dmax;
+      std::fill(S, S + dmax, T(0));
+      for (int p = 0; p < N; ++p) {
+        PathState& path = paths_[size_t(p)];
+        pred[size_t(p)] = predecessor(path, {path.dir.dx, path.dir.dy, true}, x, y, guide);
+        L[size_t(p)] = path.current.costs(x);
+      }
+      step_paths<N>(cost + size_t(x) * dmax, S, pred, L, minimum);
+      for (int p = 0; p < N; ++p) paths_[size_t(p)].current.minimum[size_t(x)] = minimum[size_t(p)];
     }
-    return minimum;
+  }
+
+  // With MGM: path costs of pixel (x, y) on one path; adds them to S and returns their minimum.
+  T push_mgm_pixel(PathState& path, int x, int y, const T* C, T* S, const GrayImage& guide) const {
+    const Offset first{path.dir.dx, path.dir.dy, true}, second = path.second;
+    auto inside = [&](Offset o) { return x + o.dx >= 0 && x + o.dx < width_ && (o.dy == 0 || y > 0); };
+    T* L = path.current.costs(x);
+    if (inside(first) && inside(second))
+      return step2(C, predecessor(path, first, x, y, guide), predecessor(path, second, x, y, guide), L, S);
+    std::array<T, 1> minimum;
+    step_paths<1>(C, S, {predecessor(path, inside(first) ? first : second, x, y, guide)}, {L}, minimum);
+    return minimum[0];
   }
 
   // Section 3's P2 between a pixel of intensity i and its predecessor's, j.
@@ -318,30 +404,42 @@ class PathAggregator {
     return adapt_ == 0 ? cfg_.p2 : std::max(cfg_.p1, cfg_.p2 - ((adapt_ * std::abs(i - j)) >> 2));
   }
 
-  // The recursion of section 3; adds L to S and returns min_d L.
-  T step(const T* C, const T* pred, T pred_min, T* L, T* S, int p2) const {
+  // The recursion of section 3 on N paths, each against its own predecessor: writes each
+  // path's L and minimum and adds the L to S.
+  template <int N>
+  void step_paths(const T* __restrict C, T* __restrict S, const std::array<Predecessor, N>& pred,
+                  const std::array<T*, N>& L, std::array<T, N>& minimum) const {
     const T p1 = T(cfg_.p1);
-    const T jump = T(pred_min + p2);
-    T minimum = std::numeric_limits<T>::max();
+    minimum.fill(std::numeric_limits<T>::max());
+    // Each L is its own pixel's slot, apart from every predecessor, C and S.
+#pragma GCC ivdep
     for (int d = 0; d < cfg_.dmax; ++d) {
-      const T neighbour = T(std::min(pred[d - 1], pred[d + 1]) + p1);
-      const T l = T(C[d] + std::min(std::min(pred[d], jump), neighbour) - pred_min);
-      L[d] = l;
-      S[d] = T(S[d] + l);
-      minimum = std::min(minimum, l);
+      T s = S[d];
+      for (int p = 0; p < N; ++p) {
+        const T* q = pred[size_t(p)].costs;
+        const T neighbour = T(std::min(q[d - 1], q[d + 1]) + p1);
+        const T l = T(C[d] + std::min(std::min(q[d], pred[size_t(p)].jump), neighbour) - pred[size_t(p)].minimum);
+        L[size_t(p)][d] = l;
+        s = T(s + l);
+        minimum[size_t(p)] = std::min(minimum[size_t(p)], l);
+      }
+      S[d] = s;
     }
-    return minimum;
   }
 
   // MGM's recursion with two predecessors: C plus the floor of the mean of the two predecessor
-  // terms, each as in step() against its own predecessor and P2; adds L to S and returns min_d L.
-  T step2(const T* C, const T* pred1, T min1, int p2_1, const T* pred2, T min2, int p2_2, T* L, T* S) const {
+  // terms, each as in step_paths() against its own predecessor; adds L to S and returns min_d L.
+  T step2(const T* __restrict C, const Predecessor& first, const Predecessor& second, T* __restrict L,
+          T* __restrict S) const {
     const T p1 = T(cfg_.p1);
-    const T jump1 = T(min1 + p2_1), jump2 = T(min2 + p2_2);
+    const T* __restrict pred1 = first.costs;
+    const T* __restrict pred2 = second.costs;
     T minimum = std::numeric_limits<T>::max();
     for (int d = 0; d < cfg_.dmax; ++d) {
-      const T t1 = T(std::min(std::min(pred1[d], jump1), T(std::min(pred1[d - 1], pred1[d + 1]) + p1)) - min1);
-      const T t2 = T(std::min(std::min(pred2[d], jump2), T(std::min(pred2[d - 1], pred2[d + 1]) + p1)) - min2);
+      const T t1 =
+          T(std::min(std::min(pred1[d], first.jump), T(std::min(pred1[d - 1], pred1[d + 1]) + p1)) - first.minimum);
+      const T t2 =
+          T(std::min(std::min(pred2[d], second.jump), T(std::min(pred2[d - 1], pred2[d + 1]) + p1)) - second.minimum);
       const T l = T(C[d] + ((t1 + t2) >> 1));
       L[d] = l;
       S[d] = T(S[d] + l);
@@ -353,6 +451,7 @@ class PathAggregator {
   const StereoConfig& cfg_;
   const int width_, stride_, adapt_;
   std::vector<PathState> paths_;
+  std::vector<T> zeros_;  // the predecessor of a path start
 };
 
 }  // namespace fpstereo::golden

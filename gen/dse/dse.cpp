@@ -287,12 +287,12 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
   return ds;
 }
 
-Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& ds) {
+Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& ds, int threads) {
   std::optional<ErrorCounts> occ_filled, noc_filled, occ_valid;
   bool first = true;
   for (const PairInputs& in : ds.pairs) {
     const StereoConfig run = config_for_pair(cfg, in);
-    const cv::Mat1f est = to_float_disparity(run_golden(run, in.left, in.right), run);
+    const cv::Mat1f est = to_float_disparity(run_golden(run, in.left, in.right, {}, threads), run);
     const Scores valid = score(est, in), filled = score(kitti_fill(est), in);
     if (first) {
       occ_filled = filled.occ;
@@ -388,7 +388,8 @@ SweepResult sweep(const SweepOptions& o) {
   const AccuracyCache cache(o.cache_dir.empty() ? cache_dir("dse") : fs::path(o.cache_dir));
 
   // Cache hits first (cheap, and a corrupt record fails before any work), then the misses on
-  // o.jobs threads.
+  // o.jobs threads: one configuration per thread, and the threads beyond the configurations
+  // shared among their frames.
   std::map<std::string, Accuracy> accuracy;
   std::vector<std::string> todo;
   for (const auto& key : mine) {
@@ -408,11 +409,13 @@ SweepResult sweep(const SweepOptions& o) {
   std::mutex lock;
   std::string error;
   progress.step(done);
+  const int workers = std::clamp(int(todo.size()), 1, std::max(1, o.jobs));
+  const int frame_threads = std::max(1, o.jobs / workers);
   const auto worker = [&] {
     for (size_t i; (i = next++) < todo.size();) {
       try {
         const std::string& key = todo[i];
-        const Accuracy a = evaluate_accuracy(members[key].front(), ds);
+        const Accuracy a = evaluate_accuracy(members[key].front(), ds, frame_threads);
         cache.store(cache.path(key, ds.id), key, a);
         std::lock_guard<std::mutex> g(lock);
         accuracy[key] = a;
@@ -426,7 +429,7 @@ SweepResult sweep(const SweepOptions& o) {
     }
   };
   std::vector<std::thread> threads;
-  for (int t = 1; t < std::max(1, o.jobs); ++t) threads.emplace_back(worker);
+  for (int t = 1; t < workers; ++t) threads.emplace_back(worker);
   worker();
   for (auto& t : threads) t.join();
   if (!error.empty()) throw InputError(error);

@@ -72,7 +72,8 @@ struct Dataset {
 // Throws InputError (missing folder, no pairs.csv, unreadable images, ...).
 Dataset load_dataset(const std::vector<std::string>& dirs);
 
-Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& dataset);
+// threads: the golden model's threads per pair (its paths are shared among them).
+Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& dataset, int threads = 1);
 
 // One full configuration of the sweep.
 struct Row {

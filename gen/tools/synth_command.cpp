@@ -457,6 +457,10 @@ void run(const SynthOptions& o) {
 
 }  // namespace
 
+std::string verilog_hash(const StereoConfig& cfg) {
+  return fmt::format("{:016x}", fnv1a64(verilog_text(rtl::emit(rtl::plan(cfg)))));
+}
+
 SynthReport parse_kv(const std::string& text) {
   KvMap kv;
   SynthReport r;

@@ -58,6 +58,10 @@ struct SynthReport {
 // ignored so a newer script still parses. Throws SynthError naming a missing or malformed key.
 SynthReport parse_kv(const std::string& text);
 
+// The hash (16 hex digits) of the Verilog the generator emits for cfg, the files synth
+// synthesises: a recorded Yosys result is current only while its hash matches.
+std::string verilog_hash(const StereoConfig& cfg);
+
 // The human-readable table: every resource with its share of the part, the abc9 delay and
 // levels, the netlist's logic depth and deepest paths, and the memories with what they were
 // mapped to.
