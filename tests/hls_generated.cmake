@@ -83,6 +83,7 @@ expect_in(${lib} "#pragma HLS UNROLL" "uf cost lanes")
 expect_in(${lib} "__has_include\\(<ap_int.h>\\)" "the real Vitis headers win when present")
 file(GLOB config ${WORK}/one/*_config.hpp)
 expect_in(${config} "static constexpr int kPathCostBits = [0-9]+;" "derived widths as constants")
+expect_in(${config} "static constexpr int kCostWindow = 1;" "the geometry's cost window (census)")
 
 # The right view: switched on in the configuration header, its stream written by the pipeline.
 emit(${WORK}/right --preset C3 --width 320 --height 96 --right-view on)
@@ -97,7 +98,8 @@ emit(${WORK}/confidence --preset C2 --width 320 --height 96 --confidence on)
 file(GLOB confidence_config ${WORK}/confidence/*_config.hpp)
 file(GLOB confidence_top ${WORK}/confidence/*_top.cpp)
 expect_in(${confidence_config} "#define FPSTEREO_CONFIDENCE 1\n" "confidence switched on")
-expect_in(${confidence_config} "kOutBits = kLaneBits \\+ \\(kConfidence \\? 8 : 0\\)" "tdata 8 bits wider")
+expect_in(${confidence_config} "kLaneBits = 8;" "the word's 8-bit lane")
+expect_in(${confidence_config} "kOutBits = 16;" "tdata 8 bits wider than the lane")
 expect_in(${confidence_top} "write_confident_words<C>\\([a-z]+, confidences, out, W, H\\);" "the confident writer")
 expect_in(${confidence_top} "store_confident_frame<" "the memory-mapped kernel's confidences")
 
