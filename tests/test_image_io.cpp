@@ -211,7 +211,7 @@ TEST_CASE("write_colour_png: colour map, black invalid pixels, legend on the rig
   TempDir dir;
   cv::Mat1f disp(200, 300, 20.0f);
   disp(10, 10) = kNaN;
-  write_colour_png(disp, 64, dir.file("c.png"));
+  write_colour_png(disp, 0, 64, dir.file("c.png"));
   const cv::Mat3b image = cv::imread(dir.file("c.png"), cv::IMREAD_COLOR);
   REQUIRE(image.rows == 200);
   CHECK(image.cols > 300);  // the legend
@@ -225,7 +225,7 @@ TEST_CASE("writers report unwritable paths as InputError", "[io]") {
   const std::string path = "/nonexistent_fpstereo_dir/d";
   CHECK_THAT(error_of([&] { write_kitti_png(disp, path + ".png"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_pfm(disp, path + ".pfm"); }), Contains("cannot write"));
-  CHECK_THAT(error_of([&] { write_colour_png(disp, 10, path + "_c.png"); }), Contains("cannot write"));
+  CHECK_THAT(error_of([&] { write_colour_png(disp, 0, 10, path + "_c.png"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_pgm(GrayImage(2, 2), path + ".pgm"); }), Contains("cannot write"));
 }
 

@@ -41,7 +41,7 @@ std::vector<uchar> read_bytes(const std::string& path, const std::string& role) 
 
 void write_bytes(const std::string& path, const std::vector<uchar>& bytes) {
   try {
-    write_file_atomically(path, bytes.data(), bytes.size());
+    write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
   } catch (const FileError& e) {
     throw InputError(e.what());
   }
@@ -244,13 +244,13 @@ cv::Mat3b turbo(const cv::Mat1b& levels) {
   return colour;
 }
 
-cv::Mat3b colourise(const cv::Mat1f& disp, float max_disp) {
+cv::Mat3b colourise(const cv::Mat1f& disp, float min_disp, float max_disp) {
   cv::Mat1b levels(disp.size()), invalid(disp.size());
   for (int y = 0; y < disp.rows; ++y)
     for (int x = 0; x < disp.cols; ++x) {
       const float d = disp(y, x);
       invalid(y, x) = std::isfinite(d) ? 0 : 255;
-      levels(y, x) = std::isfinite(d) ? cv::saturate_cast<uchar>(d / max_disp * 255.0f) : 0;
+      levels(y, x) = std::isfinite(d) ? cv::saturate_cast<uchar>((d - min_disp) / (max_disp - min_disp) * 255.0f) : 0;
     }
   cv::Mat3b colour = turbo(levels);
   colour.setTo(cv::Scalar::all(0), invalid);
@@ -258,7 +258,7 @@ cv::Mat3b colourise(const cv::Mat1f& disp, float max_disp) {
 }
 
 // Vertical colour bar (max at the top), five labelled ticks, and a black "invalid" swatch.
-void draw_legend(cv::Mat3b panel, float max_disp) {
+void draw_legend(cv::Mat3b panel, float min_disp, float max_disp) {
   panel.setTo(kLegendBackground);
   const int bar_top = kMargin;
   const int swatch_top = panel.rows - kMargin - kSwatchHeight;
@@ -266,11 +266,11 @@ void draw_legend(cv::Mat3b panel, float max_disp) {
   cv::Mat1b ramp(bar_height, kBarWidth);
   for (int i = 0; i < bar_height; ++i) ramp.row(i).setTo(255 * (bar_height - 1 - i) / (bar_height - 1));
   turbo(ramp).copyTo(panel(cv::Rect(kBarLeft, bar_top, kBarWidth, bar_height)));
-  const char* format = max_disp >= 20 ? "{:.0f}" : "{:.1f}";
+  const char* format = max_disp - min_disp >= 20 ? "{:.0f}" : "{:.1f}";
   for (int i = 0; i <= 4; ++i) {
     const int y = bar_top + (bar_height - 1) * (4 - i) / 4;
     cv::line(panel, {kBarLeft + kBarWidth, y}, {kBarLeft + kBarWidth + 3, y}, kLegendText);
-    put_label(panel, fmt::format(fmt::runtime(format), max_disp * float(i) / 4), kLabelLeft, y);
+    put_label(panel, fmt::format(fmt::runtime(format), min_disp + (max_disp - min_disp) * float(i) / 4), kLabelLeft, y);
   }
   const cv::Rect swatch(kBarLeft, swatch_top, kBarWidth, kSwatchHeight);
   panel(swatch).setTo(cv::Scalar::all(0));
@@ -327,7 +327,11 @@ std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp) {
       if (std::isfinite(d) && d < 0)
         throw InputError(fmt::format("a KITTI PNG cannot hold the negative disparity {} at ({}, {}): write a PFM",
                                      d, x, y));
-      stored(y, x) = std::isfinite(d) ? uint16_t(std::clamp(std::lround(d * 256.0f), 1L, 65535L)) : 0;
+      const long word = std::isfinite(d) ? std::max(std::lround(d * 256.0f), 1L) : 0;
+      if (word > 65535)
+        throw InputError(fmt::format(
+            "a KITTI PNG cannot hold the disparity {} at ({}, {}) (at most 255.996): write a PFM", d, x, y));
+      stored(y, x) = uint16_t(word);
     }
   return encode_png(stored);
 }
@@ -358,25 +362,25 @@ std::vector<uchar> encode_pfm(const cv::Mat1f& disp) {
   return bytes;
 }
 
-std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float max_disp) {
-  if (!(max_disp > 0)) throw InputError("colour map: the disparity range must be positive");
-  const cv::Mat3b colour = colourise(disp, max_disp);
+std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp) {
+  if (!(max_disp > min_disp)) throw InputError("colour map: the disparity range must not be empty");
+  const cv::Mat3b colour = colourise(disp, min_disp, max_disp);
   cv::Mat3b canvas(std::max(disp.rows, kMinCanvasHeight), disp.cols + kLegendWidth);
   canvas.setTo(kLegendBackground);
   colour.copyTo(canvas(cv::Rect(0, 0, disp.cols, disp.rows)));
-  draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), max_disp);
+  draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), min_disp, max_disp);
   return encode_png(canvas);
+}
+
+std::vector<uchar> encode_disparity_file(const std::string& path, const cv::Mat1f& disp) {
+  return ends_with(path, ".pfm") ? encode_pfm(disp) : encode_kitti_png(disp);
 }
 
 void write_kitti_png(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_kitti_png(disp)); }
 void write_pgm(const GrayImage& image, const std::string& path) { write_bytes(path, encode_pgm(image)); }
 void write_pfm(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_pfm(disp)); }
-void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path) {
-  write_bytes(path, encode_colour_png(disp, max_disp));
-}
-
-void write_outputs(const std::vector<OutputBytes>& outputs) {
-  for (const auto& out : outputs) write_bytes(out.path, out.bytes);
+void write_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp, const std::string& path) {
+  write_bytes(path, encode_colour_png(disp, min_disp, max_disp));
 }
 
 cv::Mat1f read_disparity(const std::string& path, double scale, const std::string& invalid_spec) {
