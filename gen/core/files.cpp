@@ -340,6 +340,9 @@ void write_in_place(const fs::path& path, const std::string& bytes) {
 }  // namespace
 
 void OutputSet::commit() {
+  // Test hook (tests/hostile.py): FPSTEREO_TEST_SIGNAL_AT_COMMIT=N raises signal N here, with
+  // every output staged and none in place: the worst moment for an interruption.
+  if (const char* sig = std::getenv("FPSTEREO_TEST_SIGNAL_AT_COMMIT")) ::raise(std::atoi(sig));
   for (const auto& e : outputs_) {
     if (!e->staged) throw std::logic_error("output not staged: " + e->path.string());
     if (e->kind == kDirectory) check_replaceable(e->place, e->names);

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +28,9 @@ namespace fpstereo {
 namespace {
 
 std::string size_text(int width, int height) { return fmt::format("{}x{}", width, height); }
+
+// The largest image side any configuration takes (config.cpp's width and height limits).
+constexpr uint64_t kMaxImageSide = 8192;
 
 // Reads the whole file ourselves (instead of cv::imread) so that "missing" and "not an image"
 // get distinct messages, OpenCV never logs warnings about the path, and a device or a pipe
@@ -80,7 +85,47 @@ void without_stderr(F&& f) {
   restore();
 }
 
+bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+// The size a PNG, PNM (P1 .. P6) or JPEG header states, read before decoding so that a small
+// file claiming a huge image costs nothing; nullopt for other formats or a header cut short.
+std::optional<std::pair<uint64_t, uint64_t>> stated_size(const std::vector<uchar>& b) {
+  const auto be = [&](size_t at, int n) {
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v = v << 8 | b[at + size_t(i)];
+    return v;
+  };
+  static const uchar png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() >= 24 && std::equal(png, png + 8, b.begin())) return std::pair{be(16, 4), be(20, 4)};
+  if (b.size() >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6') {
+    size_t pos = 2;
+    uint64_t side[2] = {0, 0};
+    for (uint64_t& v : side) {
+      while (pos < b.size() && (is_space(b[pos]) || b[pos] == '#'))  // comments run to the line's end
+        if (b[pos] == '#')
+          while (pos < b.size() && b[pos] != '\n') ++pos;
+        else
+          ++pos;
+      for (int digits = 0; pos < b.size() && std::isdigit(b[pos]) && digits < 12; ++digits)
+        v = v * 10 + uint64_t(b[pos++] - '0');
+    }
+    return std::pair{side[0], side[1]};
+  }
+  if (b.size() >= 4 && b[0] == 0xFF && b[1] == 0xD8) {  // JPEG: walk the segments to a frame header
+    for (size_t pos = 2; pos + 9 < b.size() && b[pos] == 0xFF;) {
+      const uchar marker = b[pos + 1];
+      if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC)
+        return std::pair{be(pos + 7, 2), be(pos + 5, 2)};
+      pos += 2 + size_t(be(pos + 2, 2));
+    }
+  }
+  return std::nullopt;
+}
+
 cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const std::string& role) {
+  if (const auto size = stated_size(bytes); size && (size->first > kMaxImageSide || size->second > kMaxImageSide))
+    throw InputError(fmt::format("{} {}: the header states {}x{} pixels, more than {} on a side", role, quoted(path),
+                                 size->first, size->second, kMaxImageSide));
   cv::Mat image;
   try {
     if (!bytes.empty()) without_stderr([&] { image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED); });
@@ -134,7 +179,6 @@ cv::Mat1b to_gray(const cv::Mat& image, const std::string& path, const std::stri
 
 // ---- PFM -------------------------------------------------------------------------------------
 
-bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
 std::string next_token(const std::vector<uchar>& bytes, size_t& pos) {
   while (pos < bytes.size() && is_space(bytes[pos])) ++pos;
@@ -159,7 +203,7 @@ float decode_float(const uchar* p, bool little_endian) {
 int parse_dimension(const std::string& token, const std::string& path) {
   char* end = nullptr;
   const long v = std::strtol(token.c_str(), &end, 10);
-  if (token.empty() || *end != '\0' || v < 1 || v > 65535)
+  if (token.empty() || *end != '\0' || v < 1 || uint64_t(v) > kMaxImageSide)
     throw InputError(fmt::format("PFM {}: bad image size {} in the header", quoted(path), quoted(token)));
   return int(v);
 }
