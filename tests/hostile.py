@@ -31,7 +31,7 @@ def check(ok, what):
 
 
 def run(args, timeout=60, env=None, **kw):
-    return subprocess.run(args, capture_output=True, text=True, timeout=timeout, env=env, **kw)
+    return subprocess.run(args, capture_output=True, text=True, errors="replace", timeout=timeout, env=env, **kw)
 
 
 def expect_refusal(args, expected, what, timeout=30):
@@ -264,6 +264,20 @@ def flags():
     for clock in ("1e308", "inf", "nan", "-1"):
         expect_refusal([FPSTEREO, "dse", cones, "--clock-mhz", clock, *out], "clock-mhz", f"dse --clock-mhz {clock}")
     expect_refusal([FPSTEREO_RTL, "--clock-mhz", "1e-300"], "expected a positive frequency", "--clock-mhz 1e-300")
+    expect_refusal([FPSTEREO, "dse", cones, "--cost", "census", "--window", "5", "--dmax", "64", "--uf", "16",
+                    "--refine", "none", "--median", "off", "--resolution", "64x16", *out],
+                   "smaller than the dataset's largest images", "dse --resolution smaller than the images", 120)
+
+
+def odd_names():
+    """A dataset folder whose name is not UTF-8: --json and --csv are both written."""
+    d = fresh("names")
+    dataset = os.path.join(d.encode(), b"set\xff").decode(errors="surrogateescape")
+    shutil.copytree(os.path.join(EXAMPLES, "cones"), dataset)
+    r = run([FPSTEREO, "eval", dataset, "--dmax", "64", "--uf", "16", "--json", os.path.join(d, "r.json"), "--csv",
+             os.path.join(d, "r.csv")], timeout=120)
+    check(r.returncode == 0 and os.path.getsize(os.path.join(d, "r.json")) > 0 and
+          os.path.getsize(os.path.join(d, "r.csv")) > 0, f"eval on a non-UTF-8 folder name ({r.stderr[-200:]!r})")
 
 
 def concurrent_writers():
@@ -279,7 +293,7 @@ def concurrent_writers():
           "six concurrent writers of one output: one whole file, no temporary")
 
 
-for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, flags,
+for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, flags, odd_names,
              concurrent_writers):
     print(f"-- {case.__name__}")
     try:

@@ -41,6 +41,8 @@ std::vector<uchar> read_bytes(const std::string& path, const std::string& role) 
     return {bytes.begin(), bytes.end()};
   } catch (const FileError& e) {
     throw InputError(e.what());
+  } catch (const std::bad_alloc&) {  // under a memory limit: name the file, not std::bad_alloc
+    throw InputError(fmt::format("{} {}: out of memory reading it", role, quoted(path)));
   }
 }
 
@@ -131,6 +133,8 @@ cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const s
     if (!bytes.empty()) without_stderr([&] { image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED); });
   } catch (const cv::Exception&) {
     image.release();  // a decoder that throws on corrupt data: same answer as one returning empty
+  } catch (const std::bad_alloc&) {
+    throw InputError(fmt::format("{} {}: out of memory decoding it", role, quoted(path)));
   }
   if (image.empty()) throw InputError(fmt::format("{} {}: not a decodable image", role, quoted(path)));
   return image;
