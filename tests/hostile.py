@@ -87,6 +87,8 @@ def aliasing():
     expect_refusal([FPSTEREO, "run", left, right, *SMALL, "-o", os.path.join(d, "x"), "--pfm",
                     os.path.join(d, ".", "x")], "is the same file as --output", "run -o x --pfm ./x")
     check(read(left) == original and read(right) == read(RIGHT), "aliased inputs unchanged")
+    r = run([FPSTEREO, "run", left, right, *SMALL, "-o", "/dev/null", "--pfm", "/dev/null"])
+    check(r.returncode == 0, f"two outputs to /dev/null, a device that replaces nothing ({r.stderr.strip()!r})")
     write(os.path.join(d, "in.csv"), "previous")
     expect_refusal([FPSTEREO, "dse", "merge", os.path.join(d, "in.csv"), "-o", os.path.join(d, "in.csv"),
                     "--html", ""], "is the same file as input CSV", "dse merge -o INPUT")

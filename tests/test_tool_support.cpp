@@ -120,6 +120,8 @@ TEST_CASE("OutputSet refuses an output that is an input or another output, befor
                     Catch::Contains("is the same file as -o"));
   CHECK_THROWS_WITH(outputs.add_directory(dir, "-o directory"), Catch::Contains("lies inside -o directory"));
   CHECK_THROWS_WITH(outputs.add_file("", "--html"), "--html: an empty file name");
+  CHECK_NOTHROW(outputs.add_file("/dev/null", "--colour"));  // a device replaces nothing: it may repeat
+  CHECK_NOTHROW(outputs.add_file("/dev/null", "--confidence-output"));
   CHECK(contents(dir / "in.png") == "input");
   fs::remove_all(dir);
 }

@@ -171,6 +171,7 @@ struct OutputSet::Entry {
   fs::path normal;
   fs::path place;  // where it is renamed to: absolute, symlinks kept, no trailing separator
   bool exists = false;
+  bool sink = false;  // an output on a character device (/dev/null): it can replace nothing
   dev_t device = 0;
   ino_t inode = 0;
   bool staged = false;
@@ -210,6 +211,7 @@ void OutputSet::add(const fs::path& path, const std::string& what, int kind) {
     e->exists = true;
     e->device = st.st_dev;
     e->inode = st.st_ino;
+    e->sink = kind == kFile && S_ISCHR(st.st_mode);
   }
   const auto name = [](const Entry& x) { return x.what + " " + quoted(x.path.string()); };
   if (kind != kInput && path.empty()) throw FileError(what + ": an empty file name");
@@ -218,6 +220,7 @@ void OutputSet::add(const fs::path& path, const std::string& what, int kind) {
   if (kind != kInput)
     for (const auto& other : inputs_) others.push_back(other.get());
   for (const Entry* other : others) {
+    if (e->sink || other->sink) continue;
     const bool same_inode = e->exists && other->exists && e->device == other->device && e->inode == other->inode;
     if (same_inode || e->normal == other->normal)
       throw FileError(name(*e) + " is the same file as " + name(*other));
@@ -248,9 +251,12 @@ void OutputSet::add(const fs::path& path, const std::string& what, int kind) {
 }
 
 OutputSet::Entry& OutputSet::output(const fs::path& path, bool directory) {
+  Entry* found = nullptr;  // the first not yet staged: a device may be named by several outputs
   for (const auto& e : outputs_)
-    if (e->path == path && e->kind == (directory ? kDirectory : kFile)) return *e;
-  throw std::logic_error("output not declared: " + path.string());
+    if (e->path == path && e->kind == (directory ? kDirectory : kFile) && (!found || (found->staged && !e->staged)))
+      found = e.get();
+  if (!found) throw std::logic_error("output not declared: " + path.string());
+  return *found;
 }
 
 void OutputSet::stage(const fs::path& path, const std::string& text) { stage(path, text.data(), text.size()); }
