@@ -241,7 +241,8 @@ def header_bomb():
     d = fresh("bomb")
     side = 32000
     ihdr = struct.pack(">IIBBBBB", side, side, 8, 0, 0, 0, 0)
-    body = zlib.compress(b"\0" * (1 << 22), 9)
+    deflate = zlib.compressobj(9)  # a whole, valid image of zeros: about 1 MB for 1 GB of pixels
+    body = b"".join(deflate.compress(b"\0" * (side + 1)) for _ in range(side)) + deflate.flush()
     write(os.path.join(d, "bomb.png"), b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", ihdr) + png_chunk(b"IDAT", body)
           + png_chunk(b"IEND", b""))
     write(os.path.join(d, "bomb.pgm"), f"P5\n{side} {side}\n255\n".encode() + b"\0" * 1000)
