@@ -89,7 +89,12 @@ if [ -z "$top" ]; then
 fi
 
 tmp=$(mktemp -d /tmp/synth-yosys.XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+keep_log=1
+trap 'rm -rf "$tmp"; [ $keep_log = 1 ] || rm -f "$log"' EXIT
+# A signal ends the script through its EXIT trap, so nothing temporary stays behind.
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
 if [ -z "$log" ]; then
   log=$(mktemp /tmp/synth-yosys.XXXXXX.log); keep_log=0
 else
@@ -118,9 +123,9 @@ synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
 
 if ! yosys -q -l "$log" -s "$tmp/run.ys" >/dev/null 2>&1; then
   err=$(grep -m1 "ERROR:" "$log" || true)
+  keep_log=1  # named in the message
   die "yosys failed: ${err:-see log} (log: $log)"
 fi
-[ $keep_log = 1 ] || trap 'rm -rf "$tmp" "$log"' EXIT
 
 # One awk pass over the three files emits key=value lines; the table is formatted from them.
 report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_ff" \

@@ -36,8 +36,14 @@ function(check_memories table)
 endfunction()
 
 string(TIMESTAMP start "%s")
-synth(first first_err ${config} --cache ${cache})
+# With --netlist and --log, which Yosys writes in the work folder and fpstereo puts in place after.
+synth(first first_err ${config} --cache ${cache} --netlist ${WORK}/kept.json --log ${WORK}/kept.log)
 string(TIMESTAMP stop "%s")
+file(READ ${WORK}/kept.json netlist LIMIT 200)
+file(READ ${WORK}/kept.log log LIMIT 2000)
+if(NOT netlist MATCHES "^{" OR NOT log MATCHES "Yosys")
+  message(SEND_ERROR "--netlist or --log not written: '${netlist}' '${log}'")
+endif()
 math(EXPR seconds "${stop} - ${start}")
 message(STATUS "first run (Yosys): ${seconds} s\n${first}")
 if(NOT first MATCHES "\n  LUT +([0-9]+) " OR CMAKE_MATCH_1 EQUAL 0)
@@ -95,7 +101,7 @@ endfunction()
 expect_error("invalid config: uf = 5: must divide dmax (16)"
              ${FPSTEREO} synth --width 32 --height 8 --dmax 16 --uf 5 --cache ${cache})
 expect_error("synth-yosys: unknown part 'xc9zz'" ${FPSTEREO} synth ${config} --part xc9zz --cache ${cache})
-expect_error("synth-yosys: cannot write netlist ${WORK}/missing/netlist.json"
+expect_error("cannot write '${WORK}/missing/netlist.json': no such directory"
              ${FPSTEREO} synth ${config} --netlist ${WORK}/missing/netlist.json --cache ${cache})
 expect_error("synth-yosys: part xczu9eg is xcup, not xc7"
              ${FPSTEREO} synth ${config} --family xc7 --part xczu9eg --cache ${cache})

@@ -117,7 +117,8 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
     const char* expected;
   };
   const Case cases[] = {
-      {"width", "4", "width = 4: must be in 8 .. 8192"},
+      {"width", "4", "width = 4: must be in 16 .. 8192"},
+      {"width", "12", "width = 12: must be in 16 .. 8192"},  // no dmax fits: the documented range is the rule
       {"width", "abc", "width = 'abc': expected an integer"},
       {"height", "9000", "height = 9000: must be in 4 .. 8192"},
       {"cost", "ncc", "cost = 'ncc': expected one of census rank sad zsad shd"},

@@ -211,7 +211,7 @@ TEST_CASE("write_colour_png: colour map, black invalid pixels, legend on the rig
   TempDir dir;
   cv::Mat1f disp(200, 300, 20.0f);
   disp(10, 10) = kNaN;
-  write_colour_png(disp, 64, dir.file("c.png"));
+  write_colour_png(disp, 0, 64, dir.file("c.png"));
   const cv::Mat3b image = cv::imread(dir.file("c.png"), cv::IMREAD_COLOR);
   REQUIRE(image.rows == 200);
   CHECK(image.cols > 300);  // the legend
@@ -225,7 +225,7 @@ TEST_CASE("writers report unwritable paths as InputError", "[io]") {
   const std::string path = "/nonexistent_fpstereo_dir/d";
   CHECK_THAT(error_of([&] { write_kitti_png(disp, path + ".png"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_pfm(disp, path + ".pfm"); }), Contains("cannot write"));
-  CHECK_THAT(error_of([&] { write_colour_png(disp, 10, path + "_c.png"); }), Contains("cannot write"));
+  CHECK_THAT(error_of([&] { write_colour_png(disp, 0, 10, path + "_c.png"); }), Contains("cannot write"));
   CHECK_THAT(error_of([&] { write_pgm(GrayImage(2, 2), path + ".pgm"); }), Contains("cannot write"));
 }
 
@@ -313,6 +313,57 @@ TEST_CASE("read_pairs_csv: missing or malformed files are InputErrors", "[io]") 
   CHECK_THAT(error_of([&] { read_pairs_csv(dir.file("")); }), Contains("gt_scale 'four'"));
   write_file(dir.file("pairs.csv"), header);
   CHECK_THAT(error_of([&] { read_pairs_csv(dir.file("")); }), Contains("no pairs"));
+  for (const char* scale : {"0x10", "1e-310", "inf", "nan", "4 x"}) {
+    write_file(dir.file("pairs.csv"), header + "a,l.png,r.png,gt.png,,," + scale + ",0,\n");
+    CHECK_THAT(error_of([&] { read_pairs_csv(dir.file("")); }), Contains("is not a decimal number"));
+  }
+}
+
+TEST_CASE("read_pairs_csv: a UTF-8 byte order mark before the header is skipped", "[io]") {
+  TempDir dir;
+  write_file(dir.file("pairs.csv"),
+             "\xEF\xBB\xBFpair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\na,l.png,r.png,,,,,,\n");
+  const auto pairs = read_pairs_csv(dir.file(""));
+  REQUIRE(pairs.size() == 1);
+  CHECK(pairs[0].name == "a");
+}
+
+TEST_CASE("read_pairs_csv: a repeated pair name is found among many rows", "[io]") {
+  TempDir dir;
+  std::string text = "pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\n";
+  for (int i = 0; i < 20000; ++i) text += "p" + std::to_string(i) + ",l.png,r.png,,,,,,\n";
+  text += "p7,l.png,r.png,,,,,,\n";
+  write_file(dir.file("pairs.csv"), text);
+  CHECK_THAT(error_of([&] { read_pairs_csv(dir.file("")); }), Contains("line 20002") && Contains("'p7' appears twice"));
+}
+
+TEST_CASE("encode_kitti_png refuses a disparity of 256 or more instead of clamping it", "[io]") {
+  cv::Mat1f disp(1, 3, 10.0f);
+  disp(0, 1) = 255.99f;
+  CHECK_NOTHROW(encode_kitti_png(disp));
+  disp(0, 2) = 256.0f;
+  CHECK_THAT(error_of([&] { encode_kitti_png(disp); }), Contains("cannot hold the disparity 256 at (2, 0)"));
+  CHECK(encode_disparity_file("x.pfm", disp) == encode_pfm(disp));
+}
+
+TEST_CASE("the colour map spans min-disp .. max: negatives keep their own colours", "[io]") {
+  cv::Mat1f disp(200, 300, -20.0f);
+  disp(cv::Rect(150, 0, 150, 200)) = -10.0f;
+  const cv::Mat3b image = cv::imdecode(encode_colour_png(disp, -32, 31), cv::IMREAD_COLOR);
+  CHECK(image(50, 50) != image(50, 250));
+  CHECK(image(50, 50) != cv::Vec3b(0, 0, 0));
+}
+
+TEST_CASE("an image whose header states more than 8192 pixels on a side is refused before decoding", "[io]") {
+  TempDir dir;
+  write_file(dir.file("big.pgm"), std::string("P5\n# a comment\n32000 32000\n255\n") + std::string(100, '\0'));
+  CHECK_THAT(error_of([&] { load_gray(dir.file("big.pgm"), "left image"); }),
+             Contains("the header states 32000x32000 pixels"));
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0dIHDR", 8) + std::string("\0\0\x7d\0\0\0\x7d\0\x08\0\0\0\0", 13) + "crc!";
+  write_file(dir.file("big.png"), png);
+  CHECK_THAT(error_of([&] { read_disparity(dir.file("big.png"), 1, "0"); }),
+             Contains("the header states 32000x32000 pixels"));
 }
 
 // ---- OpenCV baseline ---------------------------------------------------------------------------

@@ -100,8 +100,89 @@ TEST_CASE("write_file_atomically replaces the file whole and leaves nothing else
   CHECK((st.st_mode & 0777) == 0644);
 
   CHECK_THROWS_WITH(write_file_atomically(dir / "missing" / "x.txt", "x"),
-                    "cannot write '" + (dir / "missing" / "x.txt").string() + "': No such file or directory");
+                    "cannot write '" + (dir / "missing" / "x.txt").string() + "': no such directory '" +
+                        (dir / "missing").string() + "'");
   fs::remove_all(dir);
+}
+
+TEST_CASE("OutputSet refuses an output that is an input or another output, before any work", "[tools]") {
+  const fs::path dir = fresh_dir("fpstereo_test_alias");
+  std::ofstream(dir / "in.png") << "input";
+  fs::create_symlink(dir / "in.png", dir / "link.png");
+  OutputSet outputs;
+  outputs.add_input(dir / "in.png", "left image");
+  outputs.add_input(dir / "in.png", "right image");  // one file read twice is fine
+  CHECK_THROWS_WITH(outputs.add_file(dir / "." / "in.png", "-o"),
+                    Catch::Contains("is the same file as left image"));
+  CHECK_THROWS_WITH(outputs.add_file(dir / "link.png", "-o"), Catch::Contains("is the same file as left image"));
+  outputs.add_file(dir / "new.png", "-o");
+  CHECK_THROWS_WITH(outputs.add_file(dir / "sub" / ".." / "new.png", "--pfm"),
+                    Catch::Contains("is the same file as -o"));
+  CHECK_THROWS_WITH(outputs.add_directory(dir, "-o directory"), Catch::Contains("lies inside -o directory"));
+  CHECK_THROWS_WITH(outputs.add_file("", "--html"), "--html: an empty file name");
+  CHECK_NOTHROW(outputs.add_file("/dev/null", "--colour"));  // a device replaces nothing: it may repeat
+  CHECK_NOTHROW(outputs.add_file("/dev/null", "--confidence-output"));
+  CHECK(contents(dir / "in.png") == "input");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("OutputSet commits all outputs or none; a symlink at a target is replaced, not followed", "[tools]") {
+  const fs::path dir = fresh_dir("fpstereo_test_outputs");
+  std::ofstream(dir / "victim") << "victim";
+  std::ofstream(dir / "a") << "previous a";
+  fs::create_symlink(dir / "victim", dir / "b");
+  {
+    OutputSet outputs;  // destroyed uncommitted: nothing changes, nothing stays
+    outputs.add_file(dir / "a", "a");
+    outputs.add_file(dir / "b", "b");
+    outputs.stage(dir / "a", "new a");
+  }
+  CHECK(contents(dir / "a") == "previous a");
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 3);
+  OutputSet outputs;
+  outputs.add_file(dir / "a", "a");
+  outputs.add_file(dir / "b", "b");
+  outputs.add_directory(dir / "d", "d");
+  outputs.stage(dir / "a", "new a");
+  outputs.stage(dir / "b", "new b");
+  outputs.stage_in_directory(dir / "d", "x.v", "module x; endmodule\n");
+  CHECK_FALSE(fs::exists(dir / "d"));
+  outputs.commit();
+  CHECK(contents(dir / "a") == "new a");
+  CHECK(contents(dir / "b") == "new b");
+  CHECK_FALSE(fs::is_symlink(dir / "b"));
+  CHECK(contents(dir / "victim") == "victim");
+  CHECK(contents(dir / "d" / "x.v") == "module x; endmodule\n");
+  CHECK(fs::exists(dir / "d" / kDirectoryMarker));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("OutputSet swaps a directory in whole, and keeps a directory that holds other files", "[tools]") {
+  const fs::path dir = fresh_dir("fpstereo_test_swap");
+  const auto emit = [&](const std::string& name) {
+    OutputSet outputs;
+    outputs.add_directory(dir / "out", "-o directory");
+    outputs.stage_in_directory(dir / "out", name, name);
+    outputs.commit();
+  };
+  emit("first.v");
+  emit("second.v");  // an earlier output (the marker): replaced whole
+  CHECK_FALSE(fs::exists(dir / "out" / "first.v"));
+  CHECK(contents(dir / "out" / "second.v") == "second.v");
+  fs::remove(dir / "out" / kDirectoryMarker);
+  std::ofstream(dir / "out" / "notes.txt") << "mine";
+  CHECK_THROWS_WITH(emit("third.v"), Catch::Contains("it holds 'notes.txt', which this run does not write"));
+  CHECK(contents(dir / "out" / "notes.txt") == "mine");
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);  // no staged directory left
+  fs::remove_all(dir);
+}
+
+TEST_CASE("parse_decimal takes plain decimals only", "[tools]") {
+  CHECK(parse_decimal("4") == 4.0);
+  CHECK(parse_decimal("-2.5e3") == -2500.0);
+  CHECK(parse_decimal(".5") == 0.5);
+  for (const char* bad : {"", "0x10", "1e-310", "1e999", "inf", "nan", " 1", "1 ", "1e", ".", "+", "1,5"})
+    CHECK_FALSE(parse_decimal(bad));
 }
 
 TEST_CASE("one_line escapes control characters only; quoted also quotes and backslashes", "[tools]") {

@@ -216,7 +216,7 @@ void set_param(StereoConfig& cfg, const std::string& name, const std::string& va
 }
 
 void validate(const StereoConfig& c) {
-  check_range("width", c.width, 8, 8192);
+  check_range("width", c.width, 16, 8192);  // 16: the smallest dmax, which must fit in a row
   check_range("height", c.height, 4, 8192);
   check_odd_window("window", c.window, 3, 11);
   check_odd_window("shd-window", c.shd_window, 1, 11);  // checked even when unused: never silently wrong

@@ -1,10 +1,13 @@
-// Where the tools keep their caches, and how they write a file that readers may see at any moment.
+// Where the tools keep their caches, how they write their outputs (all or nothing, never over an
+// input) and how they read their inputs (regular files of bounded size).
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fpstereo {
 
@@ -20,18 +23,89 @@ std::filesystem::path cache_dir(const std::string& what);
 // The rule for help texts: "$XDG_CACHE_HOME/fpstereo/<what> or ~/.cache/fpstereo/<what>".
 std::string cache_dir_rule(const std::string& what);
 
-// Writes to a unique temporary file in the same directory and renames it into place: readers see
-// the old file or the new one, never half of one, however many writers race. The file is 0644,
-// so a shared cache stays readable to other users. Throws FileError naming the path and the reason.
-// A target that exists but is not a regular file (/dev/null, a pipe) is written in place; a
-// directory is an error.
-void write_file_atomically(const std::filesystem::path& path, const std::string& text);
-void write_file_atomically(const std::filesystem::path& path, const void* data, size_t size);
+// ---- all-or-nothing outputs ----------------------------------------------------------------
+//
+// The files and directories one run writes, committed together. A command declares every output
+// and every input it reads before its work (aliasing and unwritable paths fail then, one line),
+// stages each output's content when it is ready and commits once at the end:
+//  - a file is staged as a temporary beside its target (created exclusively, so never through a
+//    symlink, 0644, fsynced) and renamed into place: a symlink standing at the target is replaced,
+//    not followed. A character device (/dev/null) or a pipe with a reader, or a symlink to one of
+//    them (/dev/stdout), is written in place at commit, as there is nothing to replace;
+//  - a directory is built in a fresh sibling directory and swapped in whole (renameat2
+//    RENAME_EXCHANGE); the previous directory is removed. It must be empty, a previous output of
+//    this kind (marked by the file kDirectoryMarker) or hold only names the new one writes;
+//  - commit() checks everything before it renames anything. Until then a failure (the destructor)
+//    or SIGINT, SIGTERM or SIGHUP removes every temporary and leaves the previous outputs as they
+//    were.
+class OutputSet {
+ public:
+  OutputSet();
+  ~OutputSet();
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
 
-// Throws FileError unless `path` can be written later: its directory exists and is writable and
-// the path is not a directory. Checked before long work, which then writes with
-// write_file_atomically, so a failing run leaves the previous file untouched.
-void check_writable(const std::filesystem::path& path);
+  // `what` names the path in messages ("--json file", "left image"). Each throws FileError, one
+  // line, if the path is the same file as one declared before (device and inode when both exist,
+  // the normalised path always), an input lies inside an output directory, or an output cannot be
+  // written (its directory missing or read-only, a directory where a file is expected).
+  void add_input(const std::filesystem::path& path, const std::string& what);
+  void add_file(const std::filesystem::path& path, const std::string& what);
+  void add_directory(const std::filesystem::path& path, const std::string& what);
+
+  // The content of a declared file output, or of the file `name` inside a declared directory.
+  void stage(const std::filesystem::path& path, const void* data, size_t size);
+  void stage(const std::filesystem::path& path, const std::string& text);
+  void stage_in_directory(const std::filesystem::path& dir, const std::string& name, const std::string& text);
+  // Stages the file at `source` (a result a child process wrote, say) as the output `path`.
+  void stage_copy(const std::filesystem::path& path, const std::filesystem::path& source);
+
+  // Every declared output must have been staged. Throws FileError (and changes nothing) if one
+  // cannot be put in place.
+  void commit();
+
+ private:
+  struct Entry;
+  Entry& output(const std::filesystem::path& path, bool directory);
+  void add(const std::filesystem::path& path, const std::string& what, int kind);
+  std::vector<std::unique_ptr<Entry>> inputs_, outputs_;  // inputs are compared only with outputs
+};
+
+// The file every directory output holds: a later run may replace such a directory whole.
+constexpr const char* kDirectoryMarker = ".fpstereo-output";
+
+// One file as an OutputSet of one: readers see the old file or the new one, never half of one,
+// however many writers race (caches). Throws FileError naming the path and the reason.
+void write_file_atomically(const std::filesystem::path& path, const std::string& text);
+
+// ---- signals and child processes ------------------------------------------------------------
+//
+// SIGINT, SIGTERM and SIGHUP (unless ignored when the process started) remove every staged
+// temporary and end the process by the same signal. While a SignalsDeferred lives they are
+// instead passed on to the registered child process groups and recorded: the waiting code sees
+// interrupted() and unwinds (removing its work files), and main ends with die_if_interrupted().
+class SignalsDeferred {
+ public:
+  SignalsDeferred();
+  ~SignalsDeferred();
+  SignalsDeferred(const SignalsDeferred&) = delete;
+  SignalsDeferred& operator=(const SignalsDeferred&) = delete;
+};
+// A child in its own process group (pgid = its pid) that receives the signals the parent gets.
+class ChildGroup {
+ public:
+  explicit ChildGroup(int pgid);
+  ~ChildGroup();
+  ChildGroup(const ChildGroup&) = delete;
+  ChildGroup& operator=(const ChildGroup&) = delete;
+
+ private:
+  int pgid_;
+};
+// The signal received under a SignalsDeferred, or 0.
+int interrupted();
+// Ends the process by the recorded signal, if any (called by main after unwinding).
+void die_if_interrupted();
 
 // The size limits of read_regular_file for the kinds of input the tools read.
 constexpr size_t kMaxImageBytes = size_t(256) << 20;

@@ -1,5 +1,8 @@
 #include "text.hpp"
 
+#include <cmath>
+#include <cstdlib>
+
 #include <cstdio>
 
 namespace fpstereo {
@@ -40,6 +43,31 @@ std::string quoted(const std::string& value) {
   std::string out = "'";
   append_escaped(out, value, true);
   return out + "'";
+}
+
+std::optional<double> parse_decimal(const std::string& text) {
+  size_t i = 0;
+  const auto digits = [&] {
+    const size_t from = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  size_t mantissa = digits();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return std::nullopt;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return std::nullopt;
+  }
+  if (i != text.size()) return std::nullopt;
+  const double v = std::strtod(text.c_str(), nullptr);
+  if (!std::isfinite(v) || (v != 0 && !std::isnormal(v))) return std::nullopt;
+  return v;
 }
 
 }  // namespace fpstereo

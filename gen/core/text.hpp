@@ -2,6 +2,7 @@
 // small text tests the tools share.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -22,5 +23,9 @@ inline std::string quoted(std::string& value) { return quoted(std::as_const(valu
 inline bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
+
+// A decimal number as people write it, [+-]digits[.digits][(e|E)[+-]digits], finite and not
+// subnormal; nullopt for anything else (hex, inf, nan, surrounding spaces, 1e-310, 1e999).
+std::optional<double> parse_decimal(const std::string& text);
 
 }  // namespace fpstereo

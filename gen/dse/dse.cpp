@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <system_error>
 #include <thread>
 
 #include "files.hpp"
@@ -87,13 +88,6 @@ void require_values(const std::string& flag, const std::vector<T>& values) {
 
 // ---- the cache -------------------------------------------------------------------------------------
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 nlohmann::json accuracy_json(const Accuracy& a) {
   const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   return {{"d1_all", num(a.d1_all)},
@@ -121,12 +115,18 @@ class AccuracyCache {
     return dir_ / fmt::format("{:016x}.json", fnv1a64(text));
   }
   // A record that exists but does not parse is an error, not a miss: the user should know.
+  // Anything but a regular file (a pipe, say) is refused at once.
   std::optional<Accuracy> load(const fs::path& p) const {
-    if (!fs::exists(p)) return std::nullopt;
-    std::ifstream in(p);
-    if (!in) throw InputError(fmt::format("cache {}: cannot read", quoted(p.string())));
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(p, ec))) return std::nullopt;
+    std::string text;
     try {
-      return accuracy_from_json(nlohmann::json::parse(in).at("accuracy"));
+      text = read_regular_file(p, "cache record", kMaxTextFileBytes);
+    } catch (const FileError& e) {
+      throw InputError(e.what());
+    }
+    try {
+      return accuracy_from_json(nlohmann::json::parse(text).at("accuracy"));
     } catch (const std::exception&) {
       throw InputError(fmt::format("cache {}: corrupt record (delete it to recompute)", quoted(p.string())));
     }
@@ -269,9 +269,13 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
         throw InputError(fmt::format("dataset {}: no pairs.csv in it or in its subfolders", quoted(dir)));
     }
     for (const auto& set : sets) {
-      identity += read_file(set / "pairs.csv");
-      for (const DatasetPair& p : read_pairs_csv(set.string())) {
-        ds.pairs.push_back(load_pair(p, probe));
+      const std::vector<DatasetPair> pairs = read_pairs_csv(set.string());  // refuses a pipe, say
+      identity += read_regular_file(set / "pairs.csv", "pairs file", kMaxTableBytes);
+      for (const DatasetPair& p : pairs) {
+        const PairInputs in = load_pair(p, probe);
+        ds.max_width = std::max(ds.max_width, in.left.width);
+        ds.max_height = std::max(ds.max_height, in.left.height);
+        ds.pairs.push_back(p);
         for (const std::string& f : {p.left, p.right, p.gt_occ, p.gt_noc, p.noc_mask}) {
           if (f.empty()) continue;
           std::error_code ec;
@@ -290,8 +294,9 @@ Dataset load_dataset(const std::vector<std::string>& dirs) {
 Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& ds, int threads) {
   std::optional<ErrorCounts> occ_filled, noc_filled, occ_valid;
   bool first = true;
-  for (const PairInputs& in : ds.pairs) {
-    const StereoConfig run = config_for_pair(cfg, in);
+  for (const DatasetPair& pair : ds.pairs) {
+    const PairInputs in = load_pair(pair, cfg);  // at the pair's own size
+    const StereoConfig& run = in.cfg;
     const cv::Mat1f est = to_float_disparity(run_golden(run, in.left, in.right, {}, threads), run);
     const Scores valid = score(est, in), filled = score(kitti_fill(est), in);
     if (first) {
@@ -367,7 +372,15 @@ SweepResult sweep(const SweepOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   SweepResult result;
   const Part part = find_part(o.part);
-  const std::vector<StereoConfig> configs = enumerate(o.space, o.base, result.skipped);
+  const Dataset ds = load_dataset(o.datasets);
+  result.dataset = ds.description;
+  std::vector<StereoConfig> configs;
+  for (const StereoConfig& c : enumerate(o.space, o.base, result.skipped))
+    if (c.width < ds.max_width || c.height < ds.max_height)  // its hardware would refuse the images
+      result.skipped.push_back({c, fmt::format("resolution {}x{} is smaller than the dataset's largest images, {}x{}",
+                                               c.width, c.height, ds.max_width, ds.max_height)});
+    else
+      configs.push_back(c);
 
   // Accuracy groups in first-seen order; a shard takes every N-th group, so the shards of one
   // sweep partition it and each evaluates a disjoint set of golden runs.
@@ -383,8 +396,6 @@ SweepResult sweep(const SweepOptions& o) {
     if (int(i % size_t(o.shard_count)) == o.shard_index - 1) mine.push_back(keys[i]);
   result.accuracy_configs = int(mine.size());
 
-  const Dataset ds = load_dataset(o.datasets);
-  result.dataset = ds.description;
   const AccuracyCache cache(o.cache_dir.empty() ? cache_dir("dse") : fs::path(o.cache_dir));
 
   // Cache hits first (cheap, and a corrupt record fails before any work), then the misses on
@@ -429,7 +440,12 @@ SweepResult sweep(const SweepOptions& o) {
     }
   };
   std::vector<std::thread> threads;
-  for (int t = 1; t < workers; ++t) threads.emplace_back(worker);
+  try {
+    for (int t = 1; t < workers; ++t) threads.emplace_back(worker);
+  } catch (const std::system_error& e) {  // the threads started so far do the work
+    std::cerr << fmt::format("fpstereo dse: warning: {} of {} threads started: {}\n", threads.size() + 1, workers,
+                             e.what());
+  }
   worker();
   for (auto& t : threads) t.join();
   if (!error.empty()) throw InputError(error);
@@ -450,13 +466,13 @@ SweepResult sweep(const SweepOptions& o) {
 double parse_percent(const std::string& flag, const std::string& text) {
   std::string t = text;
   if (!t.empty() && t.back() == '%') t.pop_back();
-  try {
-    size_t used = 0;
-    const double v = std::stod(t, &used);
-    if (used == t.size() && v >= 0) return v;
-  } catch (const std::logic_error&) {
-  }
+  if (const std::optional<double> v = parse_decimal(t); v && *v >= 0) return *v;
   throw InputError(fmt::format("{} {}: expected a percentage such as 30% or 30", flag, quoted(text)));
+}
+
+double parse_number_at_least(const std::string& flag, const std::string& text, double min) {
+  if (const std::optional<double> v = parse_decimal(text); v && *v >= min) return *v;
+  throw InputError(fmt::format("{} {}: expected a number of at least {:g}", flag, quoted(text), min));
 }
 
 std::vector<Row> recommend(const std::vector<Row>& rows, const Constraints& c) {

@@ -64,8 +64,11 @@ struct Accuracy {
 };
 
 // A dataset: one folder with pairs.csv, or a folder whose subfolders have one each.
+// The pairs are loaded (and checked) once by load_dataset, then again by each evaluation: memory
+// does not grow with the number of pairs.
 struct Dataset {
-  std::vector<PairInputs> pairs;
+  std::vector<DatasetPair> pairs;
+  int max_width = 0, max_height = 0;  // the largest images
   std::string id;  // hash of the pairs.csv files and the sizes and times of every file they name
   std::string description;
 };
@@ -129,6 +132,8 @@ struct Constraints {
 };
 // "30%" or "30". Throws InputError.
 double parse_percent(const std::string& flag, const std::string& text);
+// A finite number of at least `min` (not nan, inf or 0x10); throws InputError naming the flag.
+double parse_number_at_least(const std::string& flag, const std::string& text, double min);
 
 // The rows meeting the constraints, lowest D1 first (ties: lower resource use, then higher FPS).
 std::vector<Row> recommend(const std::vector<Row>& rows, const Constraints& c);

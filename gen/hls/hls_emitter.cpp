@@ -2,9 +2,10 @@
 // the config header from derive_widths, so the kernels themselves stay generic.
 #include "hls_emitter.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -176,12 +177,26 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
   return os.str();
 }
 
+// Lower-case letters and digits, then one or more groups of a '-' and letters or digits, at most
+// 64 characters: checked by a loop, as std::regex recurses per character and overflows the stack
+// on long input.
+bool is_part_name(const std::string& part) {
+  const auto alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  const auto lower = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || (c >= 'a' && c <= 'z'); };
+  const size_t dash = part.find('-');
+  if (part.size() > 64 || dash == 0 || dash == std::string::npos || part.back() == '-') return false;
+  if (!std::all_of(part.begin(), part.begin() + long(dash), lower)) return false;
+  for (size_t i = dash; i < part.size(); ++i)
+    if (part[i] == '-' ? part[i - 1] == '-' : !alnum(part[i])) return false;
+  return true;
+}
+
 }  // namespace
 
 std::string top_name(const StereoConfig& cfg) { return config_tag(cfg) + "_top"; }
 
 std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
-  if (!std::regex_match(options.part, std::regex(R"([a-z0-9]+(-[a-zA-Z0-9]+)+)")))
+  if (!is_part_name(options.part))
     throw std::invalid_argument("--part " + quoted(options.part) +
                                 ": expected a Xilinx part name such as xczu9eg-ffvb1156-2-e");
   if (!(options.clock_mhz >= 10 && options.clock_mhz <= 1000))

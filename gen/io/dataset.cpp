@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "files.hpp"
@@ -50,11 +51,9 @@ class Row {
 
   double number(const std::string& column) const {
     const std::string& text = (*this)[column];
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(v))
-      fail(fmt::format("{} {} is not a number", column, quoted(text)));
-    return v;
+    const std::optional<double> v = parse_decimal(text);
+    if (!v) fail(fmt::format("{} {} is not a decimal number", column, quoted(text)));
+    return *v;
   }
 
  private:
@@ -116,9 +115,11 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
 
   std::string line;
   if (!std::getline(in, line)) throw InputError(fmt::format("{}: empty file", quoted(csv)));
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark (spreadsheets write one)
   const auto index = header_columns(line, csv);
 
   std::vector<DatasetPair> pairs;
+  std::set<std::string> names;
   for (int line_no = 2; std::getline(in, line); ++line_no) {
     if (trim(line).empty()) continue;
     const std::string where = fmt::format("{} line {}", quoted(csv), line_no);
@@ -133,9 +134,7 @@ std::vector<DatasetPair> read_pairs_csv(const std::string& dataset_dir) {
       by_name[name] = field;
     }
     DatasetPair pair = pair_from_row(Row(std::move(by_name), where), dataset_dir);
-    const bool duplicate =
-        std::any_of(pairs.begin(), pairs.end(), [&](const DatasetPair& p) { return p.name == pair.name; });
-    if (duplicate) throw InputError(fmt::format("{}: pair {} appears twice", where, quoted(pair.name)));
+    if (!names.insert(pair.name).second) throw InputError(fmt::format("{}: pair {} appears twice", where, quoted(pair.name)));
     pairs.push_back(std::move(pair));
   }
   if (pairs.empty()) throw InputError(fmt::format("{}: no pairs", quoted(csv)));

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +29,9 @@ namespace {
 
 std::string size_text(int width, int height) { return fmt::format("{}x{}", width, height); }
 
+// The largest image side any configuration takes (config.cpp's width and height limits).
+constexpr uint64_t kMaxImageSide = 8192;
+
 // Reads the whole file ourselves (instead of cv::imread) so that "missing" and "not an image"
 // get distinct messages, OpenCV never logs warnings about the path, and a device or a pipe
 // (/dev/zero) is refused instead of read forever.
@@ -36,12 +41,14 @@ std::vector<uchar> read_bytes(const std::string& path, const std::string& role) 
     return {bytes.begin(), bytes.end()};
   } catch (const FileError& e) {
     throw InputError(e.what());
+  } catch (const std::bad_alloc&) {  // under a memory limit: name the file, not std::bad_alloc
+    throw InputError(fmt::format("{} {}: out of memory reading it", role, quoted(path)));
   }
 }
 
 void write_bytes(const std::string& path, const std::vector<uchar>& bytes) {
   try {
-    write_file_atomically(path, bytes.data(), bytes.size());
+    write_file_atomically(path, std::string(bytes.begin(), bytes.end()));
   } catch (const FileError& e) {
     throw InputError(e.what());
   }
@@ -80,12 +87,54 @@ void without_stderr(F&& f) {
   restore();
 }
 
+bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
+
+// The size a PNG, PNM (P1 .. P6) or JPEG header states, read before decoding so that a small
+// file claiming a huge image costs nothing; nullopt for other formats or a header cut short.
+std::optional<std::pair<uint64_t, uint64_t>> stated_size(const std::vector<uchar>& b) {
+  const auto be = [&](size_t at, int n) {
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v = v << 8 | b[at + size_t(i)];
+    return v;
+  };
+  static const uchar png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() >= 24 && std::equal(png, png + 8, b.begin())) return std::pair{be(16, 4), be(20, 4)};
+  if (b.size() >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6') {
+    size_t pos = 2;
+    uint64_t side[2] = {0, 0};
+    for (uint64_t& v : side) {
+      while (pos < b.size() && (is_space(b[pos]) || b[pos] == '#'))  // comments run to the line's end
+        if (b[pos] == '#')
+          while (pos < b.size() && b[pos] != '\n') ++pos;
+        else
+          ++pos;
+      for (int digits = 0; pos < b.size() && std::isdigit(b[pos]) && digits < 12; ++digits)
+        v = v * 10 + uint64_t(b[pos++] - '0');
+    }
+    return std::pair{side[0], side[1]};
+  }
+  if (b.size() >= 4 && b[0] == 0xFF && b[1] == 0xD8) {  // JPEG: walk the segments to a frame header
+    for (size_t pos = 2; pos + 9 < b.size() && b[pos] == 0xFF;) {
+      const uchar marker = b[pos + 1];
+      if (marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC)
+        return std::pair{be(pos + 7, 2), be(pos + 5, 2)};
+      pos += 2 + size_t(be(pos + 2, 2));
+    }
+  }
+  return std::nullopt;
+}
+
 cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const std::string& role) {
+  if (const auto size = stated_size(bytes); size && (size->first > kMaxImageSide || size->second > kMaxImageSide))
+    throw InputError(fmt::format("{} {}: the header states {}x{} pixels, more than {} on a side", role, quoted(path),
+                                 size->first, size->second, kMaxImageSide));
   cv::Mat image;
   try {
     if (!bytes.empty()) without_stderr([&] { image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED); });
   } catch (const cv::Exception&) {
     image.release();  // a decoder that throws on corrupt data: same answer as one returning empty
+  } catch (const std::bad_alloc&) {
+    throw InputError(fmt::format("{} {}: out of memory decoding it", role, quoted(path)));
   }
   if (image.empty()) throw InputError(fmt::format("{} {}: not a decodable image", role, quoted(path)));
   return image;
@@ -134,7 +183,6 @@ cv::Mat1b to_gray(const cv::Mat& image, const std::string& what) {
 
 // ---- PFM -------------------------------------------------------------------------------------
 
-bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
 std::string next_token(const std::vector<uchar>& bytes, size_t& pos) {
   while (pos < bytes.size() && is_space(bytes[pos])) ++pos;
@@ -159,7 +207,7 @@ float decode_float(const uchar* p, bool little_endian) {
 int parse_dimension(const std::string& token, const std::string& path) {
   char* end = nullptr;
   const long v = std::strtol(token.c_str(), &end, 10);
-  if (token.empty() || *end != '\0' || v < 1 || v > 65535)
+  if (token.empty() || *end != '\0' || v < 1 || uint64_t(v) > kMaxImageSide)
     throw InputError(fmt::format("PFM {}: bad image size {} in the header", quoted(path), quoted(token)));
   return int(v);
 }
@@ -244,13 +292,13 @@ cv::Mat3b turbo(const cv::Mat1b& levels) {
   return colour;
 }
 
-cv::Mat3b colourise(const cv::Mat1f& disp, float max_disp) {
+cv::Mat3b colourise(const cv::Mat1f& disp, float min_disp, float max_disp) {
   cv::Mat1b levels(disp.size()), invalid(disp.size());
   for (int y = 0; y < disp.rows; ++y)
     for (int x = 0; x < disp.cols; ++x) {
       const float d = disp(y, x);
       invalid(y, x) = std::isfinite(d) ? 0 : 255;
-      levels(y, x) = std::isfinite(d) ? cv::saturate_cast<uchar>(d / max_disp * 255.0f) : 0;
+      levels(y, x) = std::isfinite(d) ? cv::saturate_cast<uchar>((d - min_disp) / (max_disp - min_disp) * 255.0f) : 0;
     }
   cv::Mat3b colour = turbo(levels);
   colour.setTo(cv::Scalar::all(0), invalid);
@@ -258,7 +306,7 @@ cv::Mat3b colourise(const cv::Mat1f& disp, float max_disp) {
 }
 
 // Vertical colour bar (max at the top), five labelled ticks, and a black "invalid" swatch.
-void draw_legend(cv::Mat3b panel, float max_disp) {
+void draw_legend(cv::Mat3b panel, float min_disp, float max_disp) {
   panel.setTo(kLegendBackground);
   const int bar_top = kMargin;
   const int swatch_top = panel.rows - kMargin - kSwatchHeight;
@@ -266,11 +314,11 @@ void draw_legend(cv::Mat3b panel, float max_disp) {
   cv::Mat1b ramp(bar_height, kBarWidth);
   for (int i = 0; i < bar_height; ++i) ramp.row(i).setTo(255 * (bar_height - 1 - i) / (bar_height - 1));
   turbo(ramp).copyTo(panel(cv::Rect(kBarLeft, bar_top, kBarWidth, bar_height)));
-  const char* format = max_disp >= 20 ? "{:.0f}" : "{:.1f}";
+  const char* format = max_disp - min_disp >= 20 ? "{:.0f}" : "{:.1f}";
   for (int i = 0; i <= 4; ++i) {
     const int y = bar_top + (bar_height - 1) * (4 - i) / 4;
     cv::line(panel, {kBarLeft + kBarWidth, y}, {kBarLeft + kBarWidth + 3, y}, kLegendText);
-    put_label(panel, fmt::format(fmt::runtime(format), max_disp * float(i) / 4), kLabelLeft, y);
+    put_label(panel, fmt::format(fmt::runtime(format), min_disp + (max_disp - min_disp) * float(i) / 4), kLabelLeft, y);
   }
   const cv::Rect swatch(kBarLeft, swatch_top, kBarWidth, kSwatchHeight);
   panel(swatch).setTo(cv::Scalar::all(0));
@@ -331,7 +379,11 @@ std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp) {
       if (std::isfinite(d) && d < 0)
         throw InputError(fmt::format("a KITTI PNG cannot hold the negative disparity {} at ({}, {}): write a PFM",
                                      d, x, y));
-      stored(y, x) = std::isfinite(d) ? uint16_t(std::clamp(std::lround(d * 256.0f), 1L, 65535L)) : 0;
+      const long word = std::isfinite(d) ? std::max(std::lround(d * 256.0f), 1L) : 0;
+      if (word > 65535)
+        throw InputError(fmt::format(
+            "a KITTI PNG cannot hold the disparity {} at ({}, {}) (at most 255.996): write a PFM", d, x, y));
+      stored(y, x) = uint16_t(word);
     }
   return encode_png(stored);
 }
@@ -362,25 +414,25 @@ std::vector<uchar> encode_pfm(const cv::Mat1f& disp) {
   return bytes;
 }
 
-std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float max_disp) {
-  if (!(max_disp > 0)) throw InputError("colour map: the disparity range must be positive");
-  const cv::Mat3b colour = colourise(disp, max_disp);
+std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp) {
+  if (!(max_disp > min_disp)) throw InputError("colour map: the disparity range must not be empty");
+  const cv::Mat3b colour = colourise(disp, min_disp, max_disp);
   cv::Mat3b canvas(std::max(disp.rows, kMinCanvasHeight), disp.cols + kLegendWidth);
   canvas.setTo(kLegendBackground);
   colour.copyTo(canvas(cv::Rect(0, 0, disp.cols, disp.rows)));
-  draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), max_disp);
+  draw_legend(canvas(cv::Rect(disp.cols, 0, kLegendWidth, canvas.rows)), min_disp, max_disp);
   return encode_png(canvas);
+}
+
+std::vector<uchar> encode_disparity_file(const std::string& path, const cv::Mat1f& disp) {
+  return ends_with(path, ".pfm") ? encode_pfm(disp) : encode_kitti_png(disp);
 }
 
 void write_kitti_png(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_kitti_png(disp)); }
 void write_pgm(const GrayImage& image, const std::string& path) { write_bytes(path, encode_pgm(image)); }
 void write_pfm(const cv::Mat1f& disp, const std::string& path) { write_bytes(path, encode_pfm(disp)); }
-void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path) {
-  write_bytes(path, encode_colour_png(disp, max_disp));
-}
-
-void write_outputs(const std::vector<OutputBytes>& outputs) {
-  for (const auto& out : outputs) write_bytes(out.path, out.bytes);
+void write_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp, const std::string& path) {
+  write_bytes(path, encode_colour_png(disp, min_disp, max_disp));
 }
 
 cv::Mat1f read_disparity(const std::string& path, double scale, const std::string& invalid_spec) {

@@ -42,25 +42,21 @@ std::vector<uchar> encode_pgm(const GrayImage& image);
 std::vector<uchar> encode_gray_png(const DisparityImage& values);
 std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp);
 std::vector<uchar> encode_pfm(const cv::Mat1f& disp);
-std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float max_disp);
-// A file to write and its content. write_outputs writes each to a temporary file renamed into
-// place (write_file_atomically): a reader or a run cut off never sees half a file.
-struct OutputBytes {
-  std::string path;
-  std::vector<uchar> bytes;
-};
-void write_outputs(const std::vector<OutputBytes>& outputs);
+std::vector<uchar> encode_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp);
+// PFM if `path` ends in .pfm, else a KITTI PNG: what a disparity output's name asks for.
+std::vector<uchar> encode_disparity_file(const std::string& path, const cv::Mat1f& disp);
 
 // The write_* functions write atomically too; they throw InputError naming the path.
 // Binary 8-bit PGM (P5): the input format of the generated HLS test bench and host program.
 void write_pgm(const GrayImage& image, const std::string& path);
 
-// KITTI format: 16-bit PNG holding round(d * 256), 0 = invalid; a valid 0 is written as 1.
+// KITTI format: 16-bit PNG holding round(d * 256), 0 = invalid; a valid 0 is written as 1. A
+// disparity it cannot hold (negative, or 256 and more) is an InputError, never clamped.
 void write_kitti_png(const cv::Mat1f& disp, const std::string& path);
 // Single-channel little-endian PFM (scale -1), rows bottom to top, +inf where invalid.
 void write_pfm(const cv::Mat1f& disp, const std::string& path);
-// TURBO colour map over 0 .. max_disp, invalid pixels black, with a legend on the right.
-void write_colour_png(const cv::Mat1f& disp, float max_disp, const std::string& path);
+// TURBO colour map over min_disp .. max_disp, invalid pixels black, with a legend on the right.
+void write_colour_png(const cv::Mat1f& disp, float min_disp, float max_disp, const std::string& path);
 
 // Reads a ground-truth disparity map: 8/16-bit PNG or PGM, or PFM (either byte order, 1 or 3
 // channels, the first one used). Stored values are divided by `scale`. `invalid_spec` says

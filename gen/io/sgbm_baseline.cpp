@@ -56,23 +56,23 @@ void validate(const SgbmOptions& o) {
 
 cv::Mat1f run_sgbm(const GrayImage& left, const GrayImage& right, const SgbmOptions& o) {
   validate(o);
-  auto sgbm = cv::StereoSGBM::create(0, rounded_disparities(o), o.block, resolved_p1(o), resolved_p2(o),
+  auto sgbm = cv::StereoSGBM::create(o.min_disparity, rounded_disparities(o), o.block, resolved_p1(o), resolved_p2(o),
                                      o.disp12_max_diff, o.prefilter_cap, o.uniqueness, o.speckle_window,
                                      o.speckle_range, opencv_mode(o.mode));
-  cv::Mat fixed_point;  // CV_16S, disparity * 16; (minDisparity - 1) * 16 = -16 where invalid
+  cv::Mat fixed_point;  // CV_16S, disparity * 16; (minDisparity - 1) * 16 where invalid
   sgbm->compute(to_mat(left), to_mat(right), fixed_point);
   cv::Mat1f disp;
   fixed_point.convertTo(disp, CV_32F, 1.0 / 16.0);
-  disp.setTo(NAN, disp < 0);
+  disp.setTo(NAN, disp < float(o.min_disparity));
   return disp;
 }
 
 std::string describe(const SgbmOptions& o) {
   return fmt::format(
-      "OpenCV {} StereoSGBM: mode={} block={} P1={} P2={} numDisparities={} uniqueness={} disp12MaxDiff={} "
+      "OpenCV {} StereoSGBM: mode={} block={} P1={} P2={} minDisparity={} numDisparities={} uniqueness={} disp12MaxDiff={} "
       "speckleWindow={} speckleRange={} preFilterCap={}",
-      CV_VERSION, o.mode, o.block, resolved_p1(o), resolved_p2(o), rounded_disparities(o), o.uniqueness,
-      o.disp12_max_diff, o.speckle_window, o.speckle_range, o.prefilter_cap);
+      CV_VERSION, o.mode, o.block, resolved_p1(o), resolved_p2(o), o.min_disparity, rounded_disparities(o),
+      o.uniqueness, o.disp12_max_diff, o.speckle_window, o.speckle_range, o.prefilter_cap);
 }
 
 }  // namespace fpstereo

@@ -8,7 +8,7 @@
 
 namespace fpstereo {
 
-// cv::StereoSGBM parameters (minDisparity is 0, like the pipeline's range 0 .. dmax-1).
+// cv::StereoSGBM parameters; eval sets min_disparity and num_disparities to the pipeline's range.
 struct SgbmOptions {
   std::string mode = "sgbm";  // sgbm, 3way, hh or hh4
   int block = 5;              // odd block side
@@ -19,6 +19,7 @@ struct SgbmOptions {
   int speckle_window = 0;     // 0: no speckle filter
   int speckle_range = 2;
   int prefilter_cap = 63;
+  int min_disparity = 0;
   int num_disparities = 128;  // rounded up to a multiple of 16
 };
 

@@ -1,5 +1,7 @@
 #include "config_cli.hpp"
 
+#include <fmt/core.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -28,6 +30,15 @@ StereoConfig ConfigFlags::resolve() const {
   StereoConfig cfg = compose_config(preset_, config_file_, values_);
   validate(cfg);
   return cfg;
+}
+
+void check_clock_mhz(double clock_mhz) {
+  if (!(clock_mhz >= 1 && clock_mhz <= 1000))
+    throw ConfigError(fmt::format("clock-mhz = {}: expected a positive frequency, 1 .. 1000 MHz", clock_mhz));
+}
+
+void ConfigFlags::declare_input(OutputSet& outputs) const {
+  if (!config_file_.empty()) outputs.add_input(config_file_, "config file");
 }
 
 int report_error(const std::string& tool, const std::string& message) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "config.hpp"
+#include "files.hpp"
 
 namespace fpstereo {
 
@@ -18,12 +19,18 @@ class ConfigFlags {
   // Preset first, then the config file, then explicit flags; validates the result.
   // Throws ConfigError.
   StereoConfig resolve() const;
+  // Declares the --config file, if any, as an input of `outputs` (an output must not replace it).
+  void declare_input(OutputSet& outputs) const;
 
  private:
   std::optional<std::string> preset_;
   std::string config_file_;
   std::map<std::string, std::string> values_;  // flags given on the command line
 };
+
+// The target clock of --clock-mhz: throws ConfigError unless 1 .. 1000 MHz (NaN and infinity
+// included), so that periods and frame rates stay numbers every reader takes.
+void check_clock_mhz(double clock_mhz);
 
 // Prints "fpstereo: <message>" to stderr as one line (control characters escaped); the exit
 // status for bad input.

@@ -23,6 +23,8 @@ namespace fpstereo {
 namespace {
 
 constexpr const char* kTool = "fpstereo";
+// More golden-model threads than this only contend for the cores (and may not start at all).
+constexpr int kMaxJobs = 256;
 
 // The parameters the axes set; every other one is a fixed flag of the base configuration.
 bool is_axis_param(const std::string& name) {
@@ -33,8 +35,7 @@ bool is_axis_param(const std::string& name) {
 
 struct OutputOptions {
   std::string csv = "dse.csv", html = "dse.html", part = default_part();
-  std::string max_lut, max_ff, max_bram, max_dsp;
-  double min_fps = -1;
+  std::string max_lut, max_ff, max_bram, max_dsp, min_fps;
   int top = 5;
   bool yosys_front = false;
   int yosys_limit = 8;
@@ -63,17 +64,18 @@ dse::Constraints constraints(const OutputOptions& o) {
   if (!o.max_ff.empty()) c.max_ff = dse::parse_percent("--max-ff", o.max_ff);
   if (!o.max_bram.empty()) c.max_bram = dse::parse_percent("--max-bram", o.max_bram);
   if (!o.max_dsp.empty()) c.max_dsp = dse::parse_percent("--max-dsp", o.max_dsp);
-  if (o.min_fps >= 0) c.min_fps = o.min_fps;
+  if (!o.min_fps.empty()) c.min_fps = dse::parse_number_at_least("--min-fps", o.min_fps, 0);
   if (o.top < 1) throw InputError(fmt::format("--top {}: expected at least 1", o.top));
+  if (o.yosys_limit < 1) throw InputError(fmt::format("--yosys-limit {}: expected at least 1", o.yosys_limit));
   c.top = o.top;
   return c;
 }
 
-// Checked before any work so that a bad path fails before minutes of computation; written only
-// at the end (write_file_atomically), so a failing run leaves the previous files untouched.
-void check_outputs(const OutputOptions& o) {
-  check_writable(o.csv);
-  if (!o.html.empty()) check_writable(o.html);
+// Declared before any work so that a bad path fails before minutes of computation; written only
+// at the end, together, so a failing run leaves the previous files untouched.
+void declare_outputs(OutputSet& outputs, const OutputOptions& o) {
+  outputs.add_file(o.csv, "-o");
+  if (!o.html.empty()) outputs.add_file(o.html, "--html");
 }
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
@@ -165,13 +167,12 @@ void print_recommendations(const std::vector<dse::Row>& rows, const dse::Constra
   }
 }
 
-void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info) {
+void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info, OutputSet& outputs) {
   if (o.yosys_front) run_yosys_front(rows, o);
   info.constraints = constraints(o);
-  const std::string csv = dse::to_csv(rows);
-  const std::string html = o.html.empty() ? "" : dse::to_html(rows, info);
-  write_file_atomically(o.csv, csv);
-  if (!o.html.empty()) write_file_atomically(o.html, html);
+  outputs.stage(o.csv, dse::to_csv(rows));
+  if (!o.html.empty()) outputs.stage(o.html, dse::to_html(rows, info));
+  outputs.commit();
   print_recommendations(rows, constraints(o));
 }
 
@@ -182,17 +183,19 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   s.datasets = o.datasets;
   s.cache_dir = o.cache;
   if (!o.shard.empty()) std::tie(s.shard_index, s.shard_count) = dse::parse_shard(resolve_shard(o.shard));
-  if (o.jobs < 1) throw InputError(fmt::format("--jobs {}: expected at least 1", o.jobs));
+  if (o.jobs < 1 || o.jobs > kMaxJobs)
+    throw InputError(fmt::format("--jobs {}: expected 1 .. {}", o.jobs, kMaxJobs));
   s.jobs = o.jobs;
-  if (!(o.clock_mhz > 0))
-    throw InputError(fmt::format("--clock-mhz {}: expected a positive clock", o.clock_mhz));
+  check_clock_mhz(o.clock_mhz);
   s.clock_mhz = o.clock_mhz;
   s.part = find_part(o.out.part).name;
   s.progress = o.progress || ::isatty(STDERR_FILENO);
   constraints(o.out);  // bad constraints fail before the sweep
   if (s.datasets.empty())
     throw InputError("dse: no dataset (give a folder with pairs.csv, or one of such folders)");
-  check_outputs(o.out);
+  OutputSet outputs;
+  if (!o.config_file.empty()) outputs.add_input(o.config_file, "config file");
+  declare_outputs(outputs, o.out);
 
   dse::SweepResult r = dse::sweep(s);
   if (r.rows.empty() && !r.skipped.empty())
@@ -213,13 +216,16 @@ void run_sweep(const DseOptions& o, const std::string& command) {
   info.clock_mhz = s.clock_mhz;
   info.sweep_seconds = r.seconds;
   info.skipped = int(r.skipped.size());
-  write_outputs(r.rows, o.out, info);
+  write_outputs(r.rows, o.out, info, outputs);
   fmt::print("wrote {}{}\n", o.out.csv, o.out.html.empty() ? "" : " and " + o.out.html);
 }
 
 void run_merge(const MergeOptions& o, const std::string& command) {
   if (o.inputs.empty()) throw InputError("dse merge: no input CSV");
   constraints(o.out);
+  OutputSet outputs;
+  for (const auto& path : o.inputs) outputs.add_input(path, "input CSV");
+  declare_outputs(outputs, o.out);
   std::vector<dse::Row> rows;
   std::map<std::string, size_t> seen;  // shards of one sweep are disjoint; repeats are dropped
   for (const auto& path : o.inputs)
@@ -232,7 +238,6 @@ void run_merge(const MergeOptions& o, const std::string& command) {
   std::string part = rows.empty() ? o.out.part : rows.front().part;
   for (const auto& r : rows)
     if (r.part != part) throw InputError(fmt::format("dse merge: rows for parts {} and {}", part, r.part));
-  check_outputs(o.out);
   dse::mark_pareto(rows);
   // A shard's front is wider than the whole sweep's: its Yosys figures off the merged front go, so
   // that the merged CSV is the one a single sweep writes (with --yosys-front they come from the cache).
@@ -245,7 +250,7 @@ void run_merge(const MergeOptions& o, const std::string& command) {
   info.clock_mhz = rows.empty() ? 0 : rows.front().clock_mhz;
   OutputOptions out = o.out;
   out.part = part;
-  write_outputs(rows, out, info);
+  write_outputs(rows, out, info, outputs);
   fmt::print("merged {} configurations; wrote {}{}\n", rows.size(), o.out.csv,
              o.out.html.empty() ? "" : " and " + o.out.html);
 }

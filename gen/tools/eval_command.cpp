@@ -69,9 +69,10 @@ std::vector<DatasetPair> select_pairs(std::vector<DatasetPair> all, const std::v
 }
 
 void warn_if_out_of_range(const PairInputs& in) {
-  if (in.pair.max_disp_px && *in.pair.max_disp_px > in.cfg.dmax - 1)
-    std::cerr << fmt::format("{}: warning: pair {} has disparities up to {} px, beyond dmax - 1 = {}\n",
-                             kTool, quoted(in.pair.name), *in.pair.max_disp_px, in.cfg.dmax - 1);
+  const int largest = in.cfg.min_disp + in.cfg.dmax - 1;
+  if (in.pair.max_disp_px && *in.pair.max_disp_px > largest)
+    std::cerr << fmt::format("{}: warning: pair {} has disparities up to {} px, beyond min-disp + dmax - 1 = {}\n",
+                             kTool, quoted(in.pair.name), *in.pair.max_disp_px, largest);
 }
 
 // ---- running ---------------------------------------------------------------------------------
@@ -79,6 +80,7 @@ void warn_if_out_of_range(const PairInputs& in) {
 // The baseline searches the same disparity range as the pipeline.
 SgbmOptions sgbm_options(const EvalOptions& o, const StereoConfig& cfg) {
   SgbmOptions sgbm = o.sgbm;
+  sgbm.min_disparity = cfg.min_disp;
   sgbm.num_disparities = cfg.dmax;
   return sgbm;
 }
@@ -235,7 +237,7 @@ std::string format_json(const std::string& dataset, const StereoConfig& cfg, con
     j["pairs"].push_back({{"pair", r.name}, {"width", r.width}, {"height", r.height}, {"methods", methods}});
   }
   for (const auto& m : overall(results)) j["overall"].push_back(method_json(m));
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";  // any folder name
 }
 
 std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
@@ -267,65 +269,48 @@ std::string format_csv(const std::vector<PairResult>& results) {
   return out;
 }
 
-// A result file named on the command line, "-" for stdout. Its path is checked before any work
-// so that a bad one fails before minutes of computation; the file is only written at the end,
-// atomically, so a failing run leaves the previous one untouched.
-class OutputFile {
- public:
-  explicit OutputFile(const std::string& path) : path_(path) {
-    if (path_.empty() || path_ == "-") return;
-    try {
-      check_writable(path_);
-    } catch (const FileError& e) {
-      throw InputError(e.what());
-    }
-  }
-  bool wanted() const { return !path_.empty(); }
-  void write(const std::string& text) const {
-    if (path_ == "-") {
-      std::cout << text << std::flush;
-      return;
-    }
-    try {
-      write_file_atomically(path_, text);
-    } catch (const FileError& e) {
-      throw InputError(e.what());
-    }
-  }
-
- private:
-  std::string path_;
-};
-
 // ---- the command -----------------------------------------------------------------------------
 
+// The results go to a file, or to stdout for "-".
+void write_result(OutputSet& outputs, const std::string& path, const std::string& text) {
+  if (path == "-")
+    std::cout << text << std::flush;
+  else if (!path.empty())
+    outputs.stage(path, text);
+}
+
+// The pairs are loaded and run one at a time (memory does not grow with the number of rows);
+// the result files are declared before and committed together after.
 void run(const EvalOptions& o) {
   const StereoConfig cfg = o.config.resolve();
   if (!o.baseline.empty() && o.baseline != kSgbmName)
     throw InputError(fmt::format("--baseline {}: expected {}", quoted(o.baseline), kSgbmName));
   if (!o.baseline.empty()) validate(o.sgbm);
-  OutputFile json(o.json_path), csv(o.csv_path);
-
+  OutputSet outputs;
+  o.config.declare_input(outputs);
+  for (const auto& [path, flag] : {std::pair{&o.json_path, "--json"}, std::pair{&o.csv_path, "--csv"}})
+    if (!path->empty() && *path != "-") outputs.add_file(*path, flag);
   const std::vector<DatasetPair> pairs = select_pairs(read_pairs_csv(o.dataset_dir), o.pair_names);
-  std::vector<PairInputs> inputs;
-  for (const auto& p : pairs) {
-    inputs.push_back(load_pair(p, cfg));
-    warn_if_out_of_range(inputs.back());
-  }
+  for (const auto& p : pairs)
+    for (const auto* input : {&p.left, &p.right, &p.gt_occ, &p.gt_noc, &p.noc_mask})
+      if (!input->empty()) outputs.add_input(*input, "input of pair " + quoted(p.name));
 
   const std::string label = config_tag(cfg);
   std::vector<PairResult> results;
-  for (size_t i = 0; i < inputs.size(); ++i)
-    results.push_back(
-        run_pair(inputs[i], o, label, fmt::format("[{}/{}] {}", i + 1, inputs.size(), inputs[i].pair.name)));
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const PairInputs in = load_pair(pairs[i], cfg);
+    warn_if_out_of_range(in);
+    results.push_back(run_pair(in, o, label, fmt::format("[{}/{}] {}", i + 1, pairs.size(), pairs[i].name)));
+  }
 
   // Machine-readable output on stdout moves the table to stderr, so stdout stays parseable.
   const bool stdout_taken = o.json_path == "-" || o.csv_path == "-";
-  const std::string json_text = json.wanted() ? format_json(o.dataset_dir, cfg, label, o, results) : "";
-  const std::string csv_text = csv.wanted() ? format_csv(results) : "";
+  const std::string json_text = o.json_path.empty() ? "" : format_json(o.dataset_dir, cfg, label, o, results);
+  const std::string csv_text = o.csv_path.empty() ? "" : format_csv(results);
   (stdout_taken ? std::cerr : std::cout) << format_table(o.dataset_dir, cfg, label, o, results) << std::flush;
-  if (json.wanted()) json.write(json_text);
-  if (csv.wanted()) csv.write(csv_text);
+  write_result(outputs, o.json_path, json_text);
+  write_result(outputs, o.csv_path, csv_text);
+  outputs.commit();
 }
 
 void add_sgbm_flags(CLI::App& sub, EvalOptions& o) {
@@ -375,6 +360,8 @@ void register_eval_command(CLI::App& app, int& exit_code) {
     } catch (const InputError& e) {
       exit_code = report_error(kTool, e.what());
     } catch (const ConfigError& e) {
+      exit_code = report_error(kTool, e.what());
+    } catch (const FileError& e) {
       exit_code = report_error(kTool, e.what());
     }
   });

@@ -24,19 +24,26 @@ struct RunOptions {
   ConfigFlags config;
 };
 
-// Every output is computed before any is written, and each is written to a temporary file
-// renamed into place: a failing run leaves every previous output untouched.
+// Every output is declared (and checked against the inputs and each other) before the work,
+// computed before any is written, and committed together: a failing run leaves every previous
+// output untouched.
 int run_pair(const RunOptions& opt) {
   const StereoConfig cfg = opt.config.resolve();
+  if (!opt.right_output.empty() && cfg.lr == LrCheck::None)
+    throw ConfigError("--right-output needs a left-right check (lr = lr1 or lr2), whose match side it writes");
+  OutputSet outputs;
+  outputs.add_input(opt.left, "left image");
+  outputs.add_input(opt.right, "right image");
+  opt.config.declare_input(outputs);
+  const std::pair<const std::string*, const char*> named[] = {
+      {&opt.output, "--output"}, {&opt.colour, "--colour"}, {&opt.pfm, "--pfm"},
+      {&opt.right_output, "--right-output"}, {&opt.confidence, "--confidence-output"}};
+  for (const auto& path : opt.gray_pgm) outputs.add_file(path, "--gray-pgm");
+  for (const auto& [path, flag] : named)
+    if (!path->empty()) outputs.add_file(*path, flag);
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
-  if (!opt.right_output.empty() && cfg.lr == LrCheck::None)
-    throw ConfigError("--right-output needs a left-right check (lr = lr1 or lr2), whose match side it writes");
-  std::vector<std::string> paths = opt.gray_pgm;
-  for (const auto* path : {&opt.output, &opt.colour, &opt.pfm, &opt.right_output, &opt.confidence})
-    if (!path->empty()) paths.push_back(*path);
-  for (const auto& path : paths) check_writable(path);  // before the long part
   const auto start = std::chrono::steady_clock::now();
   DisparityImage right_words, confidence;
   const DisparityImage words =
@@ -45,27 +52,28 @@ int run_pair(const RunOptions& opt) {
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(words, cfg);
-  std::vector<OutputBytes> outputs;
+  const auto stage = [&](const std::string& path, const std::vector<uchar>& bytes) {
+    outputs.stage(path, bytes.data(), bytes.size());
+  };
   if (!opt.gray_pgm.empty()) {
-    outputs.push_back({opt.gray_pgm[0], encode_pgm(left)});
-    outputs.push_back({opt.gray_pgm[1], encode_pgm(right)});
+    stage(opt.gray_pgm[0], encode_pgm(left));
+    stage(opt.gray_pgm[1], encode_pgm(right));
   }
-  if (!opt.output.empty()) outputs.push_back({opt.output, encode_kitti_png(disparity)});
-  if (!opt.colour.empty()) outputs.push_back({opt.colour, encode_colour_png(disparity, float(cfg.dmax - 1))});
-  if (!opt.pfm.empty()) outputs.push_back({opt.pfm, encode_pfm(disparity)});
+  if (!opt.output.empty()) stage(opt.output, encode_disparity_file(opt.output, disparity));
+  if (!opt.colour.empty())
+    stage(opt.colour, encode_colour_png(disparity, float(cfg.min_disp), float(cfg.min_disp + cfg.dmax - 1)));
+  if (!opt.pfm.empty()) stage(opt.pfm, encode_pfm(disparity));
   if (!opt.right_output.empty()) {
     StereoConfig whole = cfg;  // the right view's words are whole disparities
     whole.subpixel_bits = 0;
-    const cv::Mat1f right_disparity = to_float_disparity(right_words, whole);
-    outputs.push_back({opt.right_output, ends_with(opt.right_output, ".pfm") ? encode_pfm(right_disparity)
-                                                                              : encode_kitti_png(right_disparity)});
+    stage(opt.right_output, encode_disparity_file(opt.right_output, to_float_disparity(right_words, whole)));
   }
   if (!opt.confidence.empty()) {
     GrayImage bytes(confidence.width, confidence.height);  // confidences are 0 .. 255
     for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(confidence.pixels[i]);
-    outputs.push_back({opt.confidence, ends_with(opt.confidence, ".pgm") ? encode_pgm(bytes) : encode_gray_png(confidence)});
+    stage(opt.confidence, ends_with(opt.confidence, ".pgm") ? encode_pgm(bytes) : encode_gray_png(confidence));
   }
-  write_outputs(outputs);
+  outputs.commit();
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
              100.0 * valid / double(disparity.total()));
@@ -87,7 +95,9 @@ int print_config(const ConfigFlags& flags) {
 }  // namespace
 }  // namespace fpstereo
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_command_line(int argc, char** argv) {
   using namespace fpstereo;
   CLI::App app{"fpstereo: semi-global matching golden model, accuracy evaluation"};
   app.require_subcommand(1);
@@ -97,7 +107,7 @@ int main(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "run the golden model on one pair, write the disparity");
   run_cmd->add_option("left", run.left, "left (base) image")->required();
   run_cmd->add_option("right", run.right, "right (match) image")->required();
-  run_cmd->add_option("-o,--output", run.output, "KITTI 16-bit PNG (disparity x 256, 0 = invalid)");
+  run_cmd->add_option("-o,--output", run.output, "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name ends in .pfm");
   run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
   run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
   run_cmd->add_option("--right-output", run.right_output,
@@ -138,4 +148,12 @@ int main(int argc, char** argv) {
     return report_error("fpstereo", e.what());
   }
   return finish_stdout("fpstereo", exit_code);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int exit_code = run_command_line(argc, argv);
+  fpstereo::die_if_interrupted();  // a signal during synth: end by it, as without the handler
+  return exit_code;
 }

@@ -5,12 +5,11 @@
 //                                                  (constraints/README.md)
 //   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, docs/hls.md)
 #include <CLI/CLI.hpp>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "config_cli.hpp"
+#include "files.hpp"
 #include "hls_emitter.hpp"
 #include "rtl_emitter.hpp"
 #include "text.hpp"
@@ -19,41 +18,30 @@
 namespace fpstereo {
 namespace {
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + quoted(path.string()));
-}
-
-void write_directory(const rtl::RtlDesign& design, const std::filesystem::path& dir, double clock_mhz) {
-  // Everything is emitted before anything is written: a bad clock leaves no directory behind.
+// Everything is emitted before anything is written, into a fresh directory swapped in whole:
+// a bad clock or a full disk leaves the previous directory as it was.
+void write_directory(const rtl::RtlDesign& design, OutputSet& outputs, const std::string& dir, double clock_mhz) {
   const auto verilog = rtl::emit(design);
   std::vector<std::string> names;
   for (const auto& file : verilog) names.push_back(file.name);
   const auto vivado = rtl::emit_vivado_files(design, names, clock_mhz);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create directory " + quoted(dir.string()) + ": " + ec.message());
   std::string filelist;
   for (const auto& file : verilog) {
-    write_file(dir / file.name, file.text);
+    outputs.stage_in_directory(dir, file.name, file.text);
     filelist += file.name + "\n";
   }
-  write_file(dir / "filelist.f", filelist);
-  for (const auto& file : vivado) write_file(dir / file.name, file.text);
-  if (design.options.control) write_file(dir / (design.prefix + "_regs.h"), rtl::emit_register_header(design));
+  outputs.stage_in_directory(dir, "filelist.f", filelist);
+  for (const auto& file : vivado) outputs.stage_in_directory(dir, file.name, file.text);
+  if (design.options.control)
+    outputs.stage_in_directory(dir, design.prefix + "_regs.h", rtl::emit_register_header(design));
   nlohmann::ordered_json config;
   for (const auto& spec : param_specs()) config[spec.name] = spec.get(design.cfg);
-  write_file(dir / "config.json", config.dump(2) + "\n");
+  outputs.stage_in_directory(dir, "config.json", config.dump(2) + "\n");
 }
 
-void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options,
-                         const std::filesystem::path& dir) {
-  const auto files = hls::emit(cfg, options);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create directory " + quoted(dir.string()) + ": " + ec.message());
-  for (const auto& file : files) write_file(dir / file.name, file.text);
+void write_hls_directory(const StereoConfig& cfg, const hls::HlsOptions& options, OutputSet& outputs,
+                         const std::string& dir) {
+  for (const auto& file : hls::emit(cfg, options)) outputs.stage_in_directory(dir, file.name, file.text);
 }
 
 }  // namespace
@@ -84,21 +72,26 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   try {
     app.parse(argc, argv);
-    rtl::clock_period_ns(clock_mhz);  // a bad clock is an error with or without -o
+    check_clock_mhz(clock_mhz);  // a bad clock is an error with or without -o
     if (emit != "verilog" && emit != "hls")
       return report_error("fpstereo-rtl", "--emit " + quoted(emit) + ": expected verilog or hls");
+    if (emit == "hls" && out_dir.empty())
+      return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
+    OutputSet outputs;
+    flags.declare_input(outputs);
+    if (!out_dir.empty()) outputs.add_directory(out_dir, "-o directory");
     if (emit == "hls") {
-      if (out_dir.empty()) return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
       hls_options.clock_mhz = clock_mhz;
-      write_hls_directory(flags.resolve(), hls_options, out_dir);
-      return 0;
+      write_hls_directory(flags.resolve(), hls_options, outputs, out_dir);
+    } else {
+      options.control = !no_axi_lite;
+      const rtl::RtlDesign design = rtl::plan(flags.resolve(), options);
+      if (out_dir.empty())
+        std::cout << rtl::emit_single_file(design);
+      else
+        write_directory(design, outputs, out_dir, clock_mhz);
     }
-    options.control = !no_axi_lite;
-    const rtl::RtlDesign design = rtl::plan(flags.resolve(), options);
-    if (out_dir.empty())
-      std::cout << rtl::emit_single_file(design);
-    else
-      write_directory(design, out_dir, clock_mhz);
+    outputs.commit();
   } catch (const CLI::ParseError& e) {
     return report_parse_error(app, "fpstereo-rtl", e);
   } catch (const ConfigError& e) {

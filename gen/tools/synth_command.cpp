@@ -218,10 +218,11 @@ std::optional<std::string> read_text(const fs::path& path) {
   return text.str();
 }
 
+// Into the run's own fresh work directory, which nothing else writes.
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
-  if (!out) throw SynthError(fmt::format("cannot write {}", quoted(path.string())));
+  if (!out) throw SynthError(fmt::format("cannot write {}: {}", quoted(path.string()), std::strerror(errno)));
 }
 
 void make_directory(const fs::path& dir) {
@@ -282,10 +283,15 @@ fs::path write_design(const fs::path& dir, const std::vector<rtl::EmittedFile>& 
 }
 
 // Runs args[0] (searched in PATH) with stdin from /dev/null and stdout/stderr into files; returns
-// the wait status. Files rather than pipes: nothing to drain while Yosys runs for minutes.
-// `waiting`, when given, is called twice a second while the process runs.
+// the wait status. Files rather than pipes: nothing to drain while Yosys runs for minutes. The
+// child leads its own process group, which gets every signal we get (SignalsDeferred): the script
+// and Yosys end with us. `waiting`, when given, is called twice a second while the process runs.
 int run_process(const std::vector<std::string>& args, const fs::path& out, const fs::path& err,
                 const std::function<void()>& waiting = {}) {
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
@@ -295,18 +301,22 @@ int run_process(const std::vector<std::string>& args, const fs::path& out, const
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (rc != 0) throw SynthError(fmt::format("cannot run {}: {}", args[0], std::strerror(rc)));
+  const ChildGroup group(pid);
+  if (interrupted()) ::kill(-pid, interrupted());  // arrived before the group was known
   int status = 0;
   for (pid_t done; (done = waitpid(pid, &status, waiting ? WNOHANG : 0)) != pid;) {
     if (done < 0 && errno != EINTR)
       throw SynthError(fmt::format("waiting for {}: {}", args[0], std::strerror(errno)));
-    if (done == 0) {
+    if (done == 0 && !interrupted()) {
       waiting();
       usleep(500000);
     }
   }
+  if (interrupted()) throw SynthError(fmt::format("interrupted by signal {}", interrupted()));
   return status;
 }
 
@@ -360,12 +370,14 @@ struct Record {
   SynthReport report;
 };
 
-// A record that does not parse (written by an incompatible version) is a miss, not an error.
+// A record that does not parse (written by an incompatible version) or is no regular file (a
+// pipe would block the read) is a miss, not an error.
 std::optional<Record> load_record(const fs::path& path) {
-  const std::optional<std::string> text = read_text(path);
-  if (!text) return std::nullopt;
   try {
-    return Record{*text, parse_kv(*text)};
+    const std::string text = read_regular_file(path, "cache record", kMaxTextFileBytes);
+    return Record{text, parse_kv(text)};
+  } catch (const FileError&) {
+    return std::nullopt;
   } catch (const SynthError&) {
     return std::nullopt;
   }
@@ -382,30 +394,33 @@ void store_record(const fs::path& path, const std::string& text) {
 
 // ---- the command -----------------------------------------------------------------------------
 
+// Yosys writes the netlist and the log into the work directory; run() copies them to --netlist and
+// --log only after a success, so a failed or interrupted run leaves the previous files as they were.
 std::vector<std::string> script_args(const SynthOptions& o, const fs::path& script, const fs::path& filelist,
-                                     const fs::path& netlist) {
-  std::vector<std::string> args = {"bash", script.string(), "--kv", "--netlist", netlist.string()};
+                                     const fs::path& work) {
+  std::vector<std::string> args = {"bash", script.string(), "--kv", "--netlist", (work / "netlist.json").string()};
   if (!o.family.empty()) args.insert(args.end(), {"--family", o.family});
   if (!o.part.empty()) args.insert(args.end(), {"--part", o.part});
-  if (!o.log.empty()) args.insert(args.end(), {"--log", o.log});
+  if (!o.log.empty()) args.insert(args.end(), {"--log", (work / "yosys.log").string()});
   args.push_back(filelist.string());
   return args;
 }
 
 Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vector<rtl::EmittedFile>& files,
-                  const fs::path& script, const fs::path& cache_dir, const std::string& key) {
+                  const fs::path& script, const fs::path& cache_dir, const std::string& key, OutputSet& outputs) {
   const WorkDir work(cache_dir / "work", key);
   const fs::path filelist = write_design(work.path(), files);
   const std::string tag = config_tag(cfg);
   // Progress only on a terminal: to a script, a failure stays exactly one line on stderr.
   const bool progress = isatty(STDERR_FILENO);
-  // There, the pass Yosys is in, from its log (the one asked for, or one in the work directory).
+  // There, the pass Yosys is in, from its log, which Yosys writes into the work directory whenever
+  // a log is asked for (script_args): on a terminal one always is.
   SynthOptions logged = o;
-  if (progress && logged.log.empty()) logged.log = (work.path() / "yosys.log").string();
-  YosysProgress shown(logged.log, fmt::format("{} synth: {}", kTool, tag));
+  if (progress && logged.log.empty()) logged.log = "yosys.log";
+  YosysProgress shown((work.path() / "yosys.log").string(), fmt::format("{} synth: {}", kTool, tag));
   const auto start = std::chrono::steady_clock::now();
-  const fs::path netlist = o.netlist.empty() ? work.path() / "netlist.json" : fs::path(o.netlist);
-  const int status = run_process(script_args(logged, script, filelist, netlist), work.path() / "synth.out",
+  const fs::path netlist = work.path() / "netlist.json";
+  const int status = run_process(script_args(logged, script, filelist, work.path()), work.path() / "synth.out",
                                  work.path() / "synth.err", progress ? [&] { shown.update(); } : std::function<void()>());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (progress) {
@@ -417,6 +432,8 @@ Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vec
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw SynthError(failure_message(err, status));
   const std::string text = fmt::format("config={}\n{}synth_seconds={:.1f}\n{}{}", tag, out, seconds,
                                        depth_lines(netlist), warning_lines(err));
+  if (!o.netlist.empty()) outputs.stage_copy(o.netlist, netlist);
+  if (!o.log.empty()) outputs.stage_copy(o.log, work.path() / "yosys.log");
   return Record{text, parse_kv(text)};
 }
 
@@ -435,7 +452,12 @@ void print(const Record& record, bool cached, bool kv) {
 }
 
 void run(const SynthOptions& o) {
+  const SignalsDeferred deferred;  // a signal ends Yosys, then this run unwinds and removes its files
   const StereoConfig cfg = o.config.resolve();
+  OutputSet outputs;
+  o.config.declare_input(outputs);
+  if (!o.netlist.empty()) outputs.add_file(o.netlist, "--netlist");
+  if (!o.log.empty()) outputs.add_file(o.log, "--log");
   const std::vector<rtl::EmittedFile> files = rtl::emit(rtl::plan(cfg));
   const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
@@ -449,7 +471,8 @@ void run(const SynthOptions& o) {
   if (!o.no_cache && o.log.empty() && o.netlist.empty()) record = load_record(record_path);
   const bool cached = record.has_value();
   if (!cached) {
-    record = synthesise(o, cfg, files, script, cache, key);
+    record = synthesise(o, cfg, files, script, cache, key, outputs);
+    outputs.commit();
     store_record(record_path, record->text);
   }
   print(*record, cached, o.kv);
