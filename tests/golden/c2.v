@@ -51,134 +51,142 @@
 module fps_census7_d128u32_865f3c_top (
   (* X_INTERFACE_INFO = "xilinx.com:signal:clock:1.0 aclk CLK" *)
   (* X_INTERFACE_PARAMETER = "ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp:s_axi_ctrl, ASSOCIATED_RESET aresetn" *)
-  input  wire        aclk,
+  input  wire aclk,
   (* X_INTERFACE_INFO = "xilinx.com:signal:reset:1.0 aresetn RST" *)
   (* X_INTERFACE_PARAMETER = "POLARITY ACTIVE_LOW" *)
-  input  wire        aresetn,
-  input  wire [7:0]   s_axi_ctrl_awaddr,
-  input  wire         s_axi_ctrl_awvalid,
-  output wire         s_axi_ctrl_awready,
-  input  wire [31:0]  s_axi_ctrl_wdata,
-  input  wire [3:0]   s_axi_ctrl_wstrb,
-  input  wire         s_axi_ctrl_wvalid,
-  output wire         s_axi_ctrl_wready,
-  output wire [1:0]   s_axi_ctrl_bresp,
-  output wire         s_axi_ctrl_bvalid,
-  input  wire         s_axi_ctrl_bready,
-  input  wire [7:0]   s_axi_ctrl_araddr,
-  input  wire         s_axi_ctrl_arvalid,
-  output wire         s_axi_ctrl_arready,
-  output wire [31:0]  s_axi_ctrl_rdata,
-  output wire [1:0]   s_axi_ctrl_rresp,
-  output wire         s_axi_ctrl_rvalid,
-  input  wire         s_axi_ctrl_rready,
-  input  wire [7:0]  s_axis_left_tdata,
-  input  wire        s_axis_left_tvalid,
-  output wire        s_axis_left_tready,
-  input  wire        s_axis_left_tuser,
-  input  wire        s_axis_left_tlast,
-  input  wire [7:0]  s_axis_right_tdata,
-  input  wire        s_axis_right_tvalid,
-  output wire        s_axis_right_tready,
-  input  wire        s_axis_right_tuser,
-  input  wire        s_axis_right_tlast,
+  input  wire aresetn,
+  input  wire [7:0] s_axi_ctrl_awaddr,
+  input  wire s_axi_ctrl_awvalid,
+  output wire s_axi_ctrl_awready,
+  input  wire [31:0] s_axi_ctrl_wdata,
+  input  wire [3:0] s_axi_ctrl_wstrb,
+  input  wire s_axi_ctrl_wvalid,
+  output wire s_axi_ctrl_wready,
+  output wire [1:0] s_axi_ctrl_bresp,
+  output wire s_axi_ctrl_bvalid,
+  input  wire s_axi_ctrl_bready,
+  input  wire [7:0] s_axi_ctrl_araddr,
+  input  wire s_axi_ctrl_arvalid,
+  output wire s_axi_ctrl_arready,
+  output wire [31:0] s_axi_ctrl_rdata,
+  output wire [1:0] s_axi_ctrl_rresp,
+  output wire s_axi_ctrl_rvalid,
+  input  wire s_axi_ctrl_rready,
+  input  wire [7:0] s_axis_left_tdata,
+  input  wire s_axis_left_tvalid,
+  output wire s_axis_left_tready,
+  input  wire s_axis_left_tuser,
+  input  wire s_axis_left_tlast,
+  input  wire [7:0] s_axis_right_tdata,
+  input  wire s_axis_right_tvalid,
+  output wire s_axis_right_tready,
+  input  wire s_axis_right_tuser,
+  input  wire s_axis_right_tlast,
   output wire [7:0] m_axis_disp_tdata,
-  output wire        m_axis_disp_tvalid,
-  input  wire        m_axis_disp_tready,
-  output wire        m_axis_disp_tuser,
-  output wire        m_axis_disp_tlast
+  output wire m_axis_disp_tvalid,
+  input  wire m_axis_disp_tready,
+  output wire m_axis_disp_tuser,
+  output wire m_axis_disp_tlast
 );
   wire rst = !aresetn;
 
   // Input register slices: {tuser, tlast, tdata}.
   wire [9:0] left_beat;
-  wire left_valid, left_ready;
-  fps_census7_d128u32_865f3c_axis_skid #(.DATA_W(10)) left_slice (
-    .clk(aclk), .rst(rst),
-    .s_data({s_axis_left_tuser, s_axis_left_tlast, s_axis_left_tdata}), .s_valid(s_axis_left_tvalid), .s_ready(s_axis_left_tready),
-    .m_data(left_beat), .m_valid(left_valid), .m_ready(left_ready));
+  wire left_valid;
+  wire left_ready;
+  fps_census7_d128u32_865f3c_axis_skid #(
+    .DATA_W(10)
+  ) left_slice (
+    .clk(aclk), .rst(rst), .s_data({s_axis_left_tuser, s_axis_left_tlast, s_axis_left_tdata}),
+    .s_valid(s_axis_left_tvalid), .s_ready(s_axis_left_tready), .m_data(left_beat), .m_valid(left_valid),
+    .m_ready(left_ready));
   wire [9:0] right_beat;
-  wire right_valid, right_ready;
-  fps_census7_d128u32_865f3c_axis_skid #(.DATA_W(10)) right_slice (
-    .clk(aclk), .rst(rst),
-    .s_data({s_axis_right_tuser, s_axis_right_tlast, s_axis_right_tdata}), .s_valid(s_axis_right_tvalid), .s_ready(s_axis_right_tready),
-    .m_data(right_beat), .m_valid(right_valid), .m_ready(right_ready));
+  wire right_valid;
+  wire right_ready;
+  fps_census7_d128u32_865f3c_axis_skid #(
+    .DATA_W(10)
+  ) right_slice (
+    .clk(aclk), .rst(rst), .s_data({s_axis_right_tuser, s_axis_right_tlast, s_axis_right_tdata}),
+    .s_valid(s_axis_right_tvalid), .s_ready(s_axis_right_tready), .m_data(right_beat), .m_valid(right_valid),
+    .m_ready(right_ready));
 
   // The frame's settings, fixed while the core runs it.
-  wire enable, core_idle, core_accepting, settings_held, core_start, frame_done;
-  wire frame_dropped, frame_truncated, protocol_error;
+  wire enable;
+  wire core_idle;
+  wire core_accepting;
+  wire settings_held;
+  wire core_start;
+  wire frame_done;
+  wire frame_dropped;
+  wire frame_truncated;
+  wire protocol_error;
   wire [10:0] frame_width;
   wire [8:0] frame_height;
-  wire [7:0] p1, p2;
+  wire [7:0] p1;
+  wire [7:0] p2;
   wire [6:0] uniqueness;
   wire [3:0] lr_threshold;
   fps_census7_d128u32_865f3c_control #(
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
-    .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
-    .LR_SETTABLE(0), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00865f3c),
+    .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0), .LR_SETTABLE(0),
+    .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00865f3c),
     .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd80, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
-    .clk(aclk), .rst(rst),
-    .s_axi_awaddr(s_axi_ctrl_awaddr),
-    .s_axi_awvalid(s_axi_ctrl_awvalid),
-    .s_axi_awready(s_axi_ctrl_awready),
-    .s_axi_wdata(s_axi_ctrl_wdata),
-    .s_axi_wstrb(s_axi_ctrl_wstrb),
-    .s_axi_wvalid(s_axi_ctrl_wvalid),
-    .s_axi_wready(s_axi_ctrl_wready),
-    .s_axi_bresp(s_axi_ctrl_bresp),
-    .s_axi_bvalid(s_axi_ctrl_bvalid),
-    .s_axi_bready(s_axi_ctrl_bready),
-    .s_axi_araddr(s_axi_ctrl_araddr),
-    .s_axi_arvalid(s_axi_ctrl_arvalid),
-    .s_axi_arready(s_axi_ctrl_arready),
-    .s_axi_rdata(s_axi_ctrl_rdata),
-    .s_axi_rresp(s_axi_ctrl_rresp),
-    .s_axi_rvalid(s_axi_ctrl_rvalid),
-    .s_axi_rready(s_axi_ctrl_rready),
+    .clk(aclk), .rst(rst), .s_axi_awaddr(s_axi_ctrl_awaddr), .s_axi_awvalid(s_axi_ctrl_awvalid),
+    .s_axi_awready(s_axi_ctrl_awready), .s_axi_wdata(s_axi_ctrl_wdata), .s_axi_wstrb(s_axi_ctrl_wstrb),
+    .s_axi_wvalid(s_axi_ctrl_wvalid), .s_axi_wready(s_axi_ctrl_wready), .s_axi_bresp(s_axi_ctrl_bresp),
+    .s_axi_bvalid(s_axi_ctrl_bvalid), .s_axi_bready(s_axi_ctrl_bready), .s_axi_araddr(s_axi_ctrl_araddr),
+    .s_axi_arvalid(s_axi_ctrl_arvalid), .s_axi_arready(s_axi_ctrl_arready), .s_axi_rdata(s_axi_ctrl_rdata),
+    .s_axi_rresp(s_axi_ctrl_rresp), .s_axi_rvalid(s_axi_ctrl_rvalid), .s_axi_rready(s_axi_ctrl_rready),
     .enable(enable), .busy(!core_idle), .frame_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height), .frame_p1(p1), .frame_p2(p2), .frame_uniqueness(uniqueness),
-    .frame_lr_threshold(lr_threshold), .frame_done(frame_done), .frame_dropped(frame_dropped),
-    .frame_truncated(frame_truncated), .protocol_error(protocol_error), .settings_held(settings_held));
+    .frame_lr_threshold(lr_threshold), .settings_held(settings_held), .frame_done(frame_done),
+    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));
 
   // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.
-  wire framed_valid, framed_ready;
-  wire [7:0] framed_left, framed_right;
-  fps_census7_d128u32_865f3c_video_in #(.X_W(11), .Y_W(9)) framing (
-    .clk(aclk), .rst(rst), .enable(enable),
-    .left(left_beat), .left_valid(left_valid), .left_ready(left_ready),
-    .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
+  wire framed_valid;
+  wire framed_ready;
+  wire [7:0] framed_left;
+  wire [7:0] framed_right;
+  fps_census7_d128u32_865f3c_video_in #(
+    .X_W(11), .Y_W(9)
+  ) framing (
+    .clk(aclk), .rst(rst), .enable(enable), .left(left_beat), .left_valid(left_valid),
+    .left_ready(left_ready), .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
     .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
-    .frame_height(frame_height),
-    .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
-    .in_take(framed_valid && framed_ready),
-    .frame_dropped(frame_dropped), .frame_truncated(frame_truncated), .protocol_error(protocol_error));
+    .frame_height(frame_height), .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
+    .in_take(framed_valid && framed_ready), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
+    .protocol_error(protocol_error));
 
   // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the
   // framing checks through the core's enable.
-  wire core_valid, take;
-  wire [7:0] core_left, core_right;
-  fps_census7_d128u32_865f3c_axis_skid #(.DATA_W(16)) pixel_slice (
-    .clk(aclk), .rst(rst),
-    .s_data({framed_left, framed_right}), .s_valid(framed_valid), .s_ready(framed_ready),
-    .m_data({core_left, core_right}), .m_valid(core_valid), .m_ready(take));
+  wire core_valid;
+  wire take;
+  wire [7:0] core_left;
+  wire [7:0] core_right;
+  fps_census7_d128u32_865f3c_axis_skid #(
+    .DATA_W(16)
+  ) pixel_slice (
+    .clk(aclk), .rst(rst), .s_data({framed_left, framed_right}), .s_valid(framed_valid),
+    .s_ready(framed_ready), .m_data({core_left, core_right}), .m_valid(core_valid), .m_ready(take));
 
-  wire out_ready, out_push, out_first, out_last;
+  wire out_ready;
+  wire out_push;
+  wire out_first;
+  wire out_last;
   wire [7:0] out_word;
   fps_census7_d128u32_865f3c_sgm_core core (
     .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
-    .accepting(core_accepting),
-    .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .uniqueness(uniqueness),
-    .lr_threshold(lr_threshold),
-    .in_valid(core_valid), .in_left(core_left), .in_right(core_right), .in_take(take),
-    .out_ready(out_ready), .out_push(out_push), .out_word(out_word), .out_first(out_first),
-    .out_last(out_last),
-    .frame_end(frame_done));
+    .accepting(core_accepting), .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2),
+    .uniqueness(uniqueness), .lr_threshold(lr_threshold), .in_valid(core_valid), .in_left(core_left),
+    .in_right(core_right), .in_take(take), .out_ready(out_ready), .out_push(out_push), .out_word(out_word),
+    .out_first(out_first), .out_last(out_last), .frame_end(frame_done));
 
   // Output register slices.
-  fps_census7_d128u32_865f3c_axis_skid #(.DATA_W(10)) disp_slice (
-    .clk(aclk), .rst(rst),
-    .s_data({out_first, out_last, out_word}), .s_valid(out_push), .s_ready(out_ready),
+  fps_census7_d128u32_865f3c_axis_skid #(
+    .DATA_W(10)
+  ) disp_slice (
+    .clk(aclk), .rst(rst), .s_data({out_first, out_last, out_word}), .s_valid(out_push), .s_ready(out_ready),
     .m_data({m_axis_disp_tuser, m_axis_disp_tlast, m_axis_disp_tdata}), .m_valid(m_axis_disp_tvalid),
     .m_ready(m_axis_disp_tready));
 endmodule
@@ -221,7 +229,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   input  wire [7:0] in_left,
   input  wire [7:0] in_right,
   output wire in_take,
-  // output word (invalid flag above the disparity), pushed when out_push is high
+  // the disparity words, pushed when out_push is high
   input  wire out_ready,
   output wire out_push,
   output wire [7:0] out_word,
