@@ -84,7 +84,7 @@ expect_in(${lib} "#pragma HLS UNROLL" "uf cost lanes")
 expect_in(${lib} "__has_include\\(<ap_int.h>\\)" "the real Vitis headers win when present")
 file(GLOB config ${WORK}/one/*_config.hpp)
 expect_in(${config} "static constexpr int kPathCostBits = [0-9]+;" "derived widths as constants")
-expect_in(${config} "static constexpr int kCostWindow = 1;" "the geometry's cost window (census)")
+expect_in(${config} "static constexpr int kCostWindow = 5;" "the geometry's cost window (SAD 5x5)")
 
 # The right view: switched on in the configuration header, its stream written by the pipeline.
 emit(${WORK}/right --preset C3 --width 320 --height 96 --right-view on)
