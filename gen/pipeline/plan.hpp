@@ -118,8 +118,8 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options = {});
 // The whole plan; throws ConfigError if the configuration is invalid for the hardware.
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options = {});
 
-// Latency of fpstereo_min_tree over n values at levels_per_stage compare levels a register
-// (the template's own function, min_tree_latency, in fpstereo_min_tree_latency.vh).
+// Latency of fpstereo_min_tree over n values at levels_per_stage compare levels a register (the
+// templates that check a TREE_LAT parameter repeat this formula in Verilog).
 int min_tree_latency(int n, int levels_per_stage);
 
 }  // namespace fpstereo::rtl

@@ -1,4 +1,4 @@
-// A Verilog module built from typed nets (docs/contributing.md, "Adding a stage"): each stage
+// A Verilog module built from typed nets (docs/contributing.md, "The core builder"): each stage
 // declares the nets it drives, with their widths, and instantiates templates whose ports the
 // builder reads from the templates themselves (module_signature.hpp). A port without a connection
 // of its own connects to the net of its name. When the module is written the builder checks that
