@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   const int runs = 9;
   const DisparityImage one_thread = run_golden(cfg, left, right);  // also the warm-up
   run_sgbm(left, right, sgbm);
-  if (!(run_golden(cfg, left, right, {}, 2) == one_thread)) {
+  if (!(run_golden(cfg, left, right, 2) == one_thread)) {
     fmt::print(stderr, "bench: the golden model's output on two threads differs from one thread's\n");
     return 1;
   }
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   for (int i = 0; i < runs; ++i) {
     golden_ms.push_back(time_ms([&] { run_golden(cfg, left, right); }));
     opencv_ms.push_back(time_ms([&] { run_sgbm(left, right, sgbm); }));
-    golden2_ms.push_back(time_ms([&] { run_golden(cfg, left, right, {}, 2); }));
+    golden2_ms.push_back(time_ms([&] { run_golden(cfg, left, right, 2); }));
   }
   const double golden = median(golden_ms), opencv = median(opencv_ms), golden2 = median(golden2_ms);
   fmt::print("pair: {} ({}x{}), median of {} runs\n", left_path, left.width, left.height, runs);

@@ -96,19 +96,15 @@ class StereoSGM {
 
   // The output words and whatever else the hardware streams (right view, confidence).
   py::dict compute_words(const py::handle& left, const py::handle& right) const {
-    DisparityImage right_view, confidence;
-    const DisparityImage words = run(left, right, {cfg_.right_view ? &right_view : nullptr,
-                                                   cfg_.confidence ? &confidence : nullptr});
     py::dict out;
-    out["disparity"] = to_array(words);
-    if (cfg_.right_view) out["right"] = to_array(right_view);
-    if (cfg_.confidence) out["confidence"] = to_array(confidence);
+    for (const auto& [plane, words] : run(left, right, output_planes(cfg_)))
+      out[py::str(plane_info(plane).name)] = to_array(words);
     return out;
   }
 
   // Disparities in pixels, NaN where invalid: the values `fpstereo run --pfm` writes.
   py::array_t<float> compute(const py::handle& left, const py::handle& right) const {
-    return to_array(to_float_disparity(run(left, right, {}), cfg_));
+    return to_array(to_float_disparity(run(left, right, {Plane::Disparity}).at(Plane::Disparity), cfg_));
   }
 
   py::dict config() const {
@@ -147,11 +143,11 @@ class StereoSGM {
   std::string repr() const { return "fpstereo.StereoSGM(" + config_tag(cfg_) + ")"; }
 
  private:
-  DisparityImage run(const py::handle& left, const py::handle& right, const SideViews& side) const {
+  Planes run(const py::handle& left, const py::handle& right, const std::vector<Plane>& planes) const {
     const GrayImage l = gray_from_array(left, "left image"), r = gray_from_array(right, "right image");
     check_pair(l, r, cfg_);
     py::gil_scoped_release unlocked;  // the images are copied: other Python threads may run
-    return run_golden(cfg_, l, r, side);
+    return run_golden(cfg_, l, r, planes);
   }
 
   static py::dict scores_dict(const Scores& valid, const Scores& filled) {

@@ -127,7 +127,7 @@ expect_error("right-view = on: needs a left-right check" --emit hls --right-view
 set(FPSTEREO ${FPSTEREO_MAIN})
 expect_error("a KITTI PNG cannot hold the negative disparity"
              run --width 450 --height 375 --dmax 64 --uf 16 --min-disp -200 ${L} ${R} -o ${WORK}/negative.png)
-expect_error("--right-output needs a left-right check (lr = lr1 or lr2)"
+expect_error("--right-output: the right view needs a left-right check (lr = lr1 or lr2)"
              run --width 450 --height 375 --dmax 64 --uf 16 ${L} ${R} --right-output ${WORK}/right.png)
 file(MAKE_DIRECTORY ${WORK}/nul)
 execute_process(COMMAND sh -c "printf 'pair,left,right,gt_occ,gt_noc,noc_mask,gt_scale,gt_invalid,max_disp_px\\np,left.png\\0x,right.png,,,,1,0,\\n' > '${WORK}/nul/pairs.csv'")

@@ -78,19 +78,17 @@ TEST_CASE("golden model equals the naive model on random configurations, on 1 to
     // disparities) as well. The golden model shares the paths among its threads.
     const bool views = cfg.lr != LrCheck::None;
     const int threads = 1 + i % 4;
-    DisparityImage naive_right, golden_right, naive_confidence, golden_confidence;
-    const Comparison cmp = compare_words(
-        run_naive(cfg, left, right, SideViews{views ? &naive_right : nullptr, &naive_confidence}),
-        run_golden(cfg, left, right, SideViews{views ? &golden_right : nullptr, &golden_confidence}, threads));
-    INFO("case " << i << ", " << threads << " threads\n" << describe(cfg) << cmp.report());
-    REQUIRE(cmp.equal());
-    const Comparison confidence_cmp = compare_words(naive_confidence, golden_confidence);
-    INFO("confidence: " << confidence_cmp.report());
-    REQUIRE(confidence_cmp.equal());
-    if (views) {
-      const Comparison right_cmp = compare_words(naive_right, golden_right);
-      INFO("right view: " << right_cmp.report());
-      REQUIRE(right_cmp.equal());
+    std::vector<Plane> planes{Plane::Disparity, Plane::Confidence};
+    if (views) planes.push_back(Plane::Right);
+    const Planes naive = run_naive(cfg, left, right, planes);
+    const Planes golden = run_golden(cfg, left, right, planes, threads);
+    INFO("case " << i << ", " << threads << " threads\n" << describe(cfg));
+    REQUIRE(naive.size() == planes.size());
+    REQUIRE(golden.size() == planes.size());
+    for (const Plane plane : planes) {
+      const Comparison cmp = compare_words(naive.at(plane), golden.at(plane));
+      INFO(plane_info(plane).name << ": " << cmp.report());
+      REQUIRE(cmp.equal());
     }
   }
 }
@@ -143,7 +141,7 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
   for (const auto& [name, cfg] : variants) {
     const auto [left, right] =
         test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });
-    const Comparison cmp = compare_words(run_naive(cfg, left, right), run_golden(cfg, left, right));
+    const Comparison cmp = compare_words(run_naive(cfg, left, right).at(Plane::Disparity), run_golden(cfg, left, right));
     INFO(name << ": " << cmp.report());
     CHECK(cmp.equal());
   }

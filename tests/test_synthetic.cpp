@@ -74,8 +74,7 @@ TEST_CASE("the right view of a textured fronto-parallel plane is its disparity",
       StereoConfig cfg = small_config("census", 80, 24);
       set_param(cfg, "lr", lr);
       const auto [left, right] = test::shifted_pair(cfg.width, cfg.height, rng, [&](int, int) { return d0; });
-      DisparityImage right_view;
-      run_golden(cfg, left, right, {&right_view});
+      const DisparityImage right_view = run_golden(cfg, left, right, {Plane::Right}).at(Plane::Right);
       // Right pixel x' matches left pixel x' + d0; away from the borders and past the settling
       // distance of the paths from the left.
       const int r = cfg.window / 2;
@@ -240,8 +239,7 @@ TEST_CASE("confidence: high on a unique match, low where a periodic texture repe
   const int d0 = 9, r = cfg.window / 2;
   // Mean confidence away from the borders, where every disparity of the range has a match pixel.
   auto mean_confidence = [&](const GrayImage& left, const GrayImage& right) {
-    DisparityImage confidence;
-    run_golden(cfg, left, right, {nullptr, &confidence});
+    const DisparityImage confidence = run_golden(cfg, left, right, {Plane::Confidence}).at(Plane::Confidence);
     double sum = 0;
     int n = 0;
     for (int y = r; y < cfg.height - r; ++y)

@@ -2,7 +2,9 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,6 +12,7 @@
 #include <utility>
 
 #include "Vdut.h"
+#include "image_io.hpp"  // InputError
 #include "verilated.h"
 
 namespace fpstereo::tb {
@@ -61,24 +64,42 @@ struct OutputBeat {
   bool operator==(const OutputBeat& o) const { return data == o.data && user == o.user && last == o.last; }
 };
 
-// Where an output port's frames go: the frames, the cycles of their first and last handshakes;
-// with `upper`, tdata above its low lane_bits (the confidence) goes to frames of its own.
-struct FrameLog {
-  std::vector<DisparityImage>& frames;
-  std::vector<uint64_t>& start_cycle;
-  std::vector<uint64_t>& end_cycle;
-  std::vector<DisparityImage>* upper = nullptr;
-  int lane_bits = 32;
+// An output port of the Verilated design: reads its beat, drives its tready.
+struct OutputPort {
+  std::function<bool()> valid;
+  std::function<OutputBeat()> beat;
+  std::function<void(bool)> set_ready;
 };
 
-// Watches an output port at every rising edge: collects the pixels into frames of the expected
-// sizes and checks the stream rules (stable while stalled, tuser on each frame's first pixel,
-// tlast at each row end, nothing beyond the expected frames).
+template <class Data>
+OutputPort port_of(Data& tdata, CData& tvalid, CData& tuser, CData& tlast, CData& tready) {
+  return {[&] { return bool(tvalid); }, [&] { return OutputBeat{uint32_t(tdata), bool(tuser), bool(tlast)}; },
+          [&](bool ready) { tready = ready; }};
+}
+
+// The design's output ports: output_ports.inc has a FPSTEREO_TB_PORT(<name>) line for each one the
+// top declares (verilator_tb/CMakeLists.txt writes it).
+OutputPort output_port(Vdut& dut, const std::string& port) {
+#define FPSTEREO_TB_PORT(NAME) \
+  if (port == #NAME)           \
+    return port_of(dut.NAME##_tdata, dut.NAME##_tvalid, dut.NAME##_tuser, dut.NAME##_tlast, dut.NAME##_tready);
+#include "output_ports.inc"
+#undef FPSTEREO_TB_PORT
+  throw InputError("the design has no output port " + port + ", which its output list names");
+}
+
+// Watches an output stream at every rising edge: cuts tdata into the stream's word nets, collects
+// each net's plane into frames of the expected sizes and checks the stream rules (stable while
+// stalled, tuser on each frame's first pixel, tlast at each row end, the bits of tdata outside
+// the words zero, nothing beyond the expected frames).
 class OutputMonitor {
  public:
-  OutputMonitor(const std::string& port, const std::vector<std::pair<int, int>>& sizes, FrameLog log,
-                ProtocolErrors& protocol)
-      : port_(port), sizes_(sizes), log_(log), protocol_(protocol) {
+  OutputMonitor(const rtl::OutputStream& stream, const std::vector<std::pair<int, int>>& sizes,
+                std::map<Plane, std::vector<DisparityImage>>& frames, std::vector<uint64_t>& start_cycle,
+                std::vector<uint64_t>& end_cycle, ProtocolErrors& protocol)
+      : stream_(stream), sizes_(sizes), frames_(frames), start_cycle_(start_cycle), end_cycle_(end_cycle),
+        protocol_(protocol) {
+    for (const auto& word : stream_.words) outside_words_ &= ~(mask(word.bits) << word.lsb);
     start_frame();
   }
 
@@ -91,12 +112,12 @@ class OutputMonitor {
   // The design was reset: a frame in progress will not be completed.
   void reset() {
     stalled_.reset();
-    if (in_frame_ > 0) log_.start_cycle.pop_back();
+    if (in_frame_ > 0) start_cycle_.pop_back();
     received_ -= in_frame_;
     in_frame_ = 0;
   }
 
-  bool done() const { return log_.frames.size() >= sizes_.size(); }
+  bool done() const { return frames_done_ >= sizes_.size(); }
   size_t received() const { return received_; }
   size_t expected() const {
     size_t total = 0;
@@ -105,61 +126,69 @@ class OutputMonitor {
   }
 
  private:
+  static uint64_t mask(int bits) { return (uint64_t(1) << bits) - 1; }
+
   void start_frame() {
     if (done()) return;
-    frame_ = DisparityImage(sizes_[log_.frames.size()].first, sizes_[log_.frames.size()].second);
-    upper_frame_ = DisparityImage(frame_.width, frame_.height);
+    for (const auto& word : stream_.words)
+      frame_[word.plane] = DisparityImage(sizes_[frames_done_].first, sizes_[frames_done_].second);
   }
 
   void check_stall(uint64_t cycle, bool valid, const OutputBeat& beat) {
     if (!stalled_ || (valid && beat == *stalled_)) return;
     if (!valid) {
-      protocol_.add(fmt::format("cycle {}: {}: tvalid dropped before a handshake", cycle, port_));
+      protocol_.add(fmt::format("cycle {}: {}: tvalid dropped before a handshake", cycle, stream_.port));
       return;
     }
     protocol_.add(
         fmt::format("cycle {}: {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
                     "tlast {} -> {}",
-                    cycle, port_, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
+                    cycle, stream_.port, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
                     int(stalled_->last), int(beat.last)));
   }
 
   void take(uint64_t cycle, const OutputBeat& beat) {
     if (done()) {
-      protocol_.add(fmt::format("cycle {}: {}: output beyond the expected {} frames (tdata {})", cycle, port_,
-                                    sizes_.size(), beat.data));
+      protocol_.add(fmt::format("cycle {}: {}: output beyond the expected {} frames (tdata {})", cycle,
+                                stream_.port, sizes_.size(), beat.data));
       return;
     }
-    const size_t frame = log_.frames.size();
-    const int x = int(in_frame_ % size_t(frame_.width));
-    const int y = int(in_frame_ / size_t(frame_.width));
+    const int width = sizes_[frames_done_].first;
+    const int x = int(in_frame_ % size_t(width));
+    const int y = int(in_frame_ / size_t(width));
     const bool first = x == 0 && y == 0;
-    const bool row_end = x == frame_.width - 1;
+    const bool row_end = x == width - 1;
     if (beat.user != first)
-      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tuser {}, expected {}", cycle, port_, frame, x, y,
-                                    int(beat.user), int(first)));
+      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tuser {}, expected {}", cycle, stream_.port,
+                                frames_done_, x, y, int(beat.user), int(first)));
     if (beat.last != row_end)
-      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tlast {}, expected {}", cycle, port_, frame, x, y,
-                                    int(beat.last), int(row_end)));
-    const uint64_t lane_mask = (uint64_t(1) << log_.lane_bits) - 1;
-    frame_.at(x, y) = uint16_t(beat.data & lane_mask);
-    upper_frame_.at(x, y) = uint16_t(uint64_t(beat.data) >> log_.lane_bits);
-    if (in_frame_ == 0) log_.start_cycle.push_back(cycle);
+      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tlast {}, expected {}", cycle, stream_.port,
+                                frames_done_, x, y, int(beat.last), int(row_end)));
+    if ((beat.data & outside_words_) != 0)
+      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tdata {:#x} has bits set outside its words",
+                                cycle, stream_.port, frames_done_, x, y, beat.data));
+    for (const auto& word : stream_.words)
+      frame_[word.plane].at(x, y) = uint16_t((beat.data >> word.lsb) & mask(word.bits));
+    if (in_frame_ == 0) start_cycle_.push_back(cycle);
     ++received_;
-    if (++in_frame_ == frame_.pixels.size()) {
-      log_.frames.push_back(frame_);
-      if (log_.upper != nullptr) log_.upper->push_back(upper_frame_);
-      log_.end_cycle.push_back(cycle);
+    if (++in_frame_ == size_t(width) * size_t(sizes_[frames_done_].second)) {
+      for (const auto& word : stream_.words) frames_[word.plane].push_back(frame_[word.plane]);
+      end_cycle_.push_back(cycle);
+      ++frames_done_;
       in_frame_ = 0;
       start_frame();
     }
   }
 
-  std::string port_;
+  const rtl::OutputStream& stream_;
   const std::vector<std::pair<int, int>>& sizes_;
-  FrameLog log_;
+  std::map<Plane, std::vector<DisparityImage>>& frames_;
+  std::vector<uint64_t>& start_cycle_;
+  std::vector<uint64_t>& end_cycle_;
   ProtocolErrors& protocol_;
-  DisparityImage frame_{1, 1}, upper_frame_{1, 1};
+  uint64_t outside_words_ = ~uint64_t(0);
+  std::map<Plane, DisparityImage> frame_;  // the frame being received, per word net's plane
+  size_t frames_done_ = 0;
   size_t in_frame_ = 0;  // pixels of the current frame received
   size_t received_ = 0;
   std::optional<OutputBeat> stalled_;  // the beat offered without tready at the previous edge
@@ -180,22 +209,22 @@ void ProtocolErrors::add(const std::string& message) {
   ++count;
 }
 
-int output_port_bits() { return int(8 * sizeof(std::declval<Vdut&>().m_axis_disp_tdata)); }
+std::vector<rtl::OutputStream> output_streams(const StereoConfig& cfg) {
+  return rtl::output_streams(rtl::plan_geometry(cfg));
+}
+
+int held_tdata_bits(const std::string& port) {
+#define FPSTEREO_TB_PORT(NAME) \
+  if (port == #NAME) return int(8 * sizeof(std::declval<Vdut&>().NAME##_tdata));
+#include "output_ports.inc"
+#undef FPSTEREO_TB_PORT
+  throw InputError("the design has no output port " + port + ", which its output list names");
+}
 
 #ifdef FPSTEREO_TB_CONTROL
 bool has_control() { return true; }
 #else
 bool has_control() { return false; }
-#endif
-#ifdef FPSTEREO_TB_RIGHT_VIEW
-bool has_right_view() { return true; }
-#else
-bool has_right_view() { return false; }
-#endif
-#ifdef FPSTEREO_TB_CONFIDENCE
-bool has_confidence() { return true; }
-#else
-bool has_confidence() { return false; }
 #endif
 
 namespace {
@@ -296,16 +325,23 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
 
   AxisSource left(plan.left), right(plan.right);
   StreamRun run;
-  // With confidence, tdata's top 8 bits are the confidence, the word's lane below them.
-  OutputMonitor monitor("m_axis_disp", plan.output_sizes,
-                        {run.outputs, run.frame_start_cycle, run.frame_end_cycle,
-                         has_confidence() ? &run.confidences : nullptr, derive_widths(cfg).output_lane},
-                        run.protocol);
-  // The right view's frames, when the design has it: their cycles are not reported.
-  std::vector<uint64_t> right_start_cycle, right_end_cycle;
-  const std::vector<std::pair<int, int>> no_frames;
-  OutputMonitor right_monitor("m_axis_disp_right", has_right_view() ? plan.output_sizes : no_frames,
-                              {run.right_views, right_start_cycle, right_end_cycle}, run.protocol);
+  // A monitor and a sink per output stream; the cycles of the streams after the first are not
+  // reported.
+  const std::vector<rtl::OutputStream> streams = output_streams(cfg);
+  std::vector<OutputPort> ports;
+  std::vector<OutputMonitor> monitors;
+  std::vector<std::vector<uint64_t>> other_cycles(2 * streams.size());
+  monitors.reserve(streams.size());
+  for (size_t i = 0; i < streams.size(); ++i) {
+    ports.push_back(output_port(*dut, streams[i].port));
+    monitors.emplace_back(streams[i], plan.output_sizes, run.frames,
+                          i == 0 ? run.frame_start_cycle : other_cycles[2 * i],
+                          i == 0 ? run.frame_end_cycle : other_cycles[2 * i + 1], run.protocol);
+  }
+  OutputMonitor& words = monitors.front();
+  const auto all_done = [&] {
+    return std::all_of(monitors.begin(), monitors.end(), [](const OutputMonitor& m) { return m.done(); });
+  };
   LiteMaster lite;
 
   std::mt19937 rng(settings.seed);
@@ -331,20 +367,19 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
   };
 
   dut->s_axis_left_tvalid = dut->s_axis_right_tvalid = 0;
-  dut->m_axis_disp_tready = 0;
-#ifdef FPSTEREO_TB_RIGHT_VIEW
-  dut->m_axis_disp_right_tready = 0;
-#endif
+  for (const auto& port : ports) port.set_ready(false);
   reset();
   constexpr size_t kNoHold = std::numeric_limits<size_t>::max();
   size_t hold_from = kNoHold;
   bool releasing = false;
   left.advance(false, withhold(), hold_from);
   right.advance(false, withhold(), hold_from);
-  // The right view's sink has backpressure of its own (drawn only where it exists, so that the
-  // other designs see the same patterns).
-  auto right_sink_ready = [&] { return has_right_view() ? sink_ready() : true; };
-  bool ready = sink_ready(), right_ready = right_sink_ready();
+  // Each sink has backpressure of its own, drawn in the list's order.
+  std::vector<bool> ready(ports.size());
+  const auto draw_ready = [&] {
+    for (size_t i = 0; i < ready.size(); ++i) ready[i] = sink_ready();
+  };
+  draw_ready();
 
   // Once every pixel is out, keep watching long enough for a spurious extra row to show.
   const uint64_t drain_cycles = 2 * uint64_t(cfg.width) * uint64_t(cfg.dmax / cfg.uf) + 100;
@@ -362,8 +397,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
       const Action& action = plan.actions[next_action++];
       if (action.reset) {
         reset();
-        monitor.reset();
-        right_monitor.reset();
+        for (auto& monitor : monitors) monitor.reset();
         last_progress = cycle;
       }
       for (const auto& access : action.writes) lite.queue(access);
@@ -374,7 +408,7 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
       hold_from = kNoHold;
       releasing = false;
     }
-    if (monitor.done() && !reads_queued) {
+    if (words.done() && !reads_queued) {
       for (uint32_t offset : plan.reads_at_end) lite.queue({offset, 0, false});
       reads_queued = true;
     }
@@ -383,47 +417,34 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
                dut->s_axis_left_tlast);
     right.drive(dut->s_axis_right_tdata, dut->s_axis_right_tvalid, dut->s_axis_right_tuser,
                 dut->s_axis_right_tlast);
-    dut->m_axis_disp_tready = ready;
-#ifdef FPSTEREO_TB_RIGHT_VIEW
-    dut->m_axis_disp_right_tready = right_ready;
-#endif
+    for (size_t i = 0; i < ports.size(); ++i) ports[i].set_ready(ready[i]);
     lite.drive(*dut);
     half_cycle(false);
 
     const bool left_taken = left.valid() && dut->s_axis_left_tready;
     const bool right_taken = right.valid() && dut->s_axis_right_tready;
-    const bool output_valid = dut->m_axis_disp_tvalid;
+    const bool output_valid = ports.front().valid();
     run.left_idle_while_ready += left.withholding() && dut->s_axis_left_tready;
     run.right_idle_while_ready += right.withholding() && dut->s_axis_right_tready;
-    run.output_held += output_valid && !ready;
+    run.output_held += output_valid && !ready.front();
     if ((left_taken || right_taken) && !seen_input) {
       seen_input = true;
       run.first_input_cycle = cycle;
     }
-    monitor.observe(
-        cycle, output_valid, ready,
-        {uint32_t(dut->m_axis_disp_tdata), bool(dut->m_axis_disp_tuser), bool(dut->m_axis_disp_tlast)});
-#ifdef FPSTEREO_TB_RIGHT_VIEW
-    right_monitor.observe(cycle, dut->m_axis_disp_right_tvalid, right_ready,
-                          {uint16_t(dut->m_axis_disp_right_tdata), bool(dut->m_axis_disp_right_tuser),
-                           bool(dut->m_axis_disp_right_tlast)});
-#else
-    right_monitor.observe(cycle, false, right_ready, {});
-#endif
+    for (size_t i = 0; i < ports.size(); ++i) monitors[i].observe(cycle, ports[i].valid(), ready[i], ports[i].beat());
     lite.sample(*dut, run.accesses);
     half_cycle(true);
 
-    if (output_valid && ready) last_progress = cycle;
-    const bool finished = monitor.done() && right_monitor.done() && lite.idle() && next_action == plan.actions.size();
+    if (output_valid && ready.front()) last_progress = cycle;
+    const bool finished = all_done() && lite.idle() && next_action == plan.actions.size();
     if (finished && cycle >= (run.frame_end_cycle.empty() ? 0 : run.frame_end_cycle.back()) + drain_cycles) break;
     if (!finished && cycle - last_progress >= settings.timeout) {
-      run.timeout = timeout_message(cycle - last_progress, monitor, monitor.expected(), left, right);
+      run.timeout = timeout_message(cycle - last_progress, words, words.expected(), left, right);
       break;
     }
     left.advance(left_taken, withhold(), hold_from);
     right.advance(right_taken, withhold(), hold_from);
-    ready = sink_ready();
-    right_ready = right_sink_ready();
+    draw_ready();
   }
   run.cycles = cycle + 1;
   if (settings.progress) std::cerr << "\r\033[K" << std::flush;  // the results take the line

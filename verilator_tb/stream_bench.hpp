@@ -5,11 +5,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "config.hpp"
 #include "image.hpp"
+#include "outputs.hpp"
+#include "plan.hpp"
 #include "widths.hpp"
 #include "stimulus.hpp"
 
@@ -68,11 +71,12 @@ struct ProtocolErrors {
 };
 
 struct StreamRun {
-  std::vector<DisparityImage> outputs;      // the complete output frames, in order
-  std::vector<DisparityImage> right_views;  // with the right view: its complete frames, in order
-  std::vector<DisparityImage> confidences;  // with confidence: each output frame's, in order
-  std::vector<uint64_t> frame_start_cycle;  // cycle of each frame's first output handshake
-  std::vector<uint64_t> frame_end_cycle;    // cycle of each frame's last output handshake
+  // Each plane's complete frames, in order, as the output streams carry them (tdata cut into the
+  // streams' word nets, rtl::output_streams).
+  std::map<Plane, std::vector<DisparityImage>> frames;
+  // Cycles of each frame's first and last handshake on the first output stream (the words').
+  std::vector<uint64_t> frame_start_cycle;
+  std::vector<uint64_t> frame_end_cycle;
   uint64_t first_input_cycle = 0;           // cycle of the first input handshake on either stream
   uint64_t cycles = 0;                      // cycles simulated after reset
   // How much the idle cycles and backpressure bit: cycles in which a source withheld a pixel
@@ -85,14 +89,13 @@ struct StreamRun {
   std::string timeout;  // empty unless the design stopped producing output
 };
 
-// Width of the design's m_axis_disp_tdata as Verilator stores it: 8, 16 or 32 bits.
-int output_port_bits();
+// The output streams of the design generated from cfg, as the bench watches them.
+std::vector<rtl::OutputStream> output_streams(const StereoConfig& cfg);
+// Width of an output stream's tdata as Verilator stores it (8, 16 or 32 bits); throws
+// InputError for a port the Verilated design does not have.
+int held_tdata_bits(const std::string& port);
 // Whether the design has the AXI4-Lite control interface.
 bool has_control();
-// Whether the design streams the right view (m_axis_disp_right).
-bool has_right_view();
-// Whether the output words carry the confidence (the top 8 bits of m_axis_disp_tdata).
-bool has_confidence();
 
 // Resets the design, then runs the plan until every expected output pixel has arrived, the
 // reads at the end are done and a drain period has shown no extra output, or until the timeout.

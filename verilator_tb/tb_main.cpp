@@ -225,9 +225,8 @@ std::string describe_input(const Options& opt) {
 struct Run {
   std::string title;
   StreamPlan plan;
-  std::vector<std::optional<DisparityImage>> expected;  // per output frame; none: not compared
-  std::vector<std::optional<DisparityImage>> expected_right;  // with the right view, likewise
-  std::vector<std::optional<DisparityImage>> expected_confidence;  // with confidence, likewise
+  // Per output frame, the golden model's planes of the design's outputs; none: not compared.
+  std::vector<std::optional<Planes>> expected;
   std::vector<std::pair<uint32_t, uint32_t>> registers;  // (offset, value) expected at the end
   std::vector<std::string> register_names;
 };
@@ -237,11 +236,7 @@ void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
   run.plan.left.insert(run.plan.left.end(), left.begin(), left.end());
   run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
   run.plan.output_sizes.push_back({cfg.width, cfg.height});
-  DisparityImage right_view, confidence;
-  run.expected.push_back(run_golden(cfg, pair.left, pair.right,
-                                    {cfg.right_view ? &right_view : nullptr, cfg.confidence ? &confidence : nullptr}));
-  run.expected_right.push_back(right_view);
-  run.expected_confidence.push_back(confidence);
+  run.expected.push_back(run_golden(cfg, pair.left, pair.right, output_planes(cfg)));
 }
 
 void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_t value) {
@@ -328,10 +323,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   const auto& pf = pairs[1 % pairs.size()];
   const auto& pb = pairs[2 % pairs.size()];
   const auto& pc = pairs[3 % pairs.size()];
-  DisparityImage golden_f_right, golden_f_confidence;
-  const DisparityImage golden_f =
-      run_golden(cfg, pf.left, pf.right,
-                 {cfg.right_view ? &golden_f_right : nullptr, cfg.confidence ? &golden_f_confidence : nullptr});
+  const Planes golden_f = run_golden(cfg, pf.left, pf.right, output_planes(cfg));
 
   add_frame(run, pa, cfg);
   // F, and what the design makes of it: output frames (checked or not) and counter deltas.
@@ -370,8 +362,6 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     for (int i = 0; i < count; ++i) {
       run.plan.output_sizes.push_back({w, h});
       run.expected.push_back(std::nullopt);
-      run.expected_right.push_back(std::nullopt);
-      run.expected_confidence.push_back(std::nullopt);
     }
   };
   if (fault == "early-eol" || fault == "late-eol" || fault == "short-frame") {
@@ -392,8 +382,6 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   } else if (fault == "long-frame") {
     run.plan.output_sizes.push_back({w, h});
     run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
-    run.expected_right.push_back(golden_f_right);
-    run.expected_confidence.push_back(golden_f_confidence);
     errors = 1;
   } else if (fault == "reset") {
     // aresetn as F's last row begins: F's output is cut short, the counters start again, the
@@ -438,35 +426,29 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
                                : "incomplete";
   fmt::print("{} ({} output frames): {} ({} cycles simulated in {:.2f} s, {:.0f} kcycles/s)\n", run_spec.title,
              frames, span, run.cycles, seconds, run.cycles / seconds / 1e3);
-  for (size_t i = 0; i < run.outputs.size(); ++i) {
-    if (!run_spec.expected[i]) {
-      fmt::print("frame {}: truncated by the fault, framing checked only\n", i);
-      continue;
-    }
-    const Comparison c = compare_words(*run_spec.expected[i], run.outputs[i]);
-    fmt::print("frame {}: {}\n", i, c.report());
-    totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
-    ++totals.frames;
-  }
-  // The confidences, beside each compared frame's words.
-  if (cfg.confidence)
-    for (size_t i = 0; i < run.confidences.size() && i < run_spec.expected_confidence.size(); ++i) {
-      if (!run_spec.expected[i] || !run_spec.expected_confidence[i]) continue;
-      const Comparison c = compare_words(*run_spec.expected_confidence[i], run.confidences[i]);
-      fmt::print("confidence, frame {}: {}\n", i, c.report());
-      totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
-      ++totals.frames;
-    }
-  // The right view's frames: as many as the disparity frames, each equal to its golden words.
-  if (cfg.right_view) {
-    if (run.right_views.size() != run.outputs.size()) {
-      fmt::print("right view: {} frames, expected {}\n", run.right_views.size(), run.outputs.size());
+  // Each plane of the outputs: as many frames as the words, each equal to its golden plane.
+  const std::vector<Plane> planes = output_planes(cfg);
+  const auto frames_of = [&](Plane plane) -> const std::vector<DisparityImage>& {
+    static const std::vector<DisparityImage> none;
+    const auto found = run.frames.find(plane);
+    return found == run.frames.end() ? none : found->second;
+  };
+  for (const Plane plane : planes) {
+    const std::vector<DisparityImage>& got = frames_of(plane);
+    // Messages name the planes besides the words: "confidence, frame 2: ...".
+    const std::string name = plane == Plane::Disparity ? "" : std::string(plane_info(plane).name) + ", ";
+    if (got.size() != frames_of(Plane::Disparity).size()) {
+      fmt::print("{}: {} frames, expected {}\n", plane_info(plane).name, got.size(),
+                 frames_of(Plane::Disparity).size());
       ++totals.mismatches;
     }
-    for (size_t i = 0; i < run.right_views.size() && i < run_spec.expected_right.size(); ++i) {
-      if (!run_spec.expected_right[i]) continue;
-      const Comparison c = compare_words(*run_spec.expected_right[i], run.right_views[i]);
-      fmt::print("right view, frame {}: {}\n", i, c.report());
+    for (size_t i = 0; i < got.size() && i < run_spec.expected.size(); ++i) {
+      if (!run_spec.expected[i]) {
+        if (plane == Plane::Disparity) fmt::print("frame {}: truncated by the fault, framing checked only\n", i);
+        continue;
+      }
+      const Comparison c = compare_words(run_spec.expected[i]->at(plane), got[i]);
+      fmt::print("{}frame {}: {}\n", name, i, c.report());
       totals.mismatches += c.mismatches + (c.size_matches ? 0 : 1);
       ++totals.frames;
     }
@@ -583,17 +565,18 @@ int run_bench(const Options& opt) {
   const StereoConfig cfg = load_tb_config();
   const StatedTiming stated = read_stated_timing(FPSTEREO_TB_TOP_FILE);
   const Widths widths = derive_widths(cfg);
-  // The word's lane, and the confidence above it; Verilator holds 24 bits in 32.
-  const int tdata_bits = widths.output_lane + (cfg.confidence ? 8 : 0);
-  const int port_bits = tdata_bits <= 8 ? 8 : tdata_bits <= 16 ? 16 : 32;
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
   fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,
              cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf, paths_to_string(cfg.paths),
              widths.output_word, has_control() ? "AXI4-Lite" : "none");
-  if (output_port_bits() != port_bits) {
-    fmt::print("FAIL: m_axis_disp_tdata is held in {} bits, the contract asks for {} (output word {} bits)\n",
-               output_port_bits(), port_bits, widths.output_word);
-    return kExitFail;
+  // Each output stream's tdata as the list lays it out; Verilator holds 24 bits in 32.
+  for (const auto& stream : output_streams(cfg)) {
+    const int held = stream.tdata_bits <= 8 ? 8 : stream.tdata_bits <= 16 ? 16 : 32;
+    if (held_tdata_bits(stream.port) != held) {
+      fmt::print("FAIL: {}_tdata is held in {} bits, the output list asks for {} ({} bits)\n", stream.port,
+                 held_tdata_bits(stream.port), held, stream.tdata_bits);
+      return kExitFail;
+    }
   }
   std::vector<std::string> faults = opt.faults;
   if (std::find(faults.begin(), faults.end(), "all") != faults.end()) {

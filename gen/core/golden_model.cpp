@@ -265,6 +265,12 @@ class PathGroupThread {
   std::thread thread_;  // last: starts once everything above is built
 };
 
+// Where the pipeline writes the planes besides the words it returns; null: not asked for.
+struct SideViews {
+  DisparityImage* right = nullptr;
+  DisparityImage* confidence = nullptr;
+};
+
 // ---------------------------------------------------------------------------------------------
 // The pipeline, with T the storage type of costs and sums.
 template <class T>
@@ -351,22 +357,32 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
 
 }  // namespace
 
-DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                          const SideViews& side, int threads) {
+Planes run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                  const std::vector<Plane>& planes, int threads) {
   if (left.width != right.width || left.height != right.height || left.width > cfg.width ||
       left.height > cfg.height || left.width < 1 || left.height < 1)
     throw std::invalid_argument("run_golden: images must have equal sizes within the configured size");
-  if (side.right != nullptr) {
-    if (cfg.lr == LrCheck::None) throw std::invalid_argument("run_golden: the right view needs a left-right check");
-    *side.right = DisparityImage(left.width, left.height);
+  Planes out;
+  SideViews side;
+  for (const Plane plane : planes) {
+    if (const std::string why = plane_unavailable(cfg, plane); !why.empty())
+      throw std::invalid_argument("run_golden: " + why);
+    out[plane] = DisparityImage(left.width, left.height);
   }
-  if (side.confidence != nullptr) *side.confidence = DisparityImage(left.width, left.height);
+  if (out.count(Plane::Right)) side.right = &out[Plane::Right];
+  if (out.count(Plane::Confidence)) side.confidence = &out[Plane::Confidence];
   const Widths widths = derive_widths(cfg);
   // 16-bit storage whenever sums, and the sentinel above any path cost plus P2, fit.
-  if (widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 &&
-      widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535)
-    return run_pipeline<uint16_t>(cfg, widths, left, right, side, threads);
-  return run_pipeline<uint32_t>(cfg, widths, left, right, side, threads);
+  DisparityImage words =
+      widths.aggregated_max + uint64_t(cfg.p2) + 512 < 65535 && widths.path_cost_max + 2u * uint64_t(cfg.p2) + 512 < 65535
+          ? run_pipeline<uint16_t>(cfg, widths, left, right, side, threads)
+          : run_pipeline<uint32_t>(cfg, widths, left, right, side, threads);
+  if (out.count(Plane::Disparity)) out[Plane::Disparity] = std::move(words);
+  return out;
+}
+
+DisparityImage run_golden(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right, int threads) {
+  return std::move(run_golden(cfg, left, right, {Plane::Disparity}, threads)[Plane::Disparity]);
 }
 
 }  // namespace fpstereo

@@ -400,8 +400,13 @@ void gap_interpolate(DispMap& disp) {
 
 }  // namespace
 
-DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                         const SideViews& side) {
+Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                 const std::vector<Plane>& planes) {
+  for (const Plane plane : planes)
+    if (const std::string why = plane_unavailable(cfg, plane); !why.empty())
+      throw std::invalid_argument("run_naive: " + why);
+  const auto wanted = [&](Plane plane) { return std::find(planes.begin(), planes.end(), plane) != planes.end(); };
+  Planes out;
   // The run's size is the images' size (the caller checked left and right agree).
   const int W = left.width, H = left.height;
   const Widths widths = derive_widths(cfg);
@@ -416,20 +421,18 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) disp.at(x, y) = wta(sum, x, y);
 
-  if (side.confidence != nullptr) *side.confidence = confidence(sum, disp);
+  if (wanted(Plane::Confidence)) out[Plane::Confidence] = confidence(sum, disp);
   if (cfg.uniqueness > 0) apply_uniqueness(cfg, sum, disp);
 
   if (cfg.lr != LrCheck::None) {
     const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum, cfg.min_disp)
                                               : lr2_match_disparities(cfg, base, match, cmax);
     apply_lr_check(cfg, dm, disp);
-    if (side.right != nullptr) {
-      *side.right = DisparityImage(W, H);
+    if (wanted(Plane::Right)) {
+      DisparityImage& view = out[Plane::Right] = DisparityImage(W, H);
       for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) side.right->at(x, y) = uint16_t(dm.at(x, y));
+        for (int x = 0; x < W; ++x) view.at(x, y) = uint16_t(dm.at(x, y));
     }
-  } else if (side.right != nullptr) {
-    throw std::invalid_argument("run_naive: the right view needs a left-right check");
   }
 
   refine_subpixel(cfg, sum, disp);
@@ -439,10 +442,12 @@ DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const G
   if (cfg.gap_interpolation) gap_interpolate(disp);
 
   // Output words: the disparity, or the invalid flag alone.
-  DisparityImage out(W, H, widths.invalid_word);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      if (disp.at(x, y) != kInvalid) out.at(x, y) = uint16_t(disp.at(x, y));
+  if (wanted(Plane::Disparity)) {
+    DisparityImage& words = out[Plane::Disparity] = DisparityImage(W, H, widths.invalid_word);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (disp.at(x, y) != kInvalid) words.at(x, y) = uint16_t(disp.at(x, y));
+  }
   return out;
 }
 

@@ -3,14 +3,16 @@
 // golden model. Used only to cross-check the golden model.
 #pragma once
 
+#include <vector>
+
 #include "config.hpp"
-#include "golden_model.hpp"  // SideViews
 #include "image.hpp"
+#include "outputs.hpp"
 
 namespace fpstereo {
 
-// The side views as run_golden writes them.
-DisparityImage run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                         const SideViews& side = {});
+// The planes asked for, as run_golden computes them.
+Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
+                 const std::vector<Plane>& planes = {Plane::Disparity});
 
 }  // namespace fpstereo

@@ -122,14 +122,14 @@ std::vector<OutputStream> output_streams(const Geometry& g) {
   disparity.fields.push_back({"disparity", c.subpixel_bits, w.output_disparity - c.subpixel_bits});
   disparity.fields.push_back({"invalid", w.output_disparity, 1});
   if (c.confidence) {
-    disparity.words.push_back({"out_confidence", w.output_lane, kConfidenceBits});
-    disparity.fields.push_back({"confidence", w.output_lane, kConfidenceBits});
+    disparity.words.push_back({"out_confidence", w.output_lane, kConfidenceBits, Plane::Confidence});
+    disparity.fields.push_back({"confidence", w.output_lane, kConfidenceBits, Plane::Confidence});
   }
   std::vector<OutputStream> streams = {disparity};
   // The right view: the match side's whole disparities, in raster order of the right image.
   if (c.right_view)
     streams.push_back({"m_axis_disp_right", "view", "the right view's whole disparities", 8,
-                       {{"view_word", 0, w.disparity}}, {{"disparity", 0, w.disparity}}});
+                       {{"view_word", 0, w.disparity, Plane::Right}}, {{"disparity", 0, w.disparity, Plane::Right}}});
   return streams;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config.hpp"
+#include "outputs.hpp"
 #include "stage.hpp"
 #include "widths.hpp"
 
@@ -83,10 +84,12 @@ struct Geometry {
 // An output stream of the design (docs/contributing.md, "Adding an output"): the top's AXI4-Stream
 // master <port>, fed by the core's handshake nets <core>_ready, _push, _first and _last and by its
 // word nets, each at its bit in tdata (the bits between are zero); and the fields that tdata
-// carries, which the register map, the test bench and the docs name.
+// carries, which the register map, the test bench and the docs name. Each net and field belongs to
+// a plane of the models (outputs.hpp), which the test bench compares it with.
 struct OutputNet {
   std::string name;
   int lsb = 0, bits = 0;
+  Plane plane = Plane::Disparity;
 };
 struct OutputStream {
   std::string port, core, what;

@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <iostream>
+#include <map>
+#include <stdexcept>
 
 #include "config_cli.hpp"
 #include "dse_command.hpp"
@@ -11,6 +13,7 @@
 #include "files.hpp"
 #include "golden_model.hpp"
 #include "image_io.hpp"
+#include "outputs.hpp"
 #include "synth_command.hpp"
 #include "text.hpp"
 #include "widths.hpp"
@@ -19,39 +22,77 @@ namespace fpstereo {
 namespace {
 
 struct RunOptions {
-  std::string left, right, output, colour, pfm, right_output, confidence;
-  std::vector<std::string> gray_pgm;  // left, right
+  std::string left, right, colour, pfm;
+  std::map<Plane, std::string> plane_files;  // the file each plane is written to, if asked
+  std::vector<std::string> gray_pgm;         // left, right
   ConfigFlags config;
 };
+
+// How a plane's file is written, by its name's extension.
+std::string plane_file_help(Plane plane) {
+  switch (plane) {
+    case Plane::Disparity:
+      return "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name ends "
+             "in .pfm";
+    case Plane::Confidence:
+      return "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
+             "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG";
+    case Plane::Right:
+      return "the right view's disparities (the left-right check's match side): PFM if the name ends in .pfm, "
+             "else a KITTI 16-bit PNG";
+  }
+  throw std::logic_error("plane_file_help: a plane without a writer");
+}
+
+std::vector<uchar> encode_plane(Plane plane, const std::string& path, const DisparityImage& words,
+                                const StereoConfig& cfg) {
+  switch (plane) {
+    case Plane::Disparity:
+      return encode_disparity_file(path, to_float_disparity(words, cfg));
+    case Plane::Right: {
+      StereoConfig whole = cfg;  // the right view's words are whole disparities
+      whole.subpixel_bits = 0;
+      return encode_disparity_file(path, to_float_disparity(words, whole));
+    }
+    case Plane::Confidence: {
+      GrayImage bytes(words.width, words.height);  // confidences are 0 .. 255
+      for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(words.pixels[i]);
+      return ends_with(path, ".pgm") ? encode_pgm(bytes) : encode_gray_png(words);
+    }
+  }
+  throw std::logic_error("encode_plane: a plane without a writer");
+}
 
 // Every output is declared (and checked against the inputs and each other) before the work,
 // computed before any is written, and committed together: a failing run leaves every previous
 // output untouched.
 int run_pair(const RunOptions& opt) {
   const StereoConfig cfg = opt.config.resolve();
-  if (!opt.right_output.empty() && cfg.lr == LrCheck::None)
-    throw ConfigError("--right-output needs a left-right check (lr = lr1 or lr2), whose match side it writes");
+  // The words always: the summary line counts their valid pixels.
+  std::vector<Plane> planes{Plane::Disparity};
+  for (const auto& [plane, path] : opt.plane_files) {
+    if (path.empty()) continue;
+    if (const std::string why = plane_unavailable(cfg, plane); !why.empty())
+      throw ConfigError(std::string(plane_info(plane).option) + ": " + why);
+    if (plane != Plane::Disparity) planes.push_back(plane);
+  }
   OutputSet outputs;
   outputs.add_input(opt.left, "left image");
   outputs.add_input(opt.right, "right image");
   opt.config.declare_input(outputs);
-  const std::pair<const std::string*, const char*> named[] = {
-      {&opt.output, "--output"}, {&opt.colour, "--colour"}, {&opt.pfm, "--pfm"},
-      {&opt.right_output, "--right-output"}, {&opt.confidence, "--confidence-output"}};
   for (const auto& path : opt.gray_pgm) outputs.add_file(path, "--gray-pgm");
-  for (const auto& [path, flag] : named)
+  for (const auto& [path, flag] : {std::pair{&opt.colour, "--colour"}, std::pair{&opt.pfm, "--pfm"}})
     if (!path->empty()) outputs.add_file(*path, flag);
+  for (const auto& [plane, path] : opt.plane_files)
+    if (!path.empty()) outputs.add_file(path, plane_info(plane).option);
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
   const auto start = std::chrono::steady_clock::now();
-  DisparityImage right_words, confidence;
-  const DisparityImage words =
-      run_golden(cfg, left, right,
-                 {opt.right_output.empty() ? nullptr : &right_words, opt.confidence.empty() ? nullptr : &confidence});
+  const Planes result = run_golden(cfg, left, right, planes);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const cv::Mat1f disparity = to_float_disparity(words, cfg);
+  const cv::Mat1f disparity = to_float_disparity(result.at(Plane::Disparity), cfg);
   const auto stage = [&](const std::string& path, const std::vector<uchar>& bytes) {
     outputs.stage(path, bytes.data(), bytes.size());
   };
@@ -59,20 +100,11 @@ int run_pair(const RunOptions& opt) {
     stage(opt.gray_pgm[0], encode_pgm(left));
     stage(opt.gray_pgm[1], encode_pgm(right));
   }
-  if (!opt.output.empty()) stage(opt.output, encode_disparity_file(opt.output, disparity));
+  for (const auto& [plane, path] : opt.plane_files)
+    if (!path.empty()) stage(path, encode_plane(plane, path, result.at(plane), cfg));
   if (!opt.colour.empty())
     stage(opt.colour, encode_colour_png(disparity, float(cfg.min_disp), float(cfg.min_disp + cfg.dmax - 1)));
   if (!opt.pfm.empty()) stage(opt.pfm, encode_pfm(disparity));
-  if (!opt.right_output.empty()) {
-    StereoConfig whole = cfg;  // the right view's words are whole disparities
-    whole.subpixel_bits = 0;
-    stage(opt.right_output, encode_disparity_file(opt.right_output, to_float_disparity(right_words, whole)));
-  }
-  if (!opt.confidence.empty()) {
-    GrayImage bytes(confidence.width, confidence.height);  // confidences are 0 .. 255
-    for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(confidence.pixels[i]);
-    stage(opt.confidence, ends_with(opt.confidence, ".pgm") ? encode_pgm(bytes) : encode_gray_png(confidence));
-  }
   outputs.commit();
   const int valid = cv::countNonZero(disparity == disparity);  // NaN != NaN
   fmt::print("{}x{}, {}, {:.1f} ms, {:.1f} % valid\n", left.width, left.height, config_tag(cfg), ms,
@@ -107,15 +139,14 @@ int run_command_line(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "run the golden model on one pair, write the disparity");
   run_cmd->add_option("left", run.left, "left (base) image")->required();
   run_cmd->add_option("right", run.right, "right (match) image")->required();
-  run_cmd->add_option("-o,--output", run.output, "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name ends in .pfm");
-  run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
-  run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
-  run_cmd->add_option("--right-output", run.right_output,
-                      "the right view's disparities (the left-right check's match side): PFM if the name ends in "
-                      ".pfm, else a KITTI 16-bit PNG");
-  run_cmd->add_option("--confidence-output", run.confidence,
-                      "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
-                      "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG");
+  for (const PlaneInfo& info : all_planes()) {
+    const std::string flag = info.plane == Plane::Disparity ? std::string("-o,") + info.option : info.option;
+    run_cmd->add_option(flag, run.plane_files[info.plane], plane_file_help(info.plane));
+    if (info.plane == Plane::Disparity) {  // the words' other renderings
+      run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
+      run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
+    }
+  }
   run_cmd
       ->add_option("--gray-pgm", run.gray_pgm,
                    "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "
