@@ -73,16 +73,20 @@ struct OutputPort {
 
 template <class Data>
 OutputPort port_of(Data& tdata, CData& tvalid, CData& tuser, CData& tlast, CData& tready) {
-  return {[&] { return bool(tvalid); }, [&] { return OutputBeat{uint32_t(tdata), bool(tuser), bool(tlast)}; },
+  return {[&] { return bool(tvalid); },
+          [&] {
+            return OutputBeat{uint32_t(tdata), bool(tuser), bool(tlast)};
+          },
           [&](bool ready) { tready = ready; }};
 }
 
 // The design's output ports: output_ports.inc has a FPSTEREO_TB_PORT(<name>) line for each one the
 // top declares (verilator_tb/CMakeLists.txt writes it).
 OutputPort output_port(Vdut& dut, const std::string& port) {
-#define FPSTEREO_TB_PORT(NAME) \
-  if (port == #NAME)           \
-    return port_of(dut.NAME##_tdata, dut.NAME##_tvalid, dut.NAME##_tuser, dut.NAME##_tlast, dut.NAME##_tready);
+#define FPSTEREO_TB_PORT(NAME)                                                              \
+  if (port == #NAME)                                                                        \
+    return port_of(dut.NAME##_tdata, dut.NAME##_tvalid, dut.NAME##_tuser, dut.NAME##_tlast, \
+                   dut.NAME##_tready);
 #include "output_ports.inc"
 #undef FPSTEREO_TB_PORT
   throw InputError("the design has no output port " + port + ", which its output list names");
@@ -97,7 +101,11 @@ class OutputMonitor {
   OutputMonitor(const rtl::OutputStream& stream, const std::vector<std::pair<int, int>>& sizes,
                 std::map<Plane, std::vector<DisparityImage>>& frames, std::vector<uint64_t>& start_cycle,
                 std::vector<uint64_t>& end_cycle, ProtocolErrors& protocol)
-      : stream_(stream), sizes_(sizes), frames_(frames), start_cycle_(start_cycle), end_cycle_(end_cycle),
+      : stream_(stream),
+        sizes_(sizes),
+        frames_(frames),
+        start_cycle_(start_cycle),
+        end_cycle_(end_cycle),
         protocol_(protocol) {
     for (const auto& word : stream_.words) outside_words_ &= ~(mask(word.bits) << word.lsb);
     start_frame();
@@ -221,11 +229,16 @@ int held_tdata_bits(const std::string& port) {
   throw InputError("the design has no output port " + port + ", which its output list names");
 }
 
+const DesignFiles& design_files() {
 #ifdef FPSTEREO_TB_CONTROL
-bool has_control() { return true; }
+  static const DesignFiles files{FPSTEREO_TB_CONFIG_FILE, FPSTEREO_TB_TOP_FILE, FPSTEREO_TB_REGS_HEADER};
 #else
-bool has_control() { return false; }
+  static const DesignFiles files{FPSTEREO_TB_CONFIG_FILE, FPSTEREO_TB_TOP_FILE, ""};
 #endif
+  return files;
+}
+
+bool has_control() { return !design_files().registers.empty(); }
 
 namespace {
 
@@ -233,10 +246,11 @@ namespace {
 // second at the simulator's few hundred thousand cycles per second).
 constexpr uint64_t kProgressCycles = 1 << 16;
 
-void show_progress(size_t frames_done, size_t frames, uint64_t cycle, std::chrono::steady_clock::time_point start) {
+void show_progress(size_t frames_done, size_t frames, uint64_t cycle,
+                   std::chrono::steady_clock::time_point start) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cerr << fmt::format("\r\033[Kfpstereo-tb: {}/{} frames, {} cycles, {:.0f} kcycles/s", frames_done, frames,
-                           cycle, seconds > 0 ? double(cycle) / seconds / 1e3 : 0.0)
+  std::cerr << fmt::format("\r\033[Kfpstereo-tb: {}/{} frames, {} cycles, {:.0f} kcycles/s", frames_done,
+                           frames, cycle, seconds > 0 ? double(cycle) / seconds / 1e3 : 0.0)
             << std::flush;
 }
 
@@ -431,13 +445,15 @@ StreamRun stream(const StereoConfig& cfg, const StreamPlan& plan, const StreamSe
       seen_input = true;
       run.first_input_cycle = cycle;
     }
-    for (size_t i = 0; i < ports.size(); ++i) monitors[i].observe(cycle, ports[i].valid(), ready[i], ports[i].beat());
+    for (size_t i = 0; i < ports.size(); ++i)
+      monitors[i].observe(cycle, ports[i].valid(), ready[i], ports[i].beat());
     lite.sample(*dut, run.accesses);
     half_cycle(true);
 
     if (output_valid && ready.front()) last_progress = cycle;
     const bool finished = all_done() && lite.idle() && next_action == plan.actions.size();
-    if (finished && cycle >= (run.frame_end_cycle.empty() ? 0 : run.frame_end_cycle.back()) + drain_cycles) break;
+    if (finished && cycle >= (run.frame_end_cycle.empty() ? 0 : run.frame_end_cycle.back()) + drain_cycles)
+      break;
     if (!finished && cycle - last_progress >= settings.timeout) {
       run.timeout = timeout_message(cycle - last_progress, words, words.expected(), left, right);
       break;

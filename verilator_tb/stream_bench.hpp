@@ -13,8 +13,8 @@
 #include "image.hpp"
 #include "outputs.hpp"
 #include "plan.hpp"
-#include "widths.hpp"
 #include "stimulus.hpp"
+#include "widths.hpp"
 
 namespace fpstereo::tb {
 
@@ -77,8 +77,8 @@ struct StreamRun {
   // Cycles of each frame's first and last handshake on the first output stream (the words').
   std::vector<uint64_t> frame_start_cycle;
   std::vector<uint64_t> frame_end_cycle;
-  uint64_t first_input_cycle = 0;           // cycle of the first input handshake on either stream
-  uint64_t cycles = 0;                      // cycles simulated after reset
+  uint64_t first_input_cycle = 0;  // cycle of the first input handshake on either stream
+  uint64_t cycles = 0;             // cycles simulated after reset
   // How much the idle cycles and backpressure bit: cycles in which a source withheld a pixel
   // while the design was ready for it, and cycles in which an output waited for tready.
   uint64_t left_idle_while_ready = 0;
@@ -94,6 +94,13 @@ std::vector<rtl::OutputStream> output_streams(const StereoConfig& cfg);
 // Width of an output stream's tdata as Verilator stores it (8, 16 or 32 bits); throws
 // InputError for a port the Verilated design does not have.
 int held_tdata_bits(const std::string& port);
+// The design's files the bench was built with (CMake passes their paths), read when it runs: the
+// configuration it was generated with, its top file (whose banner states its timing) and, with
+// the AXI4-Lite control interface, its register header (else empty).
+struct DesignFiles {
+  std::string config, top, registers;
+};
+const DesignFiles& design_files();
 // Whether the design has the AXI4-Lite control interface.
 bool has_control();
 

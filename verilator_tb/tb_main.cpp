@@ -10,6 +10,7 @@
 // Exit status: 0 pass, 1 mismatch, protocol, register or timing error, 2 bad input, 3 timeout.
 #include <fmt/core.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -19,7 +20,6 @@
 #include <optional>
 #include <random>
 #include <regex>
-#include <unistd.h>
 
 #include "compare.hpp"
 #include "config_cli.hpp"
@@ -28,20 +28,6 @@
 #include "stimulus.hpp"
 #include "stream_bench.hpp"
 #include "widths.hpp"
-
-#ifndef FPSTEREO_TB_CONFIG_FILE
-#error "FPSTEREO_TB_CONFIG_FILE must name the config.json the RTL was generated with"
-#endif
-#ifndef FPSTEREO_TB_TOP_FILE
-#error "FPSTEREO_TB_TOP_FILE must name the design's top file, the first of its filelist.f"
-#endif
-#ifdef FPSTEREO_TB_CONTROL
-// The register map as the generator emitted it: <prefix>_regs.h, names <PREFIX>_<REGISTER>.
-#include FPSTEREO_TB_REGS_HEADER
-#define FPS_JOIN2(a, b) a##_##b
-#define FPS_JOIN(a, b) FPS_JOIN2(a, b)
-#define FPS_REG(name) FPS_JOIN(FPSTEREO_TB_REG_PREFIX, name)
-#endif
 
 namespace fpstereo::tb {
 namespace {
@@ -52,8 +38,8 @@ constexpr int kExitTimeout = 3;
 
 // The framing faults --fault injects into the second of four frames (docs/architecture.md,
 // "Robust video input", says how the design answers each).
-const std::vector<std::string> kFaults = {"early-eol", "late-eol",   "missing-sof", "repeated-sof",
-                                          "short-frame", "long-frame", "reset",      "disable"};
+const std::vector<std::string> kFaults = {"early-eol",   "late-eol",   "missing-sof", "repeated-sof",
+                                          "short-frame", "long-frame", "reset",       "disable"};
 
 struct Options {
   std::string left, right;
@@ -75,7 +61,7 @@ struct Options {
 
 StereoConfig load_tb_config() {
   StereoConfig cfg;
-  apply_config_file(cfg, FPSTEREO_TB_CONFIG_FILE);
+  apply_config_file(cfg, design_files().config);
   validate(cfg);
   return cfg;
 }
@@ -105,6 +91,41 @@ StatedTiming read_stated_timing(const std::string& path) {
   return stated;
 }
 
+// ---- The AXI4-Lite registers as the generator wrote them in <prefix>_regs.h (offsets, and the
+// values the design must report), read when the bench runs, like the configuration.
+class RegisterMap {
+ public:
+  explicit RegisterMap(const std::string& path) {
+    if (path.empty()) return;  // no control interface
+    std::ifstream in(path);
+    if (!in) throw InputError(fmt::format("cannot read '{}', the design's register header", path));
+    static const std::regex guard(R"(^#ifndef ([A-Z0-9_]+)_REGS_H$)");
+    static const std::regex define(R"(^#define ([A-Z0-9_]+) +(0x[0-9A-Fa-f]+|[0-9]+)u\b)");
+    std::string line, prefix;
+    std::smatch m;
+    while (std::getline(in, line)) {
+      if (std::regex_search(line, m, guard)) prefix = m[1].str() + "_";
+      if (!prefix.empty() && std::regex_search(line, m, define) && m[1].str().rfind(prefix, 0) == 0)
+        values_[m[1].str().substr(prefix.size())] = uint32_t(std::stoul(m[2].str(), nullptr, 0));
+    }
+    if (values_.empty()) throw InputError(fmt::format("'{}' defines no registers", path));
+  }
+  uint32_t operator()(const std::string& name) const {
+    const auto found = values_.find(name);
+    if (found == values_.end()) throw InputError("the register header does not define " + name);
+    return found->second;
+  }
+
+ private:
+  std::map<std::string, uint32_t> values_;
+};
+
+// The offset or value the register header gives `name`.
+uint32_t reg(const std::string& name) {
+  static const RegisterMap map(design_files().registers);
+  return map(name);
+}
+
 // ---- Run-time settings (--set): each is a register and the configuration field it stands for.
 struct Setting {
   const char* name;
@@ -113,16 +134,13 @@ struct Setting {
 };
 
 std::vector<Setting> settings_table() {
-#ifdef FPSTEREO_TB_CONTROL
-  return {{"p1", FPS_REG(P1), &StereoConfig::p1},
-          {"p2", FPS_REG(P2), &StereoConfig::p2},
-          {"uniqueness", FPS_REG(UNIQUENESS), &StereoConfig::uniqueness},
-          {"lr-threshold", FPS_REG(LR_THRESHOLD), &StereoConfig::lr_threshold},
-          {"width", FPS_REG(WIDTH), &StereoConfig::width},
-          {"height", FPS_REG(HEIGHT), &StereoConfig::height}};
-#else
-  return {};
-#endif
+  if (!has_control()) return {};
+  return {{"p1", reg("P1"), &StereoConfig::p1},
+          {"p2", reg("P2"), &StereoConfig::p2},
+          {"uniqueness", reg("UNIQUENESS"), &StereoConfig::uniqueness},
+          {"lr-threshold", reg("LR_THRESHOLD"), &StereoConfig::lr_threshold},
+          {"width", reg("WIDTH"), &StereoConfig::width},
+          {"height", reg("HEIGHT"), &StereoConfig::height}};
 }
 
 // The register writes of --set, in an order that keeps P1 <= P2 throughout, and the
@@ -131,18 +149,21 @@ std::vector<Setting> settings_table() {
 std::pair<std::vector<RegisterAccess>, StereoConfig> parse_settings(const std::vector<std::string>& items,
                                                                     const StereoConfig& cfg) {
   if (!items.empty() && !has_control())
-    throw InputError("--set needs the AXI4-Lite control interface (the design was generated with --no-axi-lite)");
+    throw InputError(
+        "--set needs the AXI4-Lite control interface (the design was generated with --no-axi-lite)");
   StereoConfig after = cfg;
   std::map<std::string, uint32_t> values;
   const auto table = settings_table();
   for (const auto& item : items) {
     const auto eq = item.find('=');
     const std::string name = item.substr(0, eq);
-    const auto it = std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
+    const auto it =
+        std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
     if (eq == std::string::npos || it == table.end())
-      throw InputError(fmt::format("--set '{}': expected NAME=VALUE with NAME one of p1, p2, uniqueness, "
-                                   "lr-threshold, width, height",
-                                   item));
+      throw InputError(
+          fmt::format("--set '{}': expected NAME=VALUE with NAME one of p1, p2, uniqueness, "
+                      "lr-threshold, width, height",
+                      item));
     int value = 0;
     try {
       size_t used = 0;
@@ -175,7 +196,8 @@ std::pair<std::vector<RegisterAccess>, StereoConfig> parse_settings(const std::v
   std::vector<RegisterAccess> writes;
   for (const auto& name : order)
     if (values.count(name)) {
-      const auto it = std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
+      const auto it =
+          std::find_if(table.begin(), table.end(), [&](const Setting& s) { return name == s.name; });
       writes.push_back({it->offset, values[name], true});
     }
   return {writes, after};
@@ -191,10 +213,9 @@ GrayImage load_input(const std::string& path, const std::string& role, int width
   const bool exact = img.width == width && img.height == height;
   const bool croppable = img.width >= width && img.height >= height;
   if (exact || (crop && croppable)) return crop_top_left(img, width, height);
-  throw InputError(fmt::format("{} '{}' is {}x{}{}, the frames are {}x{}{}", role, path, img.width, img.height,
-                               factor > 1 ? fmt::format(" upscaled {}x", factor) : "",
-                               width, height,
-                               crop ? "" : " (--crop takes the top-left region of a larger image)"));
+  throw InputError(fmt::format("{} '{}' is {}x{}{}, the frames are {}x{}{}", role, path, img.width,
+                               img.height, factor > 1 ? fmt::format(" upscaled {}x", factor) : "", width,
+                               height, crop ? "" : " (--crop takes the top-left region of a larger image)"));
 }
 
 // The distinct pairs of a frame size; frame i uses pair i % size. Generated inputs give every
@@ -215,7 +236,8 @@ std::vector<StereoPair> make_pairs(const Options& opt, int width, int height, ui
 std::string describe_input(const Options& opt) {
   if (!opt.left.empty())
     return fmt::format("'{}' and '{}'{}{}", opt.left, opt.right,
-                       opt.upscale > 1 ? fmt::format(", upscaled {}x", opt.upscale) : "", opt.crop ? ", cropped" : "");
+                       opt.upscale > 1 ? fmt::format(", upscaled {}x", opt.upscale) : "",
+                       opt.crop ? ", cropped" : "");
   const std::string kind =
       opt.shift >= 0 ? fmt::format("shifted pairs (disparity {})", opt.shift) : "random pairs";
   return fmt::format("{}, {} gray levels, seed {}", kind, opt.levels, opt.seed);
@@ -223,6 +245,7 @@ std::string describe_input(const Options& opt) {
 
 // ---- A run: what goes in, and what must come out.
 struct Run {
+  explicit Run(std::string run_title) : title(std::move(run_title)) {}
   std::string title;
   StreamPlan plan;
   // Per output frame, the golden model's planes of the design's outputs; none: not compared.
@@ -239,7 +262,9 @@ void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
   run.expected.push_back(run_golden(cfg, pair.left, pair.right, output_planes(cfg)));
 }
 
-void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_t value) {
+// The register `name` must read `value` once every output has arrived.
+void expect_register(Run& run, const std::string& name, uint32_t value) {
+  const uint32_t offset = reg(name);
   run.plan.reads_at_end.push_back(offset);
   run.registers.push_back({offset, value});
   run.register_names.push_back(name);
@@ -248,15 +273,12 @@ void expect_register(Run& run, const std::string& name, uint32_t offset, uint32_
 // The status counters a run must end with (a reset in the run clears them).
 void expect_counters(Run& run, uint32_t done, uint32_t dropped, uint32_t truncated, uint32_t errors,
                      uint32_t rejected) {
-#ifdef FPSTEREO_TB_CONTROL
-  expect_register(run, "FRAMES_DONE", FPS_REG(FRAMES_DONE), done);
-  expect_register(run, "FRAMES_DROPPED", FPS_REG(FRAMES_DROPPED), dropped);
-  expect_register(run, "FRAMES_TRUNCATED", FPS_REG(FRAMES_TRUNCATED), truncated);
-  expect_register(run, "PROTOCOL_ERRORS", FPS_REG(PROTOCOL_ERRORS), errors);
-  expect_register(run, "REJECTED_WRITES", FPS_REG(REJECTED_WRITES), rejected);
-#else
-  (void)run, (void)done, (void)dropped, (void)truncated, (void)errors, (void)rejected;
-#endif
+  if (!has_control()) return;
+  expect_register(run, "FRAMES_DONE", done);
+  expect_register(run, "FRAMES_DROPPED", dropped);
+  expect_register(run, "FRAMES_TRUNCATED", truncated);
+  expect_register(run, "PROTOCOL_ERRORS", errors);
+  expect_register(run, "REJECTED_WRITES", rejected);
 }
 
 // Frames of the throughput run: the steady state is measured over the last three.
@@ -268,25 +290,22 @@ Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs
   Run run{"throughput run, no idle, no backpressure"};
   for (int i = 0; i < kThroughputFrames; ++i) add_frame(run, pairs[i % pairs.size()], cfg);
   uint32_t refused = 0;
-#ifdef FPSTEREO_TB_CONTROL
-  const std::vector<RegisterAccess> bad = {{FPS_REG(WIDTH), uint32_t(cfg.width) + 1},
-                                           {FPS_REG(HEIGHT), 0},
-                                           {FPS_REG(P1), uint32_t(cfg.p2) + 1},
-                                           {FPS_REG(P2), uint32_t(cfg.p2) + 1},
-                                           {FPS_REG(STATUS), 1},
-                                           {FPS_REG(FRAMES_DONE), 0}};
-  run.plan.actions.push_back({0, bad});
-  refused = uint32_t(bad.size());
-  expect_register(run, "VERSION", FPS_REG(VERSION), FPS_REG(VERSION_VALUE));
-  expect_register(run, "CONFIG_ID", FPS_REG(CONFIG_ID), FPS_REG(CONFIG_ID_VALUE));
-  expect_register(run, "MAX_WIDTH", FPS_REG(MAX_WIDTH), FPS_REG(MAX_WIDTH_VALUE));
-  expect_register(run, "MAX_HEIGHT", FPS_REG(MAX_HEIGHT), FPS_REG(MAX_HEIGHT_VALUE));
-  expect_register(run, "DMAX", FPS_REG(DMAX), uint32_t(cfg.dmax));
-  expect_register(run, "UF", FPS_REG(UF), uint32_t(cfg.uf));
-  expect_register(run, "CYCLES_PER_FRAME", FPS_REG(CYCLES_PER_FRAME), FPS_REG(CYCLES_PER_FRAME_VALUE));
-  expect_register(run, "WIDTH", FPS_REG(WIDTH), uint32_t(cfg.width));
-  expect_register(run, "P2", FPS_REG(P2), uint32_t(cfg.p2));
-#endif
+  if (has_control()) {
+    const std::vector<RegisterAccess> bad = {
+        {reg("WIDTH"), uint32_t(cfg.width) + 1}, {reg("HEIGHT"), 0}, {reg("P1"), uint32_t(cfg.p2) + 1},
+        {reg("P2"), uint32_t(cfg.p2) + 1},       {reg("STATUS"), 1}, {reg("FRAMES_DONE"), 0}};
+    run.plan.actions.push_back({0, bad});
+    refused = uint32_t(bad.size());
+    expect_register(run, "VERSION", reg("VERSION_VALUE"));
+    expect_register(run, "CONFIG_ID", reg("CONFIG_ID_VALUE"));
+    expect_register(run, "MAX_WIDTH", reg("MAX_WIDTH_VALUE"));
+    expect_register(run, "MAX_HEIGHT", reg("MAX_HEIGHT_VALUE"));
+    expect_register(run, "DMAX", uint32_t(cfg.dmax));
+    expect_register(run, "UF", uint32_t(cfg.uf));
+    expect_register(run, "CYCLES_PER_FRAME", reg("CYCLES_PER_FRAME_VALUE"));
+    expect_register(run, "WIDTH", uint32_t(cfg.width));
+    expect_register(run, "P2", uint32_t(cfg.p2));
+  }
   expect_counters(run, kThroughputFrames, 0, 0, 0, refused);
   return run;
 }
@@ -314,9 +333,10 @@ Run checked_run(const Options& opt, const StereoConfig& cfg, const std::vector<S
 Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& cfg,
               const std::vector<StereoPair>& pairs) {
   const bool in_beats = fault != "reset" && fault != "disable";
-  Run run{fmt::format("fault run: {}{}, idle {}, backpressure {}", fault,
-                      in_beats ? " on " + opt.fault_stream + (opt.fault_stream == "both" ? " streams" : " stream") : "",
-                      opt.idle, opt.backpressure)};
+  Run run{fmt::format(
+      "fault run: {}{}, idle {}, backpressure {}", fault,
+      in_beats ? " on " + opt.fault_stream + (opt.fault_stream == "both" ? " streams" : " stream") : "",
+      opt.idle, opt.backpressure)};
   const int w = cfg.width, h = cfg.height;
   const size_t frame = size_t(w) * size_t(h);
   const auto& pa = pairs[0 % pairs.size()];
@@ -392,10 +412,8 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     errors = 1;
   } else if (fault == "disable") {
     // CONTROL.enable = 0 during A; F is skipped; enable = 1 before B is offered.
-#ifdef FPSTEREO_TB_CONTROL
-    run.plan.actions.push_back({1, {{FPS_REG(CONTROL), 0}}, false, a_beats + f_beats});
-    run.plan.actions.push_back({a_beats + f_beats, {{FPS_REG(CONTROL), 1}}, false, a_beats + f_beats, true});
-#endif
+    run.plan.actions.push_back({1, {{reg("CONTROL"), 0}}, false, a_beats + f_beats});
+    run.plan.actions.push_back({a_beats + f_beats, {{reg("CONTROL"), 1}}, false, a_beats + f_beats, true});
     done = 3;
     dropped = 1;
   }
@@ -415,7 +433,8 @@ struct Totals {
 
 // Streams the run, compares each output frame with its golden words, the register accesses with
 // what they must return, and prints the result per frame and the protocol errors.
-StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSettings& settings, Totals& totals) {
+StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSettings& settings,
+                    Totals& totals) {
   const auto start = std::chrono::steady_clock::now();
   const StreamRun run = stream(cfg, run_spec.plan, settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -424,8 +443,8 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
                                ? fmt::format("{} cycles from the first input to the last output handshake",
                                              run.frame_end_cycle.back() - run.first_input_cycle + 1)
                                : "incomplete";
-  fmt::print("{} ({} output frames): {} ({} cycles simulated in {:.2f} s, {:.0f} kcycles/s)\n", run_spec.title,
-             frames, span, run.cycles, seconds, run.cycles / seconds / 1e3);
+  fmt::print("{} ({} output frames): {} ({} cycles simulated in {:.2f} s, {:.0f} kcycles/s)\n",
+             run_spec.title, frames, span, run.cycles, seconds, run.cycles / seconds / 1e3);
   // Each plane of the outputs: as many frames as the words, each equal to its golden plane.
   const std::vector<Plane> planes = output_planes(cfg);
   const auto frames_of = [&](Plane plane) -> const std::vector<DisparityImage>& {
@@ -444,7 +463,8 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
     }
     for (size_t i = 0; i < got.size() && i < run_spec.expected.size(); ++i) {
       if (!run_spec.expected[i]) {
-        if (plane == Plane::Disparity) fmt::print("frame {}: truncated by the fault, framing checked only\n", i);
+        if (plane == Plane::Disparity)
+          fmt::print("frame {}: truncated by the fault, framing checked only\n", i);
         continue;
       }
       const Comparison c = compare_words(run_spec.expected[i]->at(plane), got[i]);
@@ -465,7 +485,8 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
     if (reads < run_spec.registers.size()) {
       const auto& [offset, value] = run_spec.registers[reads];
       if (access.offset != offset || access.value != value || access.response != 0) {
-        register_report += fmt::format(" {}={} (expected {})", run_spec.register_names[reads], access.value, value);
+        register_report +=
+            fmt::format(" {}={} (expected {})", run_spec.register_names[reads], access.value, value);
         ++totals.register_errors;
       } else {
         register_report += fmt::format(" {}={}", run_spec.register_names[reads], access.value);
@@ -511,7 +532,8 @@ size_t check_timing(const StreamRun& run, const StereoConfig& cfg, const StatedT
   const uint64_t first_output = run.frame_start_cycle[0] - run.first_input_cycle;
   const uint64_t latency = run.frame_end_cycle[0] - run.first_input_cycle;
   std::vector<uint64_t> intervals;
-  for (size_t i = 1; i < frames; ++i) intervals.push_back(run.frame_end_cycle[i] - run.frame_end_cycle[i - 1]);
+  for (size_t i = 1; i < frames; ++i)
+    intervals.push_back(run.frame_end_cycle[i] - run.frame_end_cycle[i - 1]);
   const uint64_t per_frame = (run.frame_end_cycle[frames - 1] - run.frame_end_cycle[0]) / (frames - 1);
   const uint64_t ideal = ideal_cycles_per_frame(cfg);
   fmt::print("first output: {} cycles (first input handshake to the first frame's first output pixel)\n",
@@ -522,53 +544,54 @@ size_t check_timing(const StreamRun& run, const StereoConfig& cfg, const StatedT
   fmt::print("ideal: {} cycles per frame (W*H*dmax/uf = {}*{}*{}/{}), ratio {:.4f}\n", ideal, cfg.width,
              cfg.height, cfg.dmax, cfg.uf, double(per_frame) / double(ideal));
   size_t errors = 0;
-  const bool uniform = std::all_of(intervals.begin(), intervals.end(), [&](uint64_t i) { return i == per_frame; });
+  const bool uniform =
+      std::all_of(intervals.begin(), intervals.end(), [&](uint64_t i) { return i == per_frame; });
   if (!stated.cycles_per_frame) {
     fmt::print(
         "FAIL: the design does not state its cycles per frame (no 'expected cycles per frame without "
         "stalls: N' in the banner of {})\n",
-        FPSTEREO_TB_TOP_FILE);
+        design_files().top);
     ++errors;
   } else if (!uniform) {
-    fmt::print("FAIL: the frames ended {} cycles apart, not at one steady interval\n", fmt::join(intervals, ", "));
+    fmt::print("FAIL: the frames ended {} cycles apart, not at one steady interval\n",
+               fmt::join(intervals, ", "));
     ++errors;
   } else if (per_frame != *stated.cycles_per_frame) {
-    fmt::print("FAIL: measured {} cycles per frame, the design states {}\n", per_frame, *stated.cycles_per_frame);
+    fmt::print("FAIL: measured {} cycles per frame, the design states {}\n", per_frame,
+               *stated.cycles_per_frame);
     ++errors;
   }
   if (!stated.first_output_latency) {
-    fmt::print("FAIL: the design does not state its first-output latency (no 'Latency from the first input "
-               "handshake ...' in the banner of {})\n",
-               FPSTEREO_TB_TOP_FILE);
+    fmt::print(
+        "FAIL: the design does not state its first-output latency (no 'Latency from the first input "
+        "handshake ...' in the banner of {})\n",
+        design_files().top);
     ++errors;
   } else if (first_output != *stated.first_output_latency) {
     fmt::print("FAIL: measured a first-output latency of {} cycles, the design states {}\n", first_output,
                *stated.first_output_latency);
     ++errors;
   }
-#ifdef FPSTEREO_TB_CONTROL
   // The register map states the figure too (CYCLES_PER_FRAME, read back in the run above).
-  if (stated.cycles_per_frame && *stated.cycles_per_frame != FPS_REG(CYCLES_PER_FRAME_VALUE)) {
+  if (has_control() && stated.cycles_per_frame && *stated.cycles_per_frame != reg("CYCLES_PER_FRAME_VALUE")) {
     fmt::print("FAIL: the banner states {} cycles per frame, the register map {}\n", *stated.cycles_per_frame,
-               FPS_REG(CYCLES_PER_FRAME_VALUE));
+               reg("CYCLES_PER_FRAME_VALUE"));
     ++errors;
   }
-#endif
   if (errors == 0)
-    fmt::print(
-        "timing: as the design states ({} cycles per frame, first-output latency {} cycles)\n", per_frame,
-        first_output);
+    fmt::print("timing: as the design states ({} cycles per frame, first-output latency {} cycles)\n",
+               per_frame, first_output);
   return errors;
 }
 
 int run_bench(const Options& opt) {
   const StereoConfig cfg = load_tb_config();
-  const StatedTiming stated = read_stated_timing(FPSTEREO_TB_TOP_FILE);
+  const StatedTiming stated = read_stated_timing(design_files().top);
   const Widths widths = derive_widths(cfg);
-  fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), FPSTEREO_TB_CONFIG_FILE);
+  fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), design_files().config);
   fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,
-             cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf, paths_to_string(cfg.paths),
-             widths.output_word, has_control() ? "AXI4-Lite" : "none");
+             cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf,
+             paths_to_string(cfg.paths), widths.output_word, has_control() ? "AXI4-Lite" : "none");
   // Each output stream's tdata as the list lays it out; Verilator holds 24 bits in 32.
   for (const auto& stream : output_streams(cfg)) {
     const int held = stream.tdata_bits <= 8 ? 8 : stream.tdata_bits <= 16 ? 16 : 32;
@@ -669,19 +692,21 @@ int main(int argc, char** argv) {
                  "cycles without an output handshake before giving up [20 * W*H*dmax/uf + 100000]")
       ->check(CLI::Range(uint64_t(1), uint64_t(1) << 48));
   app.add_flag("--zero-init", opt.zero_init, "start registers and memories at 0 instead of random values");
-  app.add_option("--set", opt.settings,
-                 "run-time setting NAME=VALUE written over AXI4-Lite during frame 0 of the checked run, in effect "
-                 "from frame 1 (p1, p2, uniqueness, lr-threshold, width, height; repeatable)")
+  app.add_option(
+         "--set", opt.settings,
+         "run-time setting NAME=VALUE written over AXI4-Lite during frame 0 of the checked run, in effect "
+         "from frame 1 (p1, p2, uniqueness, lr-threshold, width, height; repeatable)")
       ->delimiter(',');
   std::vector<std::string> fault_names = kFaults;
   fault_names.push_back("all");
-  auto* fault = app.add_option("--fault", opt.faults,
-                               "a run of four frames with a framing fault in the second, per fault given: " +
-                                   [&] {
-                                     std::string all;
-                                     for (const auto& f : fault_names) all += (all.empty() ? "" : ", ") + f;
-                                     return all;
-                                   }())
+  auto* fault = app.add_option(
+                       "--fault", opt.faults,
+                       "a run of four frames with a framing fault in the second, per fault given: " +
+                           [&] {
+                             std::string all;
+                             for (const auto& f : fault_names) all += (all.empty() ? "" : ", ") + f;
+                             return all;
+                           }())
                     ->delimiter(',')
                     ->check(CLI::IsMember(fault_names));
   app.add_option("--fault-stream", opt.fault_stream, "the stream(s) the fault is injected into")

@@ -32,13 +32,15 @@ struct RunOptions {
 std::string plane_file_help(Plane plane) {
   switch (plane) {
     case Plane::Disparity:
-      return "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name ends "
+      return "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name "
+             "ends "
              "in .pfm";
     case Plane::Confidence:
       return "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
              "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG";
     case Plane::Right:
-      return "the right view's disparities (the left-right check's match side): PFM if the name ends in .pfm, "
+      return "the right view's disparities (the left-right check's match side): PFM if the name ends in "
+             ".pfm, "
              "else a KITTI 16-bit PNG";
   }
   throw std::logic_error("plane_file_help: a plane without a writer");
