@@ -94,7 +94,7 @@ class StereoSGM {
     validate(cfg_);
   }
 
-  // The output words and whatever else the hardware streams (right view, confidence).
+  // Every plane the configuration outputs (gen/core/outputs.hpp), by name.
   py::dict compute_words(const py::handle& left, const py::handle& right) const {
     py::dict out;
     for (const auto& [plane, words] : run(left, right, output_planes(cfg_)))
@@ -191,7 +191,7 @@ PYBIND11_MODULE(fpstereo, m) {
       .def("compute", &StereoSGM::compute, py::arg("left"), py::arg("right"),
            "disparities in pixels (float32, NaN where invalid) of uint8 images, gray or BGR(A)")
       .def("compute_words", &StereoSGM::compute_words, py::arg("left"), py::arg("right"),
-           "the raw output words (uint16) under 'disparity', and 'right' / 'confidence' when configured")
+           "the raw planes the configuration outputs (uint16), by name: 'disparity' (the output words) and the others configured")
       .def("config", &StereoSGM::config, "every parameter's value, as text")
       .def("verilog", &StereoSGM::verilog, "the pipeline in Verilog, one file (fpstereo-rtl's output)")
       .def("evaluate", &StereoSGM::evaluate, py::arg("dataset_dir"),

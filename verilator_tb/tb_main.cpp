@@ -454,7 +454,7 @@ StreamRun check_run(const Run& run_spec, const StereoConfig& cfg, const StreamSe
   };
   for (const Plane plane : planes) {
     const std::vector<DisparityImage>& got = frames_of(plane);
-    // Messages name the planes besides the words: "confidence, frame 2: ...".
+    // Messages name the planes besides the words: "<plane>, frame 2: ...".
     const std::string name = plane == Plane::Disparity ? "" : std::string(plane_info(plane).name) + ", ";
     if (got.size() != frames_of(Plane::Disparity).size()) {
       fmt::print("{}: {} frames, expected {}\n", plane_info(plane).name, got.size(),

@@ -38,7 +38,7 @@ cv::Mat1f to_float_disparity(const DisparityImage& words, const StereoConfig& cf
 
 // The files below as bytes, so that a command can compute every output before writing any.
 std::vector<uchar> encode_pgm(const GrayImage& image);
-// 8-bit values 0 .. 255 (confidences) as a gray PNG.
+// 8-bit values 0 .. 255 as a gray PNG.
 std::vector<uchar> encode_gray_png(const DisparityImage& values);
 std::vector<uchar> encode_kitti_png(const cv::Mat1f& disp);
 std::vector<uchar> encode_pfm(const cv::Mat1f& disp);

@@ -229,20 +229,20 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
                                      {"m_valid", o.port + "_tvalid"},
                                      {"m_ready", o.port + "_tready"}});
   }
+  // The output streams as the list lays out their tdata (docs/hardware.md).
+  std::string layout;
+  for (const auto& o : output_streams(d)) {
+    std::string fields;
+    for (const auto& f : o.fields)
+      fields += (fields.empty() ? "" : ", ") + f.name + " [" +
+                (f.bits == 1 ? num(f.lsb) : num(f.lsb + f.bits - 1) + ":" + num(f.lsb)) + "]";
+    layout += "// " + o.port + ": " + o.what + "; tdata " + num(o.tdata_bits) + " bits: " + fields + ".\n";
+  }
   std::string head =
       "`resetall\n`default_nettype none\n"
       "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
-      "// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,\n"
-      "// with the invalid flag in bit " + num(w.output_disparity) +
-      (c.subpixel_bits ? fmt::format(" (disparity in units of 1/{} px)", 1 << c.subpixel_bits) : std::string()) +
-      (c.confidence ? fmt::format(", zero-extended to {} bits, with the pixel's confidence (0..255,\n// "
-                                  "docs/semantics.md section 4) in the top 8 bits",
-                                  d.output_bits - 8)
-                    : std::string()) +
-      (c.right_view ? ". m_axis_disp_right: the right view's whole disparities (the\n// left-right check's match "
-                      "side), in raster order of the right image"
-                    : "") +
-      ". Frames are at most " + num(c.width) + " x " + num(c.height) +
+      "// tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).\n" +
+      layout + "// Frames are at most " + num(c.width) + " x " + num(c.height) +
       " pixels; fpstereo_video_in checks the input's\n"
       "// framing and resynchronises on the next start of frame after an error.\n" +
       (d.options.control ? "// Settings and status: AXI4-Lite s_axi_ctrl (register map in " + d.prefix + "_regs.h).\n"
