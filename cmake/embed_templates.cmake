@@ -2,8 +2,8 @@
 # string, so the generators are self-contained binaries. Run at build time (cmake -P) with
 #   TEMPLATE_DIR, OUTPUT
 #   PATTERNS   comma-separated globs relative to TEMPLATE_DIR (default *.v)
-#   NAMESPACE  of the templates() function (default fpstereo::rtl), HEADER declaring it
-#              (default rtl_templates.hpp)
+#   NAMESPACE  of the function returning them (default fpstereo::rtl), FUNCTION its name
+#              (default templates), HEADER declaring it (default rtl_templates.hpp)
 #   KEY        NAME_WE: the file name without extension (default); PATH: the path relative to
 #              TEMPLATE_DIR
 if(NOT PATTERNS)
@@ -11,6 +11,9 @@ if(NOT PATTERNS)
 endif()
 if(NOT NAMESPACE)
   set(NAMESPACE fpstereo::rtl)
+endif()
+if(NOT FUNCTION)
+  set(FUNCTION templates)
 endif()
 if(NOT HEADER)
   set(HEADER rtl_templates.hpp)
@@ -27,7 +30,7 @@ file(GLOB templates ${globs})
 list(SORT templates)
 set(body "// Generated from ${TEMPLATE_DIR} by cmake/embed_templates.cmake. Do not edit.\n")
 string(APPEND body "#include \"${HEADER}\"\n\nnamespace ${NAMESPACE} {\n\n")
-string(APPEND body "const std::map<std::string, std::string>& templates() {\n")
+string(APPEND body "const std::map<std::string, std::string>& ${FUNCTION}() {\n")
 string(APPEND body "  static const std::map<std::string, std::string> files = {\n")
 foreach(path IN LISTS templates)
   if(KEY STREQUAL "PATH")

@@ -29,22 +29,11 @@ done
 
 command -v yosys >/dev/null || die "yosys not found (Debian: apt-get install yosys)"
 
-# Part totals from the vendor product tables: Zynq UltraScale+ DS891 (xczu*), Kria K26 SOM DS987
-# (xck26, the ZU5EV die), Zynq-7000 DS190 (xc7z020), 7 series DS180 (xc7a100t). LUTRAM = LUTs in
-# SLICEMs (the "LUT as Memory" total Vivado reports). The first part of a family is its default, and
-# the first row the default of all. fpstereo reads this table too (gen/tools/fpga_parts.cpp): it is
-# the one list of parts.
-part_table="
-# part    family LUT    FF     BRAM36 DSP LUTRAM  board
-xczu9eg   xcup  274080 548160  912  2520 144000   ZCU102
-xczu7ev   xcup  230400 460800  312  1728 101760   ZCU104 (plus 96 URAM, not used)
-xczu3eg   xcup   70560 141120  216   360  28800   Ultra96
-xck26     xcup  117120 234240  144  1248  57600   KV260 (plus 64 URAM, not used)
-xc7z020   xc7    53200 106400  140   220  17400   Zedboard, PYNQ-Z1/Z2
-xc7a100t  xc7    63400 126800  135   240  19000   Arty A7-100T, Nexys A7
-"
+# The parts and their totals: constraints/fpga_parts.txt, the one table (fpstereo embeds it too).
+part_table="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/constraints/fpga_parts.txt"
+[[ -f $part_table && -r $part_table ]] || die "cannot read the part table $part_table"
 # The rows, without the header and blank lines; the distinct values of column $1 in table order.
-part_rows() { awk 'NF && $1 !~ /^#/' <<<"$part_table"; }
+part_rows() { awk 'NF && $1 !~ /^#/' "$part_table"; }
 column_values() { part_rows | awk -v c="$1" '!seen[$c]++ { printf "%s%s", sep, $c; sep = " " }'; }
 
 families=$(column_values 2)

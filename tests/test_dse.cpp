@@ -51,15 +51,21 @@ fs::path tiny_dataset(const std::string& name) {
   return dir;
 }
 
+// The default space with `axes` set.
+dse::SpaceText space_with(const std::vector<dse::AxisText>& axes) {
+  dse::SpaceText t = dse::default_space();
+  for (const auto& axis : axes) dse::set_axis(t, axis);
+  return t;
+}
+
 dse::SweepOptions tiny_sweep(const fs::path& cache, const std::string& data) {
-  dse::SpaceText t;
-  t.cost = {"census", "sad"};
-  t.window = {"3", "5"};
-  t.dmax = {"16", "32"};
-  t.uf = {"4", "8", "32"};  // 32 does not divide 16: skipped
-  t.resolution = {"96x40"};
-  t.refine = {"none", "lr1"};
-  t.median = {"off", "3"};
+  const dse::SpaceText t = space_with({{"cost", {"census", "sad"}},
+                                       {"window", {"3", "5"}},
+                                       {"dmax", {"16", "32"}},
+                                       {"uf", {"4", "8", "32"}},  // 32 does not divide 16: skipped
+                                       {"resolution", {"96x40"}},
+                                       {"refine", {"none", "lr1"}},
+                                       {"median", {"off", "3"}}});
   dse::SweepOptions o;
   o.space = dse::parse_space(t);
   o.datasets = {tiny_dataset(data).string()};
@@ -173,21 +179,21 @@ TEST_CASE("the Pareto front of a synthetic set", "[dse]") {
 }
 
 TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
-  dse::SpaceText t;
-  t.window = {"4"};
-  CHECK_THROWS_AS(dse::parse_space(t), InputError);
-  t = {};
-  t.cost = {"ncc"};
-  CHECK_THROWS_AS(dse::parse_space(t), InputError);
-  t = {};
-  t.resolution = {"1242*374"};
-  CHECK_THROWS_AS(dse::parse_space(t), InputError);
-  t = {};
-  t.p2_adapt = {"17"};
-  CHECK_THROWS_AS(dse::parse_space(t), InputError);
-  t = {};
-  t.subpixel_bits = {"6"};
-  CHECK_THROWS_AS(dse::parse_space(t), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"window", {"4"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"cost", {"ncc"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"resolution", {"1242*374"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"p2-adapt", {"17"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"subpixel-bits", {"6"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"uniqueness", {"100"}}})), InputError);
+  CHECK_THROWS_AS(dse::parse_space(space_with({{"median", {}}})), InputError);
+  // Unknown names, and two axes on one parameter.
+  CHECK_THROWS_AS(dse::parse_space({{"speed", {"1"}}}), InputError);
+  CHECK_THROWS_AS(dse::parse_space({{"refine", {"none"}}, {"lr", {"lr1"}}}), InputError);
+  CHECK_THROWS_AS(dse::parse_space({{"resolution", {"640x480"}}, {"height", {"200"}}}), InputError);
+  dse::SpaceText t = dse::default_space();
+  CHECK_THROWS_AS(dse::set_axis(t, {"width", {"640"}}), InputError);  // only half of resolution
+  CHECK_THROWS_AS(dse::set_axis(t, {"speed", {"1"}}), InputError);
+  CHECK(t.size() == dse::default_space().size());
   CHECK(dse::parse_shard("2/8") == std::make_pair(2, 8));
   for (const char* bad : {"0/2", "3/2", "2", "a/b", "1/0", "1/2x"})
     CHECK_THROWS_AS(dse::parse_shard(bad), InputError);
@@ -197,17 +203,21 @@ TEST_CASE("axes, shards and constraints reject bad values", "[dse]") {
   CHECK(find_part("xczu9eg").lut == 274080);
 }
 
+// One value on every default axis but those the test sweeps.
+dse::SpaceText single_design_space() {
+  return space_with({{"cost", {"census"}},
+                     {"window", {"5"}},
+                     {"dmax", {"64"}},
+                     {"uf", {"16"}},
+                     {"resolution", {"320x96"}},
+                     {"refine", {"none"}},
+                     {"median", {"5"}}});
+}
+
 TEST_CASE("the adaptive P2 and sub-pixel axes reach every configuration", "[dse]") {
-  dse::SpaceText t;
-  t.cost = {"census"};
-  t.window = {"5"};
-  t.dmax = {"64"};
-  t.uf = {"16"};
-  t.resolution = {"320x96"};
-  t.refine = {"none"};
-  t.median = {"5"};
-  t.p2_adapt = {"off", "4"};
-  t.subpixel_bits = {"0", "3"};
+  dse::SpaceText t = single_design_space();
+  dse::set_axis(t, {"p2-adapt", {"off", "4"}});
+  dse::set_axis(t, {"subpixel-bits", {"0", "3"}});
   std::vector<dse::Skipped> skipped;
   const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
   CHECK(skipped.empty());
@@ -222,6 +232,109 @@ TEST_CASE("the adaptive P2 and sub-pixel axes reach every configuration", "[dse]
   const std::string flags = dse::config_flags(configs.back());
   CHECK(flags.find("--p2-adapt 4 ") != std::string::npos);
   CHECK(flags.find("--subpixel-bits 3") != std::string::npos);
+}
+
+TEST_CASE("any parameter of the table is an axis, set through the table like its flag", "[dse]") {
+  // Parameters the DSE names nowhere: uniqueness, confidence, p1 and paths (whose values hold commas).
+  dse::SpaceText t = single_design_space();
+  for (const char* text : {"uniqueness=0,15", "confidence=off/on", "p1=5,9", "paths=all/0,90"})
+    dse::set_axis(t, dse::parse_axis(text));
+  // Each goes in before resolution and uf, after the axes given before it.
+  std::vector<std::string> names;
+  for (const auto& axis : t) names.push_back(axis.name);
+  CHECK(names == std::vector<std::string>{"cost", "window", "dmax", "refine", "median", "p2-adapt", "subpixel-bits",
+                                          "uniqueness", "confidence", "p1", "paths", "resolution", "uf"});
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  CHECK(skipped.empty());
+  REQUIRE(configs.size() == 16);
+  // In the order of a counter whose last digit is paths: every combination once.
+  size_t i = 0;
+  for (int uniqueness : {0, 15})
+    for (bool confidence : {false, true})
+      for (int p1 : {5, 9})
+        for (unsigned paths : {unsigned(kAllPaths), unsigned(kPath0 | kPath90)}) {
+          StereoConfig expected;
+          set_param(expected, "cost", "census");
+          expected.window = 5;
+          expected.dmax = 64;
+          expected.uf = 16;
+          expected.width = 320;
+          expected.height = 96;
+          expected.uniqueness = uniqueness;
+          expected.confidence = confidence;
+          expected.p1 = p1;
+          expected.paths = paths;
+          CHECK(configs[i++] == expected);
+        }
+  CHECK(dse::config_flags(configs.back()).find("--paths 0,90 --p1 9") != std::string::npos);
+  CHECK(dse::space_flags(t).find("--subpixel-bits 0 --axis uniqueness=0,15 --axis confidence=off,on --axis p1=5,9 "
+                                 "--axis paths=all/0,90 --resolution 320x96 --uf 16") != std::string::npos);
+  // Every parameter of the table: a one-value axis at its default is the default design (width
+  // and height belong to resolution, lr is refine's parameter).
+  for (const auto& spec : param_specs()) {
+    dse::SpaceText one = single_design_space();
+    const dse::AxisText axis{spec.name, {spec.get(StereoConfig{})}};
+    if (spec.name == "width" || spec.name == "height") {
+      CHECK_THROWS_AS(dse::set_axis(one, axis), InputError);
+      continue;
+    }
+    dse::set_axis(one, axis);
+    std::vector<dse::Skipped> none;
+    CHECK(dse::enumerate(dse::parse_space(one), StereoConfig{}, none).size() == 1);
+  }
+}
+
+TEST_CASE("a value is refused only when no combination could use it", "[dse]") {
+  // p1 200 exceeds the default p2 (86) but not every p2: it is skipped per combination.
+  dse::SpaceText t = single_design_space();
+  dse::set_axis(t, dse::parse_axis("p1=7,200"));
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  REQUIRE(configs.size() == 1);
+  REQUIRE(skipped.size() == 1);
+  CHECK(skipped[0].reason.find("p1") != std::string::npos);
+  dse::set_axis(t, dse::parse_axis("p2=86,255"));
+  skipped.clear();
+  CHECK(dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped).size() == 3);
+  CHECK(skipped.size() == 1);
+  // The right view needs a left-right check: an axis of its own on, skipped without one.
+  dse::set_axis(t, dse::parse_axis("right-view=off,on"));
+  CHECK_NOTHROW(dse::parse_space(t));
+  CHECK_THROWS_AS(dse::parse_axis("p1"), InputError);
+  CHECK_THROWS_AS(dse::parse_axis("speed=1"), InputError);
+  CHECK(dse::parse_axis("p1=").values.empty());
+}
+
+TEST_CASE("the axes enumerate in the old nested loops' order: cost outermost, uf fastest", "[dse]") {
+  const dse::SpaceText t = space_with({{"cost", {"census", "sad"}},
+                                       {"window", {"3", "5"}},
+                                       {"dmax", {"32", "64"}},
+                                       {"refine", {"none", "lr1"}},
+                                       {"median", {"off", "3"}},
+                                       {"p2-adapt", {"0", "4"}},
+                                       {"subpixel-bits", {"0", "2"}},
+                                       {"resolution", {"96x40", "128x48"}},
+                                       {"uf", {"8", "16"}}});
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  CHECK(skipped.empty());
+  REQUIRE(configs.size() == 512);
+  size_t i = 0;
+  for (CostFunction cost : {CostFunction::Census, CostFunction::Sad})
+    for (int window : {3, 5})
+      for (int dmax : {32, 64})
+        for (LrCheck lr : {LrCheck::None, LrCheck::Lr1})
+          for (int median : {0, 3})
+            for (int adapt : {0, 4})
+              for (int subpixel : {0, 2})
+                for (const auto& [w, h] : {std::pair{96, 40}, std::pair{128, 48}})
+                  for (int uf : {8, 16}) {
+                    const StereoConfig& c = configs[i++];
+                    CHECK((c.cost == cost && c.window == window && c.dmax == dmax && c.lr == lr &&
+                           c.median == median && c.p2_adapt == adapt && c.subpixel_bits == subpixel &&
+                           c.width == w && c.height == h && c.uf == uf));
+                  }
 }
 
 TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, resume from the cache",
@@ -292,11 +405,13 @@ TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, 
 TEST_CASE("a corrupt cache record is an error, not a silent recomputation", "[dse]") {
   const fs::path cache = fresh_dir("fpstereo_test_dse_corrupt");
   dse::SweepOptions o = tiny_sweep(cache, "fpstereo_test_dse_corrupt_data");
-  o.space.cost = {CostFunction::Census};
-  o.space.window = {3};
-  o.space.dmax = {16};
-  o.space.refine = {LrCheck::None};
-  o.space.median = {0};
+  o.space = dse::parse_space(space_with({{"cost", {"census"}},
+                                         {"window", {"3"}},
+                                         {"dmax", {"16"}},
+                                         {"uf", {"4", "8", "32"}},
+                                         {"resolution", {"96x40"}},
+                                         {"refine", {"none"}},
+                                         {"median", {"off"}}}));
   dse::sweep(o);
   for (const auto& e : fs::directory_iterator(cache)) std::ofstream(e.path()) << "{ not json";
   CHECK_THROWS_AS(dse::sweep(o), InputError);

@@ -1,5 +1,5 @@
 // `fpstereo synth` without Yosys: parsing the script's key=value report, the table printed from it,
-// the cache key and the script's part table (tests/synth_smoke.cmake runs the command end to end).
+// the cache key and the part table (tests/synth_smoke.cmake runs the command end to end).
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
@@ -249,7 +249,7 @@ TEST_CASE("cache_key changes with everything that decides the result", "[synth]"
 }
 
 }  // namespace
-TEST_CASE("the parts, their defaults and the --part help come from the script's table", "[synth]") {
+TEST_CASE("the parts, their defaults and the --part help come from the embedded part table", "[synth]") {
   const std::vector<Part>& table = parts();
   REQUIRE(table.size() == 6);
   CHECK(table.front().name == "xczu9eg");
@@ -266,7 +266,8 @@ TEST_CASE("the parts, their defaults and the --part help come from the script's 
   CHECK(app.get_subcommand("synth")->help().find(part_list()) != std::string::npos);
 }
 
-// The script's own errors, which come before it looks for Yosys, name the same table.
+// The script reads the same table (constraints/fpga_parts.txt): its own errors, which come before
+// it looks for Yosys, name the same parts in the same order.
 TEST_CASE("synth-yosys.sh names the parts and families of the table", "[synth]") {
   const auto script_error = [](const std::string& args) {
     const std::string command = "bash '" + synth_script_path().string() + "' " + args + " x.v 2>&1";

@@ -194,3 +194,12 @@ TEST_CASE("one_line escapes control characters only; quoted also quotes and back
   std::string non_const = "x\ny";  // must not pick std::quoted by argument-dependent lookup
   CHECK(quoted(non_const) == "'x\\ny'");
 }
+
+TEST_CASE("fill_template replaces each placeholder once and refuses one without a value", "[tools]") {
+  const std::map<std::string, std::string> values = {{"TOP", "t"}, {"CONFIG", "@TOP@"}, {"CONFIG_HEADER", "c.hpp"}};
+  // A value is not searched again; an '@' outside a placeholder stays.
+  CHECK(fill_template("@TOP@_tb @CONFIG@ @CONFIG_HEADER@", values) == "t_tb @TOP@ c.hpp");
+  CHECK(fill_template("always @(posedge clk) a@b @ @@ @top@", values) == "always @(posedge clk) a@b @ @@ @top@");
+  CHECK(fill_template("", values).empty());
+  CHECK_THROWS_AS(fill_template("set x @MISSING@\n", values), std::logic_error);
+}

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 #include <cstdio>
 
@@ -68,6 +69,28 @@ std::optional<double> parse_decimal(const std::string& text) {
   const double v = std::strtod(text.c_str(), nullptr);
   if (!std::isfinite(v) || (v != 0 && !std::isnormal(v))) return std::nullopt;
   return v;
+}
+
+std::string fill_template(const std::string& text, const std::map<std::string, std::string>& values) {
+  const auto is_name_char = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; };
+  std::string out;
+  size_t at = 0;
+  for (size_t open; (open = text.find('@', at)) != std::string::npos;) {
+    size_t end = open + 1;
+    while (end < text.size() && is_name_char(text[end])) ++end;
+    if (end == open + 1 || end == text.size() || text[end] != '@') {  // not a placeholder
+      out.append(text, at, open + 1 - at);
+      at = open + 1;
+      continue;
+    }
+    const std::string name = text.substr(open + 1, end - open - 1);
+    const auto value = values.find(name);
+    if (value == values.end()) throw std::logic_error("template placeholder @" + name + "@ has no value");
+    out.append(text, at, open - at);
+    out += value->second;
+    at = end + 1;
+  }
+  return out.append(text, at, std::string::npos);
 }
 
 }  // namespace fpstereo

@@ -2,6 +2,7 @@
 // small text tests the tools share.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,5 +28,11 @@ inline bool ends_with(const std::string& text, const std::string& suffix) {
 // A decimal number as people write it, [+-]digits[.digits][(e|E)[+-]digits], finite and not
 // subnormal; nullopt for anything else (hex, inf, nan, surrounding spaces, 1e-310, 1e999).
 std::optional<double> parse_decimal(const std::string& text);
+
+// An embedded template (hls/templates, constraints/templates) filled in: each @NAME@ (capitals,
+// digits, underscores) replaced by values.at(NAME) in one pass, so a value's own text is never
+// searched again. Throws std::logic_error naming a @NAME@ without a value: a template and its
+// emitter disagree. Any other '@' is copied as it is.
+std::string fill_template(const std::string& text, const std::map<std::string, std::string>& values);
 
 }  // namespace fpstereo

@@ -34,56 +34,44 @@ namespace {
 
 // ---- axes ------------------------------------------------------------------------------------------
 
-// Validates a value on its own: the other parameters are set to what suits any legal value
-// (uf 1 divides every dmax; dmax a multiple of uf; the smallest dmax fits any image), so only a value
-// that no combination could use is an error; the rest are skipped per combination.
-void check_alone(StereoConfig probe, const std::string& param) {
-  if (param == "uf") {
-    probe.dmax = probe.uf * ((16 + probe.uf - 1) / probe.uf);
-  } else if (param == "width" || param == "height") {
-    probe.dmax = 16;
-    probe.uf = 1;
-  } else {
-    probe.uf = 1;
-  }
-  validate(probe);
+// The axes that set other parameters than their name.
+const std::map<std::string, std::vector<std::string>>& alias_axes() {
+  static const std::map<std::string, std::vector<std::string>> aliases = {{"refine", {"lr"}},
+                                                                         {"resolution", {"width", "height"}}};
+  return aliases;
 }
 
-// One axis value through the configuration's own parser and validation, so the DSE accepts
-// exactly what the other commands accept.
-template <class T>
-T axis_value(const std::string& flag, const std::string& param, const std::string& value,
-             T (*get)(const StereoConfig&)) {
-  StereoConfig probe;
-  try {
-    set_param(probe, param, value);
-    check_alone(probe, param);
-  } catch (const ConfigError& e) {
-    throw InputError(fmt::format("--{} {}: {}", flag, quoted(value), e.what()));
-  }
-  return get(probe);
+// How errors name an axis: by its own flag, or as --axis NAME.
+std::string axis_flag(const std::string& name) {
+  for (const AxisText& axis : default_space())
+    if (axis.name == name) return "--" + name;
+  return "--axis " + name;
 }
 
-std::pair<int, int> parse_resolution(const std::string& value) {
+std::vector<Setting> settings(const std::string& axis, const std::string& value) {
+  if (axis != "resolution") return {{axis_parameters(axis).front(), value}};
   const auto x = value.find('x');
-  const auto bad = [&] {
-    return InputError(fmt::format("--resolution {}: expected WIDTHxHEIGHT, e.g. 1242x374", quoted(value)));
-  };
-  if (x == std::string::npos) throw bad();
-  StereoConfig probe;
-  try {
-    set_param(probe, "width", value.substr(0, x));
-    set_param(probe, "height", value.substr(x + 1));
-    check_alone(probe, "width");
-  } catch (const ConfigError& e) {
-    throw InputError(fmt::format("--resolution {}: {}", quoted(value), e.what()));
-  }
-  return {probe.width, probe.height};
+  if (x == std::string::npos)
+    throw InputError(fmt::format("--resolution {}: expected WIDTHxHEIGHT, e.g. 1242x374", quoted(value)));
+  return {{"width", value.substr(0, x)}, {"height", value.substr(x + 1)}};
 }
 
-template <class T>
-void require_values(const std::string& flag, const std::vector<T>& values) {
-  if (values.empty()) throw InputError(fmt::format("--{}: no values", flag));
+// Validates a value on its own: the other parameters are set to what suits any legal value (uf 1
+// divides every dmax, the smallest dmax fits any width, P2 at its largest is above any P1 and P1 at
+// 0 below any P2, the left-right check the right view needs is on), and for a uf the smallest
+// dmax it divides. So only a value that no combination could use is an error; the rest are skipped
+// per combination.
+void check_alone(const std::string& axis, const std::vector<Setting>& value) {
+  StereoConfig probe;
+  probe.uf = 1;
+  probe.dmax = 16;
+  probe.width = 8192;
+  probe.p1 = 0;
+  probe.p2 = 4095;
+  probe.lr = LrCheck::Lr1;
+  for (const Setting& s : value) set_param(probe, s.parameter, s.value);
+  if (axis == "uf") probe.dmax = probe.uf * ((16 + probe.uf - 1) / probe.uf);
+  validate(probe);
 }
 
 // ---- the cache -------------------------------------------------------------------------------------
@@ -169,75 +157,120 @@ double pct(double used, int64_t available) { return available > 0 ? 100.0 * used
 
 }  // namespace
 
-Space parse_space(const SpaceText& t) {
-  Space s;
-  for (const auto& v : t.cost)
-    s.cost.push_back(
-        axis_value<CostFunction>("cost", "cost", v, [](const StereoConfig& c) { return c.cost; }));
-  for (const auto& v : t.window)
-    s.window.push_back(
-        axis_value<int>("window", "window", v, [](const StereoConfig& c) { return c.window; }));
-  for (const auto& v : t.dmax)
-    s.dmax.push_back(axis_value<int>("dmax", "dmax", v, [](const StereoConfig& c) { return c.dmax; }));
-  for (const auto& v : t.uf)
-    s.uf.push_back(axis_value<int>("uf", "uf", v, [](const StereoConfig& c) { return c.uf; }));
-  for (const auto& v : t.resolution) s.resolution.push_back(parse_resolution(v));
-  for (const auto& v : t.refine)
-    s.refine.push_back(axis_value<LrCheck>("refine", "lr", v, [](const StereoConfig& c) { return c.lr; }));
-  for (const auto& v : t.median)
-    s.median.push_back(v == "off" ? 0 : axis_value<int>("median", "median", v, [](const StereoConfig& c) {
-      return c.median;
-    }));
-  for (const auto& v : t.p2_adapt)
-    s.p2_adapt.push_back(v == "off" ? 0 : axis_value<int>("p2-adapt", "p2-adapt", v, [](const StereoConfig& c) {
-      return c.p2_adapt;
-    }));
-  for (const auto& v : t.subpixel_bits)
-    s.subpixel_bits.push_back(axis_value<int>("subpixel-bits", "subpixel-bits", v, [](const StereoConfig& c) {
-      return c.subpixel_bits;
-    }));
-  require_values("cost", s.cost);
-  require_values("window", s.window);
-  require_values("dmax", s.dmax);
-  require_values("uf", s.uf);
-  require_values("resolution", s.resolution);
-  require_values("refine", s.refine);
-  require_values("median", s.median);
-  require_values("p2-adapt", s.p2_adapt);
-  require_values("subpixel-bits", s.subpixel_bits);
-  return s;
+const SpaceText& default_space() {
+  static const SpaceText space = {
+      {"cost", {"census", "rank", "sad", "zsad"}},
+      {"window", {"5", "7"}},
+      {"dmax", {"64", "128"}},
+      {"refine", {"none", "lr1", "lr2"}},
+      {"median", {"off", "5"}},
+      {"p2-adapt", {"0"}},
+      {"subpixel-bits", {"0"}},
+      {"resolution", {"1242x374", "900x260"}},
+      {"uf", {"4", "8", "16", "32"}},
+  };
+  return space;
 }
 
-std::vector<StereoConfig> enumerate(const Space& s, const StereoConfig& base, std::vector<Skipped>& skipped) {
+std::vector<std::string> axis_parameters(const std::string& name) {
+  if (const auto alias = alias_axes().find(name); alias != alias_axes().end()) return alias->second;
+  for (const auto& spec : param_specs())
+    if (spec.name == name) return {name};
+  throw InputError(fmt::format("unknown axis {}: expected a configuration parameter (--help lists them), "
+                               "resolution or refine",
+                               quoted(name)));
+}
+
+AxisText parse_axis(const std::string& text) {
+  const auto equals = text.find('=');
+  if (equals == std::string::npos)
+    throw InputError(fmt::format("--axis {}: expected NAME=VALUE,VALUE,..., e.g. p1=5,7,10", quoted(text)));
+  AxisText axis{text.substr(0, equals), {}};
+  axis_parameters(axis.name);  // an unknown name fails here, before any value
+  const std::string list = text.substr(equals + 1);
+  const char separator = list.find('/') != std::string::npos ? '/' : ',';
+  for (size_t at = 0; at <= list.size() && !list.empty();) {
+    const size_t end = std::min(list.find(separator, at), list.size());
+    axis.values.push_back(list.substr(at, end - at));
+    at = end + 1;
+  }
+  return axis;
+}
+
+void set_axis(SpaceText& space, const AxisText& axis) {
+  const std::vector<std::string> params = axis_parameters(axis.name);
+  for (AxisText& other : space) {
+    const std::vector<std::string> other_params = axis_parameters(other.name);
+    if (other_params == params) {
+      other.values = axis.values;
+      return;
+    }
+    for (const auto& p : params)
+      if (std::find(other_params.begin(), other_params.end(), p) != other_params.end())
+        throw InputError(fmt::format("{}: {} is set by {} already", axis_flag(axis.name), p, axis_flag(other.name)));
+  }
+  const auto fastest = std::find_if(space.begin(), space.end(), [](const AxisText& a) {
+    return a.name == "resolution" || a.name == "uf";
+  });
+  space.insert(fastest, axis);
+}
+
+std::string space_flags(const SpaceText& space) {
+  std::string flags;
+  for (const AxisText& axis : space) {
+    const bool commas = std::any_of(axis.values.begin(), axis.values.end(),
+                                    [](const std::string& v) { return v.find(',') != std::string::npos; });
+    std::string list;
+    for (const auto& v : axis.values) list += (list.empty() ? "" : commas ? "/" : ",") + v;
+    const std::string flag = axis_flag(axis.name);
+    flags += fmt::format("{}{}{}{}", flags.empty() ? "" : " ", flag, flag == "--" + axis.name ? " " : "=", list);
+  }
+  return flags;
+}
+
+Space parse_space(const SpaceText& text) {
+  Space space;
+  std::map<std::string, std::string> set_by;  // parameter -> the axis that sets it
+  for (const AxisText& axis : text) {
+    for (const auto& p : axis_parameters(axis.name))
+      if (!set_by.emplace(p, axis.name).second)
+        throw InputError(fmt::format("{}: {} is set by {} already", axis_flag(axis.name), p, axis_flag(set_by[p])));
+    if (axis.values.empty()) throw InputError(fmt::format("{}: no values", axis_flag(axis.name)));
+    Axis parsed{axis.name, {}};
+    for (const auto& value : axis.values) {
+      try {
+        parsed.values.push_back(settings(axis.name, value));
+        check_alone(axis.name, parsed.values.back());
+      } catch (const ConfigError& e) {
+        throw InputError(fmt::format("{} {}: {}", axis_flag(axis.name), quoted(value), e.what()));
+      }
+    }
+    space.push_back(std::move(parsed));
+  }
+  return space;
+}
+
+std::vector<StereoConfig> enumerate(const Space& space, const StereoConfig& base, std::vector<Skipped>& skipped) {
   std::vector<StereoConfig> out;
-  for (CostFunction cost : s.cost)
-    for (int window : s.window)
-      for (int dmax : s.dmax)
-        for (LrCheck lr : s.refine)
-          for (int median : s.median)
-            for (int adapt : s.p2_adapt)
-              for (int subpixel : s.subpixel_bits)
-                for (const auto& [w, h] : s.resolution)
-                  for (int uf : s.uf) {
-                    StereoConfig c = base;
-                    c.cost = cost;
-                    c.window = window;
-                    c.dmax = dmax;
-                    c.lr = lr;
-                    c.median = median;
-                    c.p2_adapt = adapt;
-                    c.subpixel_bits = subpixel;
-                    c.width = w;
-                    c.height = h;
-                    c.uf = uf;
-                    try {
-                      validate(c);
-                      out.push_back(c);
-                    } catch (const ConfigError& e) {
-                      skipped.push_back({c, e.what()});
-                    }
-                  }
-  return out;
+  if (std::any_of(space.begin(), space.end(), [](const Axis& a) { return a.values.empty(); })) return out;
+  std::vector<size_t> at(space.size(), 0);  // each axis's current value, as the digits of a counter
+  for (;;) {
+    StereoConfig c = base;
+    for (size_t i = 0; i < space.size(); ++i)
+      for (const Setting& s : space[i].values[at[i]]) set_param(c, s.parameter, s.value);
+    try {
+      validate(c);
+      out.push_back(c);
+    } catch (const ConfigError& e) {
+      skipped.push_back({c, e.what()});
+    }
+    size_t axis = space.size();
+    for (; axis > 0; --axis) {
+      if (++at[axis - 1] < space[axis - 1].values.size()) break;
+      at[axis - 1] = 0;
+    }
+    if (axis == 0) return out;
+  }
 }
 
 std::string accuracy_key(const StereoConfig& cfg) {
@@ -500,10 +533,12 @@ std::string config_flags(const StereoConfig& cfg) {
   std::string out;
   for (const auto& spec : param_specs()) {
     const std::string v = spec.get(cfg);
-    // width, height and the swept axes always appear, so the command reads on its own.
-    static const std::vector<std::string> always = {"width", "height", "cost",   "window",   "dmax",
-                                                    "uf",    "lr",     "median", "p2-adapt", "subpixel-bits"};
-    const bool shown = std::find(always.begin(), always.end(), spec.name) != always.end();
+    // The parameters of the default axes (width and height among them) always appear, so the
+    // command reads on its own.
+    const bool shown = std::any_of(default_space().begin(), default_space().end(), [&](const AxisText& axis) {
+      const std::vector<std::string> params = axis_parameters(axis.name);
+      return std::find(params.begin(), params.end(), spec.name) != params.end();
+    });
     if (shown || v != spec.get(defaults))
       out += fmt::format("{}--{} {}", out.empty() ? "" : " ", spec.name, v);
   }

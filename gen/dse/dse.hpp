@@ -18,28 +18,50 @@
 
 namespace fpstereo::dse {
 
-// The axes as the user wrote them (comma-separated values of --cost, --window, ...).
-struct SpaceText {
-  std::vector<std::string> cost{"census", "rank", "sad", "zsad"};
-  std::vector<std::string> window{"5", "7"};
-  std::vector<std::string> dmax{"64", "128"};
-  std::vector<std::string> uf{"4", "8", "16", "32"};
-  std::vector<std::string> resolution{"1242x374", "900x260"};
-  std::vector<std::string> refine{"none", "lr1", "lr2"};
-  std::vector<std::string> median{"off", "5"};
-  std::vector<std::string> p2_adapt{"0"};
-  std::vector<std::string> subpixel_bits{"0"};
-};
+// ---- The design space -----------------------------------------------------------------------
+// An axis is a parameter of the configuration's table (param_specs()) and its values as text, each
+// applied with set_param, as a command-line flag applies it: any parameter is an axis. Two names
+// set others: refine (lr) and resolution (WIDTHxHEIGHT: width and height).
 
-struct Space {
-  std::vector<CostFunction> cost;
-  std::vector<int> window, dmax, uf;
-  std::vector<std::pair<int, int>> resolution;
-  std::vector<LrCheck> refine;
-  std::vector<int> median, p2_adapt, subpixel_bits;
+// An axis as the user wrote it.
+struct AxisText {
+  std::string name;
+  std::vector<std::string> values;
 };
+// The axes, outermost first: the last varies fastest.
+using SpaceText = std::vector<AxisText>;
 
-// Throws InputError naming the axis and value (e.g. "--window '4': ...").
+// The paper's space (768 designs): cost, window, dmax, refine, median, p2-adapt, subpixel-bits,
+// resolution, uf. Each of these axes has a flag of its own (--cost, ...).
+const SpaceText& default_space();
+// The parameters the axis `name` sets: {name} for a parameter of the table, {"lr"} for refine,
+// {"width", "height"} for resolution. Throws InputError for any other name.
+std::vector<std::string> axis_parameters(const std::string& name);
+// "NAME=V1,V2,..." (values separated by '/' instead when one holds commas: paths=all/0,90) as an
+// axis. Throws InputError for text without '=' or an unknown name.
+AxisText parse_axis(const std::string& text);
+// Gives the axis that sets the same parameters as `axis` its values, or adds it before resolution
+// and uf (which then still vary fastest). Throws InputError for an unknown name or an axis that
+// sets only some of another's parameters (width against resolution).
+void set_axis(SpaceText& space, const AxisText& axis);
+// The space as flags: --NAME V1,V2 for the axes with a flag of their own, --axis NAME=V1,V2 for the
+// others, in the space's order.
+std::string space_flags(const SpaceText& space);
+
+// A parameter and its value as text, applied with set_param.
+struct Setting {
+  std::string parameter, value;
+};
+// An axis parsed: for each value, the settings it makes.
+struct Axis {
+  std::string name;
+  std::vector<std::vector<Setting>> values;
+};
+using Space = std::vector<Axis>;
+
+// Checks every value on its own, with the other parameters where any legal value fits (only a
+// value no combination could use is an error). Throws InputError naming the axis and value
+// (e.g. "--window '4': ..."), an axis without values, or a parameter two axes set.
 Space parse_space(const SpaceText& text);
 
 struct Skipped {
@@ -47,8 +69,8 @@ struct Skipped {
   std::string reason;
 };
 
-// Every combination of the axes on top of `base`, in a fixed order; invalid ones (by validate())
-// go to `skipped` with the reason.
+// Every combination of the axes on top of `base`, the last axis varying fastest; invalid ones (by
+// validate()) go to `skipped` with the reason.
 std::vector<StereoConfig> enumerate(const Space& space, const StereoConfig& base,
                                     std::vector<Skipped>& skipped);
 

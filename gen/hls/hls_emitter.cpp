@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -22,12 +23,6 @@ const std::string& library_file(const std::string& path) {
   const auto it = files.find(path);
   if (it == files.end()) throw std::logic_error("hls/" + path + " was not embedded");
   return it->second;
-}
-
-std::string replace_all(std::string text, const std::string& from, const std::string& to) {
-  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
 }
 
 std::string cost_enum(CostFunction c) {
@@ -207,15 +202,16 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   std::ostringstream period;
   period.precision(6);
   period << 1000.0 / options.clock_mhz;
-  auto fill = [&](const std::string& text) {
-    std::string out = replace_all(text, "@TOP@", top);
-    out = replace_all(out, "@CONFIG_HEADER@", header);
-    out = replace_all(out, "@CONFIG@", config);
-    out = replace_all(out, "@PART@", options.part);
-    out = replace_all(out, "@CLOCK_PERIOD@", period.str());
-    out = replace_all(out, "@PIPELINE@", pipeline_body(design));
-    return replace_all(out, "@FRAME_PIXELS@", std::to_string(int64_t(cfg.width) * cfg.height));
+  const std::map<std::string, std::string> values = {
+      {"TOP", top},
+      {"CONFIG_HEADER", header},
+      {"CONFIG", config},
+      {"PART", options.part},
+      {"CLOCK_PERIOD", period.str()},
+      {"PIPELINE", pipeline_body(design)},
+      {"FRAME_PIXELS", std::to_string(int64_t(cfg.width) * cfg.height)},
   };
+  const auto fill = [&](const std::string& text) { return fill_template(text, values); };
   const std::string cpp = banner(design, "// "), tcl = banner(design, "# ");
   return {
       {header, cpp + config_header(design, config)},

@@ -26,11 +26,14 @@ constexpr const char* kTool = "fpstereo";
 // More golden-model threads than this only contend for the cores (and may not start at all).
 constexpr int kMaxJobs = 256;
 
-// The parameters the axes set; every other one is a fixed flag of the base configuration.
-bool is_axis_param(const std::string& name) {
-  static const std::vector<std::string> axes = {"cost", "window", "dmax",   "uf",       "width",
-                                                "height", "lr",   "median", "p2-adapt", "subpixel-bits"};
-  return std::find(axes.begin(), axes.end(), name) != axes.end();
+// The parameters the default axes set (their flags replace the parameters' own); every other one
+// is a fixed flag of the base configuration, or an axis with --axis.
+bool is_default_axis_param(const std::string& name) {
+  for (const auto& axis : dse::default_space()) {
+    const std::vector<std::string> params = dse::axis_parameters(axis.name);
+    if (std::find(params.begin(), params.end(), name) != params.end()) return true;
+  }
+  return false;
 }
 
 struct OutputOptions {
@@ -42,7 +45,8 @@ struct OutputOptions {
 };
 
 struct DseOptions {
-  dse::SpaceText space;
+  std::vector<dse::AxisText> axes;  // as given: the default axes' flags, then each --axis
+  std::vector<std::string> extra_axes;
   std::vector<std::string> datasets;
   std::optional<std::string> preset;
   std::string config_file, cache, shard;
@@ -84,21 +88,30 @@ std::string join(const std::vector<std::string>& v, const char* sep) {
   return s;
 }
 
+// The default space with the axes given on the command line; an axis given twice, or both an axis
+// and a fixed parameter, is an error.
+dse::SpaceText space(const DseOptions& o) {
+  std::vector<dse::AxisText> given = o.axes;
+  for (const auto& text : o.extra_axes) given.push_back(dse::parse_axis(text));
+  std::map<std::string, std::string> given_by;  // parameter -> the axis given for it
+  dse::SpaceText space = dse::default_space();
+  for (const auto& axis : given) {
+    for (const auto& p : dse::axis_parameters(axis.name)) {
+      if (const auto [first, added] = given_by.emplace(p, axis.name); !added)
+        throw InputError(first->second == axis.name
+                             ? fmt::format("axis {} is given twice", axis.name)
+                             : fmt::format("axes {} and {} both set {}", first->second, axis.name, p));
+      if (o.fixed.count(p))
+        throw InputError(fmt::format("--{} and the axis {} both set {}: give one of them", p, axis.name, p));
+    }
+    dse::set_axis(space, axis);
+  }
+  return space;
+}
+
 // The sweep as a command (for the report): datasets, axes and fixed parameters.
 std::string sweep_command(const DseOptions& o) {
-  std::string s = "fpstereo dse " + join(o.datasets, " ");
-  const dse::SpaceText& t = o.space;
-  for (const auto& [flag, values] :
-       std::vector<std::pair<const char*, const std::vector<std::string>*>>{{"cost", &t.cost},
-                                                                            {"window", &t.window},
-                                                                            {"dmax", &t.dmax},
-                                                                            {"uf", &t.uf},
-                                                                            {"resolution", &t.resolution},
-                                                                            {"refine", &t.refine},
-                                                                            {"median", &t.median},
-                                                                            {"p2-adapt", &t.p2_adapt},
-                                                                            {"subpixel-bits", &t.subpixel_bits}})
-    s += fmt::format(" --{} {}", flag, join(*values, ","));
+  std::string s = "fpstereo dse " + join(o.datasets, " ") + " " + dse::space_flags(space(o));
   if (o.preset) s += " --preset " + *o.preset;
   if (!o.config_file.empty()) s += " --config " + o.config_file;
   for (const auto& [name, value] : o.fixed) s += fmt::format(" --{} {}", name, value);
@@ -178,7 +191,7 @@ void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::Rep
 
 void run_sweep(const DseOptions& o, const std::string& command) {
   dse::SweepOptions s;
-  s.space = dse::parse_space(o.space);
+  s.space = dse::parse_space(space(o));
   s.base = compose_config(o.preset, o.config_file, o.fixed);
   s.datasets = o.datasets;
   s.cache_dir = o.cache;
@@ -304,27 +317,33 @@ void register_dse_command(CLI::App& app, int& exit_code) {
                   "folder with pairs.csv, or a folder of such folders (every subset is used)")
       ->type_name("DIR");
   const std::string axes = "Axes (comma-separated values)";
-  const auto axis = [&](const std::string& flag, std::vector<std::string>& values, const std::string& help) {
-    std::string d;
-    for (const auto& v : values) d += (d.empty() ? "" : ",") + v;
-    sub->add_option(flag, values, help + " [" + d + "]")->delimiter(',')->group(axes);
+  // The default axes' own flags; their help is the parameter's (refine's is lr's).
+  const auto parameter_help = [](const std::string& name) {
+    for (const auto& spec : param_specs())
+      if (spec.name == name) return spec.help;
+    return std::string();
   };
-  axis("--cost", o->space.cost, "cost functions: census, rank, sad, zsad, shd");
-  axis("--window", o->space.window, "cost windows");
-  axis("--dmax", o->space.dmax, "disparity ranges");
-  axis("--uf", o->space.uf, "unroll factors (disparities per clock)");
-  axis("--resolution", o->space.resolution, "largest image sizes, WIDTHxHEIGHT");
-  axis("--refine", o->space.refine, "left-right check: none, lr1, lr2");
-  axis("--median", o->space.median, "median filter: off or a side (3, 5, 7)");
-  axis("--p2-adapt", o->space.p2_adapt, "adaptive P2's gain: off (0) or 1 .. 16");
-  axis("--subpixel-bits", o->space.subpixel_bits, "fraction bits of the output disparity: 0 .. 5");
+  for (const auto& axis : dse::default_space()) {
+    const std::string help = axis.name == "resolution" ? "largest image sizes, WIDTHxHEIGHT"
+                                                       : parameter_help(dse::axis_parameters(axis.name).front());
+    sub->add_option_function<std::vector<std::string>>(
+           "--" + axis.name, [o, name = axis.name](const std::vector<std::string>& v) { o->axes.push_back({name, v}); },
+           help + " [" + join(axis.values, ",") + "]")
+        ->delimiter(',')
+        ->group(axes);
+  }
+  sub->add_option("--axis", o->extra_axes,
+                  "any other parameter as an axis, NAME=V1,V2,... (values separated by / when they hold commas: "
+                  "paths=all/0,90); repeatable. Each axis varies slower than resolution and uf")
+      ->type_name("NAME=VALUES")
+      ->group(axes);
   const std::string base = "Fixed parameters (every configuration)";
   sub->add_option_function<std::string>(
          "--preset", [o](const std::string& v) { o->preset = v; }, "start from a named configuration")
       ->group(base);
   sub->add_option("--config", o->config_file, "JSON or TOML file with parameter names as keys")->group(base);
   for (const auto& spec : param_specs()) {
-    if (is_axis_param(spec.name)) continue;
+    if (is_default_axis_param(spec.name)) continue;
     sub->add_option_function<std::string>(
            "--" + spec.name, [o, name = spec.name](const std::string& v) { o->fixed[name] = v; },
            spec.help + " [C2: " + spec.get(StereoConfig{}) + "]")

@@ -30,6 +30,10 @@
 #include "text.hpp"
 #include "yosys_progress.hpp"
 
+#ifndef FPSTEREO_SOURCE_DIR
+#error "FPSTEREO_SOURCE_DIR must name the source tree, where scripts/synth-yosys.sh lives (CMakeLists.txt)"
+#endif
+
 extern char** environ;
 
 namespace fpstereo {
@@ -537,11 +541,15 @@ std::string format_report(const SynthReport& r, bool cached) {
   return out + abc9_rows(r) + depth_rows(r) + memory_rows(r.memories);
 }
 
+std::filesystem::path synth_script_path() {
+  return std::filesystem::path(FPSTEREO_SOURCE_DIR) / "scripts" / "synth-yosys.sh";
+}
+
 std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
                       const std::string& verilog_text, const std::string& script_text) {
   // The configuration is hashed in full too: config_tag's own hash is only 24 bits.
   const std::string decisive = describe(cfg) + '\0' + family + '\0' + part + '\0' + verilog_text + '\0' +
-                               script_text + '\0' + kLogicDepthModel;
+                               script_text + '\0' + part_table_text() + '\0' + kLogicDepthModel;
   return fmt::format("{}-{}-{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
                      fnv1a64(decisive));
 }

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,10 +69,13 @@ std::string verilog_hash(const StereoConfig& cfg);
 std::string format_report(const SynthReport& report, bool cached);
 
 // The cache file's stem: readable (tag, family, part) plus a hash of everything that decides the
-// result, so a changed generator or script never serves a stale report. Empty family or part means
-// the script's default.
+// result, so a changed generator, script or part table never serves a stale report. Empty family
+// or part means the script's default.
 std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
                       const std::string& verilog_text, const std::string& script_text);
+
+// scripts/synth-yosys.sh in the source tree, which synth runs.
+std::filesystem::path synth_script_path();
 
 // Adds the `synth` subcommand to `app`. Its callback runs during app.parse() and sets exit_code:
 // 0 on success, kExitBadInput (2) after one line "fpstereo: <message>" on stderr.

@@ -1,22 +1,20 @@
-// The FPGA parts whose totals `fpstereo synth` and `fpstereo dse` give percentages of. The list is
-// scripts/synth-yosys.sh's table (the script also runs on its own): this reads it from there.
+// The FPGA parts whose totals `fpstereo synth` and `fpstereo dse` give percentages of: the table
+// constraints/fpga_parts.txt, embedded in the binary; scripts/synth-yosys.sh reads the same file.
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace fpstereo {
 
-// scripts/synth-yosys.sh in the source tree.
-std::filesystem::path synth_script_path();
-
 struct Part {
   std::string name, family;
   int64_t lut = 0, ff = 0, bram36 = 0, dsp = 0, lutram = 0;
 };
-// In the script's order. Throws ConfigError when the script or its table cannot be read.
+// The table's text as embedded (what the synthesis script reads, so part of its cache key).
+const std::string& part_table_text();
+// In the table's order. Throws ConfigError when a row is malformed or the table is empty.
 const std::vector<Part>& parts();
 // The first part of `family` in the table (of the whole table when `family` is empty), as the script
 // picks it. Throws ConfigError for an unknown family.
