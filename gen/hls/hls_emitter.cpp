@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "hls_templates.hpp"
+#include "output_text.hpp"
 #include "rtl_emitter.hpp"
 #include "text.hpp"
 #include "widths.hpp"
@@ -170,10 +171,7 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << "  static constexpr int kWholeBits = " << (g.carries_whole ? w.disparity : 0) << ";\n"
      << "  static constexpr int kPenaltyBits = " << (cfg.p2_adapt != 0 ? 4 * w.path_cost : 0)
      << ";  // the four paths' P2, whichever are enabled\n"
-     << "};\n"
-     << "// The top functions' ports depend on them (the templates' #if).\n"
-     << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n"
-     << "#define FPSTEREO_CONFIDENCE " << (cfg.confidence ? 1 : 0) << "\n";
+     << "};\n";
   return os.str();
 }
 
@@ -207,8 +205,11 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   std::ostringstream period;
   period.precision(6);
   period << 1000.0 / options.clock_mhz;
+  const auto outputs = output_text(design, top, config);
   auto fill = [&](const std::string& text) {
-    std::string out = replace_all(text, "@TOP@", top);
+    std::string out = text;
+    for (const auto& [name, value] : outputs) out = replace_all(out, name, value);
+    out = replace_all(out, "@TOP@", top);
     out = replace_all(out, "@CONFIG_HEADER@", header);
     out = replace_all(out, "@CONFIG@", config);
     out = replace_all(out, "@PART@", options.part);
