@@ -130,7 +130,8 @@ std::vector<OutputStream> output_streams(const Geometry& g) {
   // The right view: the match side's whole disparities, in raster order of the right image.
   if (c.right_view)
     streams.push_back({"m_axis_disp_right", "view", "the right view's whole disparities", 8,
-                       {{{"view_word", 0, w.disparity}, "right_disparity", 16}}, {{"disparity", 0, w.disparity}}});
+                       {{{"view_word", 0, w.disparity}, "right_disparity", 16}},
+                       {{"disparity", 0, w.disparity}}});
   return streams;
 }
 
