@@ -38,7 +38,6 @@ enum class Lr { None, Lr1, Lr2 };
 
 using Pixel = ap_uint<8>;
 using VideoIn = ap_axiu<8, 1, 1, 1>;
-using VideoRight = ap_axiu<8, 1, 1, 1>;  // the right view's whole disparities
 
 // Runtime sizes and parameters (AXI4-Lite registers), clamped to what the hardware was built for:
 // the path-cost widths hold P2 up to the configured value, the line buffers the configured width.
@@ -961,7 +960,7 @@ gap_rows:
 
 // ---------------------------------------------------------------------------------------------
 // Output: words zero-extended to the byte-aligned tdata; tuser on a frame's first pixel, tlast on
-// a row's last. The disparity words (VideoOut) and the right view's (VideoRight).
+// a row's last, to any of the output streams (the disparity words' is VideoOut).
 template <class Beat>
 Beat video_beat(decltype(Beat::data) data, bool first, bool row_end) {
   Beat beat;
@@ -1005,7 +1004,7 @@ write_confident_pixels:
 
 // ---------------------------------------------------------------------------------------------
 // Memory-mapped frames for the Vitis kernel flow (XRT): a frame in memory becomes a video stream
-// and the disparity stream becomes 16-bit words in memory.
+// (the output streams' stores to memory are generated with the top, one per output stream).
 template <class C>
 void load_frame(const unsigned char* frame, hls::stream<VideoIn>& out, int width, int height) {
   const Frame f = clamp_frame<C>(width, height);
@@ -1014,32 +1013,6 @@ load_pixels:
 #pragma HLS PIPELINE II = 1
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
     out.write(video_beat<VideoIn>(frame[i], i == 0, (i + 1) % f.width == 0));
-  }
-}
-
-template <class C, class Beat>
-void store_frame(hls::stream<Beat>& in, unsigned short* words, int width, int height) {
-  const Frame f = clamp_frame<C>(width, height);
-store_pixels:
-  for (int i = 0; i < f.width * f.height; ++i) {
-#pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    words[i] = (unsigned short)(in.read().data);
-  }
-}
-
-// With confidence: the words' lanes to one frame, the confidences above them to another.
-template <class C>
-void store_confident_frame(hls::stream<VideoOut<C>>& in, unsigned short* words, unsigned char* confidences,
-                           int width, int height) {
-  const Frame f = clamp_frame<C>(width, height);
-store_confident_pixels:
-  for (int i = 0; i < f.width * f.height; ++i) {
-#pragma HLS PIPELINE II = 1
-#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth * C::kMaxHeight
-    const ap_uint<C::kOutBits> data = in.read().data;
-    words[i] = (unsigned short)(data.range(C::kLaneBits - 1, 0));
-    confidences[i] = (unsigned char)(data.range(C::kOutBits - 1, C::kLaneBits));
   }
 }
 

@@ -50,9 +50,8 @@ endforeach()
 foreach(port left right disparity)
   expect_in(${top} "#pragma HLS INTERFACE mode = m_axi port = ${port} offset = slave" "memory port of the XRT kernel")
 endforeach()
-# The signature spans lines, the right view's port under #if FPSTEREO_RIGHT_VIEW; the interface
-# pragmas likewise.
-expect_in(${top} "void ${top_name}\\(hls::stream[^{]*\\) {\n(#pragma HLS INTERFACE[^\n]*\n|#if[^\n]*\n|#endif\n)+#pragma HLS DATAFLOW"
+# The signature spans lines; the output ports are written from the plan's output list, without #if.
+expect_in(${top} "void ${top_name}\\(hls::stream[^{]*\\) {\n(#pragma HLS INTERFACE[^\n]*\n)+#pragma HLS DATAFLOW"
           "DATAFLOW in the top function")
 # The pipeline the stages emit, called by both top functions; the LR2 configuration's match side.
 foreach(call "${top_name}_pipeline\\(s_axis_left, s_axis_right, m_axis_disp," "${top_name}_pipeline\\(left_video, right_video,"
@@ -90,19 +89,35 @@ expect_in(${config} "static constexpr int kCostWindow = 5;" "the geometry's cost
 emit(${WORK}/right --preset C3 --width 320 --height 96 --right-view on)
 file(GLOB right_config ${WORK}/right/*_config.hpp)
 file(GLOB right_top ${WORK}/right/*_top.cpp)
-expect_in(${right_config} "#define FPSTEREO_RIGHT_VIEW 1\n" "the right view switched on")
-expect_in(${config} "#define FPSTEREO_RIGHT_VIEW 0\n" "the right view off by default")
+expect_in(${right_config} "kRightView = true;" "the right view switched on")
+expect_in(${config} "kRightView = false;" "the right view off by default")
 expect_in(${right_top} "#pragma HLS INTERFACE mode = axis port = m_axis_disp_right\n" "the right view's stream port")
-expect_in(${right_top} "write_words<C>\\(right_view, right_out, W, H\\);" "the right view's writer")
+expect_in(${right_top} "hls::stream<ap_axiu<8, 1, 1, 1>>& m_axis_disp, hls::stream<ap_axiu<8, 1, 1, 1>>& m_axis_disp_right,"
+          "both streams in the top's signature, tdata as the output list says")
+expect_in(${right_top} "write_words<C>\\(right_view, view, W, H\\);" "the right view's writer")
+expect_in(${right_top} "#pragma HLS INTERFACE mode = m_axi port = right_disparity offset = slave bundle = gmem3 "
+          "the right view's frame in memory")
+expect_in(${right_top} "right_disparity\\[i\\] = \\(unsigned short\\)\\(data.range\\(6, 0\\)\\);"
+          "the right view's words stored from tdata")
+file(READ ${top} plain_top)
+foreach(absent "m_axis_disp_right" "#if" "right_disparity")
+  string(FIND "${plain_top}" "${absent}" at)
+  if(NOT at EQUAL -1)
+    message(SEND_ERROR "the top without the right view names '${absent}'")
+  endif()
+endforeach()
 # Confidence: switched on, the words written with it, and the memory-mapped kernel's frame of it.
 emit(${WORK}/confidence --preset C2 --width 320 --height 96 --confidence on)
 file(GLOB confidence_config ${WORK}/confidence/*_config.hpp)
 file(GLOB confidence_top ${WORK}/confidence/*_top.cpp)
-expect_in(${confidence_config} "#define FPSTEREO_CONFIDENCE 1\n" "confidence switched on")
+expect_in(${confidence_config} "kConfidence = true;" "confidence switched on")
 expect_in(${confidence_config} "kLaneBits = 8;" "the word's 8-bit lane")
 expect_in(${confidence_config} "kOutBits = 16;" "tdata 8 bits wider than the lane")
 expect_in(${confidence_top} "write_confident_words<C>\\([a-z]+, confidences, out, W, H\\);" "the confident writer")
-expect_in(${confidence_top} "store_confident_frame<" "the memory-mapped kernel's confidences")
+expect_in(${confidence_top} "unsigned short\\* disparity, unsigned char\\* confidence,"
+          "the memory-mapped kernel's frames, one per word of the output list")
+expect_in(${confidence_top} "confidence\\[i\\] = \\(unsigned char\\)\\(data.range\\(15, 8\\)\\);"
+          "the memory-mapped kernel's confidences from tdata's upper byte")
 
 # run_hls.tcl with the Vitis HLS commands stubbed: each call is logged, then checked.
 emit(${WORK}/part --preset C2 --width 320 --height 96 --part xck26-sfvc784-2LV-c --clock-mhz 250)

@@ -62,6 +62,45 @@ TEST_CASE("the register header names the design and its expected identity") {
   CHECK(d.prefix.find(fmt::format("{:06x}", rtl::config_id(d))) != std::string::npos);
 }
 
+TEST_CASE("the register header places each output stream's fields in tdata (docs/semantics.md section 8)") {
+  auto header_of = [](const StereoConfig& cfg, std::string& upper) {
+    const rtl::RtlDesign d = rtl::plan(cfg);
+    upper.clear();
+    for (char ch : d.prefix) upper += char(std::toupper(static_cast<unsigned char>(ch)));
+    return rtl::emit_register_header(d);
+  };
+  std::string upper;
+  // C2: dmax 128, 7 disparity bits and the invalid flag above them in an 8-bit tdata.
+  const std::string plain = header_of(preset("C2"), upper);
+  for (const std::string line : {"M_AXIS_DISP_TDATA_BITS 8u", "M_AXIS_DISP_DISPARITY_LSB 0u",
+                                 "M_AXIS_DISP_DISPARITY_BITS 7u", "M_AXIS_DISP_INVALID_LSB 7u",
+                                 "M_AXIS_DISP_INVALID_BITS 1u"}) {
+    INFO(line);
+    CHECK(plain.find("#define " + upper + "_" + line + "\n") != std::string::npos);
+  }
+  for (const std::string absent : {"FRACTION", "CONFIDENCE", "M_AXIS_DISP_RIGHT"}) {
+    INFO(absent);
+    CHECK(plain.find(absent) == std::string::npos);
+  }
+  // With 4 fraction bits under the 7, the flag at bit 11 of a 16-bit lane, the confidence above the
+  // lane, and the right view's whole disparities in a stream of their own.
+  StereoConfig cfg = preset("C2");
+  cfg.subpixel_bits = 4;
+  cfg.confidence = true;
+  cfg.lr = LrCheck::Lr1;
+  cfg.right_view = true;
+  const std::string full = header_of(cfg, upper);
+  for (const std::string line :
+       {"M_AXIS_DISP_TDATA_BITS 24u", "M_AXIS_DISP_FRACTION_LSB 0u", "M_AXIS_DISP_FRACTION_BITS 4u",
+        "M_AXIS_DISP_DISPARITY_LSB 4u", "M_AXIS_DISP_DISPARITY_BITS 7u", "M_AXIS_DISP_INVALID_LSB 11u",
+        "M_AXIS_DISP_INVALID_BITS 1u", "M_AXIS_DISP_CONFIDENCE_LSB 16u", "M_AXIS_DISP_CONFIDENCE_BITS 8u",
+        "M_AXIS_DISP_RIGHT_TDATA_BITS 8u", "M_AXIS_DISP_RIGHT_DISPARITY_LSB 0u",
+        "M_AXIS_DISP_RIGHT_DISPARITY_BITS 7u"}) {
+    INFO(line);
+    CHECK(full.find("#define " + upper + "_" + line + "\n") != std::string::npos);
+  }
+}
+
 namespace {
 
 // One register as a row of the documented table shows it: "0x18 UNIQUENESS rw if generated with".

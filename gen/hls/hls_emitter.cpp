@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "hls_templates.hpp"
+#include "output_text.hpp"
 #include "rtl_emitter.hpp"
 #include "text.hpp"
 #include "widths.hpp"
@@ -165,10 +166,7 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << "  static constexpr int kWholeBits = " << (g.carries_whole ? w.disparity : 0) << ";\n"
      << "  static constexpr int kPenaltyBits = " << (cfg.p2_adapt != 0 ? 4 * w.path_cost : 0)
      << ";  // the four paths' P2, whichever are enabled\n"
-     << "};\n"
-     << "// The top functions' ports depend on them (the templates' #if).\n"
-     << "#define FPSTEREO_RIGHT_VIEW " << (cfg.right_view ? 1 : 0) << "\n"
-     << "#define FPSTEREO_CONFIDENCE " << (cfg.confidence ? 1 : 0) << "\n";
+     << "};\n";
   return os.str();
 }
 
@@ -211,7 +209,9 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
       {"PIPELINE", pipeline_body(design)},
       {"FRAME_PIXELS", std::to_string(int64_t(cfg.width) * cfg.height)},
   };
-  const auto fill = [&](const std::string& text) { return fill_template(text, values); };
+  std::map<std::string, std::string> all = output_text(design, top, config);
+  all.insert(values.begin(), values.end());
+  const auto fill = [&](const std::string& text) { return fill_template(text, all); };
   const std::string cpp = banner(design, "// "), tcl = banner(design, "# ");
   return {
       {header, cpp + config_header(design, config)},

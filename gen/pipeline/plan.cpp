@@ -117,19 +117,21 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
 std::vector<OutputStream> output_streams(const Geometry& g) {
   const StereoConfig& c = g.cfg;
   const Widths& w = g.widths;
-  OutputStream disparity{"m_axis_disp", "out", "the disparity words", g.output_bits, {{"out_word", 0, w.output_word}}, {}};
+  OutputStream disparity{"m_axis_disp", "out", "the disparity words", g.output_bits,
+                         {{{"out_word", 0, w.output_word}, "disparity", 16}}, {}};
   if (c.subpixel_bits != 0) disparity.fields.push_back({"fraction", 0, c.subpixel_bits});
   disparity.fields.push_back({"disparity", c.subpixel_bits, w.output_disparity - c.subpixel_bits});
   disparity.fields.push_back({"invalid", w.output_disparity, 1});
   if (c.confidence) {
-    disparity.words.push_back({"out_confidence", w.output_lane, kConfidenceBits, Plane::Confidence});
+    disparity.words.push_back({{"out_confidence", w.output_lane, kConfidenceBits, Plane::Confidence}, "confidence", 8});
     disparity.fields.push_back({"confidence", w.output_lane, kConfidenceBits, Plane::Confidence});
   }
   std::vector<OutputStream> streams = {disparity};
   // The right view: the match side's whole disparities, in raster order of the right image.
   if (c.right_view)
     streams.push_back({"m_axis_disp_right", "view", "the right view's whole disparities", 8,
-                       {{"view_word", 0, w.disparity, Plane::Right}}, {{"disparity", 0, w.disparity, Plane::Right}}});
+                       {{{"view_word", 0, w.disparity, Plane::Right}, "right_disparity", 16}},
+                       {{"disparity", 0, w.disparity, Plane::Right}}});
   return streams;
 }
 

@@ -85,16 +85,22 @@ struct Geometry {
 // master <port>, fed by the core's handshake nets <core>_ready, _push, _first and _last and by its
 // word nets, each at its bit in tdata (the bits between are zero); and the fields that tdata
 // carries, which the register map, the test bench and the docs name. Each net and field belongs to
-// a plane of the models (outputs.hpp), which the test bench compares it with.
+// a plane of the models (outputs.hpp), which the test bench compares it with. Each word is also a
+// frame of its own in memory (the HLS kernel's memory-mapped wrapper): <frame>, of frame_bits per
+// pixel.
 struct OutputNet {
   std::string name;
   int lsb = 0, bits = 0;
   Plane plane = Plane::Disparity;
 };
+struct OutputWord : OutputNet {
+  std::string frame;
+  int frame_bits = 0;  // 16 for disparities, 8 for confidences
+};
 struct OutputStream {
   std::string port, core, what;
   int tdata_bits = 0;
-  std::vector<OutputNet> words;   // the core's nets, in tdata
+  std::vector<OutputWord> words;  // the core's nets, in tdata
   std::vector<OutputNet> fields;  // "disparity", "fraction", "invalid", "confidence"
 };
 std::vector<OutputStream> output_streams(const Geometry& g);

@@ -36,9 +36,10 @@ class RightViewStage : public Stage {
     output_register(core, "view", s, fmt::format("{} && {} < frame_height && !view_beyond", s.event, s.y), "right_dm",
                     d.widths.disparity);
   }
-  // ---- HLS: lr_check writes the right view's words.
+  // ---- HLS: lr_check writes the right view's words; the pipeline's stream is named as the core's
+  // output (output_streams).
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
-    return "\n  // Right view.\n  write_words<C>(right_view, right_out, W, H);\n";
+    return "\n  // Right view.\n  write_words<C>(right_view, view, W, H);\n";
   }
 };
 
