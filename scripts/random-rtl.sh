@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The random RTL sweep: seeded random valid configurations, each generated, linted with
+# `verilator --lint-only -Wall` and verified bit-exact in Verilator (scripts/verify-rtl.sh) on a
+# small frame with idle cycles and backpressure.
+#   scripts/random-rtl.sh [--build-dir B] SEED [COUNT]
+# COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
+# invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
+# configuration with its flags, so a failure can be repeated with verify-rtl.sh alone. Exits 1 if
+# any configuration fails.
+set -euo pipefail
+fail() { echo "random-rtl: $*" >&2; exit 2; }
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build
+if [ "${1:-}" = --build-dir ]; then
+  build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
+  shift 2
+fi
+seed=${1:-}
+count=${2:-1}
+[[ $seed =~ ^[0-9]{1,9}$ ]] || fail "SEED must be a number of at most 9 digits (got '$seed')"
+[[ $count =~ ^[0-9]{1,4}$ ]] && [ "$count" -ge 1 ] || fail "COUNT must be 1 to 9999 (got '$count')"
+[ -x "$build/fpstereo-rtl" ] || fail "$build/fpstereo-rtl not found: build the project first"
+
+# Draws from one seeded sequence: no command substitution, whose subshell would reseed RANDOM.
+RANDOM=$seed
+pick() { local choices=("$@"); REPLY=${choices[RANDOM % ${#choices[@]}]}; }
+add() { local flag=$1; shift; pick "$@"; flags+=("$flag" "$REPLY"); }
+
+# One configuration's flags, drawn from the ranges the tests can simulate in seconds.
+draw() {
+  local dmax divisors=() d paths=() p
+  pick 16 24 32 48 64; dmax=$REPLY
+  for d in 1 2 3 4 6 8 12 16 24 32 48 64; do (( dmax % d == 0 )) && divisors+=("$d"); done
+  for p in 0 45 90 135; do (( RANDOM % 2 )) && paths+=("$p"); done
+  [ ${#paths[@]} -gt 0 ] || { pick 0 45 90 135; paths=("$REPLY"); }
+  flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
+         --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 17 - 8)))
+  add --uf "${divisors[@]}"
+  add --cost census rank sad zsad shd
+  add --window 3 5 7
+  add --shd-window 1 3 5
+  add --p2-adapt 0 0 3 8
+  add --lr none none lr1 lr2
+  [ "$REPLY" = none ] || add --right-view off on
+  add --lr-threshold 0 1 2
+  add --uniqueness 0 0 10 30
+  add --median 0 3 5
+  add --gap-interp off on
+  add --subpixel-bits 0 0 2 4
+  add --subpixel-fit equiangular parabola
+  add --confidence off on
+}
+
+failed=0
+for ((i = 0; i < count; ++i)); do
+  for ((attempt = 0; ; ++attempt)); do
+    [ $attempt -lt 100 ] || fail "no valid configuration in 100 draws"
+    draw
+    status=0
+    "$build/fpstereo-rtl" "${flags[@]}" >/dev/null 2>&1 || status=$?
+    [ $status -eq 2 ] || break
+  done
+  [ $status -eq 0 ] || fail "fpstereo-rtl ${flags[*]}: exit $status"
+  pick 3 16 256
+  bench=(--levels "$REPLY" --idle 0.3 --backpressure 0.3 --seed $((RANDOM + 1)))
+  log=$("$root/scripts/verify-rtl.sh" --build-dir "$build" "${flags[@]}" -- "${bench[@]}" 2>&1) && result=PASS ||
+    { result=FAIL; failed=1; }
+  echo "random-rtl seed $seed #$i: $result: scripts/verify-rtl.sh ${flags[*]} -- ${bench[*]}"
+  [ $result = PASS ] || echo "$log" | tail -20
+done
+exit $failed
