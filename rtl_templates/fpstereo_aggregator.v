@@ -12,7 +12,7 @@ module fpstereo_aggregator #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter COST_W = 5,
@@ -28,7 +28,7 @@ module fpstereo_aggregator #(
   parameter PATH_TREE_LAT = 1,
   // rows of the output RAMs (the slot output is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -36,7 +36,7 @@ module fpstereo_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0
 ) (
@@ -64,24 +64,21 @@ module fpstereo_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_K_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot
 );
   localparam LANES_LAT = 2;  // steps of fpstereo_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
-      fpstereo_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fpstereo_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fpstereo_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
-      fpstereo_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fpstereo_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
       fpstereo_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -105,7 +102,7 @@ module fpstereo_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SLEN - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -114,11 +111,11 @@ module fpstereo_aggregator #(
 
   // ------------------------------------------------------------------------------------------
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
-  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  // ta - ka, pixel x = ka * SEGMENT + ja; its state lives in slot (ka + base) mod K.
   reg [G_W-1:0] ga;
   reg [K_W-1:0] ka, base;
-  reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
-  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
+  reg [COST_ROW_W-1:0] ta_slot;       // ta mod COST_ROWS
+  reg [OUT_ROW_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
@@ -141,26 +138,26 @@ module fpstereo_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
+            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_ROW_W{1'b0}} : ta_slot + 1'b1;
+            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SLEN + ja;
+  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
   wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
@@ -179,10 +176,10 @@ module fpstereo_aggregator #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_ROW_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_ROW_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -267,7 +264,8 @@ module fpstereo_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
-      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
@@ -311,7 +309,8 @@ module fpstereo_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
-      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
     end else begin : no_path45
       assign path_45 = 0;
@@ -346,7 +345,8 @@ module fpstereo_aggregator #(
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
     end

@@ -15,12 +15,12 @@ module fpstereo_code_window_cost #(
   parameter UF = 8,
   parameter COST_W = 8,
   parameter COST_MAX = 216,
-  parameter COLSUM_W = 11,
+  parameter COLUMN_SUM_W = 11,
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fpstereo_window_cost_lanes checks it)
@@ -38,11 +38,11 @@ module fpstereo_code_window_cost #(
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [YS_W-1:0] transform_y,
-  input  wire [COST_K_W-1:0]    transform_slot,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [COST_ROW_W-1:0]    transform_slot,
   output reg  [X_W-1:0]         history_x,
-  output reg  signed [YS_W-1:0] history_y,
-  output reg  [COST_K_W-1:0]    history_slot,
+  output reg  signed [SIGNED_Y_W-1:0] history_y,
+  output reg  [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -53,14 +53,14 @@ module fpstereo_code_window_cost #(
     if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
       fpstereo_invalid_parameters_code_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fpstereo_invalid_parameters_code_window_cost_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fpstereo_invalid_parameters_code_window_cost_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RS = SHD_K / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   // The code windows take in the codes at column transform_x.
   wire [X_W-1:0] code_next_col = (transform_x == LAST_SLOT) ? {X_W{1'b0}} : transform_x + 1'b1;
   wire [SHD_K*SHD_K*CODE_W-1:0] codes_left, codes_right;
@@ -71,18 +71,18 @@ module fpstereo_code_window_cost #(
   // Centre of the code window: RS rows and RS slots behind the entering code; the newest
   // column is the entering code's own column (zero outside the image, as for SAD).
   wire [X_W-1:0] codes_centre_x;
-  wire signed [YS_W-1:0] codes_centre_y;
-  wire [COST_K_W-1:0] codes_slot_next;
-  wire signed [YS_W-1:0] code_newest_y_next;
-  fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(COST_ROWS),
-                           .SLOT_W(COST_K_W)) codes_centre (
+  wire signed [SIGNED_Y_W-1:0] codes_centre_y;
+  wire [COST_ROW_W-1:0] codes_slot_next;
+  wire signed [SIGNED_Y_W-1:0] code_newest_y_next;
+  fpstereo_window_centre #(.LAG(RS), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(COST_ROWS),
+                           .SLOT_W(COST_ROW_W)) codes_centre (
     .x(transform_x), .y(transform_y), .slot(transform_slot), .wrapped(wrapped), .height(height_y),
     .centre_x(codes_centre_x), .centre_y(codes_centre_y), .centre_slot(codes_slot_next), .row_y(code_newest_y_next));
   reg [X_W-1:0] codes_x;
-  reg signed [YS_W-1:0] codes_y;
-  reg [COST_K_W-1:0] codes_slot;
+  reg signed [SIGNED_Y_W-1:0] codes_y;
+  reg [COST_ROW_W-1:0] codes_slot;
   reg code_newest_in_row;
-  reg signed [YS_W-1:0] code_newest_y;
+  reg signed [SIGNED_Y_W-1:0] code_newest_y;
   always @(posedge clk)
     if (shift) begin
       code_newest_in_row <= {1'b0, transform_x} < width_x;
@@ -95,10 +95,10 @@ module fpstereo_code_window_cost #(
   /* verilator lint_off UNUSEDSIGNAL */  // the newest column's own column bound is code_newest_in_row
   wire [SHD_K-1:0] code_newest_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_bounds (
+  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) code_bounds (
     .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid),
     .col_valid(code_col_valid));
-  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .YS_W(YS_W)) code_newest_bounds (
+  fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) code_newest_bounds (
     .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows),
     .col_valid(code_newest_unused_columns));
   wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
@@ -114,9 +114,9 @@ module fpstereo_code_window_cost #(
   wire [SHD_K*SHD_K*CODE_W-1:0] base_o;
   wire [SHD_K*CODE_W-1:0]       newest_column_o;
   wire [X_W-1:0]                codes_x_o;
-  wire signed [YS_W-1:0]        codes_y_o;
-  wire [COST_K_W-1:0]           codes_slot_o;
-  fpstereo_offset_delays #(.BASE_W(SHD_K*SHD_K*CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(SHD_K*CODE_W),
+  wire signed [SIGNED_Y_W-1:0]        codes_y_o;
+  wire [COST_ROW_W-1:0]           codes_slot_o;
+  fpstereo_offset_delays #(.BASE_W(SHD_K*SHD_K*CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(SHD_K*CODE_W),
                            .MIN_DISP(MIN_DISP)) offset (
     .clk(clk), .shift(shift), .base({base_masked, codes_x, codes_y, codes_slot}), .match(newest_column),
     .base_out({base_o, codes_x_o, codes_y_o, codes_slot_o}), .match_out(newest_column_o));
@@ -133,8 +133,8 @@ module fpstereo_code_window_cost #(
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column_o), .view(view));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(0), .HAMMING(1), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLSUM_W{1'b0}}),
+                               .COLUMN_SUM_W(COLUMN_SUM_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
+    .clk(clk), .en(adv), .base(base_h), .base_mean(8'd0), .view(view), .view_sums({(UF+SHD_K-1)*COLUMN_SUM_W{1'b0}}),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
 endmodule
 `resetall

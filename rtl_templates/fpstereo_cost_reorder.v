@@ -14,11 +14,11 @@ module fpstereo_cost_reorder #(
   // register stages of the cost lanes
   parameter LAT = 1,
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -28,12 +28,12 @@ module fpstereo_cost_reorder #(
   input  wire [Y_W-1:0]         frame_height,
   input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         history_x,
-  input  wire signed [YS_W-1:0] history_y,
-  input  wire [COST_K_W-1:0]    history_slot,
+  input  wire signed [SIGNED_Y_W-1:0] history_y,
+  input  wire [COST_ROW_W-1:0]    history_slot,
   input  wire [UF*COST_W+EXTRA_W-1:0] costs,
   output wire                   cost_valid,
   output wire [X_W-1:0]         cost_x,
-  output wire [COST_K_W-1:0]    cost_row_slot,
+  output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
   output wire [UF*COST_W+EXTRA_W-1:0] cost_q
@@ -43,15 +43,15 @@ module fpstereo_cost_reorder #(
     if (LAT < 1) begin : invalid_LAT
       fpstereo_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
-    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
       fpstereo_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fpstereo_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(LAT)) cost_tag (
+  fpstereo_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.

@@ -12,7 +12,7 @@ module fpstereo_disparity_reorder #(
   parameter DISP_W = 5,
   // rows of the RAM (the slot is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   // address width of the OUT_ROWS * ROW_SLOTS words
   parameter DISP_AW = 8,
   parameter EXTRA_ROWS = 0,
@@ -32,14 +32,14 @@ module fpstereo_disparity_reorder #(
   // the winner-take-all's pixel: written in its last group's step
   input  wire               active,
   input  wire [X_W-1:0]     x,
-  input  wire [OUT_K_W-1:0] slot,
+  input  wire [OUT_ROW_W-1:0] slot,
   input  wire [G_W-1:0]     group,
   input  wire [DISP_W:0]    word,
   output reg                read_done,
   output reg                read_event,
   output reg  [X_W-1:0]     read_x,
   output reg  [Y_W-1:0]     read_y,
-  output reg  [OUT_K_W-1:0] read_slot_row,
+  output reg  [OUT_ROW_W-1:0] read_slot_row,
   output wire [DISP_W:0]    read_word
 );
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
@@ -47,7 +47,7 @@ module fpstereo_disparity_reorder #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_K_W) < OUT_ROWS) begin : invalid
+    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
       fpstereo_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
@@ -61,10 +61,10 @@ module fpstereo_disparity_reorder #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0] so;
   wire [Y_W-1:0] to;
-  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
+  wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
   fpstereo_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(OUT_K_W))
+                            .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;

@@ -17,11 +17,11 @@ module fpstereo_front_end #(
   parameter G = 4,
   // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -51,22 +51,22 @@ module fpstereo_front_end #(
   // window rows inside the image for the newest column (zero when that column is outside)
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
-  output reg  signed [YS_W-1:0] transform_y,
-  output reg  [COST_K_W-1:0]    transform_slot
+  output reg  signed [SIGNED_Y_W-1:0] transform_y,
+  output reg  [COST_ROW_W-1:0]    transform_slot
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
       fpstereo_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fpstereo_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fpstereo_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
@@ -159,21 +159,21 @@ module fpstereo_front_end #(
   localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
   localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
-  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
-  localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
+  localparam [COST_ROW_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_ROW_W-1:0];
+  localparam [SIGNED_Y_W-1:0] PREV_START = PREV_START_I[SIGNED_Y_W-1:0];
   localparam [X_W-1:0] R_X = R;
   reg  [X_W-1:0] centre_x;
   always @(posedge clk)
     if (restart) centre_x <= CENTRE_START;
     else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
-  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
+  reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
+  reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fpstereo_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
+  fpstereo_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -183,7 +183,7 @@ module fpstereo_front_end #(
       newest_prev_slot <= PREV_SLOT;
     end else if (input_row_ends) begin
       newest_prev_y <= newest_y;
-      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
   // The centre lies in the previous row-time while the input slot is below R: a register that
@@ -192,11 +192,11 @@ module fpstereo_front_end #(
   always @(posedge clk)
     if (restart) borrow <= 1'b1;
     else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
-  wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
-  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
+  wire signed [SIGNED_Y_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_ROW_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
-  reg  signed [YS_W-1:0] window_y;
-  reg  [COST_K_W-1:0] window_slot;
+  reg  signed [SIGNED_Y_W-1:0] window_y;
+  reg  [COST_ROW_W-1:0] window_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
@@ -214,10 +214,10 @@ module fpstereo_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) prev_bounds (
+  fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;

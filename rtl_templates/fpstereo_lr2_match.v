@@ -10,7 +10,7 @@ module fpstereo_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter DMAX = 32,
@@ -24,10 +24,10 @@ module fpstereo_lr2_match #(
   parameter PATH_TREE_LAT = 1,
   parameter WTA_TREE_LAT = 1,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter COST_ROWS = 3,
-  parameter COST_K_W = 2,
+  parameter COST_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -50,7 +50,7 @@ module fpstereo_lr2_match #(
   // the base side's cost words as the cost reorder RAM takes them
   input  wire                 cost_valid,
   input  wire [X_W-1:0]       cost_x,
-  input  wire [COST_K_W-1:0]  cost_row_slot,
+  input  wire [COST_ROW_W-1:0]  cost_row_slot,
   input  wire [G_W-1:0]       cost_group,
   input  wire [UF*COST_W-1:0] costs,
   output wire                 completed_we,
@@ -93,25 +93,25 @@ module fpstereo_lr2_match #(
   /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [OUT_K_W-1:0]  slot;
-  fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+  wire [OUT_ROW_W-1:0]  slot;
+  fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
-                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
+                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W), .MIN_DISP(MIN_DISP)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
     .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
   wire              active_w;
   wire [X_W-1:0]    x_w;
-  wire [OUT_K_W-1:0] slot_w;
+  wire [OUT_ROW_W-1:0] slot_w;
   wire [G_W-1:0]    group_w;
   /* verilator lint_off UNUSEDSIGNAL */  // the match side's disparities are never invalid
   wire [DISP_W:0]   word_w;
   /* verilator lint_on UNUSEDSIGNAL */
   fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
-                 .TAG_W(1 + X_W + OUT_K_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+                 .TAG_W(1 + X_W + OUT_ROW_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(sums), .group(group), .tag({active, x, slot}),
     .group_out(group_w), .tag_out({active_w, x_w, slot_w}), .word(word_w));
   assign completed_we = adv && active_w && group_w == LAST_GROUP;

@@ -19,7 +19,7 @@ module fpstereo_lr_check #(
   // bits of the refined disparity carried above D in the read word, 0 without sub-pixel output
   parameter REFINED_W = 0,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   // LR1: the row ends come from the row-end RAM
   parameter ROW_END = 1,
@@ -46,7 +46,7 @@ module fpstereo_lr_check #(
   input  wire                 read_event,
   input  wire [X_W-1:0]       read_x,
   input  wire [Y_W-1:0]       read_y,
-  input  wire [OUT_K_W-1:0]   read_slot_row,
+  input  wire [OUT_ROW_W-1:0]   read_slot_row,
   input  wire [REFINED_W+DISP_W:0] read_word,
   output reg                  checked_done,
   output reg                  checked_event,
@@ -73,7 +73,7 @@ module fpstereo_lr_check #(
   wire [DISP_W-1:0] dm;
   fpstereo_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
     .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
@@ -135,7 +135,7 @@ module fpstereo_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fpstereo_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
         .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),

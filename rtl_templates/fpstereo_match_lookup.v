@@ -13,7 +13,7 @@ module fpstereo_match_lookup #(
   parameter DMAX = 32,
   parameter DISP_W = 5,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter ROW_END = 1,
   parameter END_AW = 4,
@@ -35,7 +35,7 @@ module fpstereo_match_lookup #(
   input  wire [UF*DISP_W-1:0] row_end_wdata,
   /* verilator lint_on UNUSEDSIGNAL */
   // first step: the row's slot in the RAMs and x'
-  input  wire [OUT_K_W-1:0]   slot_row,
+  input  wire [OUT_ROW_W-1:0]   slot_row,
   input  wire [X_W-1:0]       xm,
   // second step
   output wire [DISP_W-1:0]    dm

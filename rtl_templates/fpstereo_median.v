@@ -12,7 +12,7 @@ module fpstereo_median #(
   parameter EXTRA_ROWS = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire             clk,
   input  wire             restart,
@@ -35,30 +35,30 @@ module fpstereo_median #(
     if (M < 3 || M % 2 == 0) begin : invalid_M
       fpstereo_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fpstereo_invalid_parameters_median_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fpstereo_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RM = M / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
   wire [M*M*(DISP_W+1)-1:0] window;
   fpstereo_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
+  wire signed [SIGNED_Y_W-1:0] centre_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
   wire centre_slot;
-  wire signed [YS_W-1:0] newest_y;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
+  fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
-  reg signed [YS_W-1:0] median_y;
+  reg signed [SIGNED_Y_W-1:0] median_y;
   reg           fresh;     // high in the step after a shift: one result per slot
   always @(posedge clk)
     if (restart) fresh <= 1'b0;
@@ -69,16 +69,16 @@ module fpstereo_median #(
       median_y <= centre_y;
     end
   wire [M-1:0] row_valid, col_valid;
-  fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .YS_W(YS_W)) bounds (
+  fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
     .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   wire [DISP_W:0] selected;
   fpstereo_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
     .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
   // The centre's coordinates travel as long as the selection takes.
-  wire signed [YS_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
   wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
-  wire [YS_W-1:0] median_row = median_y;
+  wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */
   wire           done_m;
   wire [X_W-1:0] x_m;

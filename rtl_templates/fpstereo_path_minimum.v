@@ -7,7 +7,9 @@ module fpstereo_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the tree's latency the caller plans with (fpstereo_reduction_tree checks it)
+  parameter TREE_LAT = 2
 ) (
   input  wire               clk,
   input  wire               en,
@@ -16,16 +18,12 @@ module fpstereo_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fpstereo_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
+  // fpstereo_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fpstereo_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fpstereo_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
   reg [PATH_W-1:0] running;

@@ -14,9 +14,9 @@ module fpstereo_point_cost #(
   parameter UF = 8,
   parameter COST_W = 5,
   parameter COST_MAX = 24,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fpstereo_cost_lanes checks it)
@@ -31,11 +31,11 @@ module fpstereo_point_cost #(
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [YS_W-1:0] transform_y,
-  input  wire [COST_K_W-1:0]    transform_slot,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [COST_ROW_W-1:0]    transform_slot,
   output reg  [X_W-1:0]         history_x,
-  output reg  signed [YS_W-1:0] history_y,
-  output reg  [COST_K_W-1:0]    history_slot,
+  output reg  signed [SIGNED_Y_W-1:0] history_y,
+  output reg  [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -46,9 +46,9 @@ module fpstereo_point_cost #(
   endgenerate
   wire [CODE_W-1:0]      code_base_o, code_match_o;
   wire [X_W-1:0]         transform_x_o;
-  wire signed [YS_W-1:0] transform_y_o;
-  wire [COST_K_W-1:0]    transform_slot_o;
-  fpstereo_offset_delays #(.BASE_W(CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
+  wire signed [SIGNED_Y_W-1:0] transform_y_o;
+  wire [COST_ROW_W-1:0]    transform_slot_o;
+  fpstereo_offset_delays #(.BASE_W(CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
     .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
     .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
   reg [CODE_W-1:0] code_base_h;

@@ -2,9 +2,9 @@
 `default_nettype none
 // Sub-pixel stage (docs/semantics.md, section 4): the winner-take-all's word {invalid, D}
 // refined to {invalid, D * 2^K + f} with the aggregated sums at D - 1, D and D + 1. The sums of
-// the pixel's G groups wait in a history of TREE_LAT + G steps (the winner-take-all's word lags
-// its sums by TREE_LAT): in the step after the pixel's word the high bits of D select a chunk of the sums
-// (2^LO_W of them and one on each side), in the next its low bits pick the three sums (sums
+// the pixel's G groups wait in a history of WTA_WORD_LAG + G steps (the winner-take-all's word
+// lags its sums by WTA_WORD_LAG): in the step after the pixel's word the high bits of D select a
+// chunk of the sums (2^LO_W of them and one on each side), in the next its low bits pick the three sums (sums
 // beyond the range read as 0; fpstereo_subpixel_fit keeps D whole there): two narrow
 // multiplexers in two register steps instead of one dmax:1. Then the fit takes K + 3 steps.
 // Latency K + 6 steps; the tag travels along. An invalid word stays the invalid word (the flag
@@ -19,7 +19,7 @@ module fpstereo_subpixel #(
   parameter EQUIANGULAR = 1,
   // bits of the refined disparity: enough for (DMAX - 1) * 2^K
   parameter OUT_W = 8,
-  parameter TREE_LAT = 1,
+  parameter WTA_WORD_LAG = 1,
   parameter TAG_W = 8
 ) (
   input  wire                clk,
@@ -36,11 +36,11 @@ module fpstereo_subpixel #(
     if (UF < 1 || G < 1 || DMAX != UF * G || DMAX - 1 >= (1 << DISP_W) || DISP_W < 2) begin : invalid_DMAX
       fpstereo_invalid_parameters_subpixel_DMAX_is_not_UF_times_G_within_DISP_W failed ();
     end
-    if (TREE_LAT < 1) begin : invalid_TREE_LAT
-      fpstereo_invalid_parameters_subpixel_TREE_LAT_below_1 failed ();
+    if (WTA_WORD_LAG < 1) begin : invalid_WTA_WORD_LAG
+      fpstereo_invalid_parameters_subpixel_WTA_WORD_LAG_below_1 failed ();
     end
   endgenerate
-  localparam DEPTH = TREE_LAT + G;
+  localparam DEPTH = WTA_WORD_LAG + G;
   localparam ROW_W = UF * SUM_W;
   localparam SLOTS = 1 << DISP_W;  // every value of D, those beyond DMAX reading 0
 
@@ -53,7 +53,7 @@ module fpstereo_subpixel #(
   always @(posedge clk)
     if (adv) history <= {history[(DEPTH-1)*ROW_W-1:0], sums};
 
-  // In the first selection step, disparity g * UF + l is lane l of entry G + TREE_LAT - 1 - g.
+  // In the first selection step, disparity g * UF + l is lane l of entry G + WTA_WORD_LAG - 1 - g.
   // padded S(v) for v = -1 .. SLOTS, 0 outside the range. Entries and chunks sit at strides that
   // are powers of two (SUM_P, WINDOW_P bits), so that each selection is a shift by D's bits: a
   // multiplexer tree of one level per two bits.
@@ -71,7 +71,7 @@ module fpstereo_subpixel #(
     for (v = -1; v <= SLOTS; v = v + 1) begin : slot
       if (v >= 0 && v < DMAX) begin : in_range
         assign padded[(v+1)*SUM_P +: SUM_P] =
-            {{(SUM_P-SUM_W){1'b0}}, history[((G + TREE_LAT - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W]};
+            {{(SUM_P-SUM_W){1'b0}}, history[((G + WTA_WORD_LAG - 1 - v / UF) * UF + v % UF) * SUM_W +: SUM_W]};
       end else begin : beyond
         assign padded[(v+1)*SUM_P +: SUM_P] = {SUM_P{1'b0}};
       end

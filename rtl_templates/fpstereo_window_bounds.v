@@ -6,12 +6,12 @@ module fpstereo_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
@@ -30,11 +30,11 @@ module fpstereo_window_bounds #(
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
       assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule

@@ -12,20 +12,20 @@ module fpstereo_window_centre #(
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   // rows of the RAM the slots index, and the slot width
   parameter ROWS = 2,
   parameter SLOT_W = 1
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [SLOT_W-1:0]      slot,
   input  wire                   wrapped,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [X_W-1:0]         centre_x,
-  output wire signed [YS_W-1:0] centre_y,
+  output wire signed [SIGNED_Y_W-1:0] centre_y,
   output wire [SLOT_W-1:0]      centre_slot,
-  output wire signed [YS_W-1:0] row_y
+  output wire signed [SIGNED_Y_W-1:0] row_y
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -40,18 +40,18 @@ module fpstereo_window_centre #(
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
+  localparam signed [SIGNED_Y_W-1:0] LAG_Y = LAG_I[SIGNED_Y_W-1:0];
 
   localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
-  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  localparam signed [SIGNED_Y_W-1:0] LAG_PREV_Y = LAG_Y + 1;
   // Both rows and their wrapped forms in parallel, then chosen.
-  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
-  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  wire signed [SIGNED_Y_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [SIGNED_Y_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
   assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
-  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  wire signed [SIGNED_Y_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
   assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
   assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;

@@ -27,7 +27,7 @@ module fpstereo_window_cost_lanes #(
   parameter GROUP_W = 2,
   parameter X_W = 11,
   // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
-  parameter COLSUM_W = 11,
+  parameter COLUMN_SUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
   // the smallest disparity (docs/semantics.md, section 2)
@@ -40,7 +40,7 @@ module fpstereo_window_cost_lanes #(
   input  wire [SPAN*SPAN*ELEM_W-1:0]         base,
   /* verilator lint_off UNUSEDSIGNAL */  // the means serve ZSAD only
   input  wire [7:0]                          base_mean,
-  input  wire [(UF+SPAN-1)*COLSUM_W-1:0]     view_sums,
+  input  wire [(UF+SPAN-1)*COLUMN_SUM_W-1:0]     view_sums,
   /* verilator lint_on UNUSEDSIGNAL */
   input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
   input  wire [GROUP_W-1:0]                  group,
@@ -71,7 +71,7 @@ module fpstereo_window_cost_lanes #(
   localparam VIEW_COLS = UF + SPAN - 1;
   // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
   localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
-  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
+  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
   // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
   localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
   // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
@@ -115,7 +115,7 @@ module fpstereo_window_cost_lanes #(
   // windows' column sums, masked the same way.
   wire [VIEW_COLS*COLUMN_W-1:0] view_d;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
+  wire [VIEW_COLS*COLUMN_SUM_W-1:0] view_sums_masked;
   wire [7:0]                    base_mean_d;
   /* verilator lint_on UNUSEDSIGNAL */
   generate
@@ -123,7 +123,7 @@ module fpstereo_window_cost_lanes #(
       // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
       // view waits three steps more for the means, and is masked into the register of step 5
       // (the terms start from flip-flops, not from a shift register's read).
-      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
+      reg  [VIEW_COLS*COLUMN_SUM_W-1:0] view_sums_q, view_sums_masked_q;
       wire [VIEW_COLS*COLUMN_W-1:0] view_late;
       wire [VIEW_COLS-1:0]          valid_late;
       reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
@@ -134,8 +134,8 @@ module fpstereo_window_cost_lanes #(
         if (en) begin
           view_sums_q <= view_sums;
           for (n = 0; n < VIEW_COLS; n = n + 1) begin
-            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
-                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
+            view_sums_masked_q[n*COLUMN_SUM_W +: COLUMN_SUM_W] <=
+                view_valid_q[n] ? view_sums_q[n*COLUMN_SUM_W +: COLUMN_SUM_W] : {COLUMN_SUM_W{1'b0}};
             view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
           end
         end
@@ -148,7 +148,7 @@ module fpstereo_window_cost_lanes #(
       for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
         assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
       end
-      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
+      assign view_sums_masked = {VIEW_COLS*COLUMN_SUM_W{1'b0}};
       assign base_mean_d = 8'd0;
     end
   endgenerate
@@ -175,8 +175,8 @@ module fpstereo_window_cost_lanes #(
       /* verilator lint_on UNUSEDSIGNAL */
       if (ZERO_MEAN != 0) begin : zero_mean
         wire [WINSUM_W-1:0] match_sum;
-        fpstereo_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
-          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
+        fpstereo_sum_tree #(.N(SPAN), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) match_total (
+          .clk(clk), .en(en), .values(view_sums_masked[l*COLUMN_SUM_W +: SPAN*COLUMN_SUM_W]), .sum(match_sum));
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
         reg signed [TERM_W-1:0] mean_offset_q;

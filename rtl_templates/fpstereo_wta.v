@@ -4,7 +4,7 @@
 // group (fpstereo_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
 // the group in group_out; it is the pixel's result in its last group's step. The tag (the
-// pixel's position) travels along, TREE_LAT steps.
+// pixel's position) travels along, TREE_LAT steps (the tree's latency, which it checks).
 module fpstereo_wta #(
   parameter UF = 8,
   parameter SUM_W = 9,
@@ -25,20 +25,13 @@ module fpstereo_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
-      fpstereo_invalid_parameters_wta_LANE_W_does_not_hold_UF_minus_1 failed ();
-    end
-    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
-      fpstereo_invalid_parameters_wta_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
-  endgenerate
+  // fpstereo_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
-  fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fpstereo_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
   wire [DISP_W-1:0] group_disparity = group_out * UF + group_lane;

@@ -33,15 +33,7 @@ module fpstereo_wta_unique #(
   output wire [SUM_W-1:0]    best_sum,
   output wire [SUM_W-1:0]    second_sum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
-      fpstereo_invalid_parameters_wta_unique_LANE_W_does_not_hold_UF_minus_1 failed ();
-    end
-    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
-      fpstereo_invalid_parameters_wta_unique_TREE_LAT_is_not_the_unique_tree_latency failed ();
-    end
-  endgenerate
+  // fpstereo_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   localparam S_W = 5 * SUM_W + DISP_W + 2;
   wire [G_W-1:0] group_tree;  // the group whose summary leaves the tree
@@ -53,7 +45,8 @@ module fpstereo_wta_unique #(
   wire [SUM_W-1:0]  best, all, but_first, but_last, second;
   wire [LANE_W-1:0] lane;
   wire              first, last;
-  fpstereo_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fpstereo_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                        .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .best(best), .index(lane), .first(first), .last(last), .all(all),
     .but_first(but_first), .but_last(but_last), .second(second));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width

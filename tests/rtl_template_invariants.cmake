@@ -41,12 +41,13 @@ function(check_module top valid violating rule)
 endfunction()
 
 check_module(aggregator
-  "-GW=60 -GPATHS=5 -GUF=4" "-GW=60 -GPATHS=5 -GUF=4 -GSLEN=29"
-  aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W
-  frame_row path_lanes path_minimum min_tree delay ram_sdp ram_async)
+  "-GW=60 -GPATHS=5 -GUF=4" "-GW=60 -GPATHS=5 -GUF=4 -GSEGMENT=29"
+  aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W
+  frame_row path_lanes path_minimum min_tree reduction_tree unique_join delay ram_sdp ram_async)
 check_module(window "-GN=3 -GROW_SLOTS=40 -GADDR_W=6" "-GN=3 -GROW_SLOTS=40 -GADDR_W=5"
   window_ADDR_W_below_clog2_ROW_SLOTS ram_sdp)
-check_module(min_tree "-GN=5 -GIDX_W=3" "-GN=9 -GIDX_W=3" min_tree_IDX_W_does_not_hold_N_minus_1)
+check_module(min_tree "-GN=5 -GIDX_W=3" "-GN=9 -GIDX_W=3" reduction_tree_IDX_W_does_not_hold_N_minus_1
+  reduction_tree unique_join)
 check_module(sum_tree "-GN=7 -GREGISTER_LEVEL=3" "-GN=7 -GREGISTER_LEVEL=4" sum_tree_REGISTER_LEVEL_is_not_a_level)
 check_module(subpixel_fit "-GK=4" "-GK=4 -GOUT_W=9" subpixel_fit_DISP_W_or_OUT_W_does_not_hold_DMAX_minus_1)
 check_module(lr1_match "-GK=2 -GG=4 -GUF=8 -GDMAX=32" "-GK=2 -GG=4 -GUF=8 -GDMAX=24"
@@ -54,8 +55,8 @@ check_module(lr1_match "-GK=2 -GG=4 -GUF=8 -GDMAX=32" "-GK=2 -GG=4 -GUF=8 -GDMAX
 check_module(median_select "-GM=3 -GWORD_W=6" "-GM=9 -GWORD_W=6" median_select_M_is_not_3_5_or_7)
 check_module(census "-GN=3" "-GN=4" census_N_is_not_odd_and_at_least_3)
 check_module(wta "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=2"
-  "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=1" wta_TREE_LAT_is_not_the_min_tree_latency
-  delay min_tree)
+  "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=1" reduction_tree_LAT_is_not_the_tree_latency
+  delay min_tree reduction_tree unique_join)
 
 # The same kind of violation through Yosys and iverilog: fpstereo_window with N = 2.
 set(rule fpstereo_invalid_parameters_window_N_below_3)

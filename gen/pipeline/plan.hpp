@@ -127,8 +127,9 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options = {});
 // The whole plan; throws ConfigError if the configuration is invalid for the hardware.
 RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options = {});
 
-// Latency of fpstereo_min_tree over n values at levels_per_stage compare levels a register (the
-// templates that check a TREE_LAT parameter repeat this formula in Verilog).
+// Latency of fpstereo_min_tree and fpstereo_unique_tree over n values at levels_per_stage levels a
+// register; the stages pass it to them (LAT), and fpstereo_reduction_tree, the one Verilog copy of
+// this formula, checks it at elaboration.
 int min_tree_latency(int n, int levels_per_stage);
 
 }  // namespace fpstereo::rtl

@@ -87,12 +87,8 @@ module control_props (
   (* keep *) wire [6:0] probe_uniqueness;
 
   localparam [1:0] OKAY = 2'b00, SLVERR = 2'b10;
-  reg past_valid = 1'b0, past_rst = 1'b1;
-  always @(posedge clk) begin
-    past_valid <= 1'b1;
-    past_rst <= rst;
-  end
-  always @* if (!past_valid) assume(rst);
+  wire past_valid, past_rst;
+  formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
 
   // ---- The master (environment).
   always @(posedge clk)

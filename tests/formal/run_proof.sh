@@ -42,7 +42,8 @@ if [ -z "$work" ]; then
 fi
 mkdir -p "$work"
 
-files=()
+# the rules the wrappers share
+files=("$(cd "$(dirname "$0")" && pwd)/formal_rules.v")
 mutated=0
 for f in "$@"; do
   [ -f "$f" ] || { echo "run_proof: no file $f" >&2; exit 2; }

@@ -40,12 +40,8 @@ module sequencer_props (
 `ifdef FORMAL
   (* keep *) wire probe_starting, probe_in_frame;
 
-  reg past_valid = 1'b0, past_rst = 1'b1;
-  always @(posedge clk) begin
-    past_valid <= 1'b1;
-    past_rst <= rst;
-  end
-  always @* if (!past_valid) assume(rst);
+  wire past_valid, past_rst;
+  formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
 
   // ---- The environment.
   always @* begin

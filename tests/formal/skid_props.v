@@ -26,34 +26,15 @@ module skid_props #(
 `ifdef FORMAL
   (* keep *) wire [DATA_W-1:0] probe_skid_q;
 
-  reg past_valid = 1'b0, past_rst = 1'b1;
-  always @(posedge clk) begin
-    past_valid <= 1'b1;
-    past_rst <= rst;
-  end
-  // the run starts in reset
-  always @* if (!past_valid) assume(rst);
+  wire past_valid, past_rst;
+  formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
 
   wire s_take = s_valid && s_ready;
   wire m_take = m_valid && m_ready;
 
-  // ---- The environment (slave side): no TVALID in reset or in the cycle after it; TVALID held
-  // until TREADY, with the data stable.
-  always @(posedge clk)
-    if (past_valid) begin
-      if (rst || $past(rst)) assume(!s_valid);
-      else if ($past(s_valid && !s_ready)) assume(s_valid && s_data == $past(s_data));
-    end
-
-  // ---- The unit's master side.
-  always @(posedge clk)
-    if (past_valid) begin
-      if ($past(rst)) assert(!m_valid);
-      else if ($past(m_valid && !m_ready)) begin
-        assert(m_valid);
-        assert(m_data == $past(m_data));
-      end
-    end
+  // ---- The environment (slave side) and the unit's master side.
+  formal_axis_in #(.W(DATA_W)) slave_side (.clk(clk), .rst(rst), .valid(s_valid), .ready(s_ready), .payload(s_data));
+  formal_axis_out #(.W(DATA_W)) master_side (.clk(clk), .rst(rst), .valid(m_valid), .ready(m_ready), .payload(m_data));
 
   // ---- Beats inside: accepted minus delivered, at most two; TVALID exactly when one is inside,
   // s_ready low exactly when two are (so nothing is lost, duplicated or made up).

@@ -30,41 +30,15 @@ module top_props (
 
 `ifdef FORMAL
   wire rst = !aresetn;
-  reg past_valid = 1'b0, past_rst = 1'b1;
-  always @(posedge aclk) begin
-    past_valid <= 1'b1;
-    past_rst <= rst;
-  end
-  always @* if (!past_valid) assume(rst);
+  formal_start run_start (.clk(aclk), .rst(rst), .past_valid(), .past_rst());
 
-  // ---- The input streams (environment), with registered past values (an assumption in a
-  // clocked block would bind one cycle late).
-  reg        left_stall, right_stall;
-  reg [9:0]  left_was, right_was;
-  always @(posedge aclk) begin
-    left_stall <= left_tvalid && !left_tready;
-    right_stall <= right_tvalid && !right_tready;
-    left_was <= {left_tuser, left_tlast, left_tdata};
-    right_was <= {right_tuser, right_tlast, right_tdata};
-  end
-  always @*
-    if (past_valid) begin
-      if (rst || past_rst) assume(!left_tvalid && !right_tvalid);
-      else begin
-        if (left_stall) assume(left_tvalid && {left_tuser, left_tlast, left_tdata} == left_was);
-        if (right_stall) assume(right_tvalid && {right_tuser, right_tlast, right_tdata} == right_was);
-      end
-    end
-
-  // ---- m_axis_disp.
-  always @(posedge aclk)
-    if (past_valid) begin
-      if ($past(rst)) assert(!disp_tvalid);
-      else if ($past(disp_tvalid && !disp_tready)) begin
-        assert(disp_tvalid);
-        assert(disp_tdata == $past(disp_tdata) && disp_tuser == $past(disp_tuser) && disp_tlast == $past(disp_tlast));
-      end
-    end
+  // ---- The input streams (environment) and m_axis_disp.
+  formal_axis_in #(.W(10)) left_stream (.clk(aclk), .rst(rst), .valid(left_tvalid), .ready(left_tready),
+                                        .payload({left_tuser, left_tlast, left_tdata}));
+  formal_axis_in #(.W(10)) right_stream (.clk(aclk), .rst(rst), .valid(right_tvalid), .ready(right_tready),
+                                         .payload({right_tuser, right_tlast, right_tdata}));
+  formal_axis_out #(.W(10)) disp_stream (.clk(aclk), .rst(rst), .valid(disp_tvalid), .ready(disp_tready),
+                                         .payload({disp_tuser, disp_tlast, disp_tdata}));
 `endif
 endmodule
 `resetall

@@ -52,12 +52,8 @@ module video_in_props (
   (* keep *) wire [Y_W-1:0] probe_y;
   (* keep *) wire           probe_first, probe_row_end, probe_last_row, probe_done;
 
-  reg past_valid = 1'b0, past_rst = 1'b1;
-  always @(posedge clk) begin
-    past_valid <= 1'b1;
-    past_rst <= rst;
-  end
-  always @* if (!past_valid) assume(rst);
+  wire past_valid, past_rst;
+  formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
 
   // ---- The frame as the core sees it: started by core_start, width x height pixels taken.
   reg           in_frame;
@@ -85,24 +81,8 @@ module video_in_props (
     if (in_take) assume(in_valid);
     if (in_frame) assume(frame_width == w && frame_height == h);
   end
-  // (written with registered past values in always @*: an assumption in a clocked block would
-  // only bind one cycle late)
-  reg       left_stall, right_stall;
-  reg [9:0] left_was, right_was;
-  always @(posedge clk) begin
-    left_stall <= left_valid && !left_ready;
-    right_stall <= right_valid && !right_ready;
-    left_was <= left;
-    right_was <= right;
-  end
-  always @*
-    if (past_valid) begin
-      if (rst || past_rst) assume(!left_valid && !right_valid);
-      else begin
-        if (left_stall) assume(left_valid && left == left_was);
-        if (right_stall) assume(right_valid && right == right_was);
-      end
-    end
+  formal_axis_in #(.W(10)) left_stream (.clk(clk), .rst(rst), .valid(left_valid), .ready(left_ready), .payload(left));
+  formal_axis_in #(.W(10)) right_stream (.clk(clk), .rst(rst), .valid(right_valid), .ready(right_ready), .payload(right));
 
   // ---- The unit.
   wire pair = left_ready && right_ready;

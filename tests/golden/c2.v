@@ -278,7 +278,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_front_end #(
-    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_K_W(1), .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_ROW_W(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -301,8 +301,8 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire history_slot;
   wire [191:0] costs;
   fps_census7_d128u32_865f3c_point_cost #(
-    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_K_W(1), .X_W(11),
-    .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
+    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1), .X_W(11),
+    .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .code_base(code_base), .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
@@ -319,8 +319,8 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [13:0] cost_raddr;
   wire [191:0] cost_q;
   fps_census7_d128u32_865f3c_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_K_W(1), .COST_AW(14),
-    .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_ROW_W(1), .COST_AW(14),
+    .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
@@ -342,9 +342,9 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_aggregator #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
-    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(3), .OUT_K_W(2), .COST_AW(14),
-    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
+    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(3), .OUT_ROW_W(2),
+    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
@@ -381,7 +381,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [1:0] read_slot_row;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_865f3c_disparity_reorder #(
-    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(3), .OUT_K_W(2), .DISP_AW(12), .EXTRA_ROWS(0), .X_W(11),
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(3), .OUT_ROW_W(2), .DISP_AW(12), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
@@ -395,7 +395,7 @@ module fps_census7_d128u32_865f3c_sgm_core (
   wire [8:0] median_y;
   wire [7:0] median_word;
   fps_census7_d128u32_865f3c_median #(
-    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(0), .X_W(11), .Y_W(9), .YS_W(11)
+    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(0), .X_W(11), .Y_W(9), .SIGNED_Y_W(11)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .wrapped(wrapped), .in_done(read_done), .in_x(read_x), .in_y(read_y), .in_word(read_word),
@@ -1008,11 +1008,11 @@ module fps_census7_d128u32_865f3c_front_end #(
   parameter G = 4,
   // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1042,22 +1042,22 @@ module fps_census7_d128u32_865f3c_front_end #(
   // window rows inside the image for the newest column (zero when that column is outside)
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
-  output reg  signed [YS_W-1:0] transform_y,
-  output reg  [COST_K_W-1:0]    transform_slot
+  output reg  signed [SIGNED_Y_W-1:0] transform_y,
+  output reg  [COST_ROW_W-1:0]    transform_slot
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
       fps_census7_d128u32_865f3c_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fps_census7_d128u32_865f3c_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fps_census7_d128u32_865f3c_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
@@ -1150,21 +1150,21 @@ module fps_census7_d128u32_865f3c_front_end #(
   localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
   localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
-  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
-  localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
+  localparam [COST_ROW_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_ROW_W-1:0];
+  localparam [SIGNED_Y_W-1:0] PREV_START = PREV_START_I[SIGNED_Y_W-1:0];
   localparam [X_W-1:0] R_X = R;
   reg  [X_W-1:0] centre_x;
   always @(posedge clk)
     if (restart) centre_x <= CENTRE_START;
     else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
-  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
+  reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
+  reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_865f3c_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
+  fps_census7_d128u32_865f3c_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1174,7 +1174,7 @@ module fps_census7_d128u32_865f3c_front_end #(
       newest_prev_slot <= PREV_SLOT;
     end else if (input_row_ends) begin
       newest_prev_y <= newest_y;
-      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
   // The centre lies in the previous row-time while the input slot is below R: a register that
@@ -1183,11 +1183,11 @@ module fps_census7_d128u32_865f3c_front_end #(
   always @(posedge clk)
     if (restart) borrow <= 1'b1;
     else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
-  wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
-  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
+  wire signed [SIGNED_Y_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_ROW_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
-  reg  signed [YS_W-1:0] window_y;
-  reg  [COST_K_W-1:0] window_slot;
+  reg  signed [SIGNED_Y_W-1:0] window_y;
+  reg  [COST_ROW_W-1:0] window_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
@@ -1205,10 +1205,10 @@ module fps_census7_d128u32_865f3c_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) prev_bounds (
+  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1292,9 +1292,9 @@ module fps_census7_d128u32_865f3c_point_cost #(
   parameter UF = 8,
   parameter COST_W = 5,
   parameter COST_MAX = 24,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_census7_d128u32_865f3c_cost_lanes checks it)
@@ -1309,11 +1309,11 @@ module fps_census7_d128u32_865f3c_point_cost #(
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [YS_W-1:0] transform_y,
-  input  wire [COST_K_W-1:0]    transform_slot,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [COST_ROW_W-1:0]    transform_slot,
   output reg  [X_W-1:0]         history_x,
-  output reg  signed [YS_W-1:0] history_y,
-  output reg  [COST_K_W-1:0]    history_slot,
+  output reg  signed [SIGNED_Y_W-1:0] history_y,
+  output reg  [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -1324,9 +1324,9 @@ module fps_census7_d128u32_865f3c_point_cost #(
   endgenerate
   wire [CODE_W-1:0]      code_base_o, code_match_o;
   wire [X_W-1:0]         transform_x_o;
-  wire signed [YS_W-1:0] transform_y_o;
-  wire [COST_K_W-1:0]    transform_slot_o;
-  fps_census7_d128u32_865f3c_offset_delays #(.BASE_W(CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
+  wire signed [SIGNED_Y_W-1:0] transform_y_o;
+  wire [COST_ROW_W-1:0]    transform_slot_o;
+  fps_census7_d128u32_865f3c_offset_delays #(.BASE_W(CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
     .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
     .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
   reg [CODE_W-1:0] code_base_h;
@@ -1363,11 +1363,11 @@ module fps_census7_d128u32_865f3c_cost_reorder #(
   // register stages of the cost lanes
   parameter LAT = 1,
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1377,12 +1377,12 @@ module fps_census7_d128u32_865f3c_cost_reorder #(
   input  wire [Y_W-1:0]         frame_height,
   input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         history_x,
-  input  wire signed [YS_W-1:0] history_y,
-  input  wire [COST_K_W-1:0]    history_slot,
+  input  wire signed [SIGNED_Y_W-1:0] history_y,
+  input  wire [COST_ROW_W-1:0]    history_slot,
   input  wire [UF*COST_W+EXTRA_W-1:0] costs,
   output wire                   cost_valid,
   output wire [X_W-1:0]         cost_x,
-  output wire [COST_K_W-1:0]    cost_row_slot,
+  output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
   output wire [UF*COST_W+EXTRA_W-1:0] cost_q
@@ -1392,15 +1392,15 @@ module fps_census7_d128u32_865f3c_cost_reorder #(
     if (LAT < 1) begin : invalid_LAT
       fps_census7_d128u32_865f3c_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
-    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
       fps_census7_d128u32_865f3c_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_census7_d128u32_865f3c_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(LAT)) cost_tag (
+  fps_census7_d128u32_865f3c_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
@@ -1427,7 +1427,7 @@ module fps_census7_d128u32_865f3c_aggregator #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter COST_W = 5,
@@ -1443,7 +1443,7 @@ module fps_census7_d128u32_865f3c_aggregator #(
   parameter PATH_TREE_LAT = 1,
   // rows of the output RAMs (the slot output is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -1451,7 +1451,7 @@ module fps_census7_d128u32_865f3c_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0
 ) (
@@ -1479,24 +1479,21 @@ module fps_census7_d128u32_865f3c_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_K_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot
 );
   localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_865f3c_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
-      fps_census7_d128u32_865f3c_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fps_census7_d128u32_865f3c_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_census7_d128u32_865f3c_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
-      fps_census7_d128u32_865f3c_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_census7_d128u32_865f3c_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
       fps_census7_d128u32_865f3c_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -1520,7 +1517,7 @@ module fps_census7_d128u32_865f3c_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SLEN - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -1529,11 +1526,11 @@ module fps_census7_d128u32_865f3c_aggregator #(
 
   // ------------------------------------------------------------------------------------------
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
-  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  // ta - ka, pixel x = ka * SEGMENT + ja; its state lives in slot (ka + base) mod K.
   reg [G_W-1:0] ga;
   reg [K_W-1:0] ka, base;
-  reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
-  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
+  reg [COST_ROW_W-1:0] ta_slot;       // ta mod COST_ROWS
+  reg [OUT_ROW_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
@@ -1556,26 +1553,26 @@ module fps_census7_d128u32_865f3c_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
+            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_ROW_W{1'b0}} : ta_slot + 1'b1;
+            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SLEN + ja;
+  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
   wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
@@ -1594,10 +1591,10 @@ module fps_census7_d128u32_865f3c_aggregator #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_ROW_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_ROW_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -1682,7 +1679,8 @@ module fps_census7_d128u32_865f3c_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
-      fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
@@ -1726,7 +1724,8 @@ module fps_census7_d128u32_865f3c_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
-      fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
     end else begin : no_path45
       assign path_45 = 0;
@@ -1761,7 +1760,8 @@ module fps_census7_d128u32_865f3c_aggregator #(
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        fps_census7_d128u32_865f3c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
     end
@@ -1812,7 +1812,7 @@ endmodule
 // group (fps_census7_d128u32_865f3c_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
 // the group in group_out; it is the pixel's result in its last group's step. The tag (the
-// pixel's position) travels along, TREE_LAT steps.
+// pixel's position) travels along, TREE_LAT steps (the tree's latency, which it checks).
 module fps_census7_d128u32_865f3c_wta #(
   parameter UF = 8,
   parameter SUM_W = 9,
@@ -1833,20 +1833,13 @@ module fps_census7_d128u32_865f3c_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
-      fps_census7_d128u32_865f3c_invalid_parameters_wta_LANE_W_does_not_hold_UF_minus_1 failed ();
-    end
-    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
-      fps_census7_d128u32_865f3c_invalid_parameters_wta_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
-  endgenerate
+  // fps_census7_d128u32_865f3c_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   fps_census7_d128u32_865f3c_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
-  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
   wire [DISP_W-1:0] group_disparity = group_out * UF + group_lane;
@@ -1877,7 +1870,7 @@ module fps_census7_d128u32_865f3c_disparity_reorder #(
   parameter DISP_W = 5,
   // rows of the RAM (the slot is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   // address width of the OUT_ROWS * ROW_SLOTS words
   parameter DISP_AW = 8,
   parameter EXTRA_ROWS = 0,
@@ -1897,14 +1890,14 @@ module fps_census7_d128u32_865f3c_disparity_reorder #(
   // the winner-take-all's pixel: written in its last group's step
   input  wire               active,
   input  wire [X_W-1:0]     x,
-  input  wire [OUT_K_W-1:0] slot,
+  input  wire [OUT_ROW_W-1:0] slot,
   input  wire [G_W-1:0]     group,
   input  wire [DISP_W:0]    word,
   output reg                read_done,
   output reg                read_event,
   output reg  [X_W-1:0]     read_x,
   output reg  [Y_W-1:0]     read_y,
-  output reg  [OUT_K_W-1:0] read_slot_row,
+  output reg  [OUT_ROW_W-1:0] read_slot_row,
   output wire [DISP_W:0]    read_word
 );
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
@@ -1912,7 +1905,7 @@ module fps_census7_d128u32_865f3c_disparity_reorder #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_K_W) < OUT_ROWS) begin : invalid
+    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
       fps_census7_d128u32_865f3c_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
@@ -1926,10 +1919,10 @@ module fps_census7_d128u32_865f3c_disparity_reorder #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0] so;
   wire [Y_W-1:0] to;
-  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
+  wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
   fps_census7_d128u32_865f3c_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(OUT_K_W))
+                            .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
@@ -1973,7 +1966,7 @@ module fps_census7_d128u32_865f3c_median #(
   parameter EXTRA_ROWS = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire             clk,
   input  wire             restart,
@@ -1996,30 +1989,30 @@ module fps_census7_d128u32_865f3c_median #(
     if (M < 3 || M % 2 == 0) begin : invalid_M
       fps_census7_d128u32_865f3c_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fps_census7_d128u32_865f3c_invalid_parameters_median_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fps_census7_d128u32_865f3c_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RM = M / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
   wire [M*M*(DISP_W+1)-1:0] window;
   fps_census7_d128u32_865f3c_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
+  wire signed [SIGNED_Y_W-1:0] centre_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
   wire centre_slot;
-  wire signed [YS_W-1:0] newest_y;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_865f3c_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
+  fps_census7_d128u32_865f3c_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
-  reg signed [YS_W-1:0] median_y;
+  reg signed [SIGNED_Y_W-1:0] median_y;
   reg           fresh;     // high in the step after a shift: one result per slot
   always @(posedge clk)
     if (restart) fresh <= 1'b0;
@@ -2030,16 +2023,16 @@ module fps_census7_d128u32_865f3c_median #(
       median_y <= centre_y;
     end
   wire [M-1:0] row_valid, col_valid;
-  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(M), .X_W(X_W), .YS_W(YS_W)) bounds (
+  fps_census7_d128u32_865f3c_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
     .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   wire [DISP_W:0] selected;
   fps_census7_d128u32_865f3c_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
     .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
   // The centre's coordinates travel as long as the selection takes.
-  wire signed [YS_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
   wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
-  wire [YS_W-1:0] median_row = median_y;
+  wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */
   wire           done_m;
   wire [X_W-1:0] x_m;
@@ -2229,12 +2222,12 @@ module fps_census7_d128u32_865f3c_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
@@ -2253,11 +2246,11 @@ module fps_census7_d128u32_865f3c_window_bounds #(
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
       assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule
@@ -2747,7 +2740,9 @@ module fps_census7_d128u32_865f3c_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the tree's latency the caller plans with (fps_census7_d128u32_865f3c_reduction_tree checks it)
+  parameter TREE_LAT = 2
 ) (
   input  wire               clk,
   input  wire               en,
@@ -2756,16 +2751,12 @@ module fps_census7_d128u32_865f3c_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
+  // fps_census7_d128u32_865f3c_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_census7_d128u32_865f3c_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
   reg [PATH_W-1:0] running;
@@ -2777,9 +2768,8 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
-// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
-// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+// Pipelined minimum (and its index) over N values: fps_census7_d128u32_865f3c_reduction_tree over {value, index}
+// summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
 module fps_census7_d128u32_865f3c_min_tree #(
   // number of values
   parameter N = 8,
@@ -2788,7 +2778,9 @@ module fps_census7_d128u32_865f3c_min_tree #(
   // index width, at least clog2(N) (at least 1)
   parameter IDX_W = 3,
   // compare-select levels between registers
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the latency the caller plans with (fps_census7_d128u32_865f3c_reduction_tree checks it)
+  parameter LAT = 1
 ) (
   input  wire             clk,
   input  wire             en,
@@ -2796,67 +2788,18 @@ module fps_census7_d128u32_865f3c_min_tree #(
   output wire [W-1:0]     min_value,
   output wire [IDX_W-1:0] min_index
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  localparam S_W = W + IDX_W;
+  wire [N*S_W-1:0] leaves;
+  genvar i;
   generate
-    if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_N_or_W_below_1 failed ();
-    end
-    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
-    end
-    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_865f3c_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    for (i = 0; i < N; i = i + 1) begin : leaf
+      wire [IDX_W-1:0] at = i;
+      assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
     end
   endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
-
-  genvar l, i;
-  generate
-    for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      // Level l holds ceil(N / 2^l) candidates.
-      localparam COUNT = (N + (1 << l) - 1) >> l;
-      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
-      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*W-1:0]     v_d;
-      wire [COUNT*IDX_W-1:0] x_d;
-      wire [COUNT*W-1:0]     v;
-      wire [COUNT*IDX_W-1:0] x;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (l == 0) begin : leaf
-          assign v_d[i*W +: W]         = values[i*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = i;
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
-          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
-          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
-          wire             take_b = b < a;
-          assign v_d[i*W +: W]         = take_b ? b : a;
-          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
-        end else begin : single
-          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-        end
-      end
-      if (REGISTERED) begin : stage
-        reg [COUNT*W-1:0]     v_q;
-        reg [COUNT*IDX_W-1:0] x_q;
-        always @(posedge clk)
-          if (en) begin
-            v_q <= v_d;
-            x_q <= x_d;
-          end
-        assign v = v_q;
-        assign x = x_q;
-      end else begin : wire_through
-        assign v = v_d;
-        assign x = x_d;
-      end
-    end
-  endgenerate
-
-  assign min_value = level[LEVELS].v[W-1:0];
-  assign min_index = level[LEVELS].x[IDX_W-1:0];
+  fps_census7_d128u32_865f3c_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+                            .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
+    .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
 endmodule
 `resetall
 
@@ -2874,20 +2817,20 @@ module fps_census7_d128u32_865f3c_window_centre #(
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   // rows of the RAM the slots index, and the slot width
   parameter ROWS = 2,
   parameter SLOT_W = 1
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [SLOT_W-1:0]      slot,
   input  wire                   wrapped,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [X_W-1:0]         centre_x,
-  output wire signed [YS_W-1:0] centre_y,
+  output wire signed [SIGNED_Y_W-1:0] centre_y,
   output wire [SLOT_W-1:0]      centre_slot,
-  output wire signed [YS_W-1:0] row_y
+  output wire signed [SIGNED_Y_W-1:0] row_y
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -2902,18 +2845,18 @@ module fps_census7_d128u32_865f3c_window_centre #(
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
+  localparam signed [SIGNED_Y_W-1:0] LAG_Y = LAG_I[SIGNED_Y_W-1:0];
 
   localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
-  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  localparam signed [SIGNED_Y_W-1:0] LAG_PREV_Y = LAG_Y + 1;
   // Both rows and their wrapped forms in parallel, then chosen.
-  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
-  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  wire signed [SIGNED_Y_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [SIGNED_Y_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
   assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
-  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  wire signed [SIGNED_Y_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
   assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
   assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
@@ -3130,5 +3073,130 @@ module fps_census7_d128u32_865f3c_median_select #(
       end
     end
   endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The skeleton of the pipelined selection trees (fps_census7_d128u32_865f3c_min_tree, fps_census7_d128u32_865f3c_unique_tree): N
+// summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
+// LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
+// last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
+// the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
+// summary that fps_census7_d128u32_865f3c_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
+// formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
+module fps_census7_d128u32_865f3c_reduction_tree #(
+  parameter N = 8,
+  parameter W = 8,
+  parameter IDX_W = 3,
+  parameter UNIQUE = 0,
+  parameter S_W = 11,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter LAT = 1
+) (
+  input  wire           clk,
+  input  wire           en,
+  input  wire [N*S_W-1:0] leaves,
+  output wire [S_W-1:0] root
+);
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+  localparam STAGES = (LEVELS + LEVELS_PER_STAGE - 1) / (LEVELS_PER_STAGE > 0 ? LEVELS_PER_STAGE : 1);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fps_census7_d128u32_865f3c_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fps_census7_d128u32_865f3c_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fps_census7_d128u32_865f3c_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+    if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
+      fps_census7_d128u32_865f3c_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
+    end
+  endgenerate
+
+  genvar l, i;
+  generate
+    for (l = 0; l <= LEVELS; l = l + 1) begin : level
+      // Level l holds ceil(N / 2^l) summaries.
+      localparam COUNT = (N + (1 << l) - 1) >> l;
+      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
+      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
+      wire [COUNT*S_W-1:0] s_d;
+      wire [COUNT*S_W-1:0] s;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (l == 0) begin : leaf
+          assign s_d[i*S_W +: S_W] = leaves[i*S_W +: S_W];
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
+          wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
+          if (UNIQUE != 0) begin : unique_join
+            fps_census7_d128u32_865f3c_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+          end else begin : min_join
+            wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
+            assign s_d[i*S_W +: S_W] = take_b ? b : a;
+          end
+        end else begin : single
+          assign s_d[i*S_W +: S_W] = level[l-1].s[(2*i)*S_W +: S_W];
+        end
+      end
+      if (REGISTERED) begin : stage
+        reg [COUNT*S_W-1:0] s_q;
+        always @(posedge clk)
+          if (en) s_q <= s_d;
+        assign s = s_q;
+      end else begin : wire_through
+        assign s = s_d;
+      end
+    end
+  endgenerate
+
+  assign root = level[LEVELS].s[S_W-1:0];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Joins the winner-take-all summaries of two adjacent index ranges, A (lower) and B (higher), as
+// fps_census7_d128u32_865f3c_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
+// first, last} with W-bit values and an IDX_W-bit index.
+module fps_census7_d128u32_865f3c_unique_join #(
+  parameter W = 10,
+  parameter IDX_W = 3
+) (
+  input  wire [5*W+IDX_W+1:0] a,
+  input  wire [5*W+IDX_W+1:0] b,
+  output wire [5*W+IDX_W+1:0] joined
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (W < 1 || IDX_W < 1) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+    end
+  endgenerate
+  localparam S_W = 5 * W + IDX_W + 2;
+
+  function [W-1:0] min2(input [W-1:0] x, input [W-1:0] y);
+    min2 = y < x ? y : x;
+  endfunction
+
+  wire [W-1:0] a_best = a[S_W-1 -: W], a_all = a[S_W-W-1 -: W], a_but_first = a[S_W-2*W-1 -: W];
+  wire [W-1:0] a_but_last = a[S_W-3*W-1 -: W], a_second = a[S_W-4*W-1 -: W];
+  wire [IDX_W-1:0] a_index = a[IDX_W+1:2];
+  wire a_first = a[1], a_last = a[0];
+  wire [W-1:0] b_best = b[S_W-1 -: W], b_all = b[S_W-W-1 -: W], b_but_first = b[S_W-2*W-1 -: W];
+  wire [W-1:0] b_but_last = b[S_W-3*W-1 -: W], b_second = b[S_W-4*W-1 -: W];
+  wire [IDX_W-1:0] b_index = b[IDX_W+1:2];
+  wire b_first = b[1], b_last = b[0];
+
+  wire b_wins = b_best < a_best;  // ties keep the lower index
+  wire [W-1:0] second = b_wins ? min2(b_second, b_first ? a_but_last : a_all)
+                               : min2(a_second, a_last ? b_but_first : b_all);
+  assign joined = {b_wins ? b_best : a_best, min2(a_all, b_all), min2(a_but_first, b_all),
+                   min2(a_all, b_but_last), second, b_wins ? b_index : a_index,
+                   !b_wins && a_first, b_wins && b_last};
 endmodule
 `resetall

@@ -280,7 +280,7 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_8b754b_front_end #(
-    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_K_W(1), .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_ROW_W(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -303,8 +303,8 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire history_slot;
   wire [191:0] costs;
   fps_census7_d128u32_8b754b_point_cost #(
-    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_K_W(1), .X_W(11),
-    .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
+    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1), .X_W(11),
+    .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .code_base(code_base), .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
@@ -321,8 +321,8 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [13:0] cost_raddr;
   wire [191:0] cost_q;
   fps_census7_d128u32_8b754b_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_K_W(1), .COST_AW(14),
-    .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_ROW_W(1), .COST_AW(14),
+    .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
@@ -342,9 +342,9 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [1:0] agg_slot;
   wire agg_chain;
   fps_census7_d128u32_8b754b_aggregator #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
-    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_K_W(2), .COST_AW(14),
-    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_K_W(1), .MATCH_SIDE(0)
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
+    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_ROW_W(2),
+    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
@@ -359,7 +359,7 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [3:0] row_end_waddr;
   wire [223:0] row_end_wdata;
   fps_census7_d128u32_8b754b_lr1_match #(
-    .K(2), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_K_W(2), .DISP_AW(13),
+    .K(2), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_ROW_W(2), .DISP_AW(13),
     .END_AW(4), .X_W(11), .G_W(2), .K_W(1), .MIN_DISP(0)
   ) lr1_match (
     .clk(clk), .adv(adv), .frame_width(frame_width), .sums(agg_sums), .active(agg_active), .x(agg_x),
@@ -398,7 +398,7 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [7:0] read_word;
   wire [1:0] read_slot_row;
   fps_census7_d128u32_8b754b_disparity_reorder #(
-    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(4), .OUT_K_W(2), .DISP_AW(13), .EXTRA_ROWS(1), .X_W(11),
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(4), .OUT_ROW_W(2), .DISP_AW(13), .EXTRA_ROWS(1), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
@@ -418,7 +418,7 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_8b754b_lr_check #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(4), .OUT_K_W(2),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(4), .OUT_ROW_W(2),
     .DISP_AW(13), .ROW_END(1), .END_AW(4), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
@@ -435,7 +435,7 @@ module fps_census7_d128u32_8b754b_sgm_core (
   wire [8:0] median_y;
   wire [7:0] median_word;
   fps_census7_d128u32_8b754b_median #(
-    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(1), .X_W(11), .Y_W(9), .YS_W(11)
+    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .wrapped(wrapped), .in_done(checked_done), .in_x(checked_x), .in_y(checked_y), .in_word(checked_word),
@@ -1060,11 +1060,11 @@ module fps_census7_d128u32_8b754b_front_end #(
   parameter G = 4,
   // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1094,22 +1094,22 @@ module fps_census7_d128u32_8b754b_front_end #(
   // window rows inside the image for the newest column (zero when that column is outside)
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
-  output reg  signed [YS_W-1:0] transform_y,
-  output reg  [COST_K_W-1:0]    transform_slot
+  output reg  signed [SIGNED_Y_W-1:0] transform_y,
+  output reg  [COST_ROW_W-1:0]    transform_slot
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
       fps_census7_d128u32_8b754b_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fps_census7_d128u32_8b754b_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fps_census7_d128u32_8b754b_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
@@ -1202,21 +1202,21 @@ module fps_census7_d128u32_8b754b_front_end #(
   localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
   localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
-  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
-  localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
+  localparam [COST_ROW_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_ROW_W-1:0];
+  localparam [SIGNED_Y_W-1:0] PREV_START = PREV_START_I[SIGNED_Y_W-1:0];
   localparam [X_W-1:0] R_X = R;
   reg  [X_W-1:0] centre_x;
   always @(posedge clk)
     if (restart) centre_x <= CENTRE_START;
     else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
-  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
+  reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
+  reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_8b754b_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
+  fps_census7_d128u32_8b754b_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1226,7 +1226,7 @@ module fps_census7_d128u32_8b754b_front_end #(
       newest_prev_slot <= PREV_SLOT;
     end else if (input_row_ends) begin
       newest_prev_y <= newest_y;
-      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
   // The centre lies in the previous row-time while the input slot is below R: a register that
@@ -1235,11 +1235,11 @@ module fps_census7_d128u32_8b754b_front_end #(
   always @(posedge clk)
     if (restart) borrow <= 1'b1;
     else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
-  wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
-  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
+  wire signed [SIGNED_Y_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_ROW_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
-  reg  signed [YS_W-1:0] window_y;
-  reg  [COST_K_W-1:0] window_slot;
+  reg  signed [SIGNED_Y_W-1:0] window_y;
+  reg  [COST_ROW_W-1:0] window_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
@@ -1257,10 +1257,10 @@ module fps_census7_d128u32_8b754b_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) prev_bounds (
+  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1344,9 +1344,9 @@ module fps_census7_d128u32_8b754b_point_cost #(
   parameter UF = 8,
   parameter COST_W = 5,
   parameter COST_MAX = 24,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_census7_d128u32_8b754b_cost_lanes checks it)
@@ -1361,11 +1361,11 @@ module fps_census7_d128u32_8b754b_point_cost #(
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [YS_W-1:0] transform_y,
-  input  wire [COST_K_W-1:0]    transform_slot,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [COST_ROW_W-1:0]    transform_slot,
   output reg  [X_W-1:0]         history_x,
-  output reg  signed [YS_W-1:0] history_y,
-  output reg  [COST_K_W-1:0]    history_slot,
+  output reg  signed [SIGNED_Y_W-1:0] history_y,
+  output reg  [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -1376,9 +1376,9 @@ module fps_census7_d128u32_8b754b_point_cost #(
   endgenerate
   wire [CODE_W-1:0]      code_base_o, code_match_o;
   wire [X_W-1:0]         transform_x_o;
-  wire signed [YS_W-1:0] transform_y_o;
-  wire [COST_K_W-1:0]    transform_slot_o;
-  fps_census7_d128u32_8b754b_offset_delays #(.BASE_W(CODE_W + X_W + YS_W + COST_K_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
+  wire signed [SIGNED_Y_W-1:0] transform_y_o;
+  wire [COST_ROW_W-1:0]    transform_slot_o;
+  fps_census7_d128u32_8b754b_offset_delays #(.BASE_W(CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
     .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
     .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
   reg [CODE_W-1:0] code_base_h;
@@ -1415,11 +1415,11 @@ module fps_census7_d128u32_8b754b_cost_reorder #(
   // register stages of the cost lanes
   parameter LAT = 1,
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1429,12 +1429,12 @@ module fps_census7_d128u32_8b754b_cost_reorder #(
   input  wire [Y_W-1:0]         frame_height,
   input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         history_x,
-  input  wire signed [YS_W-1:0] history_y,
-  input  wire [COST_K_W-1:0]    history_slot,
+  input  wire signed [SIGNED_Y_W-1:0] history_y,
+  input  wire [COST_ROW_W-1:0]    history_slot,
   input  wire [UF*COST_W+EXTRA_W-1:0] costs,
   output wire                   cost_valid,
   output wire [X_W-1:0]         cost_x,
-  output wire [COST_K_W-1:0]    cost_row_slot,
+  output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
   output wire [UF*COST_W+EXTRA_W-1:0] cost_q
@@ -1444,15 +1444,15 @@ module fps_census7_d128u32_8b754b_cost_reorder #(
     if (LAT < 1) begin : invalid_LAT
       fps_census7_d128u32_8b754b_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
-    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
       fps_census7_d128u32_8b754b_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_census7_d128u32_8b754b_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(LAT)) cost_tag (
+  fps_census7_d128u32_8b754b_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
@@ -1479,7 +1479,7 @@ module fps_census7_d128u32_8b754b_aggregator #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter COST_W = 5,
@@ -1495,7 +1495,7 @@ module fps_census7_d128u32_8b754b_aggregator #(
   parameter PATH_TREE_LAT = 1,
   // rows of the output RAMs (the slot output is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -1503,7 +1503,7 @@ module fps_census7_d128u32_8b754b_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0
 ) (
@@ -1531,24 +1531,21 @@ module fps_census7_d128u32_8b754b_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_K_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot
 );
   localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_8b754b_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
-      fps_census7_d128u32_8b754b_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fps_census7_d128u32_8b754b_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_census7_d128u32_8b754b_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
-      fps_census7_d128u32_8b754b_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_census7_d128u32_8b754b_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
       fps_census7_d128u32_8b754b_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -1572,7 +1569,7 @@ module fps_census7_d128u32_8b754b_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SLEN - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -1581,11 +1578,11 @@ module fps_census7_d128u32_8b754b_aggregator #(
 
   // ------------------------------------------------------------------------------------------
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
-  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  // ta - ka, pixel x = ka * SEGMENT + ja; its state lives in slot (ka + base) mod K.
   reg [G_W-1:0] ga;
   reg [K_W-1:0] ka, base;
-  reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
-  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
+  reg [COST_ROW_W-1:0] ta_slot;       // ta mod COST_ROWS
+  reg [OUT_ROW_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
@@ -1608,26 +1605,26 @@ module fps_census7_d128u32_8b754b_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
+            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_ROW_W{1'b0}} : ta_slot + 1'b1;
+            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SLEN + ja;
+  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
   wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
@@ -1646,10 +1643,10 @@ module fps_census7_d128u32_8b754b_aggregator #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_ROW_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_ROW_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -1734,7 +1731,8 @@ module fps_census7_d128u32_8b754b_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
-      fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
@@ -1778,7 +1776,8 @@ module fps_census7_d128u32_8b754b_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
-      fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
     end else begin : no_path45
       assign path_45 = 0;
@@ -1813,7 +1812,8 @@ module fps_census7_d128u32_8b754b_aggregator #(
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        fps_census7_d128u32_8b754b_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
     end
@@ -1875,7 +1875,7 @@ module fps_census7_d128u32_8b754b_lr1_match #(
   parameter ROW_SLOTS = 64,
   parameter SUM_W = 9,
   parameter DISP_W = 5,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter END_AW = 4,
   parameter X_W = 7,
@@ -1892,7 +1892,7 @@ module fps_census7_d128u32_8b754b_lr1_match #(
   input  wire [X_W-1:0]       x,
   input  wire [G_W-1:0]       group,
   input  wire [K_W-1:0]       chain,
-  input  wire [OUT_K_W-1:0]   slot,
+  input  wire [OUT_ROW_W-1:0]   slot,
   output wire                 completed_we,
   output wire [DISP_AW-1:0]   completed_waddr,
   output wire [DISP_W-1:0]    completed_wdata,
@@ -1986,15 +1986,7 @@ module fps_census7_d128u32_8b754b_wta_unique #(
   output wire [SUM_W-1:0]    best_sum,
   output wire [SUM_W-1:0]    second_sum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
-      fps_census7_d128u32_8b754b_invalid_parameters_wta_unique_LANE_W_does_not_hold_UF_minus_1 failed ();
-    end
-    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
-      fps_census7_d128u32_8b754b_invalid_parameters_wta_unique_TREE_LAT_is_not_the_unique_tree_latency failed ();
-    end
-  endgenerate
+  // fps_census7_d128u32_8b754b_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   localparam S_W = 5 * SUM_W + DISP_W + 2;
   wire [G_W-1:0] group_tree;  // the group whose summary leaves the tree
@@ -2006,7 +1998,8 @@ module fps_census7_d128u32_8b754b_wta_unique #(
   wire [SUM_W-1:0]  best, all, but_first, but_last, second;
   wire [LANE_W-1:0] lane;
   wire              first, last;
-  fps_census7_d128u32_8b754b_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_census7_d128u32_8b754b_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                        .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .best(best), .index(lane), .first(first), .last(last), .all(all),
     .but_first(but_first), .but_last(but_last), .second(second));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
@@ -2070,7 +2063,7 @@ module fps_census7_d128u32_8b754b_disparity_reorder #(
   parameter DISP_W = 5,
   // rows of the RAM (the slot is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   // address width of the OUT_ROWS * ROW_SLOTS words
   parameter DISP_AW = 8,
   parameter EXTRA_ROWS = 0,
@@ -2090,14 +2083,14 @@ module fps_census7_d128u32_8b754b_disparity_reorder #(
   // the winner-take-all's pixel: written in its last group's step
   input  wire               active,
   input  wire [X_W-1:0]     x,
-  input  wire [OUT_K_W-1:0] slot,
+  input  wire [OUT_ROW_W-1:0] slot,
   input  wire [G_W-1:0]     group,
   input  wire [DISP_W:0]    word,
   output reg                read_done,
   output reg                read_event,
   output reg  [X_W-1:0]     read_x,
   output reg  [Y_W-1:0]     read_y,
-  output reg  [OUT_K_W-1:0] read_slot_row,
+  output reg  [OUT_ROW_W-1:0] read_slot_row,
   output wire [DISP_W:0]    read_word
 );
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
@@ -2105,7 +2098,7 @@ module fps_census7_d128u32_8b754b_disparity_reorder #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_K_W) < OUT_ROWS) begin : invalid
+    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
       fps_census7_d128u32_8b754b_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
@@ -2119,10 +2112,10 @@ module fps_census7_d128u32_8b754b_disparity_reorder #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0] so;
   wire [Y_W-1:0] to;
-  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
+  wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
   fps_census7_d128u32_8b754b_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(OUT_K_W))
+                            .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
@@ -2173,7 +2166,7 @@ module fps_census7_d128u32_8b754b_lr_check #(
   // bits of the refined disparity carried above D in the read word, 0 without sub-pixel output
   parameter REFINED_W = 0,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   // LR1: the row ends come from the row-end RAM
   parameter ROW_END = 1,
@@ -2200,7 +2193,7 @@ module fps_census7_d128u32_8b754b_lr_check #(
   input  wire                 read_event,
   input  wire [X_W-1:0]       read_x,
   input  wire [Y_W-1:0]       read_y,
-  input  wire [OUT_K_W-1:0]   read_slot_row,
+  input  wire [OUT_ROW_W-1:0]   read_slot_row,
   input  wire [REFINED_W+DISP_W:0] read_word,
   output reg                  checked_done,
   output reg                  checked_event,
@@ -2227,7 +2220,7 @@ module fps_census7_d128u32_8b754b_lr_check #(
   wire [DISP_W-1:0] dm;
   fps_census7_d128u32_8b754b_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
     .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
@@ -2289,7 +2282,7 @@ module fps_census7_d128u32_8b754b_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fps_census7_d128u32_8b754b_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
         .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
@@ -2323,7 +2316,7 @@ module fps_census7_d128u32_8b754b_median #(
   parameter EXTRA_ROWS = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire             clk,
   input  wire             restart,
@@ -2346,30 +2339,30 @@ module fps_census7_d128u32_8b754b_median #(
     if (M < 3 || M % 2 == 0) begin : invalid_M
       fps_census7_d128u32_8b754b_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fps_census7_d128u32_8b754b_invalid_parameters_median_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fps_census7_d128u32_8b754b_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RM = M / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
   wire [M*M*(DISP_W+1)-1:0] window;
   fps_census7_d128u32_8b754b_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
-  wire signed [YS_W-1:0] centre_y;
+  wire signed [SIGNED_Y_W-1:0] centre_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the median needs no RAM slot
   wire centre_slot;
-  wire signed [YS_W-1:0] newest_y;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_8b754b_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .YS_W(YS_W), .ROWS(1), .SLOT_W(1)) centre (
+  fps_census7_d128u32_8b754b_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
-  reg signed [YS_W-1:0] median_y;
+  reg signed [SIGNED_Y_W-1:0] median_y;
   reg           fresh;     // high in the step after a shift: one result per slot
   always @(posedge clk)
     if (restart) fresh <= 1'b0;
@@ -2380,16 +2373,16 @@ module fps_census7_d128u32_8b754b_median #(
       median_y <= centre_y;
     end
   wire [M-1:0] row_valid, col_valid;
-  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(M), .X_W(X_W), .YS_W(YS_W)) bounds (
+  fps_census7_d128u32_8b754b_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
     .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   wire [DISP_W:0] selected;
   fps_census7_d128u32_8b754b_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
     .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
   // The centre's coordinates travel as long as the selection takes.
-  wire signed [YS_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
   wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
-  wire [YS_W-1:0] median_row = median_y;
+  wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */
   wire           done_m;
   wire [X_W-1:0] x_m;
@@ -2715,12 +2708,12 @@ module fps_census7_d128u32_8b754b_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
@@ -2739,11 +2732,11 @@ module fps_census7_d128u32_8b754b_window_bounds #(
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
       assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule
@@ -3233,7 +3226,9 @@ module fps_census7_d128u32_8b754b_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the tree's latency the caller plans with (fps_census7_d128u32_8b754b_reduction_tree checks it)
+  parameter TREE_LAT = 2
 ) (
   input  wire               clk,
   input  wire               en,
@@ -3242,16 +3237,12 @@ module fps_census7_d128u32_8b754b_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fps_census7_d128u32_8b754b_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
+  // fps_census7_d128u32_8b754b_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_census7_d128u32_8b754b_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_census7_d128u32_8b754b_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
   reg [PATH_W-1:0] running;
@@ -3277,12 +3268,15 @@ endmodule
 //   second = min(A.second, A.last ? B.but_first : B.all)   (A wins)
 //          = min(B.second, B.first ? A.but_last : A.all)   (B wins).
 // The same join continues across the groups of a pixel (fps_census7_d128u32_8b754b_sgm_core). A missing value is
-// all ones (no sum reaches it). Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+// all ones (no sum reaches it). The tree is fps_census7_d128u32_8b754b_reduction_tree over these summaries.
+// Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
 module fps_census7_d128u32_8b754b_unique_tree #(
   parameter N = 8,
   parameter W = 10,
   parameter IDX_W = 3,
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the latency the caller plans with (fps_census7_d128u32_8b754b_reduction_tree checks it)
+  parameter LAT = 1
 ) (
   input  wire             clk,
   input  wire             en,
@@ -3296,56 +3290,22 @@ module fps_census7_d128u32_8b754b_unique_tree #(
   output wire [W-1:0]     but_last,
   output wire [W-1:0]     second
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_8b754b_invalid_parameters_unique_tree_N_or_W_below_1 failed ();
-    end
-    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_8b754b_invalid_parameters_unique_tree_IDX_W_does_not_hold_N_minus_1 failed ();
-    end
-    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_8b754b_invalid_parameters_unique_tree_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
   localparam NONE = {W{1'b1}};
   // One summary: {best, all, but_first, but_last, second} values, the index and two flags.
   localparam S_W = 5 * W + IDX_W + 2;
-
-  genvar l, i;
+  wire [N*S_W-1:0] leaves;
+  genvar i;
   generate
-    for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      localparam COUNT = (N + (1 << l) - 1) >> l;
-      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
-      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*S_W-1:0] s_d;
-      wire [COUNT*S_W-1:0] s;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (l == 0) begin : leaf
-          wire [W-1:0] v = values[i*W +: W];
-          wire [IDX_W-1:0] at = i;
-          assign s_d[i*S_W +: S_W] = {v, v, NONE, NONE, NONE, at, 1'b1, 1'b1};
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          fps_census7_d128u32_8b754b_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (
-            .a(level[l-1].s[(2*i)*S_W +: S_W]), .b(level[l-1].s[(2*i+1)*S_W +: S_W]),
-            .joined(s_d[i*S_W +: S_W]));
-        end else begin : single
-          assign s_d[i*S_W +: S_W] = level[l-1].s[(2*i)*S_W +: S_W];
-        end
-      end
-      if (REGISTERED) begin : stage
-        reg [COUNT*S_W-1:0] s_q;
-        always @(posedge clk)
-          if (en) s_q <= s_d;
-        assign s = s_q;
-      end else begin : wire_through
-        assign s = s_d;
-      end
+    for (i = 0; i < N; i = i + 1) begin : leaf
+      wire [W-1:0] v = values[i*W +: W];
+      wire [IDX_W-1:0] at = i;
+      assign leaves[i*S_W +: S_W] = {v, v, NONE, NONE, NONE, at, 1'b1, 1'b1};
     end
   endgenerate
-
-  wire [S_W-1:0] root = level[LEVELS].s[S_W-1:0];
+  wire [S_W-1:0] root;
+  fps_census7_d128u32_8b754b_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(1), .S_W(S_W),
+                            .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
+    .clk(clk), .en(en), .leaves(leaves), .root(root));
   assign best      = root[S_W-1 -: W];
   assign all       = root[S_W-W-1 -: W];
   assign but_first = root[S_W-2*W-1 -: W];
@@ -3415,7 +3375,7 @@ module fps_census7_d128u32_8b754b_match_lookup #(
   parameter DMAX = 32,
   parameter DISP_W = 5,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter ROW_END = 1,
   parameter END_AW = 4,
@@ -3437,7 +3397,7 @@ module fps_census7_d128u32_8b754b_match_lookup #(
   input  wire [UF*DISP_W-1:0] row_end_wdata,
   /* verilator lint_on UNUSEDSIGNAL */
   // first step: the row's slot in the RAMs and x'
-  input  wire [OUT_K_W-1:0]   slot_row,
+  input  wire [OUT_ROW_W-1:0]   slot_row,
   input  wire [X_W-1:0]       xm,
   // second step
   output wire [DISP_W-1:0]    dm
@@ -3502,20 +3462,20 @@ module fps_census7_d128u32_8b754b_window_centre #(
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   // rows of the RAM the slots index, and the slot width
   parameter ROWS = 2,
   parameter SLOT_W = 1
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [SLOT_W-1:0]      slot,
   input  wire                   wrapped,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [X_W-1:0]         centre_x,
-  output wire signed [YS_W-1:0] centre_y,
+  output wire signed [SIGNED_Y_W-1:0] centre_y,
   output wire [SLOT_W-1:0]      centre_slot,
-  output wire signed [YS_W-1:0] row_y
+  output wire signed [SIGNED_Y_W-1:0] row_y
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -3530,18 +3490,18 @@ module fps_census7_d128u32_8b754b_window_centre #(
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [YS_W-1:0] LAG_Y = LAG_I[YS_W-1:0];
+  localparam signed [SIGNED_Y_W-1:0] LAG_Y = LAG_I[SIGNED_Y_W-1:0];
 
   localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
-  localparam signed [YS_W-1:0] LAG_PREV_Y = LAG_Y + 1;
+  localparam signed [SIGNED_Y_W-1:0] LAG_PREV_Y = LAG_Y + 1;
   // Both rows and their wrapped forms in parallel, then chosen.
-  wire signed [YS_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
-  wire signed [YS_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
+  wire signed [SIGNED_Y_W-1:0] lagged = y - LAG_Y, lagged_prev = y - LAG_PREV_Y;
+  wire signed [SIGNED_Y_W-1:0] wrapped_row = y + (height - LAG_Y), wrapped_prev = y + (height - LAG_PREV_Y);
   assign row_y = wrapped && lagged < 0 ? wrapped_row : lagged;
-  wire signed [YS_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
+  wire signed [SIGNED_Y_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
   assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
   assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
@@ -3763,9 +3723,8 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
-// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
-// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+// Pipelined minimum (and its index) over N values: fps_census7_d128u32_8b754b_reduction_tree over {value, index}
+// summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
 module fps_census7_d128u32_8b754b_min_tree #(
   // number of values
   parameter N = 8,
@@ -3774,7 +3733,9 @@ module fps_census7_d128u32_8b754b_min_tree #(
   // index width, at least clog2(N) (at least 1)
   parameter IDX_W = 3,
   // compare-select levels between registers
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the latency the caller plans with (fps_census7_d128u32_8b754b_reduction_tree checks it)
+  parameter LAT = 1
 ) (
   input  wire             clk,
   input  wire             en,
@@ -3782,66 +3743,99 @@ module fps_census7_d128u32_8b754b_min_tree #(
   output wire [W-1:0]     min_value,
   output wire [IDX_W-1:0] min_index
 );
+  localparam S_W = W + IDX_W;
+  wire [N*S_W-1:0] leaves;
+  genvar i;
+  generate
+    for (i = 0; i < N; i = i + 1) begin : leaf
+      wire [IDX_W-1:0] at = i;
+      assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
+    end
+  endgenerate
+  fps_census7_d128u32_8b754b_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+                            .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
+    .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The skeleton of the pipelined selection trees (fps_census7_d128u32_8b754b_min_tree, fps_census7_d128u32_8b754b_unique_tree): N
+// summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
+// LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
+// last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
+// the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
+// summary that fps_census7_d128u32_8b754b_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
+// formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
+module fps_census7_d128u32_8b754b_reduction_tree #(
+  parameter N = 8,
+  parameter W = 8,
+  parameter IDX_W = 3,
+  parameter UNIQUE = 0,
+  parameter S_W = 11,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter LAT = 1
+) (
+  input  wire           clk,
+  input  wire           en,
+  input  wire [N*S_W-1:0] leaves,
+  output wire [S_W-1:0] root
+);
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+  localparam STAGES = (LEVELS + LEVELS_PER_STAGE - 1) / (LEVELS_PER_STAGE > 0 ? LEVELS_PER_STAGE : 1);
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_8b754b_invalid_parameters_min_tree_N_or_W_below_1 failed ();
+      fps_census7_d128u32_8b754b_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
     end
     if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_8b754b_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+      fps_census7_d128u32_8b754b_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
     end
     if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_8b754b_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+      fps_census7_d128u32_8b754b_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+    if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
+      fps_census7_d128u32_8b754b_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
     end
   endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
 
   genvar l, i;
   generate
     for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      // Level l holds ceil(N / 2^l) candidates.
+      // Level l holds ceil(N / 2^l) summaries.
       localparam COUNT = (N + (1 << l) - 1) >> l;
       localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
       localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*W-1:0]     v_d;
-      wire [COUNT*IDX_W-1:0] x_d;
-      wire [COUNT*W-1:0]     v;
-      wire [COUNT*IDX_W-1:0] x;
+      wire [COUNT*S_W-1:0] s_d;
+      wire [COUNT*S_W-1:0] s;
       for (i = 0; i < COUNT; i = i + 1) begin : node
         if (l == 0) begin : leaf
-          assign v_d[i*W +: W]         = values[i*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = i;
+          assign s_d[i*S_W +: S_W] = leaves[i*S_W +: S_W];
         end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
-          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
-          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
-          wire             take_b = b < a;
-          assign v_d[i*W +: W]         = take_b ? b : a;
-          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
+          wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
+          wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
+          if (UNIQUE != 0) begin : unique_join
+            fps_census7_d128u32_8b754b_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+          end else begin : min_join
+            wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
+            assign s_d[i*S_W +: S_W] = take_b ? b : a;
+          end
         end else begin : single
-          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
+          assign s_d[i*S_W +: S_W] = level[l-1].s[(2*i)*S_W +: S_W];
         end
       end
       if (REGISTERED) begin : stage
-        reg [COUNT*W-1:0]     v_q;
-        reg [COUNT*IDX_W-1:0] x_q;
+        reg [COUNT*S_W-1:0] s_q;
         always @(posedge clk)
-          if (en) begin
-            v_q <= v_d;
-            x_q <= x_d;
-          end
-        assign v = v_q;
-        assign x = x_q;
+          if (en) s_q <= s_d;
+        assign s = s_q;
       end else begin : wire_through
-        assign v = v_d;
-        assign x = x_d;
+        assign s = s_d;
       end
     end
   endgenerate
 
-  assign min_value = level[LEVELS].v[W-1:0];
-  assign min_index = level[LEVELS].x[IDX_W-1:0];
+  assign root = level[LEVELS].s[S_W-1:0];
 endmodule
 `resetall

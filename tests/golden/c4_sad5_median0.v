@@ -276,7 +276,7 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [1:0] transform_slot;
   wire [4:0] newest_row_valid;
   fps_sad5_d128u32_251435_front_end #(
-    .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_K_W(2), .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -292,8 +292,8 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [1:0] history_slot;
   wire [415:0] costs;
   fps_sad5_d128u32_251435_pixel_window_cost #(
-    .N(5), .ZERO_MEAN(0), .COLSUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
-    .COST_MAX(6375), .COST_K_W(2), .X_W(11), .YS_W(11), .G_W(2), .MIN_DISP(0), .LAT(4)
+    .N(5), .ZERO_MEAN(0), .COLUMN_SUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
+    .COST_MAX(6375), .COST_ROW_W(2), .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(4)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
@@ -309,8 +309,8 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [13:0] cost_raddr;
   wire [415:0] cost_q;
   fps_sad5_d128u32_251435_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(3), .COST_K_W(2), .COST_AW(14),
-    .X_W(11), .Y_W(9), .YS_W(11), .G_W(2)
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(3), .COST_ROW_W(2), .COST_AW(14),
+    .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
@@ -327,9 +327,9 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [12:0] completed_waddr;
   wire [6:0] completed_wdata;
   fps_sad5_d128u32_251435_lr2_match #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
-    .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_K_W(3), .COST_AW(14),
-    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .DMAX(128), .DISP_W(7),
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
+    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_ROW_W(3),
+    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
     .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .match_on(match_on), .overlap(overlap), .wrapped(wrapped),
@@ -352,9 +352,9 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_251435_aggregator #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SLEN(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375), .PATH_W(13),
-    .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_K_W(3), .COST_AW(14),
-    .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_K_W(2), .MATCH_SIDE(0)
+    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
+    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_ROW_W(3),
+    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_ROW_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
@@ -387,7 +387,7 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [7:0] read_word;
   wire [2:0] read_slot_row;
   fps_sad5_d128u32_251435_disparity_reorder #(
-    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_K_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_ROW_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
@@ -407,7 +407,7 @@ module fps_sad5_d128u32_251435_sgm_core (
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_251435_lr_check #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(5), .OUT_K_W(3),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(5), .OUT_ROW_W(3),
     .DISP_AW(13), .ROW_END(0), .END_AW(5), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
@@ -1024,11 +1024,11 @@ module fps_sad5_d128u32_251435_front_end #(
   parameter G = 4,
   // rows of the cost reorder RAM: the centre row's slot there is its row mod COST_ROWS
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1058,22 +1058,22 @@ module fps_sad5_d128u32_251435_front_end #(
   // window rows inside the image for the newest column (zero when that column is outside)
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
-  output reg  signed [YS_W-1:0] transform_y,
-  output reg  [COST_K_W-1:0]    transform_slot
+  output reg  signed [SIGNED_Y_W-1:0] transform_y,
+  output reg  [COST_ROW_W-1:0]    transform_slot
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
       fps_sad5_d128u32_251435_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
-    if (YS_W < Y_W + 2) begin : invalid_YS_W
-      fps_sad5_d128u32_251435_invalid_parameters_front_end_YS_W_below_Y_W_plus_2 failed ();
+    if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
+      fps_sad5_d128u32_251435_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
   localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
 
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
@@ -1166,21 +1166,21 @@ module fps_sad5_d128u32_251435_front_end #(
   localparam integer LAST_COST_ROW_I = COST_ROWS - 1;
   localparam integer PREV_START_I = -R - 1;
   localparam [X_W-1:0] CENTRE_START = CENTRE_START_I[X_W-1:0];
-  localparam [COST_K_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_K_W-1:0];
-  localparam [COST_K_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_K_W-1:0];
-  localparam [YS_W-1:0] PREV_START = PREV_START_I[YS_W-1:0];
+  localparam [COST_ROW_W-1:0] NEWEST_SLOT = NEWEST_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_ROW_W-1:0];
+  localparam [SIGNED_Y_W-1:0] PREV_START = PREV_START_I[SIGNED_Y_W-1:0];
   localparam [X_W-1:0] R_X = R;
   reg  [X_W-1:0] centre_x;
   always @(posedge clk)
     if (restart) centre_x <= CENTRE_START;
     else if (shift) centre_x <= centre_x == LAST_SLOT ? {X_W{1'b0}} : centre_x + 1'b1;
   wire input_row_ends = shift && at_last_slot;
-  wire signed [YS_W-1:0] newest_y;
-  reg  signed [YS_W-1:0] newest_prev_y;
-  reg  [COST_K_W-1:0] newest_slot, newest_prev_slot;
+  wire signed [SIGNED_Y_W-1:0] newest_y;
+  reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
+  reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_sad5_d128u32_251435_frame_row #(.Y_W(YS_W), .START(-R)) newest_row (
+  fps_sad5_d128u32_251435_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1190,7 +1190,7 @@ module fps_sad5_d128u32_251435_front_end #(
       newest_prev_slot <= PREV_SLOT;
     end else if (input_row_ends) begin
       newest_prev_y <= newest_y;
-      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_K_W{1'b0}} : newest_slot + 1'b1;
+      newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
   // The centre lies in the previous row-time while the input slot is below R: a register that
@@ -1199,11 +1199,11 @@ module fps_sad5_d128u32_251435_front_end #(
   always @(posedge clk)
     if (restart) borrow <= 1'b1;
     else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
-  wire signed [YS_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
-  wire [COST_K_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
+  wire signed [SIGNED_Y_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
+  wire [COST_ROW_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
-  reg  signed [YS_W-1:0] window_y;
-  reg  [COST_K_W-1:0] window_slot;
+  reg  signed [SIGNED_Y_W-1:0] window_y;
+  reg  [COST_ROW_W-1:0] window_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
@@ -1221,10 +1221,10 @@ module fps_sad5_d128u32_251435_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_251435_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) window_bounds (
+  fps_sad5_d128u32_251435_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_sad5_d128u32_251435_window_bounds #(.SIDE(N), .X_W(X_W), .YS_W(YS_W)) prev_bounds (
+  fps_sad5_d128u32_251435_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1261,12 +1261,12 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
   parameter COST_W = 13,
   parameter COST_MAX = 6375,
   // width of a window column's pixel sum; ZSAD: mean = (sum * MEAN_MUL) >> MEAN_SHIFT
-  parameter COLSUM_W = 11,
+  parameter COLUMN_SUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter X_W = 7,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
   // the cost lanes' latency the stage plans with (fps_sad5_d128u32_251435_window_cost_lanes checks it)
@@ -1284,11 +1284,11 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
   input  wire [N-1:0]           col_valid,
   input  wire [N-1:0]           newest_row_valid,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [YS_W-1:0] transform_y,
-  input  wire [COST_K_W-1:0]    transform_slot,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [COST_ROW_W-1:0]    transform_slot,
   output wire [X_W-1:0]         history_x,
-  output wire signed [YS_W-1:0] history_y,
-  output wire [COST_K_W-1:0]    history_slot,
+  output wire signed [SIGNED_Y_W-1:0] history_y,
+  output wire [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -1296,8 +1296,8 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
     if (N < 3 || N % 2 == 0) begin : invalid_N
       fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_N_is_not_odd_and_at_least_3 failed ();
     end
-    if (255 * N >= (1 << COLSUM_W)) begin : invalid_COLSUM_W
-      fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_COLSUM_W_does_not_hold_255_N failed ();
+    if (255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
+      fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
     end
     if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
       fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
@@ -1307,23 +1307,23 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
   fps_sad5_d128u32_251435_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
   wire [X_W-1:0]         transform_x_o;
-  wire signed [YS_W-1:0] transform_y_o;
-  wire [COST_K_W-1:0]    transform_slot_o;
-  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (N <= 11)
+  wire signed [SIGNED_Y_W-1:0] transform_y_o;
+  wire [COST_ROW_W-1:0]    transform_slot_o;
+  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
   // The match window's newest column, zero outside the image, and its sum.
   reg [N*8-1:0] newest_column;
   integer e;
   always @*
     for (e = 0; e < N; e = e + 1)
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
-  wire [COLSUM_W-1:0] newest_sum;
-  fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
+  wire [COLUMN_SUM_W-1:0] newest_sum;
+  fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
   // Registered with the window (shift k): the window and the match column; the window's position
   // a shift later (transform_* lags the window by one), with the window again.
   reg [N*N*8-1:0]                base_t, base_h;
   reg [N*8-1:0]                  column_t;
-  reg [COLSUM_W-1:0]             column_sum_t;
-  reg [X_W+YS_W+COST_K_W-1:0]    position_h;
+  reg [COLUMN_SUM_W-1:0]             column_sum_t;
+  reg [X_W+SIGNED_Y_W+COST_ROW_W-1:0]    position_h;
   always @(posedge clk)
     if (shift) begin
       base_t       <= base_o;
@@ -1335,26 +1335,26 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
   // ZSAD: all of it waits two shifts more for the base window's mean.
   wire [N*N*8-1:0]    base_l;
   wire [N*8-1:0]      column_l;
-  wire [COLSUM_W-1:0] column_sum_l;
+  wire [COLUMN_SUM_W-1:0] column_sum_l;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   wire [7:0]          base_mean;
   /* verilator lint_on UNUSEDSIGNAL */
   genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fps_sad5_d128u32_251435_delay #(.WIDTH(N*N*8 + N*8 + COLSUM_W + X_W + YS_W + COST_K_W), .DEPTH(2)) shift_wait (
+      fps_sad5_d128u32_251435_delay #(.WIDTH(N*N*8 + N*8 + COLUMN_SUM_W + X_W + SIGNED_Y_W + COST_ROW_W), .DEPTH(2)) shift_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
         .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
       // The base window's mean over three shifts from the registered window: its row sums at
       // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
-      wire [N*COLSUM_W-1:0] row_sums;
+      wire [N*COLUMN_SUM_W-1:0] row_sums;
       for (r = 0; r < N; r = r + 1) begin : row
-        fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLSUM_W)) row_total (
-          .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLSUM_W +: COLSUM_W]));
+        fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
+          .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLUMN_SUM_W +: COLUMN_SUM_W]));
       end
-      reg  [N*COLSUM_W-1:0] row_sums_q;
+      reg  [N*COLUMN_SUM_W-1:0] row_sums_q;
       wire [WINSUM_W-1:0]   total;
-      fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) window_total (
+      fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
         .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
       reg  [WINSUM_W-1:0]   total_q;
       reg  [7:0]            mean_q;
@@ -1374,20 +1374,20 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
     end
   endgenerate
   wire [N*8-1:0]      column_o;
-  wire [COLSUM_W-1:0] column_sum_o;
-  fps_sad5_d128u32_251435_offset_delays #(.BASE_W(N*N*8 + X_W + YS_W + COST_K_W), .MATCH_W(N*8 + COLSUM_W), .MIN_DISP(MIN_DISP)) offset (
+  wire [COLUMN_SUM_W-1:0] column_sum_o;
+  fps_sad5_d128u32_251435_offset_delays #(.BASE_W(N*N*8 + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(N*8 + COLUMN_SUM_W), .MIN_DISP(MIN_DISP)) offset (
     .clk(clk), .shift(shift), .base({base_masked, transform_x, transform_y, transform_slot}),
     .match({column_l, column_sum_l}), .base_out({base_o, transform_x_o, transform_y_o, transform_slot_o}),
     .match_out({column_o, column_sum_o}));
   wire [(UF+N-1)*N*8-1:0]      view;
-  wire [(UF+N-1)*COLSUM_W-1:0] view_sums;
+  wire [(UF+N-1)*COLUMN_SUM_W-1:0] view_sums;
   fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_o), .view(view));
-  fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(COLSUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
+  fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(COLUMN_SUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_o), .view(view_sums));
   fps_sad5_d128u32_251435_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
-                               .COLSUM_W(COLSUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
+                               .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
                                .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base(base_l), .base_mean(base_mean), .view(view), .view_sums(view_sums),
     .group(group), .x(history_x), .width(frame_width), .costs(costs));
@@ -1410,11 +1410,11 @@ module fps_sad5_d128u32_251435_cost_reorder #(
   // register stages of the cost lanes
   parameter LAT = 1,
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter YS_W = 8,
+  parameter SIGNED_Y_W = 8,
   parameter G_W = 2
 ) (
   input  wire                   clk,
@@ -1424,12 +1424,12 @@ module fps_sad5_d128u32_251435_cost_reorder #(
   input  wire [Y_W-1:0]         frame_height,
   input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         history_x,
-  input  wire signed [YS_W-1:0] history_y,
-  input  wire [COST_K_W-1:0]    history_slot,
+  input  wire signed [SIGNED_Y_W-1:0] history_y,
+  input  wire [COST_ROW_W-1:0]    history_slot,
   input  wire [UF*COST_W+EXTRA_W-1:0] costs,
   output wire                   cost_valid,
   output wire [X_W-1:0]         cost_x,
-  output wire [COST_K_W-1:0]    cost_row_slot,
+  output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
   output wire [UF*COST_W+EXTRA_W-1:0] cost_q
@@ -1439,15 +1439,15 @@ module fps_sad5_d128u32_251435_cost_reorder #(
     if (LAT < 1) begin : invalid_LAT
       fps_sad5_d128u32_251435_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
-    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_K_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || YS_W < Y_W + 2) begin : invalid_widths
+    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
       fps_sad5_d128u32_251435_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [YS_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_sad5_d128u32_251435_delay #(.WIDTH(1 + X_W + COST_K_W + G_W), .DEPTH(LAT)) cost_tag (
+  fps_sad5_d128u32_251435_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
@@ -1472,7 +1472,7 @@ module fps_sad5_d128u32_251435_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter DMAX = 32,
@@ -1486,10 +1486,10 @@ module fps_sad5_d128u32_251435_lr2_match #(
   parameter PATH_TREE_LAT = 1,
   parameter WTA_TREE_LAT = 1,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter COST_ROWS = 3,
-  parameter COST_K_W = 2,
+  parameter COST_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -1512,7 +1512,7 @@ module fps_sad5_d128u32_251435_lr2_match #(
   // the base side's cost words as the cost reorder RAM takes them
   input  wire                 cost_valid,
   input  wire [X_W-1:0]       cost_x,
-  input  wire [COST_K_W-1:0]  cost_row_slot,
+  input  wire [COST_ROW_W-1:0]  cost_row_slot,
   input  wire [G_W-1:0]       cost_group,
   input  wire [UF*COST_W-1:0] costs,
   output wire                 completed_we,
@@ -1555,25 +1555,25 @@ module fps_sad5_d128u32_251435_lr2_match #(
   /* verilator lint_off UNUSEDSIGNAL */  // the match side needs no chain state after the sums
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
-  wire [OUT_K_W-1:0]  slot;
-  fps_sad5_d128u32_251435_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SLEN(SLEN), .G(G), .UF(UF),
+  wire [OUT_ROW_W-1:0]  slot;
+  fps_sad5_d128u32_251435_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
-                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_K_W(OUT_K_W),
+                        .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_K_W(COST_K_W), .MIN_DISP(MIN_DISP)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
     .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
   wire              active_w;
   wire [X_W-1:0]    x_w;
-  wire [OUT_K_W-1:0] slot_w;
+  wire [OUT_ROW_W-1:0] slot_w;
   wire [G_W-1:0]    group_w;
   /* verilator lint_off UNUSEDSIGNAL */  // the match side's disparities are never invalid
   wire [DISP_W:0]   word_w;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_251435_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
-                 .TAG_W(1 + X_W + OUT_K_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+                 .TAG_W(1 + X_W + OUT_ROW_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(sums), .group(group), .tag({active, x, slot}),
     .group_out(group_w), .tag_out({active_w, x_w, slot_w}), .word(word_w));
   assign completed_we = adv && active_w && group_w == LAST_GROUP;
@@ -1597,7 +1597,7 @@ module fps_sad5_d128u32_251435_aggregator #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
-  parameter SLEN = 32,
+  parameter SEGMENT = 32,
   parameter G = 4,
   parameter UF = 8,
   parameter COST_W = 5,
@@ -1613,7 +1613,7 @@ module fps_sad5_d128u32_251435_aggregator #(
   parameter PATH_TREE_LAT = 1,
   // rows of the output RAMs (the slot output is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter COST_AW = 10,
   parameter X_W = 7,
   parameter Y_W = 6,
@@ -1621,7 +1621,7 @@ module fps_sad5_d128u32_251435_aggregator #(
   parameter K_W = 1,
   // rows of the cost reorder RAM (K, or more) and the bits of a row slot
   parameter COST_ROWS = 2,
-  parameter COST_K_W = 1,
+  parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0
 ) (
@@ -1649,24 +1649,21 @@ module fps_sad5_d128u32_251435_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_K_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot
 );
   localparam LANES_LAT = 2;  // steps of fps_sad5_d128u32_251435_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SLEN < 1 || SLEN * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
-      fps_sad5_d128u32_251435_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SLEN_covering_W failed ();
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+      fps_sad5_d128u32_251435_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_sad5_d128u32_251435_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (PATH_TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_PATH_TREE_LAT
-      fps_sad5_d128u32_251435_invalid_parameters_aggregator_PATH_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_sad5_d128u32_251435_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_K_W) || OUT_ROWS > (1 << OUT_K_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
       fps_sad5_d128u32_251435_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -1690,7 +1687,7 @@ module fps_sad5_d128u32_251435_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SLEN - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -1699,11 +1696,11 @@ module fps_sad5_d128u32_251435_aggregator #(
 
   // ------------------------------------------------------------------------------------------
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
-  // ta - ka, pixel x = ka * SLEN + ja; its state lives in slot (ka + base) mod K.
+  // ta - ka, pixel x = ka * SEGMENT + ja; its state lives in slot (ka + base) mod K.
   reg [G_W-1:0] ga;
   reg [K_W-1:0] ka, base;
-  reg [COST_K_W-1:0] ta_slot;       // ta mod COST_ROWS
-  reg [OUT_K_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
+  reg [COST_ROW_W-1:0] ta_slot;       // ta mod COST_ROWS
+  reg [OUT_ROW_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
   reg [X_W-1:0] ja;
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
@@ -1726,26 +1723,26 @@ module fps_sad5_d128u32_251435_aggregator #(
         if (ka == LAST_CHAIN) begin
           ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
           if (ja == LAST_SEGMENT_SLOT) begin
-            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_K_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_K_W{1'b0}} : ta_out_slot + 1'b1;
+            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_ROW_W{1'b0}} : ta_slot + 1'b1;
+            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
             base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
           end
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SLEN + ja;
+  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
   wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_K_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_K_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
   assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums).
-  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_K_W;
+  localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
   always @(posedge clk)
@@ -1764,10 +1761,10 @@ module fps_sad5_d128u32_251435_aggregator #(
     end
   `define FPS_TAG_ACTIVE(t) t[TAG_W-1]
   `define FPS_TAG_X(t)      t[TAG_W-2 -: X_W]
-  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_K_W+Y_W -: Y_W+1]
-  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_K_W-1 -: G_W]
-  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_K_W-1 -: K_W]
-  `define FPS_TAG_SLOT(t)   t[OUT_K_W-1:0]
+  `define FPS_TAG_ROW(t)    t[G_W+K_W+OUT_ROW_W+Y_W -: Y_W+1]
+  `define FPS_TAG_GROUP(t)  t[G_W+K_W+OUT_ROW_W-1 -: G_W]
+  `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
+  `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
@@ -1852,7 +1849,8 @@ module fps_sad5_d128u32_251435_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
-      fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
@@ -1896,7 +1894,8 @@ module fps_sad5_d128u32_251435_aggregator #(
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
-      fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+      fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
     end else begin : no_path45
       assign path_45 = 0;
@@ -1931,7 +1930,8 @@ module fps_sad5_d128u32_251435_aggregator #(
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE))
+        fps_sad5_d128u32_251435_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                              .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
     end
@@ -1982,7 +1982,7 @@ endmodule
 // group (fps_sad5_d128u32_251435_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
 // the group in group_out; it is the pixel's result in its last group's step. The tag (the
-// pixel's position) travels along, TREE_LAT steps.
+// pixel's position) travels along, TREE_LAT steps (the tree's latency, which it checks).
 module fps_sad5_d128u32_251435_wta #(
   parameter UF = 8,
   parameter SUM_W = 9,
@@ -2003,20 +2003,13 @@ module fps_sad5_d128u32_251435_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LANE_W < 1 || UF - 1 >= (1 << LANE_W)) begin : invalid_LANE_W
-      fps_sad5_d128u32_251435_invalid_parameters_wta_LANE_W_does_not_hold_UF_minus_1 failed ();
-    end
-    if (TREE_LAT != (((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) > 1 ? ((((UF) > 1 ? $clog2(UF) : 0) + (LEVELS_PER_STAGE) - 1) / ((LEVELS_PER_STAGE) > 0 ? (LEVELS_PER_STAGE) : 1)) : 1)) begin : invalid_TREE_LAT
-      fps_sad5_d128u32_251435_invalid_parameters_wta_TREE_LAT_is_not_the_min_tree_latency failed ();
-    end
-  endgenerate
+  // fps_sad5_d128u32_251435_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   fps_sad5_d128u32_251435_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
-  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
   wire [DISP_W-1:0] group_disparity = group_out * UF + group_lane;
@@ -2047,7 +2040,7 @@ module fps_sad5_d128u32_251435_disparity_reorder #(
   parameter DISP_W = 5,
   // rows of the RAM (the slot is the row modulo OUT_ROWS)
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   // address width of the OUT_ROWS * ROW_SLOTS words
   parameter DISP_AW = 8,
   parameter EXTRA_ROWS = 0,
@@ -2067,14 +2060,14 @@ module fps_sad5_d128u32_251435_disparity_reorder #(
   // the winner-take-all's pixel: written in its last group's step
   input  wire               active,
   input  wire [X_W-1:0]     x,
-  input  wire [OUT_K_W-1:0] slot,
+  input  wire [OUT_ROW_W-1:0] slot,
   input  wire [G_W-1:0]     group,
   input  wire [DISP_W:0]    word,
   output reg                read_done,
   output reg                read_event,
   output reg  [X_W-1:0]     read_x,
   output reg  [Y_W-1:0]     read_y,
-  output reg  [OUT_K_W-1:0] read_slot_row,
+  output reg  [OUT_ROW_W-1:0] read_slot_row,
   output wire [DISP_W:0]    read_word
 );
   localparam DISP_DEPTH = OUT_ROWS * ROW_SLOTS;
@@ -2082,7 +2075,7 @@ module fps_sad5_d128u32_251435_disparity_reorder #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_K_W) < OUT_ROWS) begin : invalid
+    if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
       fps_sad5_d128u32_251435_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
@@ -2096,10 +2089,10 @@ module fps_sad5_d128u32_251435_disparity_reorder #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0] so;
   wire [Y_W-1:0] to;
-  wire [OUT_K_W-1:0] to_slot;  // to mod OUT_ROWS
+  wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
   fps_sad5_d128u32_251435_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
-                            .K_W(OUT_K_W))
+                            .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
   wire [Y_W-1:0] event_rows = frame_height + EXTRA_ROWS;
@@ -2150,7 +2143,7 @@ module fps_sad5_d128u32_251435_lr_check #(
   // bits of the refined disparity carried above D in the read word, 0 without sub-pixel output
   parameter REFINED_W = 0,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   // LR1: the row ends come from the row-end RAM
   parameter ROW_END = 1,
@@ -2177,7 +2170,7 @@ module fps_sad5_d128u32_251435_lr_check #(
   input  wire                 read_event,
   input  wire [X_W-1:0]       read_x,
   input  wire [Y_W-1:0]       read_y,
-  input  wire [OUT_K_W-1:0]   read_slot_row,
+  input  wire [OUT_ROW_W-1:0]   read_slot_row,
   input  wire [REFINED_W+DISP_W:0] read_word,
   output reg                  checked_done,
   output reg                  checked_event,
@@ -2204,7 +2197,7 @@ module fps_sad5_d128u32_251435_lr_check #(
   wire [DISP_W-1:0] dm;
   fps_sad5_d128u32_251435_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-    .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+    .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
     .MIN_DISP(MIN_DISP)
   ) lookup (
     .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
@@ -2266,7 +2259,7 @@ module fps_sad5_d128u32_251435_lr_check #(
       wire [DISP_W-1:0] dm_right;
       fps_sad5_d128u32_251435_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
-        .OUT_K_W(OUT_K_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
+        .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
         .MIN_DISP(MIN_DISP)
       ) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
@@ -2455,12 +2448,12 @@ module fps_sad5_d128u32_251435_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
-  parameter YS_W = 8
+  parameter SIGNED_Y_W = 8
 ) (
   input  wire [X_W-1:0]         x,
-  input  wire signed [YS_W-1:0] y,
+  input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
-  input  wire signed [YS_W-1:0] height,
+  input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
   output wire [SIDE-1:0]        col_valid
 );
@@ -2479,11 +2472,11 @@ module fps_sad5_d128u32_251435_window_bounds #(
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
-      localparam signed [YS_W:0] OFFSET_Y = OFFSET[YS_W:0];
+      localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [X_W+2:0] column = $signed({3'b000, x});
-      wire signed [YS_W:0]  row = $signed({y[YS_W-1], y});
+      wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
       assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[YS_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate
 endmodule
@@ -2762,7 +2755,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
   parameter GROUP_W = 2,
   parameter X_W = 11,
   // ZSAD: column sum width and floor(s / SPAN^2) = (s * MEAN_MUL) >> MEAN_SHIFT
-  parameter COLSUM_W = 11,
+  parameter COLUMN_SUM_W = 11,
   parameter MEAN_MUL = 1,
   parameter MEAN_SHIFT = 0,
   // the smallest disparity (docs/semantics.md, section 2)
@@ -2775,7 +2768,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
   input  wire [SPAN*SPAN*ELEM_W-1:0]         base,
   /* verilator lint_off UNUSEDSIGNAL */  // the means serve ZSAD only
   input  wire [7:0]                          base_mean,
-  input  wire [(UF+SPAN-1)*COLSUM_W-1:0]     view_sums,
+  input  wire [(UF+SPAN-1)*COLUMN_SUM_W-1:0]     view_sums,
   /* verilator lint_on UNUSEDSIGNAL */
   input  wire [(UF+SPAN-1)*SPAN*ELEM_W-1:0]  view,
   input  wire [GROUP_W-1:0]                  group,
@@ -2806,7 +2799,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
   localparam VIEW_COLS = UF + SPAN - 1;
   // wide enough for x + VIEW_COLS + 256 and for any index plus UF + R + 256 + width
   localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 3;
-  localparam WINSUM_W = COLSUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
+  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (SPAN <= 11 columns)
   // A pixel term is (b - m) - delta, in [-510, 510] (ZSAD) or [-255, 255] (SAD), signed.
   localparam TERM_W = ZERO_MEAN != 0 ? 10 : 9;
   // An element's magnitude: the Hamming distance of codes; of pixels, |term| - (term < 0).
@@ -2850,7 +2843,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
   // windows' column sums, masked the same way.
   wire [VIEW_COLS*COLUMN_W-1:0] view_d;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
-  wire [VIEW_COLS*COLSUM_W-1:0] view_sums_masked;
+  wire [VIEW_COLS*COLUMN_SUM_W-1:0] view_sums_masked;
   wire [7:0]                    base_mean_d;
   /* verilator lint_on UNUSEDSIGNAL */
   generate
@@ -2858,7 +2851,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
       // ZSAD: the column sums are masked at step 2 (the match sums start from flip-flops); the
       // view waits three steps more for the means, and is masked into the register of step 5
       // (the terms start from flip-flops, not from a shift register's read).
-      reg  [VIEW_COLS*COLSUM_W-1:0] view_sums_q, view_sums_masked_q;
+      reg  [VIEW_COLS*COLUMN_SUM_W-1:0] view_sums_q, view_sums_masked_q;
       wire [VIEW_COLS*COLUMN_W-1:0] view_late;
       wire [VIEW_COLS-1:0]          valid_late;
       reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
@@ -2869,8 +2862,8 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
         if (en) begin
           view_sums_q <= view_sums;
           for (n = 0; n < VIEW_COLS; n = n + 1) begin
-            view_sums_masked_q[n*COLSUM_W +: COLSUM_W] <=
-                view_valid_q[n] ? view_sums_q[n*COLSUM_W +: COLSUM_W] : {COLSUM_W{1'b0}};
+            view_sums_masked_q[n*COLUMN_SUM_W +: COLUMN_SUM_W] <=
+                view_valid_q[n] ? view_sums_q[n*COLUMN_SUM_W +: COLUMN_SUM_W] : {COLUMN_SUM_W{1'b0}};
             view_masked_q[n*COLUMN_W +: COLUMN_W] <= valid_late[n] ? view_late[n*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
           end
         end
@@ -2883,7 +2876,7 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
       for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
         assign view_d[c*COLUMN_W +: COLUMN_W] = view_valid_q[c] ? view_q[c*COLUMN_W +: COLUMN_W] : {COLUMN_W{1'b0}};
       end
-      assign view_sums_masked = {VIEW_COLS*COLSUM_W{1'b0}};
+      assign view_sums_masked = {VIEW_COLS*COLUMN_SUM_W{1'b0}};
       assign base_mean_d = 8'd0;
     end
   endgenerate
@@ -2910,8 +2903,8 @@ module fps_sad5_d128u32_251435_window_cost_lanes #(
       /* verilator lint_on UNUSEDSIGNAL */
       if (ZERO_MEAN != 0) begin : zero_mean
         wire [WINSUM_W-1:0] match_sum;
-        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COLSUM_W), .SUM_W(WINSUM_W)) match_total (
-          .clk(clk), .en(en), .values(view_sums_masked[l*COLSUM_W +: SPAN*COLSUM_W]), .sum(match_sum));
+        fps_sad5_d128u32_251435_sum_tree #(.N(SPAN), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) match_total (
+          .clk(clk), .en(en), .values(view_sums_masked[l*COLUMN_SUM_W +: SPAN*COLUMN_SUM_W]), .sum(match_sum));
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
         reg signed [TERM_W-1:0] mean_offset_q;
@@ -3142,7 +3135,9 @@ module fps_sad5_d128u32_251435_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the tree's latency the caller plans with (fps_sad5_d128u32_251435_reduction_tree checks it)
+  parameter TREE_LAT = 2
 ) (
   input  wire               clk,
   input  wire               en,
@@ -3151,16 +3146,12 @@ module fps_sad5_d128u32_251435_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || LEVELS_PER_STAGE < 1) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_path_minimum_UF_or_LEVELS_PER_STAGE_below_1 failed ();
-    end
-  endgenerate
+  // fps_sad5_d128u32_251435_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE)) tree (
+  fps_sad5_d128u32_251435_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                     .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
   reg [PATH_W-1:0] running;
@@ -3172,9 +3163,8 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values. A binary tree of compare-selects with a
-// register after every LEVELS_PER_STAGE levels and at the output, so the delay per stage does
-// not grow with N. Ties keep the lower index. Latency: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
+// Pipelined minimum (and its index) over N values: fps_sad5_d128u32_251435_reduction_tree over {value, index}
+// summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
 module fps_sad5_d128u32_251435_min_tree #(
   // number of values
   parameter N = 8,
@@ -3183,7 +3173,9 @@ module fps_sad5_d128u32_251435_min_tree #(
   // index width, at least clog2(N) (at least 1)
   parameter IDX_W = 3,
   // compare-select levels between registers
-  parameter LEVELS_PER_STAGE = 3
+  parameter LEVELS_PER_STAGE = 3,
+  // the latency the caller plans with (fps_sad5_d128u32_251435_reduction_tree checks it)
+  parameter LAT = 1
 ) (
   input  wire             clk,
   input  wire             en,
@@ -3191,67 +3183,18 @@ module fps_sad5_d128u32_251435_min_tree #(
   output wire [W-1:0]     min_value,
   output wire [IDX_W-1:0] min_index
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  localparam S_W = W + IDX_W;
+  wire [N*S_W-1:0] leaves;
+  genvar i;
   generate
-    if (N < 1 || W < 1) begin : invalid_N
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_N_or_W_below_1 failed ();
-    end
-    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_IDX_W_does_not_hold_N_minus_1 failed ();
-    end
-    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_sad5_d128u32_251435_invalid_parameters_min_tree_LEVELS_PER_STAGE_below_1 failed ();
+    for (i = 0; i < N; i = i + 1) begin : leaf
+      wire [IDX_W-1:0] at = i;
+      assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
     end
   endgenerate
-  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
-
-  genvar l, i;
-  generate
-    for (l = 0; l <= LEVELS; l = l + 1) begin : level
-      // Level l holds ceil(N / 2^l) candidates.
-      localparam COUNT = (N + (1 << l) - 1) >> l;
-      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
-      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
-      wire [COUNT*W-1:0]     v_d;
-      wire [COUNT*IDX_W-1:0] x_d;
-      wire [COUNT*W-1:0]     v;
-      wire [COUNT*IDX_W-1:0] x;
-      for (i = 0; i < COUNT; i = i + 1) begin : node
-        if (l == 0) begin : leaf
-          assign v_d[i*W +: W]         = values[i*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = i;
-        end else if (2 * i + 1 < PREV_COUNT) begin : pair
-          wire [W-1:0]     a  = level[l-1].v[(2*i)*W +: W];
-          wire [W-1:0]     b  = level[l-1].v[(2*i+1)*W +: W];
-          wire [IDX_W-1:0] ai = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-          wire [IDX_W-1:0] bi = level[l-1].x[(2*i+1)*IDX_W +: IDX_W];
-          wire             take_b = b < a;
-          assign v_d[i*W +: W]         = take_b ? b : a;
-          assign x_d[i*IDX_W +: IDX_W] = take_b ? bi : ai;
-        end else begin : single
-          assign v_d[i*W +: W]         = level[l-1].v[(2*i)*W +: W];
-          assign x_d[i*IDX_W +: IDX_W] = level[l-1].x[(2*i)*IDX_W +: IDX_W];
-        end
-      end
-      if (REGISTERED) begin : stage
-        reg [COUNT*W-1:0]     v_q;
-        reg [COUNT*IDX_W-1:0] x_q;
-        always @(posedge clk)
-          if (en) begin
-            v_q <= v_d;
-            x_q <= x_d;
-          end
-        assign v = v_q;
-        assign x = x_q;
-      end else begin : wire_through
-        assign v = v_d;
-        assign x = x_d;
-      end
-    end
-  endgenerate
-
-  assign min_value = level[LEVELS].v[W-1:0];
-  assign min_index = level[LEVELS].x[IDX_W-1:0];
+  fps_sad5_d128u32_251435_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+                            .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
+    .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
 endmodule
 `resetall
 
@@ -3270,7 +3213,7 @@ module fps_sad5_d128u32_251435_match_lookup #(
   parameter DMAX = 32,
   parameter DISP_W = 5,
   parameter OUT_ROWS = 3,
-  parameter OUT_K_W = 2,
+  parameter OUT_ROW_W = 2,
   parameter DISP_AW = 8,
   parameter ROW_END = 1,
   parameter END_AW = 4,
@@ -3292,7 +3235,7 @@ module fps_sad5_d128u32_251435_match_lookup #(
   input  wire [UF*DISP_W-1:0] row_end_wdata,
   /* verilator lint_on UNUSEDSIGNAL */
   // first step: the row's slot in the RAMs and x'
-  input  wire [OUT_K_W-1:0]   slot_row,
+  input  wire [OUT_ROW_W-1:0]   slot_row,
   input  wire [X_W-1:0]       xm,
   // second step
   output wire [DISP_W-1:0]    dm
@@ -3340,5 +3283,130 @@ module fps_sad5_d128u32_251435_match_lookup #(
     end
   endgenerate
   // verilator lint_on WIDTH
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The skeleton of the pipelined selection trees (fps_sad5_d128u32_251435_min_tree, fps_sad5_d128u32_251435_unique_tree): N
+// summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
+// LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
+// last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
+// the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
+// summary that fps_sad5_d128u32_251435_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
+// formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
+module fps_sad5_d128u32_251435_reduction_tree #(
+  parameter N = 8,
+  parameter W = 8,
+  parameter IDX_W = 3,
+  parameter UNIQUE = 0,
+  parameter S_W = 11,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter LAT = 1
+) (
+  input  wire           clk,
+  input  wire           en,
+  input  wire [N*S_W-1:0] leaves,
+  output wire [S_W-1:0] root
+);
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+  localparam STAGES = (LEVELS + LEVELS_PER_STAGE - 1) / (LEVELS_PER_STAGE > 0 ? LEVELS_PER_STAGE : 1);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || W < 1) begin : invalid_N
+      fps_sad5_d128u32_251435_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
+    end
+    if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
+      fps_sad5_d128u32_251435_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+    end
+    if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
+      fps_sad5_d128u32_251435_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+    end
+    if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
+      fps_sad5_d128u32_251435_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
+    end
+  endgenerate
+
+  genvar l, i;
+  generate
+    for (l = 0; l <= LEVELS; l = l + 1) begin : level
+      // Level l holds ceil(N / 2^l) summaries.
+      localparam COUNT = (N + (1 << l) - 1) >> l;
+      localparam PREV_COUNT = (N + (1 << l) / 2 - 1) / ((1 << l) / 2 > 0 ? (1 << l) / 2 : 1);
+      localparam REGISTERED = (l == LEVELS) || (l > 0 && l % LEVELS_PER_STAGE == 0);
+      wire [COUNT*S_W-1:0] s_d;
+      wire [COUNT*S_W-1:0] s;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (l == 0) begin : leaf
+          assign s_d[i*S_W +: S_W] = leaves[i*S_W +: S_W];
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
+          wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
+          if (UNIQUE != 0) begin : unique_join
+            fps_sad5_d128u32_251435_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+          end else begin : min_join
+            wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
+            assign s_d[i*S_W +: S_W] = take_b ? b : a;
+          end
+        end else begin : single
+          assign s_d[i*S_W +: S_W] = level[l-1].s[(2*i)*S_W +: S_W];
+        end
+      end
+      if (REGISTERED) begin : stage
+        reg [COUNT*S_W-1:0] s_q;
+        always @(posedge clk)
+          if (en) s_q <= s_d;
+        assign s = s_q;
+      end else begin : wire_through
+        assign s = s_d;
+      end
+    end
+  endgenerate
+
+  assign root = level[LEVELS].s[S_W-1:0];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Joins the winner-take-all summaries of two adjacent index ranges, A (lower) and B (higher), as
+// fps_sad5_d128u32_251435_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
+// first, last} with W-bit values and an IDX_W-bit index.
+module fps_sad5_d128u32_251435_unique_join #(
+  parameter W = 10,
+  parameter IDX_W = 3
+) (
+  input  wire [5*W+IDX_W+1:0] a,
+  input  wire [5*W+IDX_W+1:0] b,
+  output wire [5*W+IDX_W+1:0] joined
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (W < 1 || IDX_W < 1) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+    end
+  endgenerate
+  localparam S_W = 5 * W + IDX_W + 2;
+
+  function [W-1:0] min2(input [W-1:0] x, input [W-1:0] y);
+    min2 = y < x ? y : x;
+  endfunction
+
+  wire [W-1:0] a_best = a[S_W-1 -: W], a_all = a[S_W-W-1 -: W], a_but_first = a[S_W-2*W-1 -: W];
+  wire [W-1:0] a_but_last = a[S_W-3*W-1 -: W], a_second = a[S_W-4*W-1 -: W];
+  wire [IDX_W-1:0] a_index = a[IDX_W+1:2];
+  wire a_first = a[1], a_last = a[0];
+  wire [W-1:0] b_best = b[S_W-1 -: W], b_all = b[S_W-W-1 -: W], b_but_first = b[S_W-2*W-1 -: W];
+  wire [W-1:0] b_but_last = b[S_W-3*W-1 -: W], b_second = b[S_W-4*W-1 -: W];
+  wire [IDX_W-1:0] b_index = b[IDX_W+1:2];
+  wire b_first = b[1], b_last = b[0];
+
+  wire b_wins = b_best < a_best;  // ties keep the lower index
+  wire [W-1:0] second = b_wins ? min2(b_second, b_first ? a_but_last : a_all)
+                               : min2(a_second, a_last ? b_but_first : b_all);
+  assign joined = {b_wins ? b_best : a_best, min2(a_all, b_all), min2(a_but_first, b_all),
+                   min2(a_all, b_but_last), second, b_wins ? b_index : a_index,
+                   !b_wins && a_first, b_wins && b_last};
 endmodule
 `resetall

@@ -13,6 +13,7 @@ namespace {
 
 struct MinTreeParams {
   int N = 8, W = 8, IDX_W = 3, LEVELS_PER_STAGE = 3;
+  int LAT = 1;  // the latency the set states, which the module checks; the bench derives its own
 };
 
 struct MinResult {

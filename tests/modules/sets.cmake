@@ -1,17 +1,17 @@
 # The parameter sets of the per-module tests: modtb_set(<bench> <test name> TOP ... SOURCES ...
 # PARAMS ...), see CMakeLists.txt. Test names are ctest's modules_<name>.
-modtb_set(min_tree min_tree_n8_l3 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
-          PARAMS N=8 W=8 IDX_W=3 LEVELS_PER_STAGE=3)
-modtb_set(min_tree min_tree_n13_l1 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
-          PARAMS N=13 W=5 IDX_W=4 LEVELS_PER_STAGE=1)
-modtb_set(min_tree min_tree_n6_l2 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v
-          PARAMS N=6 W=3 IDX_W=3 LEVELS_PER_STAGE=2)
+modtb_set(min_tree min_tree_n8_l3 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v
+          PARAMS N=8 W=8 IDX_W=3 LEVELS_PER_STAGE=3 LAT=1)
+modtb_set(min_tree min_tree_n13_l1 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v
+          PARAMS N=13 W=5 IDX_W=4 LEVELS_PER_STAGE=1 LAT=4)
+modtb_set(min_tree min_tree_n6_l2 TOP fpstereo_min_tree SOURCES fpstereo_min_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v
+          PARAMS N=6 W=3 IDX_W=3 LEVELS_PER_STAGE=2 LAT=2)
 modtb_set(unique_tree unique_tree_n8_l3 TOP fpstereo_unique_tree
-          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=8 W=10 IDX_W=3 LEVELS_PER_STAGE=3)
+          SOURCES fpstereo_unique_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v PARAMS N=8 W=10 IDX_W=3 LEVELS_PER_STAGE=3 LAT=1)
 modtb_set(unique_tree unique_tree_n13_l2 TOP fpstereo_unique_tree
-          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=13 W=4 IDX_W=4 LEVELS_PER_STAGE=2)
+          SOURCES fpstereo_unique_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v PARAMS N=13 W=4 IDX_W=4 LEVELS_PER_STAGE=2 LAT=2)
 modtb_set(unique_tree unique_tree_n3_l1 TOP fpstereo_unique_tree
-          SOURCES fpstereo_unique_tree.v fpstereo_unique_join.v PARAMS N=3 W=3 IDX_W=2 LEVELS_PER_STAGE=1)
+          SOURCES fpstereo_unique_tree.v fpstereo_reduction_tree.v fpstereo_unique_join.v PARAMS N=3 W=3 IDX_W=2 LEVELS_PER_STAGE=1 LAT=2)
 modtb_set(unique_join unique_join_w6 TOP fpstereo_unique_join SOURCES fpstereo_unique_join.v
           PARAMS W=6 IDX_W=4)
 modtb_set(unique_join unique_join_w3 TOP fpstereo_unique_join SOURCES fpstereo_unique_join.v

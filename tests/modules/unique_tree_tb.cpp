@@ -14,6 +14,7 @@ namespace {
 
 struct UniqueTreeParams {
   int N = 8, W = 10, IDX_W = 3, LEVELS_PER_STAGE = 3;
+  int LAT = 1;  // the latency the set states, which the module checks; the bench derives its own
 };
 
 int clog2(int n) {

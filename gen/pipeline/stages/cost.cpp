@@ -55,14 +55,14 @@ class CostStage : public Stage {
         module = "fpstereo_pixel_window_cost";
         parameters = {{"N", num(c.window)},
                       {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
-                      {"COLSUM_W", num(d.column_sum_bits)},
+                      {"COLUMN_SUM_W", num(d.column_sum_bits)},
                       {"MEAN_MUL", num(int64_t(d.mean_mul))},
                       {"MEAN_SHIFT", num(d.mean_shift)}};
         break;
       case CostFunction::Shd:
         module = "fpstereo_code_window_cost";
         parameters = {{"SHD_K", num(c.shd_window)},    {"CODE_W", num(code_bits)},
-                      {"ROW_SLOTS", num(d.row_slots)}, {"COLSUM_W", num(d.column_sum_bits)},
+                      {"ROW_SLOTS", num(d.row_slots)}, {"COLUMN_SUM_W", num(d.column_sum_bits)},
                       {"COST_ROWS", num(d.cost_rows)}, {"Y_W", num(d.y_bits)}};
         break;
     }
@@ -76,9 +76,9 @@ class CostStage : public Stage {
                                            {"UF", num(c.uf)},
                                            {"COST_W", num(w.cost)},
                                            {"COST_MAX", num(int64_t(w.cost_max))},
-                                           {"COST_K_W", num(d.cost_row_bits)},
+                                           {"COST_ROW_W", num(d.cost_row_bits)},
                                            {"X_W", num(d.x_bits)},
-                                           {"YS_W", num(d.signed_y_bits)},
+                                           {"SIGNED_Y_W", num(d.signed_y_bits)},
                                            {"G_W", num(d.group_bits)},
                                            {"MIN_DISP", num(c.min_disp)},
                                            {"LAT", num(d.cost_latency)}});

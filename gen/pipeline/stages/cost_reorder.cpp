@@ -21,11 +21,11 @@ class CostReorderStage : public Stage {
                               {"COST_W", num(d.widths.cost)},
                               {"LAT", num(d.cost_latency)},
                               {"COST_ROWS", num(d.cost_rows)},
-                              {"COST_K_W", num(d.cost_row_bits)},
+                              {"COST_ROW_W", num(d.cost_row_bits)},
                               {"COST_AW", num(d.cost_addr_bits)},
                               {"X_W", num(d.x_bits)},
                               {"Y_W", num(d.y_bits)},
-                              {"YS_W", num(d.signed_y_bits)},
+                              {"SIGNED_Y_W", num(d.signed_y_bits)},
                               {"G_W", num(d.group_bits)}};
     Connections ports;
     if (d.penalty_bits != 0) {

@@ -31,7 +31,7 @@ class DisparityReorderStage : public Stage {
                    {"G", num(d.groups)},
                    {"DISP_W", num(d.reorder_ram_bits - 1)},
                    {"OUT_ROWS", num(d.out_rows)},
-                   {"OUT_K_W", num(d.out_row_bits)},
+                   {"OUT_ROW_W", num(d.out_row_bits)},
                    {"DISP_AW", num(d.disp_addr_bits)},
                    {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
                    {"X_W", num(d.x_bits)},

@@ -39,7 +39,7 @@ class Lr1MatchStage : public Stage {
                    {"ROW_SLOTS", num(d.row_slots)},
                    {"SUM_W", num(d.widths.aggregated)},
                    {"DISP_W", num(d.widths.disparity)},
-                   {"OUT_K_W", num(d.out_row_bits)},
+                   {"OUT_ROW_W", num(d.out_row_bits)},
                    {"DISP_AW", num(d.disp_addr_bits)},
                    {"END_AW", num(d.end_addr_bits)},
                    {"X_W", num(d.x_bits)},

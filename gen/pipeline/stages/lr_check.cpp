@@ -55,7 +55,7 @@ class LrCheckStage : public Stage {
                    {"DISP_W", num(d.widths.disparity)},
                    {"REFINED_W", num(d.carries_whole ? d.widths.output_disparity : 0)},
                    {"OUT_ROWS", num(d.out_rows)},
-                   {"OUT_K_W", num(d.out_row_bits)},
+                   {"OUT_ROW_W", num(d.out_row_bits)},
                    {"DISP_AW", num(d.disp_addr_bits)},
                    {"ROW_END", row_end_ ? "1" : "0"},
                    {"END_AW", num(d.end_addr_bits)},

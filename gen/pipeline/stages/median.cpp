@@ -34,7 +34,7 @@ class MedianStage : public Stage {
                    {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
-                   {"YS_W", num(d.signed_y_bits)}},
+                   {"SIGNED_Y_W", num(d.signed_y_bits)}},
                   Connections{{"in_done", in.done}} + stream_connections(in, out));
   }
 

@@ -68,7 +68,7 @@ Connections aggregator_parameters(const RtlDesign& g) {
   return {{"W", num(c.width)},
           {"ROW_SLOTS", num(g.row_slots)},
           {"K", num(g.chains)},
-          {"SLEN", num(g.segment)},
+          {"SEGMENT", num(g.segment)},
           {"G", num(g.groups)},
           {"UF", num(c.uf)},
           {"COST_W", num(g.widths.cost)},
@@ -79,14 +79,14 @@ Connections aggregator_parameters(const RtlDesign& g) {
           {"LEVELS_PER_STAGE", num(g.levels_per_stage)},
           {"PATH_TREE_LAT", num(g.path_tree_latency)},
           {"OUT_ROWS", num(g.out_rows)},
-          {"OUT_K_W", num(g.out_row_bits)},
+          {"OUT_ROW_W", num(g.out_row_bits)},
           {"COST_AW", num(g.cost_addr_bits)},
           {"X_W", num(g.x_bits)},
           {"Y_W", num(g.y_bits)},
           {"G_W", num(g.group_bits)},
           {"K_W", num(g.chain_bits)},
           {"COST_ROWS", num(g.cost_rows)},
-          {"COST_K_W", num(g.cost_row_bits)}};
+          {"COST_ROW_W", num(g.cost_row_bits)}};
 }
 
 void output_register(CoreBuilder& core, const std::string& prefix, const PixelStream& stream, const std::string& event,

@@ -34,7 +34,7 @@ class SubpixelStage : public Stage {
                    {"K", num(d.cfg.subpixel_bits)},
                    {"EQUIANGULAR", d.cfg.subpixel_fit == SubpixelFit::Equiangular ? "1" : "0"},
                    {"OUT_W", num(d.widths.output_disparity)},
-                   {"TREE_LAT", num(d.wta_word_lag)},
+                   {"WTA_WORD_LAG", num(d.wta_word_lag)},
                    {"TAG_W", num(tag_bits)}},
                   {{"sums", "agg_sums"},
                    {"tag", tag(in, fmt::format("{}_word[{}:0]", in, d.widths.disparity - 1))},

@@ -44,10 +44,10 @@ class WindowStage : public Stage {
                    {"ROW_SLOTS", num(d.row_slots)},
                    {"G", num(d.groups)},
                    {"COST_ROWS", num(d.cost_rows)},
-                   {"COST_K_W", num(d.cost_row_bits)},
+                   {"COST_ROW_W", num(d.cost_row_bits)},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
-                   {"YS_W", num(d.signed_y_bits)},
+                   {"SIGNED_Y_W", num(d.signed_y_bits)},
                    {"G_W", num(d.group_bits)}});
     if (!transform_) return;
     const int code_bits = std::max(1, d.widths.code);
