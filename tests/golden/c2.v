@@ -44,8 +44,9 @@
 `resetall
 `default_nettype none
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
-// tuser marks a frame's first pixel, tlast a row's last). The output word is the disparity,
-// with the invalid flag in bit 7. Frames are at most 1242 x 375 pixels; fps_census7_d128u32_865f3c_video_in checks the input's
+// tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).
+// m_axis_disp: the disparity words; tdata 8 bits: disparity [6:0], invalid [7].
+// Frames are at most 1242 x 375 pixels; fps_census7_d128u32_865f3c_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
 // Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_865f3c_regs.h).
 module fps_census7_d128u32_865f3c_top (
