@@ -83,10 +83,10 @@ int run_pair(const RunOptions& opt) {
   outputs.add_input(opt.right, "right image");
   opt.config.declare_input(outputs);
   for (const auto& path : opt.gray_pgm) outputs.add_file(path, "--gray-pgm");
-  for (const auto& [path, flag] : {std::pair{&opt.colour, "--colour"}, std::pair{&opt.pfm, "--pfm"}})
-    if (!path->empty()) outputs.add_file(*path, flag);
   for (const auto& [plane, path] : opt.plane_files)
     if (!path.empty()) outputs.add_file(path, plane_info(plane).option);
+  for (const auto& [path, flag] : {std::pair{&opt.colour, "--colour"}, std::pair{&opt.pfm, "--pfm"}})
+    if (!path->empty()) outputs.add_file(*path, flag);
   const GrayImage left = load_gray(opt.left, "left image");
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
