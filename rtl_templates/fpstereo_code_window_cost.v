@@ -3,9 +3,8 @@
 // Cost stage for SHD: the census codes enter SHD_K x SHD_K code windows (zero outside the
 // image); the base window waits a slot, the match window's newest column enters the match ring,
 // and the lanes sum the Hamming distances over the window (docs/semantics.md, section 2).
-// history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
-// A disparity offset MIN_DISP delays the match columns by MIN_DISP slots before the ring or, when
-// negative, the base window and its centre by -MIN_DISP slots (fpstereo_offset_delays).
+// history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot;
+// fpstereo_cost_history holds them, with the disparity offset's delays.
 module fpstereo_code_window_cost #(
   // the summation window's side
   parameter SHD_K = 3,
@@ -40,18 +39,15 @@ module fpstereo_code_window_cost #(
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [COST_ROW_W-1:0]    transform_slot,
-  output reg  [X_W-1:0]         history_x,
-  output reg  signed [SIGNED_Y_W-1:0] history_y,
-  output reg  [COST_ROW_W-1:0]    history_slot,
+  output wire [X_W-1:0]         history_x,
+  output wire signed [SIGNED_Y_W-1:0] history_y,
+  output wire [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SHD_K < 3 || SHD_K % 2 == 0) begin : invalid_SHD_K
       fpstereo_invalid_parameters_code_window_cost_SHD_K_is_not_odd_and_at_least_3 failed ();
-    end
-    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
-      fpstereo_invalid_parameters_code_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
       fpstereo_invalid_parameters_code_window_cost_SIGNED_Y_W_below_Y_W_plus_2 failed ();
@@ -111,26 +107,16 @@ module fpstereo_code_window_cost #(
     for (e = 0; e < SHD_K; e = e + 1)
       newest_column[e*CODE_W +: CODE_W] = code_newest_row_valid[e] ? codes_right[(e*SHD_K + SHD_K - 1)*CODE_W +: CODE_W]
                                                                     : {CODE_W{1'b0}};
-  wire [SHD_K*SHD_K*CODE_W-1:0] base_o;
-  wire [SHD_K*CODE_W-1:0]       newest_column_o;
-  wire [X_W-1:0]                codes_x_o;
-  wire signed [SIGNED_Y_W-1:0]        codes_y_o;
-  wire [COST_ROW_W-1:0]           codes_slot_o;
-  fpstereo_offset_delays #(.BASE_W(SHD_K*SHD_K*CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(SHD_K*CODE_W),
-                           .MIN_DISP(MIN_DISP)) offset (
-    .clk(clk), .shift(shift), .base({base_masked, codes_x, codes_y, codes_slot}), .match(newest_column),
-    .base_out({base_o, codes_x_o, codes_y_o, codes_slot_o}), .match_out(newest_column_o));
-  reg [SHD_K*SHD_K*CODE_W-1:0] base_h;
-  always @(posedge clk)
-    if (shift) begin
-      base_h       <= base_o;
-      history_x    <= codes_x_o;
-      history_y    <= codes_y_o;
-      history_slot <= codes_slot_o;
-    end
+  localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
+  wire [SHD_K*SHD_K*CODE_W-1:0]       base_h;
+  wire [POSITION_W-1:0]               history;
   wire [(UF+SHD_K-1)*SHD_K*CODE_W-1:0] view;
-  fpstereo_match_ring #(.COLUMN_W(SHD_K*CODE_W), .SPAN(SHD_K), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(newest_column_o), .view(view));
+  fpstereo_cost_history #(.BASE_W(SHD_K*SHD_K*CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(SHD_K*CODE_W),
+                          .SPAN(SHD_K), .DMAX(DMAX), .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_masked),
+    .position({codes_x, codes_y, codes_slot}), .column(newest_column), .base_held(base_h),
+    .position_held(history), .view(view));
+  assign {history_x, history_y, history_slot} = history;
   fpstereo_window_cost_lanes #(.ZERO_MEAN(0), .HAMMING(1), .ELEM_W(CODE_W), .SPAN(SHD_K), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLUMN_SUM_W(COLUMN_SUM_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (

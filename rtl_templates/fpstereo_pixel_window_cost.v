@@ -6,9 +6,8 @@
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
 // ZSAD spreads the base window's mean over three shifts after the window's register (its row
 // sums, their total, the constant multiply), so the window, its position and the match column
-// wait two shifts longer than for SAD. A disparity offset MIN_DISP delays the match columns by
-// MIN_DISP slots before the rings or, when negative, the base window and its centre by -MIN_DISP
-// slots (fpstereo_offset_delays).
+// wait two shifts longer than for SAD. fpstereo_cost_history holds the window and its centre,
+// and the match columns, with the disparity offset's delays.
 module fpstereo_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -56,17 +55,13 @@ module fpstereo_pixel_window_cost #(
     if (255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
       fpstereo_invalid_parameters_pixel_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
     end
-    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
-      fpstereo_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
-    end
   endgenerate
-  wire [N*N*8-1:0] base_masked, base_o;
+  wire [N*N*8-1:0] base_masked;
   fpstereo_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
-  wire [X_W-1:0]         transform_x_o;
-  wire signed [SIGNED_Y_W-1:0] transform_y_o;
-  wire [COST_ROW_W-1:0]    transform_slot_o;
   localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
+  localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
+  localparam COLUMN_W = N*8 + COLUMN_SUM_W;
   // The match window's newest column, zero outside the image, and its sum.
   reg [N*8-1:0] newest_column;
   integer e;
@@ -75,34 +70,49 @@ module fpstereo_pixel_window_cost #(
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
   wire [COLUMN_SUM_W-1:0] newest_sum;
   fpstereo_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
-  // Registered with the window (shift k): the window and the match column; the window's position
-  // a shift later (transform_* lags the window by one), with the window again.
-  reg [N*N*8-1:0]                base_t, base_h;
-  reg [N*8-1:0]                  column_t;
-  reg [COLUMN_SUM_W-1:0]             column_sum_t;
-  reg [X_W+SIGNED_Y_W+COST_ROW_W-1:0]    position_h;
+  // Registered with the window (shift k): the match column and its sum. The base window is held
+  // with its position (transform_* lags the window by one, so the position is a shift later)
+  // and registered once more.
+  reg  [COLUMN_W-1:0]   column_t;
+  wire [COLUMN_W-1:0]   column_l;
+  wire [N*N*8-1:0]      base_t;
+  reg  [N*N*8-1:0]      base_h;
+  wire [POSITION_W-1:0] position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t       <= base_o;
-      column_t     <= newest_column;
-      column_sum_t <= newest_sum;
-      base_h       <= base_t;
-      position_h   <= {transform_x_o, transform_y_o, transform_slot_o};
+      column_t <= {newest_column, newest_sum};
+      base_h   <= base_t;
     end
-  // ZSAD: all of it waits two shifts more for the base window's mean.
-  wire [N*N*8-1:0]    base_l;
-  wire [N*8-1:0]      column_l;
-  wire [COLUMN_SUM_W-1:0] column_sum_l;
+  wire [(UF+N-1)*COLUMN_W-1:0] view_columns;
+  fpstereo_cost_history #(.BASE_W(N*N*8), .POSITION_W(POSITION_W), .COLUMN_W(COLUMN_W), .SPAN(N), .DMAX(DMAX),
+                          .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_masked),
+    .position({transform_x, transform_y, transform_slot}), .column(column_l), .base_held(base_t),
+    .position_held(position_h), .view(view_columns));
+  // The ring's columns, split into the pixels and their sums the lanes read.
+  wire [(UF+N-1)*N*8-1:0]          view;
+  wire [(UF+N-1)*COLUMN_SUM_W-1:0] view_sums;
+  genvar c;
+  generate
+    for (c = 0; c < UF + N - 1; c = c + 1) begin : split
+      assign {view[c*N*8 +: N*8], view_sums[c*COLUMN_SUM_W +: COLUMN_SUM_W]} = view_columns[c*COLUMN_W +: COLUMN_W];
+    end
+  endgenerate
+  // ZSAD: the match column, and the base window with its position, wait two shifts more for the
+  // base window's mean (the column before the ring, the window after it).
+  wire [N*N*8-1:0] base_l;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   wire [7:0]          base_mean;
   /* verilator lint_on UNUSEDSIGNAL */
   genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fpstereo_delay #(.WIDTH(N*N*8 + N*8 + COLUMN_SUM_W + X_W + SIGNED_Y_W + COST_ROW_W), .DEPTH(2)) shift_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
-        .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
-      // The base window's mean over three shifts from the registered window: its row sums at
+      fpstereo_delay #(.WIDTH(COLUMN_W), .DEPTH(2)) column_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(column_t), .out(column_l));
+      fpstereo_delay #(.WIDTH(N*N*8 + POSITION_W), .DEPTH(2)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({base_h, position_h}),
+        .out({base_l, history_x, history_y, history_slot}));
+      // The base window's mean over three shifts from the held window: its row sums at
       // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
       wire [N*COLUMN_SUM_W-1:0] row_sums;
       for (r = 0; r < N; r = r + 1) begin : row
@@ -125,23 +135,11 @@ module fpstereo_pixel_window_cost #(
         end
       assign base_mean = mean_q;
     end else begin : no_wait
-      assign {base_l, column_l, column_sum_l, history_x, history_y, history_slot} =
-             {base_h, column_t, column_sum_t, position_h};
+      assign column_l = column_t;
+      assign {base_l, history_x, history_y, history_slot} = {base_h, position_h};
       assign base_mean = 8'd0;
     end
   endgenerate
-  wire [N*8-1:0]      column_o;
-  wire [COLUMN_SUM_W-1:0] column_sum_o;
-  fpstereo_offset_delays #(.BASE_W(N*N*8 + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(N*8 + COLUMN_SUM_W), .MIN_DISP(MIN_DISP)) offset (
-    .clk(clk), .shift(shift), .base({base_masked, transform_x, transform_y, transform_slot}),
-    .match({column_l, column_sum_l}), .base_out({base_o, transform_x_o, transform_y_o, transform_slot_o}),
-    .match_out({column_o, column_sum_o}));
-  wire [(UF+N-1)*N*8-1:0]      view;
-  wire [(UF+N-1)*COLUMN_SUM_W-1:0] view_sums;
-  fpstereo_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_o), .view(view));
-  fpstereo_match_ring #(.COLUMN_W(COLUMN_SUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_o), .view(view_sums));
   fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),

@@ -1282,9 +1282,8 @@ endmodule
 // Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
-// costs the lanes compute in this slot. A disparity offset MIN_DISP delays the match codes by
-// MIN_DISP slots before the ring or, when negative, the base code and its centre by -MIN_DISP
-// slots (fps_census7_d128u32_865f3c_offset_delays).
+// costs the lanes compute in this slot; fps_census7_d128u32_865f3c_cost_history holds them, with the disparity
+// offset's delays.
 module fps_census7_d128u32_865f3c_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -1312,35 +1311,21 @@ module fps_census7_d128u32_865f3c_point_cost #(
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [COST_ROW_W-1:0]    transform_slot,
-  output reg  [X_W-1:0]         history_x,
-  output reg  signed [SIGNED_Y_W-1:0] history_y,
-  output reg  [COST_ROW_W-1:0]    history_slot,
+  output wire [X_W-1:0]         history_x,
+  output wire signed [SIGNED_Y_W-1:0] history_y,
+  output wire [COST_ROW_W-1:0]    history_slot,
   output wire [UF*COST_W-1:0]   costs
 );
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_point_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
-    end
-  endgenerate
-  wire [CODE_W-1:0]      code_base_o, code_match_o;
-  wire [X_W-1:0]         transform_x_o;
-  wire signed [SIGNED_Y_W-1:0] transform_y_o;
-  wire [COST_ROW_W-1:0]    transform_slot_o;
-  fps_census7_d128u32_865f3c_offset_delays #(.BASE_W(CODE_W + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(CODE_W), .MIN_DISP(MIN_DISP)) offset (
-    .clk(clk), .shift(shift), .base({code_base, transform_x, transform_y, transform_slot}), .match(code_match),
-    .base_out({code_base_o, transform_x_o, transform_y_o, transform_slot_o}), .match_out(code_match_o));
-  reg [CODE_W-1:0] code_base_h;
-  always @(posedge clk)
-    if (shift) begin
-      code_base_h  <= code_base_o;
-      history_x    <= transform_x_o;
-      history_y    <= transform_y_o;
-      history_slot <= transform_slot_o;
-    end
-  wire [UF*CODE_W-1:0] match_lanes;
-  fps_census7_d128u32_865f3c_match_ring #(.COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(code_match_o), .view(match_lanes));
+  localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
+  wire [CODE_W-1:0]     code_base_h;
+  wire [POSITION_W-1:0] history;
+  wire [UF*CODE_W-1:0]  match_lanes;
+  fps_census7_d128u32_865f3c_cost_history #(.BASE_W(CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX),
+                          .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(code_base),
+    .position({transform_x, transform_y, transform_slot}), .column(code_match), .base_held(code_base_h),
+    .position_held(history), .view(match_lanes));
+  assign {history_x, history_y, history_slot} = history;
   fps_census7_d128u32_865f3c_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
                         .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
@@ -2333,88 +2318,63 @@ endmodule
 
 `resetall
 `default_nettype none
-// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
-// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
-// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
-// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
-// that the ring already holds the match columns right of it. Shift registers, advanced once per
-// slot; pass-through at MIN_DISP = 0.
-module fps_census7_d128u32_865f3c_offset_delays #(
+// What the cost lanes read, common to every cost stage: the base (its data and its centre's
+// position) held one slot, and the match image's last columns in the match ring. A disparity
+// offset MIN_DISP (docs/semantics.md, section 2: base pixel x against match pixel x - MIN_DISP - d)
+// delays one side first: the ring serves d = 0 .. DMAX - 1 from its newest column back, so with
+// MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with MIN_DISP < 0 the base waits
+// -MIN_DISP slots instead, so that the ring already holds the match columns right of it.
+module fps_census7_d128u32_865f3c_cost_history #(
+  // bits of the base's data (a code or a window) and of its centre's position
   parameter BASE_W = 8,
-  parameter MATCH_W = 8,
+  parameter POSITION_W = 8,
+  // bits of one match column, and the window side the lanes need (1: one code per disparity)
+  parameter COLUMN_W = 8,
+  parameter SPAN = 1,
+  parameter DMAX = 32,
+  parameter UF = 8,
+  // bits of the lanes' group index (checked to hold DMAX / UF groups)
+  parameter G_W = 2,
   parameter MIN_DISP = 0
 ) (
-  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
-  input  wire               clk,
-  input  wire               shift,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [BASE_W-1:0]  base,
-  input  wire [MATCH_W-1:0] match,
-  output wire [BASE_W-1:0]  base_out,
-  output wire [MATCH_W-1:0] match_out
-);
-  generate
-    if (MIN_DISP > 0) begin : match_late
-      fps_census7_d128u32_865f3c_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
-    end else begin : match_now
-      assign match_out = match;
-    end
-    if (MIN_DISP < 0) begin : base_late
-      fps_census7_d128u32_865f3c_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
-    end else begin : base_now
-      assign base_out = base;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_census7_d128u32_865f3c_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
-) (
   input  wire                            clk,
-  input  wire                            en,
+  input  wire                            adv,
   input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
+  input  wire                            shift,
+  input  wire [BASE_W-1:0]               base,
+  input  wire [POSITION_W-1:0]           position,
+  input  wire [COLUMN_W-1:0]             column,
+  output reg  [BASE_W-1:0]               base_held,
+  output reg  [POSITION_W-1:0]           position_held,
   output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_census7_d128u32_865f3c_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
-
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
-
-  integer p;
+  // The offset's delays: shift registers advanced once per slot, none at MIN_DISP = 0.
+  wire [BASE_W+POSITION_W-1:0] base_now;
+  wire [COLUMN_W-1:0]          column_now;
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_census7_d128u32_865f3c_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(column), .out(column_now));
+    end else begin : match_in_time
+      assign column_now = column;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_census7_d128u32_865f3c_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({base, position}), .out(base_now));
+    end else begin : base_in_time
+      assign base_now = {base, position};
+    end
+  endgenerate
   always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+    if (shift) {base_held, position_held} <= base_now;
+  fps_census7_d128u32_865f3c_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_now), .view(view));
 endmodule
 `resetall
 
@@ -3074,6 +3034,54 @@ module fps_census7_d128u32_865f3c_median_select #(
       end
     end
   endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
+module fps_census7_d128u32_865f3c_match_ring #(
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
+  // disparity range
+  parameter DMAX = 128,
+  // disparities per step
+  parameter UF = 32
+) (
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_census7_d128u32_865f3c_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
+  always @(posedge clk)
+    if (en)
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
 endmodule
 `resetall
 

@@ -1250,9 +1250,8 @@ endmodule
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
 // ZSAD spreads the base window's mean over three shifts after the window's register (its row
 // sums, their total, the constant multiply), so the window, its position and the match column
-// wait two shifts longer than for SAD. A disparity offset MIN_DISP delays the match columns by
-// MIN_DISP slots before the rings or, when negative, the base window and its centre by -MIN_DISP
-// slots (fps_sad5_d128u32_251435_offset_delays).
+// wait two shifts longer than for SAD. fps_sad5_d128u32_251435_cost_history holds the window and its centre,
+// and the match columns, with the disparity offset's delays.
 module fps_sad5_d128u32_251435_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
@@ -1300,17 +1299,13 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
     if (255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
       fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
     end
-    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid_G_W
-      fps_sad5_d128u32_251435_invalid_parameters_pixel_window_cost_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
-    end
   endgenerate
-  wire [N*N*8-1:0] base_masked, base_o;
+  wire [N*N*8-1:0] base_masked;
   fps_sad5_d128u32_251435_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
-  wire [X_W-1:0]         transform_x_o;
-  wire signed [SIGNED_Y_W-1:0] transform_y_o;
-  wire [COST_ROW_W-1:0]    transform_slot_o;
   localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
+  localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
+  localparam COLUMN_W = N*8 + COLUMN_SUM_W;
   // The match window's newest column, zero outside the image, and its sum.
   reg [N*8-1:0] newest_column;
   integer e;
@@ -1319,34 +1314,49 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
   wire [COLUMN_SUM_W-1:0] newest_sum;
   fps_sad5_d128u32_251435_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
-  // Registered with the window (shift k): the window and the match column; the window's position
-  // a shift later (transform_* lags the window by one), with the window again.
-  reg [N*N*8-1:0]                base_t, base_h;
-  reg [N*8-1:0]                  column_t;
-  reg [COLUMN_SUM_W-1:0]             column_sum_t;
-  reg [X_W+SIGNED_Y_W+COST_ROW_W-1:0]    position_h;
+  // Registered with the window (shift k): the match column and its sum. The base window is held
+  // with its position (transform_* lags the window by one, so the position is a shift later)
+  // and registered once more.
+  reg  [COLUMN_W-1:0]   column_t;
+  wire [COLUMN_W-1:0]   column_l;
+  wire [N*N*8-1:0]      base_t;
+  reg  [N*N*8-1:0]      base_h;
+  wire [POSITION_W-1:0] position_h;
   always @(posedge clk)
     if (shift) begin
-      base_t       <= base_o;
-      column_t     <= newest_column;
-      column_sum_t <= newest_sum;
-      base_h       <= base_t;
-      position_h   <= {transform_x_o, transform_y_o, transform_slot_o};
+      column_t <= {newest_column, newest_sum};
+      base_h   <= base_t;
     end
-  // ZSAD: all of it waits two shifts more for the base window's mean.
-  wire [N*N*8-1:0]    base_l;
-  wire [N*8-1:0]      column_l;
-  wire [COLUMN_SUM_W-1:0] column_sum_l;
+  wire [(UF+N-1)*COLUMN_W-1:0] view_columns;
+  fps_sad5_d128u32_251435_cost_history #(.BASE_W(N*N*8), .POSITION_W(POSITION_W), .COLUMN_W(COLUMN_W), .SPAN(N), .DMAX(DMAX),
+                          .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_masked),
+    .position({transform_x, transform_y, transform_slot}), .column(column_l), .base_held(base_t),
+    .position_held(position_h), .view(view_columns));
+  // The ring's columns, split into the pixels and their sums the lanes read.
+  wire [(UF+N-1)*N*8-1:0]          view;
+  wire [(UF+N-1)*COLUMN_SUM_W-1:0] view_sums;
+  genvar c;
+  generate
+    for (c = 0; c < UF + N - 1; c = c + 1) begin : split
+      assign {view[c*N*8 +: N*8], view_sums[c*COLUMN_SUM_W +: COLUMN_SUM_W]} = view_columns[c*COLUMN_W +: COLUMN_W];
+    end
+  endgenerate
+  // ZSAD: the match column, and the base window with its position, wait two shifts more for the
+  // base window's mean (the column before the ring, the window after it).
+  wire [N*N*8-1:0] base_l;
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   wire [7:0]          base_mean;
   /* verilator lint_on UNUSEDSIGNAL */
   genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fps_sad5_d128u32_251435_delay #(.WIDTH(N*N*8 + N*8 + COLUMN_SUM_W + X_W + SIGNED_Y_W + COST_ROW_W), .DEPTH(2)) shift_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in({base_h, column_t, column_sum_t, position_h}),
-        .out({base_l, column_l, column_sum_l, history_x, history_y, history_slot}));
-      // The base window's mean over three shifts from the registered window: its row sums at
+      fps_sad5_d128u32_251435_delay #(.WIDTH(COLUMN_W), .DEPTH(2)) column_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(column_t), .out(column_l));
+      fps_sad5_d128u32_251435_delay #(.WIDTH(N*N*8 + POSITION_W), .DEPTH(2)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({base_h, position_h}),
+        .out({base_l, history_x, history_y, history_slot}));
+      // The base window's mean over three shifts from the held window: its row sums at
       // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
       wire [N*COLUMN_SUM_W-1:0] row_sums;
       for (r = 0; r < N; r = r + 1) begin : row
@@ -1369,23 +1379,11 @@ module fps_sad5_d128u32_251435_pixel_window_cost #(
         end
       assign base_mean = mean_q;
     end else begin : no_wait
-      assign {base_l, column_l, column_sum_l, history_x, history_y, history_slot} =
-             {base_h, column_t, column_sum_t, position_h};
+      assign column_l = column_t;
+      assign {base_l, history_x, history_y, history_slot} = {base_h, position_h};
       assign base_mean = 8'd0;
     end
   endgenerate
-  wire [N*8-1:0]      column_o;
-  wire [COLUMN_SUM_W-1:0] column_sum_o;
-  fps_sad5_d128u32_251435_offset_delays #(.BASE_W(N*N*8 + X_W + SIGNED_Y_W + COST_ROW_W), .MATCH_W(N*8 + COLUMN_SUM_W), .MIN_DISP(MIN_DISP)) offset (
-    .clk(clk), .shift(shift), .base({base_masked, transform_x, transform_y, transform_slot}),
-    .match({column_l, column_sum_l}), .base_out({base_o, transform_x_o, transform_y_o, transform_slot_o}),
-    .match_out({column_o, column_sum_o}));
-  wire [(UF+N-1)*N*8-1:0]      view;
-  wire [(UF+N-1)*COLUMN_SUM_W-1:0] view_sums;
-  fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(N*8), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_o), .view(view));
-  fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(COLUMN_SUM_W), .SPAN(N), .DMAX(DMAX), .UF(UF)) match_sums (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_sum_o), .view(view_sums));
   fps_sad5_d128u32_251435_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
@@ -2606,6 +2604,68 @@ endmodule
 
 `resetall
 `default_nettype none
+// What the cost lanes read, common to every cost stage: the base (its data and its centre's
+// position) held one slot, and the match image's last columns in the match ring. A disparity
+// offset MIN_DISP (docs/semantics.md, section 2: base pixel x against match pixel x - MIN_DISP - d)
+// delays one side first: the ring serves d = 0 .. DMAX - 1 from its newest column back, so with
+// MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with MIN_DISP < 0 the base waits
+// -MIN_DISP slots instead, so that the ring already holds the match columns right of it.
+module fps_sad5_d128u32_251435_cost_history #(
+  // bits of the base's data (a code or a window) and of its centre's position
+  parameter BASE_W = 8,
+  parameter POSITION_W = 8,
+  // bits of one match column, and the window side the lanes need (1: one code per disparity)
+  parameter COLUMN_W = 8,
+  parameter SPAN = 1,
+  parameter DMAX = 32,
+  parameter UF = 8,
+  // bits of the lanes' group index (checked to hold DMAX / UF groups)
+  parameter G_W = 2,
+  parameter MIN_DISP = 0
+) (
+  input  wire                            clk,
+  input  wire                            adv,
+  input  wire                            slot_end,
+  input  wire                            shift,
+  input  wire [BASE_W-1:0]               base,
+  input  wire [POSITION_W-1:0]           position,
+  input  wire [COLUMN_W-1:0]             column,
+  output reg  [BASE_W-1:0]               base_held,
+  output reg  [POSITION_W-1:0]           position_held,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+    end
+  endgenerate
+  // The offset's delays: shift registers advanced once per slot, none at MIN_DISP = 0.
+  wire [BASE_W+POSITION_W-1:0] base_now;
+  wire [COLUMN_W-1:0]          column_now;
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fps_sad5_d128u32_251435_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(column), .out(column_now));
+    end else begin : match_in_time
+      assign column_now = column;
+    end
+    if (MIN_DISP < 0) begin : base_late
+      fps_sad5_d128u32_251435_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({base, position}), .out(base_now));
+    end else begin : base_in_time
+      assign base_now = {base, position};
+    end
+  endgenerate
+  always @(posedge clk)
+    if (shift) {base_held, position_held} <= base_now;
+  fps_sad5_d128u32_251435_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
+    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_now), .view(view));
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
 // DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
 // valid flag travelling in it never starts out set).
 module fps_sad5_d128u32_251435_delay #(
@@ -2637,93 +2697,6 @@ module fps_sad5_d128u32_251435_delay #(
     end
   endgenerate
   assign out = line[WIDTH*DEPTH-1 -: WIDTH];
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The disparity offset's delays in a cost stage (docs/semantics.md, section 2: base pixel x
-// against match pixel x - MIN_DISP - d). The match ring serves d = 0 .. DMAX - 1 from its newest
-// column back, so with MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with
-// MIN_DISP < 0 the base (its data and its centre's position) waits -MIN_DISP slots instead, so
-// that the ring already holds the match columns right of it. Shift registers, advanced once per
-// slot; pass-through at MIN_DISP = 0.
-module fps_sad5_d128u32_251435_offset_delays #(
-  parameter BASE_W = 8,
-  parameter MATCH_W = 8,
-  parameter MIN_DISP = 0
-) (
-  /* verilator lint_off UNUSEDSIGNAL */  // at MIN_DISP = 0 nothing waits
-  input  wire               clk,
-  input  wire               shift,
-  /* verilator lint_on UNUSEDSIGNAL */
-  input  wire [BASE_W-1:0]  base,
-  input  wire [MATCH_W-1:0] match,
-  output wire [BASE_W-1:0]  base_out,
-  output wire [MATCH_W-1:0] match_out
-);
-  generate
-    if (MIN_DISP > 0) begin : match_late
-      fps_sad5_d128u32_251435_delay #(.WIDTH(MATCH_W), .DEPTH(MIN_DISP)) match_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(match), .out(match_out));
-    end else begin : match_now
-      assign match_out = match;
-    end
-    if (MIN_DISP < 0) begin : base_late
-      fps_sad5_d128u32_251435_delay #(.WIDTH(BASE_W), .DEPTH(-MIN_DISP)) base_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(base), .out(base_out));
-    end else begin : base_now
-      assign base_out = base;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_sad5_d128u32_251435_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
-) (
-  input  wire                            clk,
-  input  wire                            en,
-  input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_sad5_d128u32_251435_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
-    end
-  endgenerate
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
-
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
-
-  integer p;
-  always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
 endmodule
 `resetall
 
@@ -3284,6 +3257,54 @@ module fps_sad5_d128u32_251435_match_lookup #(
     end
   endgenerate
   // verilator lint_on WIDTH
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
+// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
+// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
+// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
+// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
+module fps_sad5_d128u32_251435_match_ring #(
+  // bits of one column
+  parameter COLUMN_W = 48,
+  // window side the lanes need (1: one code per disparity)
+  parameter SPAN = 1,
+  // disparity range
+  parameter DMAX = 128,
+  // disparities per step
+  parameter UF = 32
+) (
+  input  wire                            clk,
+  input  wire                            en,
+  input  wire                            slot_end,
+  input  wire [COLUMN_W-1:0]             column_in,
+  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_sad5_d128u32_251435_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    end
+  endgenerate
+  localparam LENGTH = DMAX + SPAN - 1;
+  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
+  // turn that completes the slot plus the shift by one slot.
+  localparam TURN = UF % LENGTH;
+  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+
+  reg [LENGTH*COLUMN_W-1:0] ring;
+  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+
+  integer p;
+  always @(posedge clk)
+    if (en)
+      for (p = 0; p < LENGTH; p = p + 1)
+        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
+        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
+        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
 endmodule
 `resetall
 

@@ -22,7 +22,7 @@ class CostStage : public Stage {
   }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
-  // fpstereo_offset_delays); the lanes take their register stages.
+  // fpstereo_cost_history); the lanes take their register stages.
   Latency latency(const Geometry& g) const override {
     const Latency wait = base_wait(g.cfg);
     return {wait.rows, 1 + wait.slots, g.cost_latency};
