@@ -1,6 +1,7 @@
 // File I/O shared by the generated C-simulation test bench and host program (not synthesised):
 // 8-bit binary PGM images in, disparity words as PFM (the format `fpstereo run --pfm` writes:
-// little-endian floats, rows bottom to top, +inf where invalid) in and out.
+// little-endian floats, rows bottom to top, +inf where invalid) in and out, and each output frame
+// in the encoding of its plane.
 #pragma once
 
 #include <pthread.h>
@@ -155,6 +156,40 @@ inline void write_pfm_words(const Words& words, unsigned invalid_word, int fract
       out.write(b, 4);
     }
   if (!out) throw InputError("cannot write '" + path + "'");
+}
+
+// How an output frame is stored in a file, as `fpstereo run` writes its plane (gen/core/outputs.hpp):
+// output words as PFM (their fraction, +inf where invalid), whole disparities as PFM, levels
+// 0 .. 255 as binary PGM.
+enum class Encoding { Disparities, WholeDisparities, Levels };
+
+// One of the kernel's output frames: its name (the memory-mapped kernel's argument), the
+// `fpstereo run` option that writes the same plane (the test bench reads its reference, the host
+// program writes it, under that option; the words' file is given by position) and its encoding.
+struct OutputFrame {
+  const char* frame;
+  const char* option;
+  Encoding encoding;
+};
+inline const char* file_suffix(Encoding e) { return e == Encoding::Levels ? ".pgm" : ".pfm"; }
+
+template <class Config>
+Words load_frame(const std::string& path, const std::string& role, Encoding e) {
+  if (e == Encoding::Disparities)
+    return load_pfm_words(path, role, Config::kInvalidWord, Config::kSubpixelBits, Config::kMinDisp);
+  if (e == Encoding::WholeDisparities) return load_pfm_words(path, role, Config::kInvalidWord, 0, Config::kMinDisp);
+  const Gray levels = load_pgm(path, role);
+  return Words{levels.width, levels.height, std::vector<unsigned short>(levels.pixels.begin(), levels.pixels.end())};
+}
+
+template <class Config>
+void write_frame(const Words& words, Encoding e, const std::string& path) {
+  if (e == Encoding::Disparities)
+    return write_pfm_words(words, Config::kInvalidWord, Config::kSubpixelBits, path, Config::kMinDisp);
+  if (e == Encoding::WholeDisparities) return write_pfm_words(words, Config::kInvalidWord, 0, path, Config::kMinDisp);
+  Gray levels{words.width, words.height, std::vector<unsigned char>(words.words.size())};
+  for (size_t i = 0; i < words.words.size(); ++i) levels.pixels[i] = (unsigned char)words.words[i];
+  write_pgm(levels, path);
 }
 
 // The C-simulated kernel keeps its line buffers and path-cost rows on the stack, as many

@@ -67,24 +67,21 @@ if [ -z "$user_left" ] && [ "$width" -le 450 ] && [ "$height" -le 375 ]; then
     --from "$root/examples/cones/left.png" "$root/examples/cones/right.png"
 fi
 
-# With the right view, its words are checked too (test bench and host), against `--right-output`;
-# with confidence the confidences, against `--confidence-output`.
-right_view=$(sed -n 's/^right-view = //p' <<<"$config")
-confidence=$(sed -n 's/^confidence = //p' <<<"$config")
+# Every other output frame (the right view, the confidences) is checked too, test bench and host:
+# the test bench lists each frame's option, which `fpstereo run` writes the reference under and
+# the test bench and host program read and write it under.
+planes=()
+while read -r option suffix; do planes+=("$option" "$suffix"); done < <("$tb" --planes)
 pixels=0
 for name in "${pairs[@]}"; do
   left=$work/pairs/$name-left.pgm right=$work/pairs/$name-right.pgm
   reference=(--pfm "$work/pairs/$name-reference.pfm") tb_extra=() host_extra=()
-  if [ "$right_view" = on ]; then
-    reference+=(--right-output "$work/pairs/$name-right-reference.pfm")
-    tb_extra=(--right-reference "$work/pairs/$name-right-reference.pfm")
-    host_extra=(--right-view "$work/pairs/$name-host-right.pfm")
-  fi
-  if [ "$confidence" = on ]; then
-    reference+=(--confidence-output "$work/pairs/$name-confidence.pgm")
-    tb_extra+=(--confidence-reference "$work/pairs/$name-confidence.pgm")
-    host_extra+=(--confidence "$work/pairs/$name-host-confidence.pgm")
-  fi
+  for ((p = 0; p < ${#planes[@]}; p += 2)); do
+    option=${planes[p]} file=$name${planes[p]#-}
+    reference+=("$option" "$work/pairs/$file-reference${planes[p + 1]}")
+    tb_extra+=("$option" "$work/pairs/$file-reference${planes[p + 1]}")
+    host_extra+=("$option" "$work/pairs/$file-host${planes[p + 1]}")
+  done
   "$build/fpstereo" run "${config_flags[@]}" "$left" "$right" "${reference[@]}" >/dev/null
   "$tb" "$left" "$right" "$work/pairs/$name-reference.pfm" "${tb_extra[@]}" ||
     fail "$name: the test bench found mismatches"
@@ -92,14 +89,11 @@ for name in "${pairs[@]}"; do
     fail "$name: the host program failed"
   cmp -s "$work/pairs/$name-host.pfm" "$work/pairs/$name-reference.pfm" ||
     fail "$name: the host program's disparity differs from the reference"
-  if [ "$right_view" = on ]; then
-    cmp -s "$work/pairs/$name-host-right.pfm" "$work/pairs/$name-right-reference.pfm" ||
-      fail "$name: the host program's right view differs from the reference"
-  fi
-  if [ "$confidence" = on ]; then
-    cmp -s "$work/pairs/$name-host-confidence.pgm" "$work/pairs/$name-confidence.pgm" ||
-      fail "$name: the host program's confidences differ from the reference"
-  fi
+  for ((p = 0; p < ${#planes[@]}; p += 2)); do
+    file=$work/pairs/$name${planes[p]#-}
+    cmp -s "$file-host${planes[p + 1]}" "$file-reference${planes[p + 1]}" ||
+      fail "$name: the host program's ${planes[p]#--} differs from the reference"
+  done
   read -r w h < <(sed -n 2p "$work/pairs/$name-reference.pfm")
   pixels=$((pixels + w * h))
 done

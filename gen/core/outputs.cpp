@@ -6,9 +6,16 @@ namespace fpstereo {
 
 const std::vector<PlaneInfo>& all_planes() {
   static const std::vector<PlaneInfo> planes = {
-      {Plane::Disparity, "disparity", "--output", "the output words"},
-      {Plane::Confidence, "confidence", "--confidence-output", "each pixel's confidence"},
-      {Plane::Right, "right", "--right-output", "the right view's whole disparities"},
+      {Plane::Disparity, "disparity", "--output", "the output words", PlaneEncoding::Disparities,
+       "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name ends in "
+       ".pfm"},
+      {Plane::Confidence, "confidence", "--confidence-output", "each pixel's confidence", PlaneEncoding::Levels,
+       "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
+       "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG"},
+      {Plane::Right, "right", "--right-output", "the right view's whole disparities",
+       PlaneEncoding::WholeDisparities,
+       "the right view's disparities (the left-right check's match side): PFM if the name ends in .pfm, else a "
+       "KITTI 16-bit PNG"},
   };
   return planes;
 }

@@ -18,11 +18,20 @@ enum class Plane {
   Right,       // the match side's whole disparities (section 5, "Right view")
 };
 
+// How a plane's words are stored in files (`fpstereo run`, the HLS test bench and host program).
+enum class PlaneEncoding {
+  Disparities,       // output words: disparities with their fraction, invalid where flagged
+  WholeDisparities,  // whole disparities, never invalid
+  Levels,            // 0 .. 255
+};
+
 struct PlaneInfo {
   Plane plane;
   const char* name;    // as files, streams' fields and messages name it
   const char* option;  // the `fpstereo run` option that writes it
   const char* what;
+  PlaneEncoding encoding;
+  const char* file_help;  // the files `option` writes
 };
 
 // Every plane, in the order outputs are listed.

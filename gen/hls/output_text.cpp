@@ -2,10 +2,12 @@
 
 #include <fmt/core.h>
 
+#include <cctype>
 #include <functional>
 #include <stdexcept>
 
 #include "hls_text.hpp"
+#include "outputs.hpp"
 
 namespace fpstereo::hls {
 namespace {
@@ -25,12 +27,17 @@ std::string element_type(const OutputWord& word) {
                          std::to_string(word.frame_bits) + "-bit pixels");
 }
 
-// Whether a word carries an invalid flag (the test bench then prints its invalid value as such).
-bool has_invalid_flag(const OutputStream& o, const OutputWord& word) {
-  for (const auto& field : o.fields)
-    if (field.name == "invalid" && field.lsb >= word.lsb && field.lsb + field.bits <= word.lsb + word.bits)
-      return true;
-  return false;
+// The test bench's and host program's name of a plane's encoding (fpstereo_hls_io.hpp).
+std::string encoding_name(PlaneEncoding e) {
+  switch (e) {
+    case PlaneEncoding::Disparities:
+      return "Encoding::Disparities";
+    case PlaneEncoding::WholeDisparities:
+      return "Encoding::WholeDisparities";
+    case PlaneEncoding::Levels:
+      return "Encoding::Levels";
+  }
+  throw std::logic_error("encoding_name: an encoding without a name");
 }
 
 // `each(item)` joined by `separator`, over the streams or over every stream's words.
@@ -117,20 +124,34 @@ std::map<std::string, std::string> output_text(const rtl::Geometry& g, const std
     for (const auto& word : o.words) frames += word.frame + ", ";
     return fmt::format("  {}_store_{}({}, {}width, height);\n", top, o.port, o.port, frames);
   });
-  // The test bench: each stream read into its words' frames, each frame compared with its reference.
+  // The test bench and the host program: the frames in the list's order, the words first (given by
+  // position), the others under their planes' `fpstereo run` options; each stream read into its
+  // words' frames.
+  vars["OUTPUT_FRAMES"] = join_words(streams, "", [](const OutputStream&, const OutputWord& word, int) {
+    const PlaneInfo& plane = plane_info(word.plane);
+    return fmt::format("    {{\"{}\", \"{}\", {}}},\n", word.frame, plane.option, encoding_name(plane.encoding));
+  });
+  const auto usage = [&](const char* format) {
+    return join_words(streams, "", [&](const OutputStream&, const OutputWord& word, int i) -> std::string {
+      if (i == 0) return "";
+      const PlaneInfo& plane = plane_info(word.plane);
+      std::string file = word.frame;
+      for (char& c : file) c = char(std::toupper(static_cast<unsigned char>(c)));
+      return (i == 1 ? "" : " ") + fmt::format(fmt::runtime(format), plane.option, file,
+                                               plane.encoding == PlaneEncoding::Levels ? ".pgm" : ".pfm");
+    });
+  };
+  vars["TB_USAGE"] = usage("{} {}{}");
+  vars["HOST_USAGE"] = usage("[{} {}{}]");
   vars["TB_OUTPUT_STREAMS"] = join_streams(
       streams, "", [](const OutputStream& o) { return stream_declarations(beat_type(o), {o.port}); });
-  vars["TB_READS"] = join_streams(streams, "", [](const OutputStream& o) {
+  int first_word = 0;
+  vars["TB_READS"] = join_streams(streams, "", [&](const OutputStream& o) {
     std::string words;
     for (const auto& word : o.words)
-      words +=
-          fmt::format("{}{{&got.{}, {}, {}}}", words.empty() ? "" : ", ", word.frame, word.lsb, word.bits);
+      words += fmt::format("{}{{&got[{}], {}, {}}}", words.empty() ? "" : ", ", first_word++, word.lsb, word.bits);
     return fmt::format("  read_frame({0}, \"{0}\", left.width, left.height, {{{1}}}, framing_ok);\n", o.port,
                        words);
-  });
-  vars["TB_COMPARES"] = join_words(streams, "", [](const OutputStream& o, const OutputWord& word, int) {
-    return fmt::format("  wrong += mismatches(expected.{0}, got.{0}, \"{1} {0}\", {2}, total);\n", word.frame,
-                       o.port, has_invalid_flag(o, word) ? "true" : "false");
   });
   // The host program: an XRT buffer per frame (kernel arguments from 2 on), or in C-simulation the
   // frames themselves.
@@ -140,13 +161,13 @@ std::map<std::string, std::string> output_text(const rtl::Geometry& g, const std
   });
   vars["HOST_BUFFER_ARGUMENTS"] =
       join_words(streams, ", ", [](const OutputStream&, const OutputWord& word, int) { return word.frame; });
-  vars["HOST_READS"] = join_words(streams, "", [](const OutputStream&, const OutputWord& word, int) {
-    return fmt::format("  {0}.sync(XCL_BO_SYNC_BO_FROM_DEVICE);\n  {0}.read(data(planes.{0}));\n",
-                       word.frame);
+  vars["HOST_READS"] = join_words(streams, "", [](const OutputStream&, const OutputWord& word, int i) {
+    return fmt::format("  {0}.sync(XCL_BO_SYNC_BO_FROM_DEVICE);\n  {0}.read(data{1}(frames[{2}]));\n",
+                       word.frame, word.frame_bits, i);
   });
   vars["HOST_FRAME_POINTERS"] = join_words(
       streams, ", ",
-      [](const OutputStream&, const OutputWord& word, int) { return "data(planes." + word.frame + ")"; });
+      [](const OutputStream&, const OutputWord& word, int i) { return fmt::format("data{}(frames[{}])", word.frame_bits, i); });
   return vars;
 }
 

@@ -29,40 +29,23 @@ struct RunOptions {
 };
 
 // How a plane's file is written, by its name's extension.
-std::string plane_file_help(Plane plane) {
-  switch (plane) {
-    case Plane::Disparity:
-      return "KITTI 16-bit PNG (disparity x 256, 0 = invalid; disparities 0 .. 255.99), or PFM if the name "
-             "ends "
-             "in .pfm";
-    case Plane::Confidence:
-      return "each pixel's confidence, 255 (S2 - S1) / S2 from its best and second-best aggregated costs "
-             "(docs/semantics.md section 4): binary PGM if the name ends in .pgm, else an 8-bit gray PNG";
-    case Plane::Right:
-      return "the right view's disparities (the left-right check's match side): PFM if the name ends in "
-             ".pfm, "
-             "else a KITTI 16-bit PNG";
-  }
-  throw std::logic_error("plane_file_help: a plane without a writer");
-}
-
 std::vector<uchar> encode_plane(Plane plane, const std::string& path, const DisparityImage& words,
                                 const StereoConfig& cfg) {
-  switch (plane) {
-    case Plane::Disparity:
+  switch (plane_info(plane).encoding) {
+    case PlaneEncoding::Disparities:
       return encode_disparity_file(path, to_float_disparity(words, cfg));
-    case Plane::Right: {
-      StereoConfig whole = cfg;  // the right view's words are whole disparities
+    case PlaneEncoding::WholeDisparities: {
+      StereoConfig whole = cfg;  // words without a fraction
       whole.subpixel_bits = 0;
       return encode_disparity_file(path, to_float_disparity(words, whole));
     }
-    case Plane::Confidence: {
+    case PlaneEncoding::Levels: {
       GrayImage bytes(words.width, words.height);  // confidences are 0 .. 255
       for (size_t i = 0; i < bytes.pixels.size(); ++i) bytes.pixels[i] = uint8_t(words.pixels[i]);
       return ends_with(path, ".pgm") ? encode_pgm(bytes) : encode_gray_png(words);
     }
   }
-  throw std::logic_error("encode_plane: a plane without a writer");
+  throw std::logic_error("encode_plane: an encoding without a writer");
 }
 
 // Every output is declared (and checked against the inputs and each other) before the work,
@@ -143,7 +126,7 @@ int run_command_line(int argc, char** argv) {
   run_cmd->add_option("right", run.right, "right (match) image")->required();
   for (const PlaneInfo& info : all_planes()) {
     const std::string flag = info.plane == Plane::Disparity ? std::string("-o,") + info.option : info.option;
-    run_cmd->add_option(flag, run.plane_files[info.plane], plane_file_help(info.plane));
+    run_cmd->add_option(flag, run.plane_files[info.plane], info.file_help);
     if (info.plane == Plane::Disparity) {  // the words' other renderings
       run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
       run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
