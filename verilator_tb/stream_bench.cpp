@@ -230,9 +230,9 @@ int held_tdata_bits(const std::string& port) {
 }
 
 const DesignFiles& design_files() {
-#ifdef FPSTEREO_TB_CONTROL
+#ifdef FPSTEREO_TB_REGS_HEADER
   static const DesignFiles files{FPSTEREO_TB_CONFIG_FILE, FPSTEREO_TB_TOP_FILE, FPSTEREO_TB_REGS_HEADER};
-#else
+#else  // a design without the AXI4-Lite control interface
   static const DesignFiles files{FPSTEREO_TB_CONFIG_FILE, FPSTEREO_TB_TOP_FILE, ""};
 #endif
   return files;
@@ -268,7 +268,7 @@ class LiteMaster {
       active_ = true;
       address_sent_ = data_sent_ = false;
     }
-#ifdef FPSTEREO_TB_CONTROL
+#ifdef FPSTEREO_TB_REGS_HEADER
     const bool write = active_ && current_.write, read = active_ && !current_.write;
     dut.s_axi_ctrl_awvalid = write && !address_sent_;
     dut.s_axi_ctrl_awaddr = current_.offset;
@@ -286,7 +286,7 @@ class LiteMaster {
 
   // Before the rising edge: the handshakes that happen at it.
   void sample(const Vdut& dut, std::vector<RegisterAccess>& log) {
-#ifdef FPSTEREO_TB_CONTROL
+#ifdef FPSTEREO_TB_REGS_HEADER
     if (!active_) return;
     if (current_.write) {
       address_sent_ |= dut.s_axi_ctrl_awvalid && dut.s_axi_ctrl_awready;
