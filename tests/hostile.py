@@ -254,6 +254,31 @@ def header_bomb():
         check(time.time() - start < 5, f"{bomb} refused from its header, quickly")
 
 
+def memory_limits():
+    """Under every address-space limit from the one the program starts in up to the one it needs,
+    a run either succeeds or refuses with one line naming no C++ exception (no crash, no
+    "std::bad_alloc"), and the previous output stays as it was."""
+    d = fresh("memory")
+    left, right = inputs(d)
+    out = os.path.join(d, "d.png")
+    write(out, b"previous")
+    limited = lambda kb, *args: run(["sh", "-c", f"ulimit -v {kb}; exec \"$0\" \"$@\"", FPSTEREO, *args])
+    start = next((kb for kb in range(50_000, 2_000_000, 2_000) if limited(kb, "config").returncode == 0), None)
+    if start is None:
+        check(False, "fpstereo config starts under no address-space limit up to 2 GB")
+        return
+    results = []
+    for kb in range(start, start + 400_000, 1_000):
+        r = limited(kb, "run", left, right, *SMALL, "-o", out)
+        results.append(r)
+        if r.returncode == 0:
+            break
+        err = r.stderr.strip()
+        check(r.returncode == 2 and "\n" not in err and "std::" not in err and "bad_alloc" not in err and
+              read(out) == b"previous", f"under {kb} kB: exit 2, one line, output untouched (got {r.returncode}: {err!r})")
+    check(results and results[-1].returncode == 0, f"a run succeeds under some limit from {start} kB on")
+
+
 def flags():
     huge_part = "a-" + "b" * 30000
     expect_refusal([FPSTEREO_RTL, "--emit", "hls", "--part", huge_part, "-o", os.path.join(WORK, "hls_part")],
@@ -296,8 +321,8 @@ def concurrent_writers():
           "six concurrent writers of one output: one whole file, no temporary")
 
 
-for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, flags, odd_names,
-             concurrent_writers):
+for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, memory_limits, flags,
+             odd_names, concurrent_writers):
     print(f"-- {case.__name__}")
     try:
         case()

@@ -329,8 +329,7 @@ Accuracy evaluate_accuracy(const StereoConfig& cfg, const Dataset& ds, int threa
   bool first = true;
   for (const DatasetPair& pair : ds.pairs) {
     const PairInputs in = load_pair(pair, cfg);  // at the pair's own size
-    const StereoConfig& run = in.cfg;
-    const cv::Mat1f est = to_float_disparity(run_golden(run, in.left, in.right, threads), run);
+    const cv::Mat1f est = golden_disparity(in, threads);
     const Scores valid = score(est, in), filled = score(kitti_fill(est), in);
     if (first) {
       occ_filled = filled.occ;

@@ -136,7 +136,14 @@ cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const s
   } catch (const std::bad_alloc&) {
     throw InputError(fmt::format("{} {}: out of memory decoding it", role, quoted(path)));
   }
-  if (image.empty()) throw InputError(fmt::format("{} {}: not a decodable image", role, quoted(path)));
+  if (image.empty()) {
+    // A decoder that runs out of memory returns nothing too: with a readable header, say both.
+    const auto size = stated_size(bytes);
+    throw InputError(size ? fmt::format("{} {}: not a decodable image (its header states {}x{} pixels: corrupt "
+                                        "data, or out of memory decoding them)",
+                                        role, quoted(path), size->first, size->second)
+                          : fmt::format("{} {}: not a decodable image", role, quoted(path)));
+  }
   return image;
 }
 
@@ -338,7 +345,15 @@ GrayImage upscale(const GrayImage& image, int factor) {
 }
 
 GrayImage load_gray(const std::string& path, const std::string& role) {
-  return to_gray_image(decode(read_bytes(path, role), path, role), role + " " + quoted(path));
+  try {
+    return to_gray_image(decode(read_bytes(path, role), path, role), role + " " + quoted(path));
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {  // converting it to gray, after the decoder's own allocations
+    throw InputError(fmt::format("{} {}: out of memory loading it", role, quoted(path)));
+  } catch (const std::exception& e) {  // e.g. no thread for OpenCV's conversion under a resource limit
+    throw InputError(fmt::format("{} {}: {} while loading it", role, quoted(path), e.what()));
+  }
 }
 
 GrayImage to_gray_image(const cv::Mat& decoded, const std::string& what) {

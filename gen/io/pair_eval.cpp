@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "golden_model.hpp"
 #include "image_io.hpp"
 #include "text.hpp"
 
@@ -57,6 +58,15 @@ PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg) {
   else if (in.occ && !mask.empty())
     in.noc = Region{in.occ->gt, mask};
   return in;
+}
+
+cv::Mat1f golden_disparity(const PairInputs& in, int threads) {
+  try {
+    return to_float_disparity(run_golden(in.cfg, in.left, in.right, threads), in.cfg);
+  } catch (const std::bad_alloc&) {
+    throw InputError(fmt::format("pair {} ({}x{}): out of memory computing its disparities", quoted(in.pair.name),
+                                 in.left.width, in.left.height));
+  }
 }
 
 Scores score(const cv::Mat1f& est, const PairInputs& in) {

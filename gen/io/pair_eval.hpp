@@ -37,6 +37,10 @@ StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in);
 // Loads and checks the images and ground truth. Throws InputError.
 PairInputs load_pair(const DatasetPair& pair, const StereoConfig& cfg);
 
+// The golden model's disparities of the pair, as floats (to_float_disparity); an allocation
+// failure is an InputError naming the pair.
+cv::Mat1f golden_disparity(const PairInputs& in, int threads = 1);
+
 Scores score(const cv::Mat1f& est, const PairInputs& in);
 
 // Adds `part` into `total`; a region missing from either leaves the total without it (a pool over

@@ -102,9 +102,9 @@ PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::strin
   PairResult result{in.pair.name, in.left.width, in.left.height, {}};
   std::cerr << progress << ": fpstereo" << std::flush;
   double seconds = 0;
-  const DisparityImage words = timed([&] { return run_golden(in.cfg, in.left, in.right); }, seconds);
+  const cv::Mat1f disparity = timed([&] { return golden_disparity(in); }, seconds);
   std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
-  result.methods.push_back(evaluate(label, seconds, to_float_disparity(words, in.cfg), in));
+  result.methods.push_back(evaluate(label, seconds, disparity, in));
   if (!o.baseline.empty()) {
     std::cerr << ", " << kSgbmName << std::flush;
     const cv::Mat1f base =

@@ -74,7 +74,13 @@ int run_pair(const RunOptions& opt) {
   const GrayImage right = load_gray(opt.right, "right image");
   check_pair(left, right, cfg);
   const auto start = std::chrono::steady_clock::now();
-  const Planes result = run_golden(cfg, left, right, planes);
+  Planes result;
+  try {
+    result = run_golden(cfg, left, right, planes);
+  } catch (const std::bad_alloc&) {
+    throw InputError(fmt::format("{} and {} ({}x{}): out of memory computing the disparities", quoted(opt.left),
+                                 quoted(opt.right), left.width, left.height));
+  }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const cv::Mat1f disparity = to_float_disparity(result.at(Plane::Disparity), cfg);
@@ -160,6 +166,8 @@ int run_command_line(int argc, char** argv) {
     return report_error("fpstereo", e.what());
   } catch (const FileError& e) {
     return report_error("fpstereo", e.what());
+  } catch (const std::bad_alloc&) {  // where no input is to blame in particular
+    return report_error("fpstereo", "out of memory");
   } catch (const std::exception& e) {  // e.g. fmt::print's write error on stdout
     return report_error("fpstereo", e.what());
   }
