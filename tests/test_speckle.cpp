@@ -111,6 +111,25 @@ TEST_CASE("speckle filter: regions of exactly S pixels go, of S + 1 stay (OpenCV
                 "..4",
                 "..4",
                 "..."});
+  // A frame taller than S, so rows leave the filter before the frame ends: the 1s and the 3s
+  // (3 pixels) go, the 2s (5 rows) and the 4s (a 2 x 2 block) stay.
+  check_filter({"1.2.3",
+                "1.2.3",
+                "1.2.3",
+                "..2..",
+                "..2..",
+                ".....",
+                "..44.",
+                "..44."},
+               3, 0,
+               {"..2..",
+                "..2..",
+                "..2..",
+                "..2..",
+                "..2..",
+                ".....",
+                "..44.",
+                "..44."});
 }
 
 TEST_CASE("speckle filter: a U joins its arms on its last row", "[speckle]") {

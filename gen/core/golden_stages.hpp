@@ -462,7 +462,8 @@ class PathAggregator {
 // that a vertical neighbour pair within the range connects. A region's count of pixels lives at
 // its root and saturates at S + 1; the root is always a label of the newest row the region
 // reaches (a union always involves a label of the row being labelled, and that one becomes the
-// root), so parents point to newer rows and a label is never read after its row has left.
+// root), so no parent lies in an older row than its child, and no label in use points into a
+// row that has left the ring.
 //
 // Delay: row y leaves after row y + S has been labelled, S rows. By then the region of each of
 // its pixels is decided: if it still has a pixel in row y + S it spans at least S + 1 rows, so
@@ -471,9 +472,9 @@ class PathAggregator {
 // pixel. Once the frame has ended every region is closed and the rows still held leave.
 //
 // Memory, the hardware's budget: S + 1 rows of words and of labels (a label per pixel, a run's
-// label = slot * width + the run's first column, so (S + 1) * width labels of
-// bits_for((S + 1) * width - 1) bits) and, per label, its parent and its count of
-// bits_for(S + 1) bits. A frame of at most S + 1 rows is held whole.
+// label = slot * width + the run's first column, so L = min(S + 1, H) * width labels of
+// bits_for(L - 1) bits) and, per label, its parent and its count of bits_for(S + 1) bits. A
+// frame of at most S + 1 rows is held whole.
 class SpeckleFilter {
  public:
   // size: S >= 1; range: the largest step within a region, in output-word units (r << sub-pixel
