@@ -241,7 +241,7 @@ void validate(const StereoConfig& c) {
   check_range("p2-adapt", c.p2_adapt, 0, 16);
   check_range("lr-threshold", c.lr_threshold, 0, 15);
   check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
-  // A region of fewer than S pixels spans fewer than S rows: S bounds the hardware's row delay.
+  // A region of at most S pixels spans at most S rows: S bounds the hardware's row delay.
   check_range("speckle-size", c.speckle_size, 0, kMaxSpeckleSize);
   check_range("speckle-range", c.speckle_range, 0, c.dmax);
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)

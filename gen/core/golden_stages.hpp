@@ -533,7 +533,7 @@ class SpeckleFilter {
 
   int find(int label) {
     while (parent_[size_t(label)] != label) {
-      parent_[size_t(label)] = parent_[size_t(parent_[size_t(label)])];  // path halving: still newer
+      parent_[size_t(label)] = parent_[size_t(parent_[size_t(label)])];  // path halving: never to an older row
       label = parent_[size_t(label)];
     }
     return label;
