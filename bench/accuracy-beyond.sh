@@ -2,7 +2,9 @@
 # Accuracy of the options beyond the paper against OpenCV's StereoSGBM (MODE_SGBM and MODE_HH4),
 # per dataset of a stereo data folder, for the two KITTI sets pooled and for every pair pooled,
 # as the table of docs/accuracy.md, "Accuracy beyond the paper" (markdown on stdout):
-#   bench/accuracy-beyond.sh [--build-dir B] [DATA]      (DATA: ../shared/data/stereo)
+#   bench/accuracy-beyond.sh [--build-dir B] [--speckle] [DATA]      (DATA: ../shared/data/stereo)
+# With --speckle, the table of docs/accuracy.md, "Speckle filter": A4 with speckle sizes 0, 50,
+# 100, 200 and ranges 1, 2, against MODE_HH4 without and with OpenCV's speckle filter (100, 2).
 # Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
 # after KITTI background interpolation of invalid pixels.
 set -euo pipefail
@@ -10,10 +12,12 @@ fail() { echo "accuracy-beyond: $*" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
 data=$root/../shared/data/stereo
+speckle=0
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
                  shift 2 ;;
+    --speckle) speckle=1; shift ;;
     -*) fail "unknown option '$1'" ;;
     *) data=$1; shift ;;
   esac
@@ -47,6 +51,14 @@ pool all_pooled "${sets[@]}"
 groups+=("$work/all_pooled")
 
 methods=("C2" "C2 --p2-adapt 4" "C2 --subpixel-bits 4" "C4" "A2" "A3" "A4")
+baselines=("sgbm" "hh4")
+if [ $speckle = 1 ]; then
+  methods=("A4")
+  for size in 50 100 200; do
+    for range in 1 2; do methods+=("A4 --speckle-size $size --speckle-range $range"); done
+  done
+  baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")
+fi
 
 # The overall line of the first (ours) or second (the baseline) method: the filled columns.
 row() {  # dataset label, method label, eval output, which line (1 ours, 2 baseline)
@@ -61,9 +73,10 @@ echo "| dataset (pairs) | method | D1-noc, filled | D1, filled | bad-2, filled |
 echo "|---|---|---|---|---|---|---|---|---|"
 for g in "${groups[@]}"; do
   label=$(basename "$g")
-  for mode in sgbm hh4; do
-    out=$("$build/fpstereo" eval "$g" --preset C2 --baseline opencv-sgbm --sgbm-mode "$mode")
-    row "$label" "OpenCV $mode" "$out" 2
+  for b in "${baselines[@]}"; do
+    # shellcheck disable=SC2086
+    out=$("$build/fpstereo" eval "$g" --preset C2 --baseline opencv-sgbm --sgbm-mode $b)
+    row "$label" "OpenCV $b" "$out" 2
   done
   for m in "${methods[@]}"; do
     # shellcheck disable=SC2086

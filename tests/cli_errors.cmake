@@ -123,12 +123,20 @@ expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --rig
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
 expect_error("min-disp = -300: must be in -256 .. 256" --min-disp -300)
 expect_error("mgm = on: not in the hardware generators (the models have it)" --mgm on)
+expect_error("speckle-size = 100: not in the hardware generators yet (the models have it); use 0" --speckle-size 100)
+expect_error("speckle-size = 1: not in the hardware generators yet" --emit hls --speckle-size 1 -o ${WORK}/hls_speckle)
+if(EXISTS ${WORK}/hls_speckle)
+  message(SEND_ERROR "fpstereo-rtl --emit hls --speckle-size 1 left ${WORK}/hls_speckle behind")
+endif()
+expect_error("speckle-size = 4097: must be in 0 .. 4096" --speckle-size 4097)
+expect_error("speckle-range = 129: must be in 0 .. 128" --speckle-range 129)
 expect_error("min-disp = 80: the hardware generators need dmax + |min-disp| <= width (208 > 200)"
              --width 200 --dmax 128 --min-disp 80)
 expect_error("min-disp = -80: the hardware generators need dmax + |min-disp| <= width" --emit hls --width 200
              --dmax 128 --min-disp -80 -o ${WORK}/hls_wide_range)
 expect_error("right-view = on: needs a left-right check" --emit hls --right-view on -o ${WORK}/hls_right_view)
 set(FPSTEREO ${FPSTEREO_MAIN})
+expect_error("speckle-range = -1: must be in 0 .. 64" run --width 450 --height 375 --dmax 64 --uf 16 --speckle-range -1 ${L} ${R})
 expect_error("a KITTI PNG cannot hold the negative disparity"
              run --width 450 --height 375 --dmax 64 --uf 16 --min-disp -200 ${L} ${R} -o ${WORK}/negative.png)
 expect_error("--right-output: the right view needs a left-right check (lr = lr1 or lr2)"

@@ -98,6 +98,14 @@ TEST_CASE("parameters parse from text", "[config]") {
   set_param(c, "lr", "lr2");
   CHECK_FALSE(c.mgm);  // off by default
   set_param(c, "mgm", "on");
+  CHECK(c.speckle_size == 0);  // off by default
+  set_param(c, "speckle-size", "100");
+  set_param(c, "speckle-range", "0");
+  CHECK(c.speckle_size == 100);
+  CHECK(c.speckle_range == 0);
+  set_param(c, "speckle-size", "off");
+  CHECK(c.speckle_size == 0);
+  set_param(c, "speckle-size", "4096");
   CHECK(c.cost == CostFunction::Sad);
   CHECK(c.paths == (kPath0 | kPath90));
   CHECK(c.median == 0);
@@ -145,6 +153,11 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"median", "9", "median = 9: expected 0 (off), 3, 5 or 7"},
       {"gap-interp", "maybe", "gap-interp = 'maybe': expected on or off"},
       {"mgm", "2", "mgm = '2': expected on or off"},
+      {"speckle-size", "-1", "speckle-size = -1: must be in 0 .. 4096"},
+      {"speckle-size", "4097", "speckle-size = 4097: must be in 0 .. 4096"},
+      {"speckle-range", "-1", "speckle-range = -1: must be in 0 .. 128"},
+      {"speckle-range", "129", "speckle-range = 129: must be in 0 .. 128"},
+      {"speckle-range", "off", "speckle-range = 'off': expected an integer"},
       {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135"},
       {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135"},
       {"dmax", "+64", "dmax = '+64': expected an integer"},

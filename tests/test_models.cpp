@@ -43,6 +43,8 @@ StereoConfig random_config(std::mt19937& rng) {
   c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
   c.median = pick(rng, {0, 3, 5, 7});
   c.gap_interpolation = pick(rng, {false, true});
+  c.speckle_size = pick(rng, {0, 0, 1, 2, 5, 12, 40, 400});
+  c.speckle_range = pick(rng, {0, 1, 2, 5});
   c.subpixel_bits = pick(rng, {0, 0, 1, 3, 5});
   c.subpixel_fit = pick(rng, {SubpixelFit::Equiangular, SubpixelFit::Parabola});
   c.width = c.dmax + std::uniform_int_distribution<int>(0, 24)(rng);
@@ -118,6 +120,7 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "5"},
                            {"median", "7"},
                            {"gap-interp", "on"},
+                           {"speckle-size", "6"},
                            {"subpixel-bits", "4"},
                            {"p2-adapt", "6"},
                            {"mgm", "on"},

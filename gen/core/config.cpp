@@ -187,6 +187,12 @@ const std::vector<ParamSpec>& param_specs() {
       {"uniqueness", "uniqueness ratio in percent, 0 or off to disable: 0 to 99",
        [](StereoConfig& c, const std::string& v) { c.uniqueness = parse_int_or_off("uniqueness", v); },
        [](const StereoConfig& c) { return std::to_string(c.uniqueness); }},
+      {"speckle-size", "speckle filter: regions of at most this many pixels become invalid (OpenCV speckleWindowSize); 0 or off: 0 to 4096",
+       [](StereoConfig& c, const std::string& v) { c.speckle_size = parse_int_or_off("speckle-size", v); },
+       [](const StereoConfig& c) { return std::to_string(c.speckle_size); }},
+      {"speckle-range", "speckle filter: largest disparity step (whole pixels) within a region: 0 to dmax",
+       [](StereoConfig& c, const std::string& v) { c.speckle_range = parse_int("speckle-range", v); },
+       [](const StereoConfig& c) { return std::to_string(c.speckle_range); }},
       {"median", "median filter window: 0 or off, 3, 5 or 7",
        [](StereoConfig& c, const std::string& v) { c.median = parse_int_or_off("median", v); },
        [](const StereoConfig& c) { return std::to_string(c.median); }},
@@ -235,6 +241,9 @@ void validate(const StereoConfig& c) {
   check_range("p2-adapt", c.p2_adapt, 0, 16);
   check_range("lr-threshold", c.lr_threshold, 0, 15);
   check_range("uniqueness", c.uniqueness, 0, 99, "a percentage");
+  // A region of at most S pixels spans at most S rows: S bounds the hardware's row delay.
+  check_range("speckle-size", c.speckle_size, 0, kMaxSpeckleSize);
+  check_range("speckle-range", c.speckle_range, 0, c.dmax);
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
     reject("median", std::to_string(c.median), "expected 0 (off), 3, 5 or 7");
   check_range("subpixel-bits", c.subpixel_bits, 0, 5);

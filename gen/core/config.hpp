@@ -36,6 +36,9 @@ struct PathDirection {
 // The four paths in a fixed order; every model iterates them in this order.
 const std::vector<PathDirection>& path_directions();
 
+// The largest speckle_size: the filter's delay and its label memories grow with it.
+constexpr int kMaxSpeckleSize = 4096;
+
 // Defaults are FP-Stereo's C2 configuration (census 7x7, dmax 128, uf 32, 4 paths,
 // P1 = 7, P2 = 86, median 5, KITTI image size).
 struct StereoConfig {
@@ -61,6 +64,11 @@ struct StereoConfig {
   int uniqueness = 0;    // percent; 0 = off
   int median = 5;        // median window side; 0 = off
   bool gap_interpolation = false;
+  // Speckle filter (docs/semantics.md section 5a): 4-connected regions of valid pixels whose
+  // neighbours differ by at most speckle_range whole disparities, of at most speckle_size
+  // pixels, become invalid (OpenCV's filterSpeckles); speckle_size 0 = off.
+  int speckle_size = 0;
+  int speckle_range = 2;
   int subpixel_bits = 0;  // fraction bits of the output disparity; 0 = integer disparities
   SubpixelFit subpixel_fit = SubpixelFit::Equiangular;
   // The hardware also streams the right view's disparities (the left-right check's match side).

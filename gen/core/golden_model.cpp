@@ -350,6 +350,8 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
     for (auto& helper : helpers) helper->release(y);
   }
 
+  if (cfg.speckle_size != 0)
+    golden::speckle_filter(out, cfg.speckle_size, cfg.speckle_range << cfg.subpixel_bits, widths.invalid_word);
   if (cfg.median != 0) median_filter(out, cfg.median, widths.invalid_word, ((dmax - 1) << cfg.subpixel_bits) + 1);
   if (cfg.gap_interpolation) interpolate_gaps(out, widths.invalid_word);
   return out;

@@ -1,4 +1,4 @@
-// The golden model's streaming stages (docs/semantics.md sections 1-3), each a class that
+// The golden model's streaming stages (docs/semantics.md sections 1-3 and 5a), each a class that
 // turns one row of its input into one row of output, as the hardware stages do. Exposed so
 // that tests can drive a single stage to its extremes.
 #pragma once
@@ -453,5 +453,117 @@ class PathAggregator {
   std::vector<PathState> paths_;
   std::vector<T> zeros_;  // the predecessor of a path start
 };
+
+// ---------------------------------------------------------------------------------------------
+// Section 5a: the speckle filter, in one pass over the rows as the hardware will run it.
+//
+// Each row is cut into runs: maximal horizontal stretches of valid words whose neighbours differ
+// by at most the range. A run gets a label, and union-find joins it with every label above it
+// that a vertical neighbour pair within the range connects. A region's count of pixels lives at
+// its root and saturates at S + 1; the root is always a label of the newest row the region
+// reaches (a union always involves a label of the row being labelled, and that one becomes the
+// root), so no parent lies in an older row than its child, and no label in use points into a
+// row that has left the ring.
+//
+// Delay: row y leaves after row y + S has been labelled, S rows. By then the region of each of
+// its pixels is decided: if it still has a pixel in row y + S it spans at least S + 1 rows, so
+// it has more than S pixels and is kept; otherwise it is closed (no later row can reach it) and
+// its count is final. Either way "count > S" is the region's fate, the same rule at every
+// pixel. Once the frame has ended every region is closed and the rows still held leave.
+//
+// Memory, the hardware's budget: S + 1 rows of words and of labels (a label per pixel, a run's
+// label = slot * width + the run's first column, so L = min(S + 1, H) * width labels of
+// bits_for(L - 1) bits) and, per label, its parent and its count of bits_for(S + 1) bits. A
+// frame of at most S + 1 rows is held whole.
+class SpeckleFilter {
+ public:
+  // size: S >= 1; range: the largest step within a region, in output-word units (r << sub-pixel
+  // bits); invalid: the invalid word, never part of a region.
+  SpeckleFilter(int width, int height, int size, int range, uint16_t invalid)
+      : width_(width), size_(size), range_(range), invalid_(invalid), slots_(std::min(size + 1, height)),
+        words_(size_t(slots_) * size_t(width)), labels_(words_.size()), parent_(words_.size()),
+        count_(words_.size()) {}
+
+  // Labels the next row (rows 0, 1, ... in order).
+  void push_row(const uint16_t* words) {
+    const int y = pushed_++;
+    uint16_t* row = word_row(y);
+    int* labels = label_row(y);
+    const uint16_t* above = y > 0 ? word_row(y - 1) : nullptr;
+    const int* above_labels = y > 0 ? label_row(y - 1) : nullptr;
+    std::copy(words, words + width_, row);
+    for (int x = 0; x < width_; ++x) {
+      if (row[x] == invalid_) {
+        labels[x] = kNoLabel;
+        continue;
+      }
+      if (x > 0 && connected(row[x - 1], row[x])) {
+        labels[x] = labels[x - 1];
+        int& count = count_[size_t(find(labels[x]))];
+        count = std::min(count + 1, size_ + 1);
+      } else {
+        labels[x] = slot(y) * width_ + x;  // a new run
+        parent_[size_t(labels[x])] = labels[x];
+        count_[size_t(labels[x])] = 1;
+      }
+      if (above != nullptr && connected(above[x], row[x])) unite(labels[x], above_labels[x]);
+    }
+  }
+
+  // Writes row y with its speckles invalid: once row y + S has been pushed, or for any row still
+  // held once the last row of the frame has been.
+  void decided_row(int y, uint16_t* out) {
+    const uint16_t* row = word_row(y);
+    const int* labels = label_row(y);
+    for (int x = 0; x < width_; ++x)
+      out[x] = row[x] != invalid_ && count_[size_t(find(labels[x]))] <= size_ ? invalid_ : row[x];
+  }
+
+ private:
+  static constexpr int kNoLabel = -1;
+
+  int slot(int y) const { return y % slots_; }
+  uint16_t* word_row(int y) { return words_.data() + size_t(slot(y)) * size_t(width_); }
+  int* label_row(int y) { return labels_.data() + size_t(slot(y)) * size_t(width_); }
+
+  // Both valid and within the range of each other.
+  bool connected(uint16_t a, uint16_t b) const {
+    return a != invalid_ && b != invalid_ && std::abs(int(a) - int(b)) <= range_;
+  }
+
+  int find(int label) {
+    while (parent_[size_t(label)] != label) {
+      parent_[size_t(label)] = parent_[size_t(parent_[size_t(label)])];  // path halving: never to an older row
+      label = parent_[size_t(label)];
+    }
+    return label;
+  }
+
+  // current: a label of the row being labelled, whose root stays the root.
+  void unite(int current, int above) {
+    const int root = find(current), other = find(above);
+    if (root == other) return;
+    parent_[size_t(other)] = root;
+    count_[size_t(root)] = std::min(count_[size_t(root)] + count_[size_t(other)], size_ + 1);
+  }
+
+  const int width_, size_, range_;
+  const uint16_t invalid_;
+  const int slots_;  // S + 1 rows, the one labelled and the S it decides, or the whole frame
+  std::vector<uint16_t> words_;
+  std::vector<int> labels_, parent_, count_;
+  int pushed_ = 0;
+};
+
+// Section 5a on a map of words, in place: row y is written back once the filter has decided it,
+// S rows after it entered.
+inline void speckle_filter(DisparityImage& map, int size, int range, uint16_t invalid) {
+  SpeckleFilter filter(map.width, map.height, size, range, invalid);
+  for (int y = 0; y < map.height; ++y) {
+    filter.push_row(&map.at(0, y));
+    if (y >= size) filter.decided_row(y - size, &map.at(0, y - size));
+  }
+  for (int y = std::max(0, map.height - size); y < map.height; ++y) filter.decided_row(y, &map.at(0, y));
+}
 
 }  // namespace fpstereo::golden

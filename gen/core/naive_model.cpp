@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "widths.hpp"
@@ -352,6 +353,36 @@ void refine_subpixel(const StereoConfig& cfg, const Volume& sum, DispMap& disp) 
   }
 }
 
+// Section 5a: flood-fill every 4-connected region of valid pixels whose neighbours differ by at
+// most `range` (in the map's units) from an explicit stack; a region of at most `size` pixels
+// becomes invalid.
+void remove_speckles(DispMap& disp, int size, int64_t range) {
+  const int W = disp.width, H = disp.height;
+  std::vector<bool> visited(size_t(W) * size_t(H), false);
+  auto index = [&](int x, int y) { return size_t(y) * size_t(W) + size_t(x); };
+  const int steps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int sy = 0; sy < H; ++sy)
+    for (int sx = 0; sx < W; ++sx) {
+      if (disp.at(sx, sy) == kInvalid || visited[index(sx, sy)]) continue;
+      std::vector<std::pair<int, int>> region{{sx, sy}}, stack{{sx, sy}};
+      visited[index(sx, sy)] = true;
+      while (!stack.empty()) {
+        const auto [x, y] = stack.back();
+        stack.pop_back();
+        for (const auto& step : steps) {
+          const int nx = x + step[0], ny = y + step[1];
+          if (nx < 0 || ny < 0 || nx >= W || ny >= H || visited[index(nx, ny)] || disp.at(nx, ny) == kInvalid) continue;
+          if (std::abs(disp.at(nx, ny) - disp.at(x, y)) > range) continue;
+          visited[index(nx, ny)] = true;
+          region.emplace_back(nx, ny);
+          stack.emplace_back(nx, ny);
+        }
+      }
+      if (int64_t(region.size()) <= size)
+        for (const auto& [x, y] : region) disp.at(x, y) = kInvalid;
+    }
+}
+
 // Section 6: lower median of the valid in-image window values; invalid centres stay invalid.
 DispMap median_filter(const DispMap& in, int side) {
   const int k = (side - 1) / 2;
@@ -400,6 +431,16 @@ void gap_interpolate(DispMap& disp) {
 
 }  // namespace
 
+void remove_speckles(DisparityImage& words, int size, int range, uint16_t invalid) {
+  DispMap disp(words.width, words.height);
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x)
+      if (words.at(x, y) != invalid) disp.at(x, y) = words.at(x, y);
+  remove_speckles(disp, size, range);
+  for (int y = 0; y < words.height; ++y)
+    for (int x = 0; x < words.width; ++x) words.at(x, y) = disp.at(x, y) == kInvalid ? invalid : uint16_t(disp.at(x, y));
+}
+
 Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
                  const std::vector<Plane>& planes) {
   for (const Plane plane : planes)
@@ -436,6 +477,8 @@ Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage
   }
 
   refine_subpixel(cfg, sum, disp);
+
+  if (cfg.speckle_size > 0) remove_speckles(disp, cfg.speckle_size, int64_t(cfg.speckle_range) << cfg.subpixel_bits);
 
   if (cfg.median > 0) disp = median_filter(disp, cfg.median);
 

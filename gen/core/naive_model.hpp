@@ -15,4 +15,7 @@ namespace fpstereo {
 Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
                  const std::vector<Plane>& planes = {Plane::Disparity});
 
+// Section 5a alone on a map of words (invalid: the invalid word), for the tests' hand-made maps.
+void remove_speckles(DisparityImage& words, int size, int range, uint16_t invalid);
+
 }  // namespace fpstereo

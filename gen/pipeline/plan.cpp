@@ -35,6 +35,10 @@ void check_hardware_rules(const StereoConfig& cfg) {
   // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md, "MGM-style
   // aggregation"), so the aggregator keeps one predecessor per path.
   if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
+  // The speckle filter's stage is specified in the models first (docs/semantics.md section 5a).
+  if (cfg.speckle_size != 0)
+    throw ConfigError("speckle-size = " + std::to_string(cfg.speckle_size) +
+                      ": not in the hardware generators yet (the models have it); use 0");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
