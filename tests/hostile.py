@@ -194,7 +194,8 @@ def signals():
 
 
 def synth_interrupted():
-    """A stand-in yosys that waits: SIGTERM to fpstereo must end it, keep --netlist, remove the work."""
+    """A stand-in yosys that waits: SIGTERM to fpstereo synth, or to a dse synthesising its front,
+    must end it, keep --netlist, remove the work."""
     d = fresh("synth")
     bin_dir = os.path.join(d, "bin")
     os.makedirs(bin_dir)
@@ -204,33 +205,45 @@ def synth_interrupted():
     netlist = os.path.join(d, "previous.json")
     write(netlist, "previous")
     cache = os.path.join(d, "cache")
-    env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"])
-    before_tmp = set(os.listdir("/tmp"))
-    p = subprocess.Popen([FPSTEREO, "synth", "--preset", "C2", "--cache", cache, "--netlist", netlist], env=env,
-                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    deadline = time.time() + 60
-    while not os.path.exists(pid_file) and time.time() < deadline and p.poll() is None:
-        time.sleep(0.05)
-    if not os.path.exists(pid_file):
-        p.kill()
-        check(False, "synth: the stand-in yosys never started: " + p.stderr.read().decode()[-300:])
-        return
-    time.sleep(0.2)
-    yosys = int(read(pid_file).strip() or 0)
-    p.send_signal(signal.SIGTERM)
-    try:
-        p.wait(timeout=20)
-    except subprocess.TimeoutExpired:
-        p.kill()
-    check(p.returncode == -signal.SIGTERM, f"synth ends by SIGTERM (got {p.returncode})")
-    time.sleep(0.2)
-    alive = os.path.exists(f"/proc/{yosys}") and "Z" not in read(f"/proc/{yosys}/stat").split(b")")[-1][:3].decode()
-    check(not alive, "synth: Yosys ends with fpstereo")
+    # a fresh default cache for dse's synth children, so that they run the stand-in
+    env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ["PATH"], XDG_CACHE_HOME=cache)
+    dse_out = os.path.join(d, "o.csv")
+    write(dse_out, "previous")
+    runs = {"synth": [FPSTEREO, "synth", "--preset", "C2", "--cache", os.path.join(cache, "fpstereo", "synth"),
+                      "--netlist", netlist],
+            "dse --yosys-front": [FPSTEREO, "dse", os.path.join(EXAMPLES, "cones"), "--cost", "census", "--window", "5",
+                                  "--dmax", "64", "--uf", "16", "--refine", "none", "--median", "off", "--resolution",
+                                  "450x375", "-o", dse_out, "--html", "", "--yosys-front", "--yosys-limit", "1"]}
+    for what, command in runs.items():
+        if os.path.exists(pid_file):
+            os.remove(pid_file)
+        before_tmp = set(os.listdir("/tmp"))
+        p = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        deadline = time.time() + 120
+        while not os.path.exists(pid_file) and time.time() < deadline and p.poll() is None:
+            time.sleep(0.05)
+        if not os.path.exists(pid_file):
+            p.kill()
+            check(False, f"{what}: the stand-in yosys never started: " + p.stderr.read().decode()[-300:])
+            continue
+        time.sleep(0.2)
+        yosys = int(read(pid_file).strip() or 0)
+        p.send_signal(signal.SIGTERM)
+        try:
+            p.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            p.kill()
+        check(p.returncode == -signal.SIGTERM, f"{what} ends by SIGTERM (got {p.returncode})")
+        time.sleep(0.2)
+        alive = os.path.exists(f"/proc/{yosys}") and "Z" not in read(f"/proc/{yosys}/stat").split(b")")[-1][:3].decode()
+        check(not alive, f"{what}: Yosys ends with fpstereo")
+        work = os.path.join(cache, "fpstereo", "synth", "work")
+        check(not os.path.isdir(work) or os.listdir(work) == [], f"{what}: the work folder is removed")
+        new_tmp = [n for n in set(os.listdir("/tmp")) - before_tmp
+                   if n.startswith("synth-yosys.") or n.startswith("fpstereo-child.")]
+        check(new_tmp == [], f"{what}: the temporaries are removed ({new_tmp})")
     check(read(netlist) == b"previous", "synth: the previous --netlist file is kept")
-    work = os.path.join(cache, "work")
-    check(not os.path.isdir(work) or os.listdir(work) == [], "synth: the work folder is removed")
-    new_tmp = [n for n in set(os.listdir("/tmp")) - before_tmp if n.startswith("synth-yosys.")]
-    check(new_tmp == [], f"synth: the script's temporaries are removed ({new_tmp})")
+    check(read(dse_out) == b"previous", "dse: the previous -o file is kept")
 
 
 def png_chunk(kind, data):

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "config_cli.hpp"
 #include "dse.hpp"
@@ -132,18 +133,16 @@ void run_yosys_front(std::vector<dse::Row>& rows, const OutputOptions& o) {
   self[n] = 0;
   int i = 0;
   for (dse::Row* r : front) {
-    const std::string cmd =
-        fmt::format("nice -n 10 '{}' synth {} --part {} --kv 2>&1", self, dse::config_flags(r->cfg), o.part);
+    std::vector<std::string> args = {"nice", "-n", "10", self, "synth"};
+    std::istringstream flags(dse::config_flags(r->cfg));  // "--name value" pairs, values without spaces
+    for (std::string flag; flags >> flag;) args.push_back(flag);
+    for (const std::string& flag : {std::string("--part"), o.part, std::string("--kv")}) args.push_back(flag);
     std::cerr << fmt::format("fpstereo dse: Yosys {}/{}: {}\n", ++i, front.size(), config_tag(r->cfg));
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) throw InputError("cannot run " + cmd);
     std::string text;
-    char buf[4096];
-    size_t got;
-    while ((got = fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, got);
-    if (::pclose(p) != 0) {
-      while (!text.empty() && text.back() == '\n') text.pop_back();  // report_error escapes the rest
-      throw InputError(fmt::format("--yosys-front: fpstereo synth failed: {}", text));
+    try {
+      text = run_child_command(args);
+    } catch (const SynthError& e) {
+      throw InputError(fmt::format("--yosys-front: fpstereo synth failed: {}", e.what()));
     }
     const SynthReport rep = parse_kv(text);
     r->yosys_lut = double(rep.lut);

@@ -488,6 +488,18 @@ std::string verilog_hash(const StereoConfig& cfg) {
   return fmt::format("{:016x}", fnv1a64(verilog_text(rtl::emit(rtl::plan(cfg)))));
 }
 
+std::string run_child_command(const std::vector<std::string>& args) {
+  const SignalsDeferred deferred;
+  const WorkDir work(fs::temp_directory_path(), "fpstereo-child");
+  const int status = run_process(args, work.path() / "out", work.path() / "err");
+  const std::string out = read_text(work.path() / "out").value_or("");
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return out;
+  const std::vector<std::string> lines = lines_of(read_text(work.path() / "err").value_or("") + out);
+  throw SynthError(!lines.empty()              ? lines.back()
+                   : WIFSIGNALED(status) ? fmt::format("{} was killed by signal {}", args[0], WTERMSIG(status))
+                                         : fmt::format("{} failed with exit status {}", args[0], WEXITSTATUS(status)));
+}
+
 SynthReport parse_kv(const std::string& text) {
   KvMap kv;
   SynthReport r;

@@ -77,6 +77,11 @@ std::string cache_key(const StereoConfig& cfg, const std::string& family, const 
 // scripts/synth-yosys.sh in the source tree, which synth runs.
 std::filesystem::path synth_script_path();
 
+// Runs a command (e.g. another `fpstereo synth`, args[0] searched in PATH) in its own process
+// group, which gets every signal this process gets: a run interrupted ends the child too. Returns
+// its standard output; throws SynthError with the last line of its stderr when it fails.
+std::string run_child_command(const std::vector<std::string>& args);
+
 // Adds the `synth` subcommand to `app`. Its callback runs during app.parse() and sets exit_code:
 // 0 on success, kExitBadInput (2) after one line "fpstereo: <message>" on stderr.
 void register_synth_command(CLI::App& app, int& exit_code);
