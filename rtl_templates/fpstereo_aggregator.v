@@ -240,7 +240,7 @@ module fpstereo_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
+  fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -253,8 +253,9 @@ module fpstereo_aggregator #(
       wire [LANES_W-1:0] nxt;  // only its first lane (d + 1 of this group's last lane) is used
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
+      wire [STATE_AW-1:0] state_waddr = `FPS_TAG_CHAIN(tag4) * G + g4;
       fpstereo_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active4), .waddr(`FPS_TAG_CHAIN(tag4) * G + g4), .wdata(path_0),
+        .clk(clk), .we(adv && active4), .waddr(state_waddr), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
@@ -285,12 +286,14 @@ module fpstereo_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
+      wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
       fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
-        .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
+        .re(adv), .raddr(row_raddr), .rdata(above_q));
       fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-        .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
-        .re(adv), .raddr(x0), .rdata(above_min_q));
+        .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
+        .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
         if (adv) begin
           above2 <= above_q;
@@ -329,12 +332,14 @@ module fpstereo_aggregator #(
         wire [PATH_W-1:0]  above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
+        wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
         fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
-          .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
+          .re(adv), .raddr(row_raddr), .rdata(above_q));
         fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-          .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
-          .re(adv), .raddr(x0 + DX), .rdata(above_min_q));
+          .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
+          .re(adv), .raddr(min_raddr), .rdata(above_min_q));
         always @(posedge clk)
           if (adv) begin
             cur <= above_q;

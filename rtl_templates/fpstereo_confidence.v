@@ -27,7 +27,7 @@ module fpstereo_confidence #(
       fpstereo_invalid_parameters_confidence_LAT_is_not_10 failed ();
     end
   endgenerate
-  fpstereo_delay #(.WIDTH(DATA_W), .DEPTH(LAT)) beside (
+  fpstereo_delay #(.WIDTH(DATA_W), .DEPTH(LAT), .RESET(1)) beside (
     .clk(clk), .rst(restart), .en(adv), .in(data_in), .out(data_out));
 
   // The sums of the data's pixel.

@@ -43,9 +43,10 @@ module fpstereo_confidence_rows #(
     end
   // Addresses are products of narrow counters and a constant, cut to the RAM's address width.
   // verilator lint_off WIDTH
+  wire [AW-1:0] waddr = in_row * W + in_x, raddr = out_row * W + out_x;
   fpstereo_ram_sdp #(.WIDTH(8), .DEPTH(ROWS * W), .ADDR_W(AW)) confidences (
-    .clk(clk), .we(adv && in_event), .waddr(in_row * W + in_x), .wdata(in_confidence),
-    .re(adv), .raddr(out_row * W + out_x), .rdata(out_confidence));
+    .clk(clk), .we(adv && in_event), .waddr(waddr), .wdata(in_confidence),
+    .re(adv), .raddr(raddr), .rdata(out_confidence));
   // verilator lint_on WIDTH
 endmodule
 `resetall

@@ -51,7 +51,7 @@ module fpstereo_cost_reorder #(
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fpstereo_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
+  fpstereo_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.

@@ -72,9 +72,10 @@ module fpstereo_disparity_reorder #(
   wire read_now = read_slot && so < frame_width && to < event_rows;
   wire read_valid = read_now && to < frame_height;
   wire [DISP_W:0] disparity_q;
+  wire [DISP_AW-1:0] raddr = to_slot * ROW_SLOTS + so;
   fpstereo_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(write), .waddr(waddr), .wdata(word),
-    .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
+    .re(adv && read_valid), .raddr(raddr), .rdata(disparity_q));
   // verilator lint_on WIDTH
   reg read_was_valid;
   always @(posedge clk)

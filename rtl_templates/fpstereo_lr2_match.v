@@ -79,9 +79,10 @@ module fpstereo_lr2_match #(
     for (l = 0; l < UF; l = l + 1) begin : bank
       wire [P_W-1:0] d_behind = cost_group * UF + l + BEHIND;
       wire in_row = x_ahead >= d_behind && (MIN_DISP >= 0 || x_ahead < d_behind + frame_width);
+      wire [COST_AW-1:0] waddr = (cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group;
       fpstereo_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
         .clk(clk), .we(adv && cost_valid && in_row),
-        .waddr((cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group),
+        .waddr(waddr),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
     end

@@ -48,9 +48,10 @@ module fpstereo_match_lookup #(
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] completed_q;
+  wire [DISP_AW-1:0] completed_raddr = slot_row * ROW_SLOTS + xm;
   fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
-    .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
+    .re(adv), .raddr(completed_raddr), .rdata(completed_q));
   generate
     if (ROW_END != 0) begin : row_end
       // e = frame_width - 1 - MIN_DISP - x', as (frame_width - 1 + AHEAD) - (x' + BEHIND)
@@ -66,9 +67,10 @@ module fpstereo_match_lookup #(
                   (MIN_DISP < -(DMAX - 1) && xm + (DMAX - 1) < AHEAD);
       reg none_q;
       wire [UF*DISP_W-1:0] end_q;
+      wire [END_AW-1:0] end_raddr = slot_row * G + from_end / UF;
       fpstereo_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
-        .re(adv), .raddr(slot_row * G + from_end / UF), .rdata(end_q));
+        .re(adv), .raddr(end_raddr), .rdata(end_q));
       reg              from_row_end_q;
       reg [LANE_W-1:0] lane_q;
       always @(posedge clk)

@@ -83,7 +83,7 @@ module fpstereo_median #(
   wire           done_m;
   wire [X_W-1:0] x_m;
   wire [Y_W-1:0] y_m;
-  fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1))) median_delay (
+  fpstereo_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1)), .RESET(1)) median_delay (
     .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
     .out({done_m, x_m, y_m}));
   always @(posedge clk)

@@ -45,7 +45,7 @@ module fpstereo_subpixel #(
   localparam SLOTS = 1 << DISP_W;  // every value of D, those beyond DMAX reading 0
 
   wire invalid;
-  fpstereo_delay #(.WIDTH(TAG_W + 1), .DEPTH(K + 6)) tag_wait (
+  fpstereo_delay #(.WIDTH(TAG_W + 1), .DEPTH(K + 6), .RESET(1)) tag_wait (
     .clk(clk), .rst(restart), .en(adv), .in({tag, word[DISP_W]}), .out({tag_out, invalid}));
 
   // The history: entry j holds the sums that came j + 1 steps ago.

@@ -26,7 +26,7 @@ module fpstereo_wta #(
   output wire [DISP_W:0]     word
 );
   // fpstereo_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
-  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
+  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;

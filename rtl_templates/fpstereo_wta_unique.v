@@ -38,9 +38,9 @@ module fpstereo_wta_unique #(
   localparam S_W = 5 * SUM_W + DISP_W + 2;
   wire [G_W-1:0] group_tree;  // the group whose summary leaves the tree
   wire [TAG_W-1:0] tag_tree;
-  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
+  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_tree, group_tree}));
-  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(3)) tag_to_word (
+  fpstereo_delay #(.WIDTH(TAG_W + G_W), .DEPTH(3), .RESET(1)) tag_to_word (
     .clk(clk), .rst(restart), .en(adv), .in({tag_tree, group_tree}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  best, all, but_first, but_last, second;
   wire [LANE_W-1:0] lane;

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# The random RTL sweep: seeded random valid configurations, each generated, linted with
-# `verilator --lint-only -Wall` and verified bit-exact in Verilator (scripts/verify-rtl.sh) on a
-# small frame with idle cycles and backpressure.
+# The random RTL sweep: seeded random valid configurations, each generated, checked for port
+# connections of the wrong width (scripts/port-widths.sh: iverilog -g2005 and Yosys hierarchy
+# -check, no warning), linted with `verilator --lint-only -Wall` and verified bit-exact in
+# Verilator (scripts/verify-rtl.sh) on a small frame with idle cycles and backpressure.
 #   scripts/random-rtl.sh [--build-dir B] SEED [COUNT]
 # COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
 # invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
-# configuration with its flags, so a failure can be repeated with verify-rtl.sh alone. Exits 1 if
-# any configuration fails.
+# configuration with its flags, so a failure can be repeated with verify-rtl.sh alone (or, for a
+# port width, fpstereo-rtl -o DIR and port-widths.sh DIR). Exits 1 if any configuration fails.
 set -euo pipefail
 fail() { echo "random-rtl: $*" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,6 +21,11 @@ count=${2:-1}
 [[ $seed =~ ^[0-9]{1,9}$ ]] || fail "SEED must be a number of at most 9 digits (got '$seed')"
 [[ $count =~ ^[0-9]{1,4}$ ]] && [ "$count" -ge 1 ] || fail "COUNT must be 1 to 9999 (got '$count')"
 [ -x "$build/fpstereo-rtl" ] || fail "$build/fpstereo-rtl not found: build the project first"
+work=$(mktemp -d /tmp/random-rtl.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
 
 # Draws from one seeded sequence: no command substitution, whose subshell would reseed RANDOM.
 RANDOM=$seed
@@ -57,13 +63,15 @@ for ((i = 0; i < count; ++i)); do
     [ $attempt -lt 100 ] || fail "no valid configuration in 100 draws"
     draw
     status=0
-    "$build/fpstereo-rtl" "${flags[@]}" >/dev/null 2>&1 || status=$?
+    rm -rf "$work/rtl"
+    "$build/fpstereo-rtl" "${flags[@]}" -o "$work/rtl" >/dev/null 2>&1 || status=$?
     [ $status -eq 2 ] || break
   done
   [ $status -eq 0 ] || fail "fpstereo-rtl ${flags[*]}: exit $status"
   pick 3 16 256
   bench=(--levels "$REPLY" --idle 0.3 --backpressure 0.3 --seed $((RANDOM + 1)))
-  log=$("$root/scripts/verify-rtl.sh" --build-dir "$build" "${flags[@]}" -- "${bench[@]}" 2>&1) && result=PASS ||
+  log=$("$root/scripts/port-widths.sh" "$work/rtl" 2>&1 &&
+        "$root/scripts/verify-rtl.sh" --build-dir "$build" "${flags[@]}" -- "${bench[@]}" 2>&1) && result=PASS ||
     { result=FAIL; failed=1; }
   echo "random-rtl seed $seed #$i: $result: scripts/verify-rtl.sh ${flags[*]} -- ${bench[*]}"
   [ $result = PASS ] || echo "$log" | tail -20

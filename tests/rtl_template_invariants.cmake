@@ -58,6 +58,18 @@ check_module(wta "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=2"
   "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=1" reduction_tree_LAT_is_not_the_tree_latency
   delay min_tree reduction_tree unique_join)
 
+# A data delay line is not reset: at the size of the ZSAD 7x7 view's delay at uf = dmax = 64
+# (3,990 bits, 3 deep) it lints clean, where a reset to a 11,970-bit replication was Verilator's
+# WIDTHCONCAT. A flag's delay line (RESET) is cleared and lints clean too.
+foreach(params "-GWIDTH=3990 -GDEPTH=3" "-GWIDTH=30 -GDEPTH=12 -GRESET=1")
+  separate_arguments(args UNIX_COMMAND "${params}")
+  execute_process(COMMAND ${VERILATOR} --lint-only -Wall --top-module fpstereo_delay ${args} ${TEMPLATES}/fpstereo_delay.v
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT "${out}${err}" STREQUAL "")
+    message(SEND_ERROR "fpstereo_delay with ${params}: expected a clean lint, got ${rc}:\n${out}${err}")
+  endif()
+endforeach()
+
 # The same kind of violation through Yosys and iverilog: fpstereo_window with N = 2.
 set(rule fpstereo_invalid_parameters_window_N_below_3)
 template_files(files window ram_sdp)

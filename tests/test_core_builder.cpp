@@ -38,7 +38,7 @@ std::string error_of(const CoreBuilder& core) {
 
 TEST_CASE("a template's signature: parameters, ports, directions and widths", "[builder]") {
   const auto& s = rtl::template_signature("fpstereo_delay");
-  REQUIRE(s.parameters.size() == 2);
+  REQUIRE(s.parameters.size() == 3);
   CHECK(s.parameters[0] == std::pair<std::string, std::string>{"WIDTH", "8"});
   REQUIRE(s.ports.size() == 5);
   CHECK(s.port("in")->input);

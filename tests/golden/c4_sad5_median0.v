@@ -1448,7 +1448,7 @@ module fps_sad5_d128u32_ab05c8_cost_reorder #(
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT)) cost_tag (
+  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
@@ -1542,9 +1542,10 @@ module fps_sad5_d128u32_ab05c8_lr2_match #(
     for (l = 0; l < UF; l = l + 1) begin : bank
       wire [P_W-1:0] d_behind = cost_group * UF + l + BEHIND;
       wire in_row = x_ahead >= d_behind && (MIN_DISP >= 0 || x_ahead < d_behind + frame_width);
+      wire [COST_AW-1:0] waddr = (cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group;
       fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
         .clk(clk), .we(adv && cost_valid && in_row),
-        .waddr((cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group),
+        .waddr(waddr),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
     end
@@ -1826,7 +1827,7 @@ module fps_sad5_d128u32_ab05c8_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
+  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1839,8 +1840,9 @@ module fps_sad5_d128u32_ab05c8_aggregator #(
       wire [LANES_W-1:0] nxt;  // only its first lane (d + 1 of this group's last lane) is used
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
+      wire [STATE_AW-1:0] state_waddr = `FPS_TAG_CHAIN(tag4) * G + g4;
       fps_sad5_d128u32_ab05c8_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
-        .clk(clk), .we(adv && active4), .waddr(`FPS_TAG_CHAIN(tag4) * G + g4), .wdata(path_0),
+        .clk(clk), .we(adv && active4), .waddr(state_waddr), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
@@ -1871,12 +1873,14 @@ module fps_sad5_d128u32_ab05c8_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
+      wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
       fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
-        .re(adv), .raddr(x0 * G + ga), .rdata(above_q));
+        .re(adv), .raddr(row_raddr), .rdata(above_q));
       fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-        .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_45),
-        .re(adv), .raddr(x0), .rdata(above_min_q));
+        .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
+        .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
         if (adv) begin
           above2 <= above_q;
@@ -1915,12 +1919,14 @@ module fps_sad5_d128u32_ab05c8_aggregator #(
         wire [PATH_W-1:0]  above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
+        wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
         fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
-          .re(adv), .raddr((x0 + DX) * G + ga), .rdata(above_q));
+          .re(adv), .raddr(row_raddr), .rdata(above_q));
         fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
-          .clk(clk), .we(adv && pixel_done_m), .waddr(`FPS_TAG_X(tag_m)), .wdata(min_out),
-          .re(adv), .raddr(x0 + DX), .rdata(above_min_q));
+          .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
+          .re(adv), .raddr(min_raddr), .rdata(above_min_q));
         always @(posedge clk)
           if (adv) begin
             cur <= above_q;
@@ -2005,7 +2011,7 @@ module fps_sad5_d128u32_ab05c8_wta #(
   output wire [DISP_W:0]     word
 );
   // fps_sad5_d128u32_ab05c8_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
-  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT)) tag_to_wta (
+  fps_sad5_d128u32_ab05c8_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
@@ -2101,9 +2107,10 @@ module fps_sad5_d128u32_ab05c8_disparity_reorder #(
   wire read_now = read_slot && so < frame_width && to < event_rows;
   wire read_valid = read_now && to < frame_height;
   wire [DISP_W:0] disparity_q;
+  wire [DISP_AW-1:0] raddr = to_slot * ROW_SLOTS + so;
   fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(write), .waddr(waddr), .wdata(word),
-    .re(adv && read_valid), .raddr(to_slot * ROW_SLOTS + so), .rdata(disparity_q));
+    .re(adv && read_valid), .raddr(raddr), .rdata(disparity_q));
   // verilator lint_on WIDTH
   reg read_was_valid;
   always @(posedge clk)
@@ -2668,14 +2675,20 @@ endmodule
 
 `resetall
 `default_nettype none
-// DEPTH registers in a row (DEPTH >= 1), advancing when en is high, cleared by rst (so that a
-// valid flag travelling in it never starts out set).
+// DEPTH registers in a row (DEPTH >= 1), advancing when en is high. With RESET, rst clears them,
+// so that a valid flag travelling in it never starts out set; without, rst is unused: data that a
+// valid flag qualifies needs no reset, and registers without one need no reset routing and can
+// become shift-register LUTs.
 module fps_sad5_d128u32_ab05c8_delay #(
   parameter WIDTH = 8,
-  parameter DEPTH = 1
+  parameter DEPTH = 1,
+  // 1: rst clears every register (flags, tags); 0: no reset (data)
+  parameter RESET = 0
 ) (
   input  wire             clk,
+  /* verilator lint_off UNUSEDSIGNAL */  // unused without RESET
   input  wire             rst,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire             en,
   input  wire [WIDTH-1:0] in,
   output wire [WIDTH-1:0] out
@@ -2687,15 +2700,20 @@ module fps_sad5_d128u32_ab05c8_delay #(
     end
   endgenerate
   reg [WIDTH*DEPTH-1:0] line;
+  wire [WIDTH*DEPTH-1:0] shifted;
   generate
     if (DEPTH == 1) begin : one
-      always @(posedge clk)
-        if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= in;
+      assign shifted = in;
     end else begin : several
+      assign shifted = {line[WIDTH*(DEPTH-1)-1:0], in};
+    end
+    if (RESET != 0) begin : cleared
       always @(posedge clk)
         if (rst) line <= {WIDTH*DEPTH{1'b0}};
-        else if (en) line <= {line[WIDTH*(DEPTH-1)-1:0], in};
+        else if (en) line <= shifted;
+    end else begin : uncleared
+      always @(posedge clk)
+        if (en) line <= shifted;
     end
   endgenerate
   assign out = line[WIDTH*DEPTH-1 -: WIDTH];
@@ -3224,9 +3242,10 @@ module fps_sad5_d128u32_ab05c8_match_lookup #(
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] completed_q;
+  wire [DISP_AW-1:0] completed_raddr = slot_row * ROW_SLOTS + xm;
   fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
-    .re(adv), .raddr(slot_row * ROW_SLOTS + xm), .rdata(completed_q));
+    .re(adv), .raddr(completed_raddr), .rdata(completed_q));
   generate
     if (ROW_END != 0) begin : row_end
       // e = frame_width - 1 - MIN_DISP - x', as (frame_width - 1 + AHEAD) - (x' + BEHIND)
@@ -3242,9 +3261,10 @@ module fps_sad5_d128u32_ab05c8_match_lookup #(
                   (MIN_DISP < -(DMAX - 1) && xm + (DMAX - 1) < AHEAD);
       reg none_q;
       wire [UF*DISP_W-1:0] end_q;
+      wire [END_AW-1:0] end_raddr = slot_row * G + from_end / UF;
       fps_sad5_d128u32_ab05c8_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
-        .re(adv), .raddr(slot_row * G + from_end / UF), .rdata(end_q));
+        .re(adv), .raddr(end_raddr), .rdata(end_q));
       reg              from_row_end_q;
       reg [LANE_W-1:0] lane_q;
       always @(posedge clk)
