@@ -106,6 +106,15 @@ TEST_CASE("parameters parse from text", "[config]") {
   set_param(c, "speckle-size", "off");
   CHECK(c.speckle_size == 0);
   set_param(c, "speckle-size", "4096");
+  CHECK(c.fused_weight == 0);  // off by default
+  set_param(c, "fused-weight", "32");
+  set_param(c, "fused-trunc", "255");
+  set_param(c, "fused-term", "Gradient");
+  CHECK(c.fused_weight == 32);
+  CHECK(c.fused_trunc == 255);
+  CHECK(c.fused_term == FusedTerm::Gradient);
+  set_param(c, "fused-weight", "off");
+  CHECK(c.fused_weight == 0);
   CHECK(c.cost == CostFunction::Sad);
   CHECK(c.paths == (kPath0 | kPath90));
   CHECK(c.median == 0);
@@ -158,6 +167,11 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"speckle-range", "-1", "speckle-range = -1: must be in 0 .. 128"},
       {"speckle-range", "129", "speckle-range = 129: must be in 0 .. 128"},
       {"speckle-range", "off", "speckle-range = 'off': expected an integer"},
+      {"fused-weight", "-1", "fused-weight = -1: must be in 0 .. 32"},
+      {"fused-weight", "33", "fused-weight = 33: must be in 0 .. 32"},
+      {"fused-trunc", "0", "fused-trunc = 0: must be in 1 .. 255"},
+      {"fused-trunc", "256", "fused-trunc = 256: must be in 1 .. 255"},
+      {"fused-term", "census", "fused-term = 'census': expected one of intensity gradient"},
       {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135"},
       {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135"},
       {"dmax", "+64", "dmax = '+64': expected an integer"},
@@ -193,6 +207,17 @@ TEST_CASE("invalid combinations are rejected", "[config]") {
   CHECK(rejection(shd) == "shd-window = 4: must be an odd window side from 1 to 11");
   shd.cost = CostFunction::Census;  // checked even when unused: a bad value is never silently kept
   CHECK(rejection(shd) == "shd-window = 4: must be an odd window side from 1 to 11");
+
+  StereoConfig fused;
+  fused.fused_weight = 8;
+  for (CostFunction cost : {CostFunction::Census, CostFunction::Rank, CostFunction::Shd}) {
+    fused.cost = cost;
+    CHECK(rejection(fused).empty());
+  }
+  fused.cost = CostFunction::Sad;
+  CHECK(rejection(fused) == "fused-weight = 8: needs cost census, rank or shd (sad already compares intensities)");
+  fused.cost = CostFunction::Zsad;
+  CHECK(rejection(fused) == "fused-weight = 8: needs cost census, rank or shd (zsad already compares intensities)");
 
   CHECK_THROWS_WITH(
       [] {

@@ -29,6 +29,11 @@ StereoConfig random_config(std::mt19937& rng) {
   c.window = pick(rng, {3, 5, 7});
   if (c.cost == CostFunction::Census) c.window = pick(rng, {3, 5, 7, 9, 11});  // codes over 64 bits
   c.shd_window = pick(rng, {1, 3, 5});
+  if (c.cost != CostFunction::Sad && c.cost != CostFunction::Zsad) {  // the fused cost's costs
+    c.fused_weight = pick(rng, {0, 0, 1, 8, 32});
+    c.fused_trunc = pick(rng, {1, 20, 255});
+    c.fused_term = pick(rng, {FusedTerm::Intensity, FusedTerm::Gradient});
+  }
   c.dmax = pick(rng, {16, 24, 32, 48});
   c.uf = pick(rng, {1, 8, 16});
   if (c.dmax % c.uf != 0) c.uf = c.dmax;
@@ -121,6 +126,7 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "7"},
                            {"gap-interp", "on"},
                            {"speckle-size", "6"},
+                           {"fused-weight", "8"},
                            {"subpixel-bits", "4"},
                            {"p2-adapt", "6"},
                            {"mgm", "on"},
@@ -141,6 +147,16 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
   parabola.subpixel_bits = 2;
   parabola.subpixel_fit = SubpixelFit::Parabola;
   variants.emplace_back("subpixel-bits=2 subpixel-fit=parabola", parabola);
+  for (const char* cost : {"census", "rank", "shd"}) {
+    // The largest gradient term, on both sides of LR2 (the match side's costs from scratch).
+    StereoConfig fused = base;
+    set_param(fused, "cost", cost);
+    fused.fused_weight = 32;
+    fused.fused_trunc = 255;
+    fused.fused_term = FusedTerm::Gradient;
+    fused.lr = LrCheck::Lr2;
+    variants.emplace_back(std::string("cost=") + cost + " fused-weight=32 fused-trunc=255 fused-term=gradient lr=lr2", fused);
+  }
   for (const auto& [name, cfg] : variants) {
     const auto [left, right] =
         test::shifted_pair(cfg.width, cfg.height, rng, [](int x, int) { return x < 24 ? 3 : 9; });

@@ -95,6 +95,43 @@ TEST_CASE("matching cost width holds the worst case and is minimal", "[widths]")
       }
 }
 
+TEST_CASE("fused cost: the largest term reaches Cmax, and a gradient term is truncated and weighted", "[widths]") {
+  // Census and rank's worst case also puts 255 against 0 at the centre: the intensity term's bound.
+  for (auto cost : {CostFunction::Census, CostFunction::Rank})
+    for (int trunc : {1, 20, 255}) {
+      StereoConfig cfg;
+      cfg.cost = cost;
+      cfg.window = 5;
+      cfg.dmax = 32;
+      cfg.width = cfg.height = 48;
+      cfg.fused_weight = 32;
+      cfg.fused_trunc = trunc;
+      validate(cfg);
+      const Widths w = derive_widths(cfg);
+      CHECK(w.cost_max == 24 + uint64_t(32 * trunc / 8));
+      const int x0 = 36, y0 = 24, d0 = 20;
+      const auto [base, match] = worst_case_pair(cfg, x0, y0, d0);
+      const uint64_t reached = cost_row(cfg, base, match, y0)[size_t(x0) * size_t(cfg.dmax) + size_t(d0)];
+      INFO(to_string(cost) << " fused-trunc " << trunc);
+      check_width_is_minimal(reached, w.cost, w.cost_max);
+      CHECK(reached == w.cost_max);
+    }
+  // Gradients +255 (base) and -255 (match) differ by 510; truncated at 100 and weighted 12/8: 150.
+  StereoConfig cfg;
+  cfg.window = 3;
+  cfg.dmax = 16;
+  cfg.width = cfg.height = 32;
+  const int x0 = 20, y0 = 10, d0 = 6;
+  GrayImage base(32, 32, 0), match(32, 32, 0);
+  base.at(x0 + 1, y0) = 255;
+  match.at(x0 - d0 - 1, y0) = 255;
+  const uint32_t census = cost_row(cfg, base, match, y0)[size_t(x0) * size_t(cfg.dmax) + size_t(d0)];
+  cfg.fused_weight = 12;
+  cfg.fused_trunc = 100;
+  cfg.fused_term = FusedTerm::Gradient;
+  CHECK(cost_row(cfg, base, match, y0)[size_t(x0) * size_t(cfg.dmax) + size_t(d0)] == census + 150);
+}
+
 TEST_CASE("no matching cost exceeds Cmax on random images", "[widths]") {
   std::mt19937 rng(3);
   for (auto cost :
@@ -110,6 +147,15 @@ TEST_CASE("no matching cost exceeds Cmax on random images", "[widths]") {
     const uint64_t cost_max = derive_widths(cfg).cost_max;
     for (int y = 0; y < 12; ++y)
       for (uint32_t c : cost_row(cfg, base, match, y)) REQUIRE(c <= cost_max);
+    if (cost == CostFunction::Sad || cost == CostFunction::Zsad) continue;
+    for (FusedTerm term : {FusedTerm::Intensity, FusedTerm::Gradient}) {  // with the fused cost's largest term
+      cfg.fused_weight = 32;
+      cfg.fused_trunc = 255;
+      cfg.fused_term = term;
+      const uint64_t fused_max = derive_widths(cfg).cost_max;
+      for (int y = 0; y < 12; ++y)
+        for (uint32_t c : cost_row(cfg, base, match, y)) REQUIRE(c <= fused_max);
+    }
   }
 }
 

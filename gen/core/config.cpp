@@ -51,6 +51,8 @@ const std::vector<std::pair<std::string, LrCheck>> kLrNames = {
     {"none", LrCheck::None}, {"lr1", LrCheck::Lr1}, {"lr2", LrCheck::Lr2}};
 const std::vector<std::pair<std::string, SubpixelFit>> kSubpixelFitNames = {
     {"equiangular", SubpixelFit::Equiangular}, {"parabola", SubpixelFit::Parabola}};
+const std::vector<std::pair<std::string, FusedTerm>> kFusedTermNames = {{"intensity", FusedTerm::Intensity},
+                                                                        {"gradient", FusedTerm::Gradient}};
 
 template <class E>
 E parse_enum(const std::string& name, const std::string& text,
@@ -129,6 +131,7 @@ bool StereoConfig::operator==(const StereoConfig& o) const { return describe(*th
 std::string to_string(CostFunction c) { return enum_name(c, kCostNames); }
 std::string to_string(LrCheck l) { return enum_name(l, kLrNames); }
 std::string to_string(SubpixelFit f) { return enum_name(f, kSubpixelFitNames); }
+std::string to_string(FusedTerm t) { return enum_name(t, kFusedTermNames); }
 
 std::string paths_to_string(unsigned paths) {
   std::string s;
@@ -154,6 +157,15 @@ const std::vector<ParamSpec>& param_specs() {
       {"shd-window", "SHD: side of the window Hamming distances are summed over: odd, 1 to 11",
        [](StereoConfig& c, const std::string& v) { c.shd_window = parse_int("shd-window", v); },
        [](const StereoConfig& c) { return std::to_string(c.shd_window); }},
+      {"fused-weight", "fused cost: weight k of the pixel-wise term, floor(k * min(diff, fused-trunc) / 8) added to the cost; 0 or off: 0 to 32",
+       [](StereoConfig& c, const std::string& v) { c.fused_weight = parse_int_or_off("fused-weight", v); },
+       [](const StereoConfig& c) { return std::to_string(c.fused_weight); }},
+      {"fused-trunc", "fused cost: the pixel-wise difference is truncated at this value: 1 to 255",
+       [](StereoConfig& c, const std::string& v) { c.fused_trunc = parse_int("fused-trunc", v); },
+       [](const StereoConfig& c) { return std::to_string(c.fused_trunc); }},
+      {"fused-term", "fused cost: the pixel-wise difference, of intensities or of horizontal gradients: intensity or gradient",
+       [](StereoConfig& c, const std::string& v) { c.fused_term = parse_enum("fused-term", v, kFusedTermNames); },
+       [](const StereoConfig& c) { return to_string(c.fused_term); }},
       {"dmax", "disparity range (disparities 0 .. dmax-1): 16 to 256, a multiple of uf",
        [](StereoConfig& c, const std::string& v) { c.dmax = parse_int("dmax", v); },
        [](const StereoConfig& c) { return std::to_string(c.dmax); }},
@@ -226,6 +238,12 @@ void validate(const StereoConfig& c) {
   check_range("height", c.height, 4, 8192);
   check_odd_window("window", c.window, 3, 11);
   check_odd_window("shd-window", c.shd_window, 1, 11);  // checked even when unused: never silently wrong
+  check_range("fused-weight", c.fused_weight, 0, 32);
+  check_range("fused-trunc", c.fused_trunc, 1, 255);  // checked even when unused: never silently wrong
+  // SAD and ZSAD sum intensity differences already; the term complements the transforms' costs.
+  if (c.fused_weight != 0 && (c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad))
+    reject("fused-weight", std::to_string(c.fused_weight), "needs cost census, rank or shd (" + to_string(c.cost) +
+                                                              " already compares intensities)");
   check_range("dmax", c.dmax, 16, 256);
   check_range("min-disp", c.min_disp, -256, 256);
   if (c.uf < 1 || c.uf > c.dmax || c.dmax % c.uf != 0)

@@ -16,6 +16,9 @@ enum class LrCheck { None, Lr1, Lr2 };
 // The curve fitted through the winner's and its two neighbours' aggregated costs for sub-pixel
 // disparity (docs/semantics.md, section 4): two lines of equal slope, or a parabola.
 enum class SubpixelFit { Equiangular, Parabola };
+// The pixel-wise term of the fused matching cost (docs/semantics.md, section 2): the absolute
+// difference of the two pixels' intensities, or of their horizontal gradients.
+enum class FusedTerm { Intensity, Gradient };
 
 // Aggregation path bit masks. The angle names the direction the path comes from in raster
 // order: 0 = from the left (x-1, y), 45 = from the upper left (x-1, y-1),
@@ -38,6 +41,8 @@ const std::vector<PathDirection>& path_directions();
 
 // The largest speckle_size: the filter's delay and its label memories grow with it.
 constexpr int kMaxSpeckleSize = 4096;
+// The fused cost's weight counts eighths: its pixel-wise term is floor(k * min(diff, T) / 8).
+constexpr int kFusedWeightDivisor = 8;
 
 // Defaults are FP-Stereo's C2 configuration (census 7x7, dmax 128, uf 32, 4 paths,
 // P1 = 7, P2 = 86, median 5, KITTI image size).
@@ -50,6 +55,11 @@ struct StereoConfig {
   int dmax = 128;      // disparities min_disp .. min_disp + dmax - 1
   int min_disp = 0;    // the smallest disparity; words count from it (docs/semantics.md section 8)
   int uf = 32;         // disparities computed per clock (hardware unroll factor)
+  // Fused matching cost (docs/semantics.md, section 2, the AD-Census idea): the cost plus
+  // floor(fused_weight * min(|pixel-wise difference|, fused_trunc) / 8); fused_weight 0 = off.
+  int fused_weight = 0;
+  int fused_trunc = 20;
+  FusedTerm fused_term = FusedTerm::Intensity;
   unsigned paths = kAllPaths;
   int p1 = 7;
   int p2 = 86;
@@ -119,6 +129,7 @@ StereoConfig compose_config(const std::optional<std::string>& preset_name, const
 std::string to_string(CostFunction c);
 std::string to_string(LrCheck l);
 std::string to_string(SubpixelFit f);
+std::string to_string(FusedTerm t);
 std::string paths_to_string(unsigned paths);
 // "name = value" for every parameter, one per line, in param_specs() order.
 std::string describe(const StereoConfig& cfg, const std::string& line_prefix = "");

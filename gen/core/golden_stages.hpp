@@ -141,6 +141,14 @@ class CostRows {
       case CostFunction::Sad:
         break;
     }
+    if (cfg.fused_weight != 0) {
+      // The term of every difference a row can hold: intensities 0 .. 255, gradients 0 .. 510.
+      fused_term_of_.resize(511);
+      for (int diff = 0; diff <= 510; ++diff)
+        fused_term_of_[size_t(diff)] = T(cfg.fused_weight * std::min(diff, cfg.fused_trunc) / kFusedWeightDivisor);
+      base_feature_.resize(size_t(base.width));
+      match_feature_.resize(size_t(base.width));
+    }
   }
 
   // Index d is the disparity min_disp + d: base pixel x against match pixel x - min_disp - d.
@@ -173,6 +181,7 @@ class CostRows {
           for (int d = d_lo(x); d < d_hi(x); ++d) out[x * dmax + d] = T(zsad(x, y, m + d));
         break;
     }
+    if (cfg_.fused_weight != 0) add_fused_term(y, out);
     // Match pixel outside the row: the largest cost.
     for (int x = 0; x < width; ++x) {
       for (int d = 0; d < d_lo(x); ++d) out[x * dmax + d] = cost_max_;
@@ -209,6 +218,27 @@ class CostRows {
         for (int d = lo; d < hi; ++d) costs[d] = T(__builtin_popcountll(b0 ^ m0[d]) + __builtin_popcountll(b1 ^ m1[d]));
       }
     }
+  }
+
+  // The fused cost's pixel-wise term (section 2) added to the costs of row y whose match pixel
+  // lies in the row.
+  void add_fused_term(int y, T* out) {
+    const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
+    pixel_features(base_, y, base_feature_);
+    pixel_features(match_, y, match_feature_);
+    for (int x = 0; x < width; ++x) {
+      const int lo = std::clamp(x - m - width + 1, 0, dmax), hi = std::clamp(x - m + 1, 0, dmax);
+      for (int d = lo; d < hi; ++d)
+        out[x * dmax + d] += fused_term_of_[size_t(std::abs(base_feature_[size_t(x)] - match_feature_[size_t(x - m - d)]))];
+    }
+  }
+
+  // Row y's intensities, or its horizontal gradients I(x+1, y) - I(x-1, y) on the zero-extended image.
+  void pixel_features(const GrayImage& img, int y, std::vector<int>& feature) const {
+    for (int x = 0; x < img.width; ++x)
+      feature[size_t(x)] = cfg_.fused_term == FusedTerm::Intensity
+                               ? img.at(x, y)
+                               : pixel_or_zero(img, x + 1, y) - pixel_or_zero(img, x - 1, y);
   }
 
   // One SHD term: the Hamming distance of two census codes, each zero outside the image.
@@ -268,6 +298,8 @@ class CostRows {
   std::vector<uint8_t> padded_;
   Image<int> base_ranks_, match_ranks_;
   Image<int> base_means_, match_means_;
+  std::vector<T> fused_term_of_;                   // the fused term by pixel-wise difference
+  std::vector<int> base_feature_, match_feature_;  // one row of intensities or gradients
 };
 
 // ---------------------------------------------------------------------------------------------

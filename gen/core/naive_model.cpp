@@ -89,6 +89,18 @@ int64_t hamming(const std::vector<bool>& a, const std::vector<bool>& b) {
   return h;
 }
 
+// The fused cost's pixel-wise term (semantics section 2) between pixel (ax, y) of side a and
+// (bx, y) of side b: the truncated difference of their intensities or horizontal gradients,
+// weighted in eighths; 0 when the option is off.
+int64_t fused_term(const StereoConfig& cfg, const Side& a, const Side& b, int ax, int bx, int y) {
+  if (cfg.fused_weight == 0) return 0;
+  auto feature = [&](const GrayImage& img, int x) {
+    return cfg.fused_term == FusedTerm::Intensity ? pixel(img, x, y) : pixel(img, x + 1, y) - pixel(img, x - 1, y);
+  };
+  const int64_t diff = std::llabs(feature(*a.img, ax) - feature(*b.img, bx));
+  return int64_t(cfg.fused_weight) * std::min<int64_t>(diff, cfg.fused_trunc) / 8;
+}
+
 // Cost between pixel (ax, y) of side `a` (playing the base role) and pixel (bx, y) of side `b`
 // (playing the match role), straight from the table of semantics section 2. The caller has
 // already handled the out-of-image match case (Cmax). The base-side volume calls this with
@@ -151,7 +163,9 @@ Volume base_costs(const StereoConfig& cfg, const Side& base, const Side& match, 
     for (int x = 0; x < base.width; ++x)
       for (int d = 0; d < cfg.dmax; ++d) {
         const int xm = x - cfg.min_disp - d;  // disparity min_disp + d
-        c.at(x, y, d) = (xm < 0 || xm >= match.width) ? cmax : pair_cost(cfg, base, match, x, xm, y);
+        c.at(x, y, d) = (xm < 0 || xm >= match.width)
+                            ? cmax
+                            : pair_cost(cfg, base, match, x, xm, y) + fused_term(cfg, base, match, x, xm, y);
       }
   return c;
 }
@@ -164,7 +178,8 @@ Volume match_costs(const StereoConfig& cfg, const Side& base, const Side& match,
       for (int d = 0; d < cfg.dmax; ++d)
         c.at(x, y, d) = (x + cfg.min_disp + d < 0 || x + cfg.min_disp + d >= match.width)
                             ? cmax
-                            : pair_cost(cfg, match, base, x, x + cfg.min_disp + d, y);
+                            : pair_cost(cfg, match, base, x, x + cfg.min_disp + d, y) +
+                                  fused_term(cfg, match, base, x, x + cfg.min_disp + d, y);
   return c;
 }
 

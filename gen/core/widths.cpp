@@ -37,6 +37,8 @@ Widths derive_widths(const StereoConfig& cfg) {
       w.cost_max = (n - 1) * m;
       break;
   }
+  // The fused cost's pixel-wise term reaches its bound where the difference reaches the truncation.
+  if (cfg.fused_weight != 0) w.cost_max += uint64_t(cfg.fused_weight) * uint64_t(cfg.fused_trunc) / kFusedWeightDivisor;
   w.cost = bits_for(w.cost_max);
   w.path_cost_max = w.cost_max + uint64_t(cfg.p2);
   w.path_cost = bits_for(w.path_cost_max);

@@ -39,6 +39,10 @@ void check_hardware_rules(const StereoConfig& cfg) {
   if (cfg.speckle_size != 0)
     throw ConfigError("speckle-size = " + std::to_string(cfg.speckle_size) +
                       ": not in the hardware generators yet (the models have it); use 0");
+  // The fused cost is specified in the models first (docs/semantics.md section 2).
+  if (cfg.fused_weight != 0)
+    throw ConfigError("fused-weight = " + std::to_string(cfg.fused_weight) +
+                      ": not in the hardware generators yet (the models have it); use 0");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)

@@ -7,6 +7,9 @@
 //   cost = census
 //   window = 7
 //   shd-window = 5
+//   fused-weight = 0
+//   fused-trunc = 20
+//   fused-term = intensity
 //   dmax = 128
 //   min-disp = 0
 //   uf = 32
@@ -51,10 +54,10 @@
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
 // tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).
 // m_axis_disp: the disparity words; tdata 8 bits: disparity [6:0], invalid [7].
-// Frames are at most 1242 x 375 pixels; fps_census7_d128u32_60c9ca_video_in checks the input's
+// Frames are at most 1242 x 375 pixels; fps_census7_d128u32_6e208d_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
-// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_60c9ca_regs.h).
-module fps_census7_d128u32_60c9ca_top (
+// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_6e208d_regs.h).
+module fps_census7_d128u32_6e208d_top (
   (* X_INTERFACE_INFO = "xilinx.com:signal:clock:1.0 aclk CLK" *)
   (* X_INTERFACE_PARAMETER = "ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp:s_axi_ctrl, ASSOCIATED_RESET aresetn" *)
   input  wire aclk,
@@ -100,7 +103,7 @@ module fps_census7_d128u32_60c9ca_top (
   wire [9:0] left_beat;
   wire left_valid;
   wire left_ready;
-  fps_census7_d128u32_60c9ca_axis_skid #(
+  fps_census7_d128u32_6e208d_axis_skid #(
     .DATA_W(10)
   ) left_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_left_tuser, s_axis_left_tlast, s_axis_left_tdata}),
@@ -109,7 +112,7 @@ module fps_census7_d128u32_60c9ca_top (
   wire [9:0] right_beat;
   wire right_valid;
   wire right_ready;
-  fps_census7_d128u32_60c9ca_axis_skid #(
+  fps_census7_d128u32_6e208d_axis_skid #(
     .DATA_W(10)
   ) right_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_right_tuser, s_axis_right_tlast, s_axis_right_tdata}),
@@ -132,10 +135,10 @@ module fps_census7_d128u32_60c9ca_top (
   wire [7:0] p2;
   wire [6:0] uniqueness;
   wire [3:0] lr_threshold;
-  fps_census7_d128u32_60c9ca_control #(
+  fps_census7_d128u32_6e208d_control #(
     .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
     .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(1), .UNIQUENESS_INIT(10), .LR_SETTABLE(1),
-    .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h0060c9ca),
+    .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h006e208d),
     .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd849, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst), .s_axi_awaddr(s_axi_ctrl_awaddr), .s_axi_awvalid(s_axi_ctrl_awvalid),
@@ -154,7 +157,7 @@ module fps_census7_d128u32_60c9ca_top (
   wire framed_ready;
   wire [7:0] framed_left;
   wire [7:0] framed_right;
-  fps_census7_d128u32_60c9ca_video_in #(
+  fps_census7_d128u32_6e208d_video_in #(
     .X_W(11), .Y_W(9)
   ) framing (
     .clk(aclk), .rst(rst), .enable(enable), .left(left_beat), .left_valid(left_valid),
@@ -170,7 +173,7 @@ module fps_census7_d128u32_60c9ca_top (
   wire take;
   wire [7:0] core_left;
   wire [7:0] core_right;
-  fps_census7_d128u32_60c9ca_axis_skid #(
+  fps_census7_d128u32_6e208d_axis_skid #(
     .DATA_W(16)
   ) pixel_slice (
     .clk(aclk), .rst(rst), .s_data({framed_left, framed_right}), .s_valid(framed_valid),
@@ -181,7 +184,7 @@ module fps_census7_d128u32_60c9ca_top (
   wire out_first;
   wire out_last;
   wire [7:0] out_word;
-  fps_census7_d128u32_60c9ca_sgm_core core (
+  fps_census7_d128u32_6e208d_sgm_core core (
     .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
     .accepting(core_accepting), .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2),
     .uniqueness(uniqueness), .lr_threshold(lr_threshold), .in_valid(core_valid), .in_left(core_left),
@@ -189,7 +192,7 @@ module fps_census7_d128u32_60c9ca_top (
     .out_first(out_first), .out_last(out_last), .frame_end(frame_done));
 
   // Output register slices.
-  fps_census7_d128u32_60c9ca_axis_skid #(
+  fps_census7_d128u32_6e208d_axis_skid #(
     .DATA_W(10)
   ) disp_slice (
     .clk(aclk), .rst(rst), .s_data({out_first, out_last, out_word}), .s_valid(out_push), .s_ready(out_ready),
@@ -213,7 +216,7 @@ endmodule
 //   median filter
 //   gap interpolation
 //   output
-module fps_census7_d128u32_60c9ca_sgm_core (
+module fps_census7_d128u32_6e208d_sgm_core (
   input  wire clk,
   input  wire rst,
   // Frames: while accepting (a register), start begins one: in an idle core, or following on
@@ -260,7 +263,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   localparam OVERLAP_HEIGHT = 11;
   reg overlap;
   always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
-  fps_census7_d128u32_60c9ca_sequencer #(
+  fps_census7_d128u32_6e208d_sequencer #(
     .STEP_W(21)
   ) sequencer (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
@@ -282,7 +285,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_front_end #(
+  fps_census7_d128u32_6e208d_front_end #(
     .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_ROW_W(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -294,7 +297,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
     .transform_slot(transform_slot));
   wire [47:0] code_base;
   wire [47:0] code_match;
-  fps_census7_d128u32_60c9ca_transform #(
+  fps_census7_d128u32_6e208d_transform #(
     .N(7), .RANK(0), .CODE_W(48)
   ) transform (
     .clk(clk), .shift(shift), .window_left(window_left), .window_right(window_right), .row_valid(row_valid),
@@ -305,7 +308,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire signed [10:0] history_y;
   wire history_slot;
   wire [191:0] costs;
-  fps_census7_d128u32_60c9ca_point_cost #(
+  fps_census7_d128u32_6e208d_point_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1), .X_W(11),
     .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
@@ -323,7 +326,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   wire [13:0] cost_raddr;
   wire [191:0] cost_q;
-  fps_census7_d128u32_60c9ca_cost_reorder #(
+  fps_census7_d128u32_6e208d_cost_reorder #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_ROW_W(1), .COST_AW(14),
     .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
@@ -344,7 +347,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire [1:0] agg_group;
   wire [1:0] agg_slot;
   wire agg_chain;
-  fps_census7_d128u32_60c9ca_aggregator #(
+  fps_census7_d128u32_6e208d_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_ROW_W(2),
     .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0)
@@ -361,7 +364,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire row_end_we;
   wire [3:0] row_end_waddr;
   wire [223:0] row_end_wdata;
-  fps_census7_d128u32_60c9ca_lr1_match #(
+  fps_census7_d128u32_6e208d_lr1_match #(
     .K(2), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_ROW_W(2), .DISP_AW(13),
     .END_AW(4), .X_W(11), .G_W(2), .K_W(1), .MIN_DISP(0)
   ) lr1_match (
@@ -380,7 +383,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire [9:0] winner_best;
   wire [9:0] winner_second;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_wta_unique #(
+  fps_census7_d128u32_6e208d_wta_unique #(
     .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(1), .TREE_LAT(5)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
@@ -400,7 +403,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire [8:0] read_y;
   wire [7:0] read_word;
   wire [1:0] read_slot_row;
-  fps_census7_d128u32_60c9ca_disparity_reorder #(
+  fps_census7_d128u32_6e208d_disparity_reorder #(
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(4), .OUT_ROW_W(2), .DISP_AW(13), .EXTRA_ROWS(1), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
@@ -420,7 +423,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_lr_check #(
+  fps_census7_d128u32_6e208d_lr_check #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(4), .OUT_ROW_W(2),
     .DISP_AW(13), .ROW_END(1), .END_AW(4), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
@@ -437,7 +440,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire [10:0] median_x;
   wire [8:0] median_y;
   wire [7:0] median_word;
-  fps_census7_d128u32_60c9ca_median #(
+  fps_census7_d128u32_6e208d_median #(
     .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -449,7 +452,7 @@ module fps_census7_d128u32_60c9ca_sgm_core (
   wire [10:0] gap_x;
   wire [8:0] gap_y;
   wire [7:0] gap_word;
-  fps_census7_d128u32_60c9ca_gap_fill #(
+  fps_census7_d128u32_6e208d_gap_fill #(
     .W(1242), .WORD_W(8), .X_W(11), .Y_W(9)
   ) gap (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -486,7 +489,7 @@ endmodule
 `default_nettype none
 // Two-entry AXI4-Stream register slice: every output is registered, so no combinational path
 // runs from m_ready to s_ready, and a word is accepted every cycle while the sink keeps up.
-module fps_census7_d128u32_60c9ca_axis_skid #(
+module fps_census7_d128u32_6e208d_axis_skid #(
   // data bits carried (tdata and any sideband packed together)
   parameter DATA_W = 8
 ) (
@@ -502,7 +505,7 @@ module fps_census7_d128u32_60c9ca_axis_skid #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DATA_W < 1) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
     end
   endgenerate
   reg [DATA_W-1:0] data_q, skid_q;
@@ -541,7 +544,7 @@ endmodule
 // them to the frame_* outputs, which hold for the whole frame. A write of a value out of range, of
 // a read-only register or with partial byte strobes changes nothing, answers SLVERR and is
 // counted. One transaction of each kind at a time; unmapped addresses read 0.
-module fps_census7_d128u32_60c9ca_control #(
+module fps_census7_d128u32_6e208d_control #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter PATH_W = 8,
@@ -604,16 +607,16 @@ module fps_census7_d128u32_60c9ca_control #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
-      fps_census7_d128u32_60c9ca_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
     end
     if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
-      fps_census7_d128u32_60c9ca_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
     end
     if (P1_INIT < 0 || P1_INIT > P2_INIT || P2_INIT > P2_MAX || P2_MAX >= (1 << PATH_W)) begin : invalid_penalties
-      fps_census7_d128u32_60c9ca_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
     end
     if (UNIQUENESS_INIT < 0 || UNIQUENESS_INIT > 99 || LR_THRESHOLD_INIT < 0 || LR_THRESHOLD_INIT > 15) begin : invalid_settings
-      fps_census7_d128u32_60c9ca_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
     end
   endgenerate
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
@@ -808,7 +811,7 @@ endmodule
 //   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
-module fps_census7_d128u32_60c9ca_video_in #(
+module fps_census7_d128u32_6e208d_video_in #(
   parameter X_W = 7,
   parameter Y_W = 6
 ) (
@@ -841,7 +844,7 @@ module fps_census7_d128u32_60c9ca_video_in #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (X_W < 2 || Y_W < 2) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -982,14 +985,14 @@ endmodule
 // any other and begins when the frame ends; the settings cannot have changed (settings_held
 // falls in the cycle after a write is taken, and the write is applied a cycle later). So no
 // start taken while accepting is lost (tests/formal/sequencer_props.v).
-module fps_census7_d128u32_60c9ca_sequencer #(
+module fps_census7_d128u32_6e208d_sequencer #(
   parameter STEP_W = 20
 ) (
   input  wire              clk,
   input  wire              rst,
   input  wire              start,
   output wire              idle,
-  // the written settings equal the running frame's (a register, fps_census7_d128u32_60c9ca_control)
+  // the written settings equal the running frame's (a register, fps_census7_d128u32_6e208d_control)
   input  wire              settings_held,
   output reg               accepting,
   input  wire              follow_open,
@@ -1010,7 +1013,7 @@ module fps_census7_d128u32_60c9ca_sequencer #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (STEP_W < 1) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
   reg starting, in_frame, pending;
@@ -1057,7 +1060,7 @@ endmodule
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
 // rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
 // rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
-module fps_census7_d128u32_60c9ca_front_end #(
+module fps_census7_d128u32_6e208d_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -1103,10 +1106,10 @@ module fps_census7_d128u32_60c9ca_front_end #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_60c9ca_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -1117,7 +1120,7 @@ module fps_census7_d128u32_60c9ca_front_end #(
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
   /* verilator lint_off PINCONNECTEMPTY */  // the centre's RAM slot has a counter of its own
-  fps_census7_d128u32_60c9ca_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
+  fps_census7_d128u32_6e208d_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
     input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
                     .slot(si), .row(ti), .row_slot(), .slot_end(slot_end));
   /* verilator lint_on PINCONNECTEMPTY */
@@ -1128,7 +1131,7 @@ module fps_census7_d128u32_60c9ca_front_end #(
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
   // Whether the slot is the row-time's last, the frame's last column and last row, as registers
   // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
-  // before step 0 (fps_census7_d128u32_60c9ca_sequencer) to the frame's end.
+  // before step 0 (fps_census7_d128u32_6e208d_sequencer) to the frame's end.
   localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
   localparam [X_W-1:0] TWO_X = 2;
   localparam [Y_W-1:0] TWO_Y = 2;
@@ -1186,10 +1189,10 @@ module fps_census7_d128u32_60c9ca_front_end #(
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
 
-  fps_census7_d128u32_60c9ca_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+  fps_census7_d128u32_6e208d_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_left : 8'd0), .window(window_left));
-  fps_census7_d128u32_60c9ca_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+  fps_census7_d128u32_6e208d_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
@@ -1219,7 +1222,7 @@ module fps_census7_d128u32_60c9ca_front_end #(
   reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
   reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_60c9ca_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
+  fps_census7_d128u32_6e208d_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1260,10 +1263,10 @@ module fps_census7_d128u32_60c9ca_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
+  fps_census7_d128u32_6e208d_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_census7_d128u32_60c9ca_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
+  fps_census7_d128u32_6e208d_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1284,7 +1287,7 @@ endmodule
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
 // centres, registered once per slot (docs/semantics.md, section 2).
-module fps_census7_d128u32_60c9ca_transform #(
+module fps_census7_d128u32_6e208d_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
   parameter RANK = 0,
@@ -1303,23 +1306,23 @@ module fps_census7_d128u32_60c9ca_transform #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_60c9ca_invalid_parameters_transform_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_transform_N_is_not_odd_and_at_least_3 failed ();
     end
     if ((RANK == 0 && CODE_W != N * N - 1) || (RANK != 0 && N * N - 1 >= (1 << CODE_W))) begin : invalid_CODE_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
     end
   endgenerate
   wire [CODE_W-1:0] code_left, code_right;
   generate
     if (RANK) begin : rank
-      fps_census7_d128u32_60c9ca_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
+      fps_census7_d128u32_6e208d_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
                                                      .col_valid(col_valid), .rank(code_left));
-      fps_census7_d128u32_60c9ca_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
+      fps_census7_d128u32_6e208d_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
                                                       .col_valid(col_valid), .rank(code_right));
     end else begin : census
-      fps_census7_d128u32_60c9ca_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
+      fps_census7_d128u32_6e208d_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
                                      .code(code_left));
-      fps_census7_d128u32_60c9ca_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
+      fps_census7_d128u32_6e208d_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
                                       .code(code_right));
     end
   endgenerate
@@ -1336,9 +1339,9 @@ endmodule
 // Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
-// costs the lanes compute in this slot; fps_census7_d128u32_60c9ca_cost_history holds them, with the disparity
+// costs the lanes compute in this slot; fps_census7_d128u32_6e208d_cost_history holds them, with the disparity
 // offset's delays.
-module fps_census7_d128u32_60c9ca_point_cost #(
+module fps_census7_d128u32_6e208d_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -1351,7 +1354,7 @@ module fps_census7_d128u32_60c9ca_point_cost #(
   parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
-  // the cost lanes' latency the stage plans with (fps_census7_d128u32_60c9ca_cost_lanes checks it)
+  // the cost lanes' latency the stage plans with (fps_census7_d128u32_6e208d_cost_lanes checks it)
   parameter LAT = 2
 ) (
   input  wire                   clk,
@@ -1374,13 +1377,13 @@ module fps_census7_d128u32_60c9ca_point_cost #(
   wire [CODE_W-1:0]     code_base_h;
   wire [POSITION_W-1:0] history;
   wire [UF*CODE_W-1:0]  match_lanes;
-  fps_census7_d128u32_60c9ca_cost_history #(.BASE_W(CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX),
+  fps_census7_d128u32_6e208d_cost_history #(.BASE_W(CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX),
                           .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(code_base),
     .position({transform_x, transform_y, transform_slot}), .column(code_match), .base_held(code_base_h),
     .position_held(history), .view(match_lanes));
   assign {history_x, history_y, history_slot} = history;
-  fps_census7_d128u32_60c9ca_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+  fps_census7_d128u32_6e208d_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
                         .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
     .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
     .x(history_x), .width(frame_width), .costs(costs));
@@ -1394,7 +1397,7 @@ endmodule
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
 // COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
 // A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
-module fps_census7_d128u32_60c9ca_cost_reorder #(
+module fps_census7_d128u32_6e208d_cost_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -1430,24 +1433,24 @@ module fps_census7_d128u32_60c9ca_cost_reorder #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (LAT < 1) begin : invalid_LAT
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_reorder_LAT_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
     if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_census7_d128u32_60c9ca_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
+  fps_census7_d128u32_6e208d_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
   /* verilator lint_off WIDTH */
   wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
   /* verilator lint_on WIDTH */
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
 endmodule
@@ -1461,8 +1464,8 @@ endmodule
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
 // x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
-// enabled path (fps_census7_d128u32_60c9ca_adaptive_p2), which replaces the p2 input for that path.
-module fps_census7_d128u32_60c9ca_aggregator #(
+// enabled path (fps_census7_d128u32_6e208d_adaptive_p2), which replaces the p2 input for that path.
+module fps_census7_d128u32_6e208d_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -1507,7 +1510,7 @@ module fps_census7_d128u32_60c9ca_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
-  // back-to-back frames (fps_census7_d128u32_60c9ca_front_end): the row-times wrap after the frame's last row, and
+  // back-to-back frames (fps_census7_d128u32_6e208d_front_end): the row-times wrap after the frame's last row, and
   // once wrapped, the rows above row 0 are the previous frame's
   input  wire                 overlap,
   input  wire                 wrapped,
@@ -1521,29 +1524,29 @@ module fps_census7_d128u32_60c9ca_aggregator #(
   output wire [K_W-1:0]       sums_chain,
   output wire [OUT_ROW_W-1:0]   sums_slot
 );
-  localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_60c9ca_path_lanes
+  localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_6e208d_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
     if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
     end
     if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
     end
     if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
-      fps_census7_d128u32_60c9ca_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -1575,7 +1578,7 @@ module fps_census7_d128u32_60c9ca_aggregator #(
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_60c9ca_frame_row #(.Y_W(Y_W)) row_time (
+  fps_census7_d128u32_6e208d_frame_row #(.Y_W(Y_W)) row_time (
     .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1695,7 +1698,7 @@ module fps_census7_d128u32_60c9ca_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_census7_d128u32_60c9ca_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
+  fps_census7_d128u32_6e208d_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1709,18 +1712,18 @@ module fps_census7_d128u32_60c9ca_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       wire [STATE_AW-1:0] state_waddr = `FPS_TAG_CHAIN(tag4) * G + g4;
-      fps_census7_d128u32_60c9ca_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_census7_d128u32_6e208d_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv && active4), .waddr(state_waddr), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
-      fps_census7_d128u32_60c9ca_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_census7_d128u32_6e208d_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_0));
-      fps_census7_d128u32_60c9ca_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_census7_d128u32_6e208d_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
@@ -1743,10 +1746,10 @@ module fps_census7_d128u32_60c9ca_aggregator #(
       reg  [PATH_W-1:0] above_min2;
       wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
       wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
-      fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+      fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
-      fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+      fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
         .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
@@ -1754,7 +1757,7 @@ module fps_census7_d128u32_60c9ca_aggregator #(
           above2 <= above_q;
           above_min2 <= above_min_q;
         end
-      fps_census7_d128u32_60c9ca_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_census7_d128u32_6e208d_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv), .waddr(state_addr2), .wdata(above2),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
@@ -1763,11 +1766,11 @@ module fps_census7_d128u32_60c9ca_aggregator #(
       reg [PATH_W-1:0] minimum [0:K-1];
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
-      fps_census7_d128u32_60c9ca_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_census7_d128u32_6e208d_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(minimum[chain2]), .path(path_45));
-      fps_census7_d128u32_60c9ca_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_census7_d128u32_6e208d_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
     end else begin : no_path45
@@ -1789,10 +1792,10 @@ module fps_census7_d128u32_60c9ca_aggregator #(
         reg  [PATH_W-1:0]  below_q, above_min2;
         wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
         wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
-        fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+        fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_q));
-        fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+        fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
           .re(adv), .raddr(min_raddr), .rdata(above_min_q));
         always @(posedge clk)
@@ -1801,11 +1804,11 @@ module fps_census7_d128u32_60c9ca_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
-        fps_census7_d128u32_60c9ca_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+        fps_census7_d128u32_6e208d_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_census7_d128u32_60c9ca_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+        fps_census7_d128u32_6e208d_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
@@ -1860,7 +1863,7 @@ endmodule
 // nothing to shift in: with m < 0 its match pixels start there). At e = DMAX - 1 a match pixel is
 // complete (completed_*, if it lies in the row); at the row's end the rest are (row_end_*, one
 // word of UF per group). The state follows the chains like the path costs do.
-module fps_census7_d128u32_60c9ca_lr1_match #(
+module fps_census7_d128u32_6e208d_lr1_match #(
   parameter K = 2,
   parameter G = 4,
   parameter UF = 8,
@@ -1900,7 +1903,7 @@ module fps_census7_d128u32_60c9ca_lr1_match #(
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
     if (DMAX != G * UF) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_DMAX_is_not_G_times_UF failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_DMAX_is_not_G_times_UF failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
@@ -1910,7 +1913,7 @@ module fps_census7_d128u32_60c9ca_lr1_match #(
   /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
   wire [UF*E_W-1:0]   previous_unused;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
+  fps_census7_d128u32_6e208d_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
     .clk(clk), .we(adv && active), .waddr(entry_addr), .wdata(updated),
     .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
   reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
@@ -1947,15 +1950,15 @@ endmodule
 `resetall
 `default_nettype none
 // Winner-take-all with the uniqueness check (docs/semantics.md, section 4): per step the range
-// summaries of one group's lanes (fps_census7_d128u32_60c9ca_unique_tree), joined over the groups of the pixel
-// (fps_census7_d128u32_60c9ca_unique_join), then registered; the next step registers the two products of the test,
+// summaries of one group's lanes (fps_census7_d128u32_6e208d_unique_tree), joined over the groups of the pixel
+// (fps_census7_d128u32_6e208d_unique_join), then registered; the next step registers the two products of the test,
 // the one after compares their halves, and in the step after that (TREE_LAT + 3 steps after the
 // pixel's last group) word is the winner
 // or the invalid word when S2 * (100 - u) < S1 * 100, with S1 and S2 beside it (best_sum,
 // second_sum: the confidence uses them). The tag travels along. The tree is registered every
 // LEVELS_PER_STAGE joins; a join's compare-selects are several LUT levels deep, so 1 keeps a step
 // within the pipeline's depth.
-module fps_census7_d128u32_60c9ca_wta_unique #(
+module fps_census7_d128u32_6e208d_wta_unique #(
   parameter UF = 8,
   parameter SUM_W = 9,
   parameter DISP_W = 5,
@@ -1979,19 +1982,19 @@ module fps_census7_d128u32_60c9ca_wta_unique #(
   output wire [SUM_W-1:0]    best_sum,
   output wire [SUM_W-1:0]    second_sum
 );
-  // fps_census7_d128u32_60c9ca_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
+  // fps_census7_d128u32_6e208d_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
   localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   localparam S_W = 5 * SUM_W + DISP_W + 2;
   wire [G_W-1:0] group_tree;  // the group whose summary leaves the tree
   wire [TAG_W-1:0] tag_tree;
-  fps_census7_d128u32_60c9ca_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
+  fps_census7_d128u32_6e208d_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_tree, group_tree}));
-  fps_census7_d128u32_60c9ca_delay #(.WIDTH(TAG_W + G_W), .DEPTH(3), .RESET(1)) tag_to_word (
+  fps_census7_d128u32_6e208d_delay #(.WIDTH(TAG_W + G_W), .DEPTH(3), .RESET(1)) tag_to_word (
     .clk(clk), .rst(restart), .en(adv), .in({tag_tree, group_tree}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  best, all, but_first, but_last, second;
   wire [LANE_W-1:0] lane;
   wire              first, last;
-  fps_census7_d128u32_60c9ca_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_census7_d128u32_6e208d_unique_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .best(best), .index(lane), .first(first), .last(last), .all(all),
     .but_first(but_first), .but_last(but_last), .second(second));
@@ -2001,7 +2004,7 @@ module fps_census7_d128u32_60c9ca_wta_unique #(
   wire [S_W-1:0] group_summary = {best, all, but_first, but_last, second, group_disparity, first, last};
   reg  [S_W-1:0] running;  // groups 0 .. group_out - 1
   wire [S_W-1:0] joined;
-  fps_census7_d128u32_60c9ca_unique_join #(.W(SUM_W), .IDX_W(DISP_W)) join_groups (.a(running), .b(group_summary), .joined(joined));
+  fps_census7_d128u32_6e208d_unique_join #(.W(SUM_W), .IDX_W(DISP_W)) join_groups (.a(running), .b(group_summary), .joined(joined));
   wire [S_W-1:0] total = group_tree == 0 ? group_summary : joined;
   always @(posedge clk)
     if (adv) running <= total;
@@ -2050,7 +2053,7 @@ endmodule
 // EXTRA_ROWS more for gap interpolation, one row behind) and bubble slots read as invalid words.
 // The read stream: read_done in the step after each slot's read, read_event where that slot is a
 // pixel of the frame's output rows, its position and word.
-module fps_census7_d128u32_60c9ca_disparity_reorder #(
+module fps_census7_d128u32_6e208d_disparity_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter DISP_W = 5,
@@ -2068,7 +2071,7 @@ module fps_census7_d128u32_60c9ca_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
-  // back-to-back frames (fps_census7_d128u32_60c9ca_front_end): the read rows wrap after the frame's last, and the
+  // back-to-back frames (fps_census7_d128u32_6e208d_front_end): the read rows wrap after the frame's last, and the
   // next frame's rows stand in for the rows below the image
   input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
@@ -2092,7 +2095,7 @@ module fps_census7_d128u32_60c9ca_disparity_reorder #(
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
     if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_reorder_addresses_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
   // Addresses are products of narrow counters and constants, cut to the RAM's address width.
@@ -2107,7 +2110,7 @@ module fps_census7_d128u32_60c9ca_disparity_reorder #(
   wire [Y_W-1:0] to;
   wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
-  fps_census7_d128u32_60c9ca_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+  fps_census7_d128u32_6e208d_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
@@ -2117,7 +2120,7 @@ module fps_census7_d128u32_60c9ca_disparity_reorder #(
   wire read_valid = read_now && to < frame_height;
   wire [DISP_W:0] disparity_q;
   wire [DISP_AW-1:0] raddr = to_slot * ROW_SLOTS + so;
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(write), .waddr(waddr), .wdata(word),
     .re(adv && read_valid), .raddr(raddr), .rdata(disparity_q));
   // verilator lint_on WIDTH
@@ -2142,7 +2145,7 @@ endmodule
 `resetall
 `default_nettype none
 // Left-right check (docs/semantics.md, section 5), three steps: for the read stream's pixel x
-// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_census7_d128u32_60c9ca_match_lookup: the match side's
+// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_census7_d128u32_6e208d_match_lookup: the match side's
 // completed pixels, with ROW_END, as LR1 does, its row ends), and the word becomes invalid where
 // x' lies outside the image or |D - Dm(x')| > lr_threshold. The RAMs are read in the first step,
 // Dm is registered in the second, the check's result in the third, and the stream leaves three
@@ -2151,7 +2154,7 @@ endmodule
 // whole D: the check uses D (semantics section 5), and the word that leaves is {invalid, refined}.
 // With RIGHT_VIEW, Dm(x) itself leaves beside the checked word (right_word, the right view's
 // disparity at x), from a second lookup.
-module fps_census7_d128u32_60c9ca_lr_check #(
+module fps_census7_d128u32_6e208d_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -2182,7 +2185,7 @@ module fps_census7_d128u32_60c9ca_lr_check #(
   input  wire                 row_end_we,
   input  wire [END_AW-1:0]    row_end_waddr,
   input  wire [UF*DISP_W-1:0] row_end_wdata,
-  // the read stream (fps_census7_d128u32_60c9ca_disparity_reorder)
+  // the read stream (fps_census7_d128u32_6e208d_disparity_reorder)
   input  wire                 read_done,
   input  wire                 read_event,
   input  wire [X_W-1:0]       read_x,
@@ -2212,7 +2215,7 @@ module fps_census7_d128u32_60c9ca_lr_check #(
   wire outside = read_word[IN_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
   wire [X_W-1:0] xm = x_ahead - d_behind;  // wraps where x' lies outside, and then goes unused
   wire [DISP_W-1:0] dm;
-  fps_census7_d128u32_60c9ca_match_lookup #(
+  fps_census7_d128u32_6e208d_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
     .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
     .MIN_DISP(MIN_DISP)
@@ -2274,7 +2277,7 @@ module fps_census7_d128u32_60c9ca_lr_check #(
   generate
     if (RIGHT_VIEW != 0) begin : right_view
       wire [DISP_W-1:0] dm_right;
-      fps_census7_d128u32_60c9ca_match_lookup #(
+      fps_census7_d128u32_6e208d_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
         .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
         .MIN_DISP(MIN_DISP)
@@ -2300,10 +2303,10 @@ endmodule
 `default_nettype none
 // Median filter stage (docs/semantics.md, section 6): the stream's word of each slot (the invalid
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
-// the median of the window's valid words (fps_census7_d128u32_60c9ca_median_select, 3 * WORD_W steps), and leaves with
+// the median of the window's valid words (fps_census7_d128u32_6e208d_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
 // interpolation), with its word.
-module fps_census7_d128u32_60c9ca_median #(
+module fps_census7_d128u32_6e208d_median #(
   parameter M = 5,
   parameter ROW_SLOTS = 64,
   parameter DISP_W = 5,
@@ -2331,10 +2334,10 @@ module fps_census7_d128u32_60c9ca_median #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (M < 3 || M % 2 == 0) begin : invalid_M
-      fps_census7_d128u32_60c9ca_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RM = M / 2;
@@ -2344,7 +2347,7 @@ module fps_census7_d128u32_60c9ca_median #(
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
   wire [M*M*(DISP_W+1)-1:0] window;
-  fps_census7_d128u32_60c9ca_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+  fps_census7_d128u32_6e208d_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
   wire signed [SIGNED_Y_W-1:0] centre_y;
@@ -2352,7 +2355,7 @@ module fps_census7_d128u32_60c9ca_median #(
   wire centre_slot;
   wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_60c9ca_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
+  fps_census7_d128u32_6e208d_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
@@ -2367,10 +2370,10 @@ module fps_census7_d128u32_60c9ca_median #(
       median_y <= centre_y;
     end
   wire [M-1:0] row_valid, col_valid;
-  fps_census7_d128u32_60c9ca_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
+  fps_census7_d128u32_6e208d_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
     .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   wire [DISP_W:0] selected;
-  fps_census7_d128u32_60c9ca_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
+  fps_census7_d128u32_6e208d_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
     .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
   // The centre's coordinates travel as long as the selection takes.
   wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
@@ -2381,7 +2384,7 @@ module fps_census7_d128u32_60c9ca_median #(
   wire           done_m;
   wire [X_W-1:0] x_m;
   wire [Y_W-1:0] y_m;
-  fps_census7_d128u32_60c9ca_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1)), .RESET(1)) median_delay (
+  fps_census7_d128u32_6e208d_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1)), .RESET(1)) median_delay (
     .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
     .out({done_m, x_m, y_m}));
   always @(posedge clk)
@@ -2412,7 +2415,7 @@ endmodule
 // Once wrapped (back-to-back frames), the next frame's row 0 brings the result of this frame's
 // last row, in place of the dummy row.
 // Latency: the result for (x, y - 1) leaves 3 adv-steps after the event of (x, y).
-module fps_census7_d128u32_60c9ca_gap_fill #(
+module fps_census7_d128u32_6e208d_gap_fill #(
   // the largest image width (the RAMs hold two rows of it)
   parameter W = 64,
   // word: disparity bits with the invalid flag on top
@@ -2439,7 +2442,7 @@ module fps_census7_d128u32_60c9ca_gap_fill #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (W < 1 || W >= (1 << X_W) || WORD_W < 2) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_gap_fill_needs_X_W_holding_W_and_WORD_W_at_least_2 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_gap_fill_needs_X_W_holding_W_and_WORD_W_at_least_2 failed ();
     end
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
@@ -2479,7 +2482,7 @@ module fps_census7_d128u32_60c9ca_gap_fill #(
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
   wire reading = in_event && (in_y != 0 || wrapped);
   wire [WORD_W+X_W-1:0] stored;
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
     .clk(clk), .we(adv && writing), .waddr(address(parity, in_x)), .wdata({in_word, start}),
     .re(adv), .raddr(address(!parity, in_x)), .rdata(stored));
   reg           event1;
@@ -2497,7 +2500,7 @@ module fps_census7_d128u32_60c9ca_gap_fill #(
   wire [WORD_W-1:0] word1 = stored[WORD_W+X_W-1 -: WORD_W];
   wire [X_W-1:0]    start1 = stored[X_W-1:0];
   wire [WORD_W-1:0] right2;
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
     .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
     .re(adv), .raddr(address(parity1, start1)), .rdata(right2));
 
@@ -2537,9 +2540,9 @@ endmodule
 `default_nettype none
 // Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
 // row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
-// row-time returns to 0 after the frame's last (fps_census7_d128u32_60c9ca_frame_row); the RAM row counts on modulo
+// row-time returns to 0 after the frame's last (fps_census7_d128u32_6e208d_frame_row); the RAM row counts on modulo
 // K regardless, so that the next frame's rows take the RAM rows that follow.
-module fps_census7_d128u32_60c9ca_raster_counter #(
+module fps_census7_d128u32_6e208d_raster_counter #(
   parameter G = 4,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
@@ -2562,10 +2565,10 @@ module fps_census7_d128u32_60c9ca_raster_counter #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
-      fps_census7_d128u32_60c9ca_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
     end
     if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
-      fps_census7_d128u32_60c9ca_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
     end
   endgenerate
   localparam integer LAST_GROUP_I = G - 1;
@@ -2589,7 +2592,7 @@ module fps_census7_d128u32_60c9ca_raster_counter #(
       end
     end
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_60c9ca_frame_row #(.Y_W(Y_W)) frame_row (
+  fps_census7_d128u32_6e208d_frame_row #(.Y_W(Y_W)) frame_row (
     .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
     .row(row), .last());
   /* verilator lint_on PINCONNECTEMPTY */
@@ -2602,7 +2605,7 @@ endmodule
 // codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
 // one slot ahead); the window is a register array that shifts in one column per slot.
 // window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
-module fps_census7_d128u32_60c9ca_window #(
+module fps_census7_d128u32_6e208d_window #(
   // window side
   parameter N = 7,
   // bits per word
@@ -2626,10 +2629,10 @@ module fps_census7_d128u32_60c9ca_window #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3) begin : invalid_N
-      fps_census7_d128u32_60c9ca_invalid_parameters_window_N_below_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_window_N_below_3 failed ();
     end
     if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
     end
   endgenerate
   localparam STORED_W = (N - 1) * WORD_W;
@@ -2640,7 +2643,7 @@ module fps_census7_d128u32_60c9ca_window #(
   // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
   wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
 
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
     .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
     .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
 
@@ -2665,7 +2668,7 @@ endmodule
 // past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
 // as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
 // starts at START < 0 (two's complement: rows above the first frame).
-module fps_census7_d128u32_60c9ca_frame_row #(
+module fps_census7_d128u32_6e208d_frame_row #(
   parameter Y_W = 6,
   parameter START = 0
 ) (
@@ -2698,7 +2701,7 @@ endmodule
 `default_nettype none
 // Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
 // image (docs/semantics.md, section 1: outside, a window reads zeros).
-module fps_census7_d128u32_60c9ca_window_bounds #(
+module fps_census7_d128u32_6e208d_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
@@ -2714,7 +2717,7 @@ module fps_census7_d128u32_60c9ca_window_bounds #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
     end
   endgenerate
   localparam LAG = SIDE / 2;
@@ -2740,7 +2743,7 @@ endmodule
 `default_nettype none
 // Rank of an N x N window's centre: the number of neighbours darker than it. Pixels outside
 // the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
-module fps_census7_d128u32_60c9ca_rank #(
+module fps_census7_d128u32_6e208d_rank #(
   // window side
   parameter N = 7,
   // result width: clog2(N*N)
@@ -2754,10 +2757,10 @@ module fps_census7_d128u32_60c9ca_rank #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_60c9ca_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
     end
     if (N * N - 1 >= (1 << RANK_W)) begin : invalid_RANK_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
     end
   endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
@@ -2780,7 +2783,7 @@ endmodule
 // Census code of an N x N window: one bit per neighbour in raster order (the centre skipped,
 // the first position in the most significant bit), 1 where the centre is brighter. Pixels
 // outside the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
-module fps_census7_d128u32_60c9ca_census #(
+module fps_census7_d128u32_6e208d_census #(
   // window side
   parameter N = 7
 ) (
@@ -2792,7 +2795,7 @@ module fps_census7_d128u32_60c9ca_census #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
     end
   endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
@@ -2818,7 +2821,7 @@ endmodule
 // delays one side first: the ring serves d = 0 .. DMAX - 1 from its newest column back, so with
 // MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with MIN_DISP < 0 the base waits
 // -MIN_DISP slots instead, so that the ring already holds the match columns right of it.
-module fps_census7_d128u32_60c9ca_cost_history #(
+module fps_census7_d128u32_6e208d_cost_history #(
   // bits of the base's data (a code or a window) and of its centre's position
   parameter BASE_W = 8,
   parameter POSITION_W = 8,
@@ -2845,7 +2848,7 @@ module fps_census7_d128u32_60c9ca_cost_history #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
   // The offset's delays: shift registers advanced once per slot, none at MIN_DISP = 0.
@@ -2853,13 +2856,13 @@ module fps_census7_d128u32_60c9ca_cost_history #(
   wire [COLUMN_W-1:0]          column_now;
   generate
     if (MIN_DISP > 0) begin : match_late
-      fps_census7_d128u32_60c9ca_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in(column), .out(column_now));
     end else begin : match_in_time
       assign column_now = column;
     end
     if (MIN_DISP < 0) begin : base_late
-      fps_census7_d128u32_60c9ca_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base, position}), .out(base_now));
     end else begin : base_in_time
       assign base_now = {base, position};
@@ -2867,7 +2870,7 @@ module fps_census7_d128u32_60c9ca_cost_history #(
   endgenerate
   always @(posedge clk)
     if (shift) {base_held, position_held} <= base_now;
-  fps_census7_d128u32_60c9ca_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
+  fps_census7_d128u32_6e208d_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_now), .view(view));
 endmodule
 `resetall
@@ -2880,7 +2883,7 @@ endmodule
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
 // then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
 // 7x7) take a step more: sums of up to 8 counts, then their total.
-module fps_census7_d128u32_60c9ca_cost_lanes #(
+module fps_census7_d128u32_6e208d_cost_lanes #(
   // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
   parameter HAMMING = 1,
   parameter CODE_W = 48,
@@ -2910,13 +2913,13 @@ module fps_census7_d128u32_60c9ca_cost_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
     end
     if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
     end
     if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
-      fps_census7_d128u32_60c9ca_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
@@ -3008,7 +3011,7 @@ endmodule
 // so that a valid flag travelling in it never starts out set; without, rst is unused: data that a
 // valid flag qualifies needs no reset, and registers without one need no reset routing and can
 // become shift-register LUTs.
-module fps_census7_d128u32_60c9ca_delay #(
+module fps_census7_d128u32_6e208d_delay #(
   parameter WIDTH = 8,
   parameter DEPTH = 1,
   // 1: rst clears every register (flags, tags); 0: no reset (data)
@@ -3025,7 +3028,7 @@ module fps_census7_d128u32_60c9ca_delay #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
     end
   endgenerate
   reg [WIDTH*DEPTH-1:0] line;
@@ -3053,7 +3056,7 @@ endmodule
 `default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_census7_d128u32_60c9ca_ram_sdp #(
+module fps_census7_d128u32_6e208d_ram_sdp #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -3072,7 +3075,7 @@ module fps_census7_d128u32_60c9ca_ram_sdp #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -3089,7 +3092,7 @@ endmodule
 // Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
 // read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
 // cycle see the old word.
-module fps_census7_d128u32_60c9ca_ram_async #(
+module fps_census7_d128u32_6e208d_ram_async #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -3109,7 +3112,7 @@ module fps_census7_d128u32_60c9ca_ram_async #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -3130,7 +3133,7 @@ endmodule
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
 // the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
 // (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
-module fps_census7_d128u32_60c9ca_path_lanes #(
+module fps_census7_d128u32_6e208d_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
   parameter PATH_W = 8
@@ -3151,7 +3154,7 @@ module fps_census7_d128u32_60c9ca_path_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
     end
   endgenerate
   // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
@@ -3202,12 +3205,12 @@ endmodule
 // Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
 // the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
 // result in the step where the tree delivers its last group (group == G - 1).
-module fps_census7_d128u32_60c9ca_path_minimum #(
+module fps_census7_d128u32_6e208d_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
   parameter LEVELS_PER_STAGE = 3,
-  // the tree's latency the caller plans with (fps_census7_d128u32_60c9ca_reduction_tree checks it)
+  // the tree's latency the caller plans with (fps_census7_d128u32_6e208d_reduction_tree checks it)
   parameter TREE_LAT = 2
 ) (
   input  wire               clk,
@@ -3217,11 +3220,11 @@ module fps_census7_d128u32_60c9ca_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // fps_census7_d128u32_60c9ca_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
+  // fps_census7_d128u32_6e208d_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_census7_d128u32_60c9ca_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_census7_d128u32_6e208d_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                      .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
@@ -3242,20 +3245,20 @@ endmodule
 //   first / last       whether that index is the range's first / last
 //   all, but_first, but_last   minimum of the range, without its first, without its last element
 //   second             minimum over the range's elements two or more away from the winner
-// Joining a lower range A with a higher range B (fps_census7_d128u32_60c9ca_unique_join): the winner is B's if
+// Joining a lower range A with a higher range B (fps_census7_d128u32_6e208d_unique_join): the winner is B's if
 // B.best < A.best, else A's; of the other range, only its element next to the border can be near
 // the winner, so
 //   second = min(A.second, A.last ? B.but_first : B.all)   (A wins)
 //          = min(B.second, B.first ? A.but_last : A.all)   (B wins).
-// The same join continues across the groups of a pixel (fps_census7_d128u32_60c9ca_sgm_core). A missing value is
-// all ones (no sum reaches it). The tree is fps_census7_d128u32_60c9ca_reduction_tree over these summaries.
+// The same join continues across the groups of a pixel (fps_census7_d128u32_6e208d_sgm_core). A missing value is
+// all ones (no sum reaches it). The tree is fps_census7_d128u32_6e208d_reduction_tree over these summaries.
 // Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_census7_d128u32_60c9ca_unique_tree #(
+module fps_census7_d128u32_6e208d_unique_tree #(
   parameter N = 8,
   parameter W = 10,
   parameter IDX_W = 3,
   parameter LEVELS_PER_STAGE = 3,
-  // the latency the caller plans with (fps_census7_d128u32_60c9ca_reduction_tree checks it)
+  // the latency the caller plans with (fps_census7_d128u32_6e208d_reduction_tree checks it)
   parameter LAT = 1
 ) (
   input  wire             clk,
@@ -3283,7 +3286,7 @@ module fps_census7_d128u32_60c9ca_unique_tree #(
     end
   endgenerate
   wire [S_W-1:0] root;
-  fps_census7_d128u32_60c9ca_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(1), .S_W(S_W),
+  fps_census7_d128u32_6e208d_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(1), .S_W(S_W),
                             .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
     .clk(clk), .en(en), .leaves(leaves), .root(root));
   assign best      = root[S_W-1 -: W];
@@ -3300,9 +3303,9 @@ endmodule
 `resetall
 `default_nettype none
 // Joins the winner-take-all summaries of two adjacent index ranges, A (lower) and B (higher), as
-// fps_census7_d128u32_60c9ca_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
+// fps_census7_d128u32_6e208d_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
 // first, last} with W-bit values and an IDX_W-bit index.
-module fps_census7_d128u32_60c9ca_unique_join #(
+module fps_census7_d128u32_6e208d_unique_join #(
   parameter W = 10,
   parameter IDX_W = 3
 ) (
@@ -3313,7 +3316,7 @@ module fps_census7_d128u32_60c9ca_unique_join #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (W < 1 || IDX_W < 1) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
     end
   endgenerate
   localparam S_W = 5 * W + IDX_W + 2;
@@ -3342,13 +3345,13 @@ endmodule
 
 `resetall
 `default_nettype none
-// The match side's disparity Dm(x') for the left-right check (fps_census7_d128u32_60c9ca_lr_check), two steps: the
+// The match side's disparity Dm(x') for the left-right check (fps_census7_d128u32_6e208d_lr_check), two steps: the
 // RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
 // outputs) in the second. The match side writes Dm of its completed pixels into the completed
 // RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
 // UF per group: x' reads the row end where e = frame_width - 1 - MIN_DISP - x' < DMAX - 1, and
 // is 0 where no base pixel of the row meets it (e < 0 or e > frame_width - 1 + DMAX - 1).
-module fps_census7_d128u32_60c9ca_match_lookup #(
+module fps_census7_d128u32_6e208d_match_lookup #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -3384,14 +3387,14 @@ module fps_census7_d128u32_60c9ca_match_lookup #(
 );
   generate
     if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END != 0 && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_match_lookup_addresses_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_match_lookup_addresses_too_narrow failed ();
     end
   endgenerate
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] completed_q;
   wire [DISP_AW-1:0] completed_raddr = slot_row * ROW_SLOTS + xm;
-  fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
+  fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(completed_raddr), .rdata(completed_q));
   generate
@@ -3410,7 +3413,7 @@ module fps_census7_d128u32_60c9ca_match_lookup #(
       reg none_q;
       wire [UF*DISP_W-1:0] end_q;
       wire [END_AW-1:0] end_raddr = slot_row * G + from_end / UF;
-      fps_census7_d128u32_60c9ca_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
+      fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
         .re(adv), .raddr(end_raddr), .rdata(end_q));
       reg              from_row_end_q;
@@ -3439,7 +3442,7 @@ endmodule
 // above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
 // in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
 // would be slow logic). row_y is the centre row of the entering column (no borrow).
-module fps_census7_d128u32_60c9ca_window_centre #(
+module fps_census7_d128u32_6e208d_window_centre #(
   parameter LAG = 2,
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
@@ -3462,10 +3465,10 @@ module fps_census7_d128u32_60c9ca_window_centre #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
-      fps_census7_d128u32_60c9ca_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
     end
     if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
-      fps_census7_d128u32_60c9ca_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
     end
   endgenerate
   localparam integer LAG_I = LAG;
@@ -3518,7 +3521,7 @@ endmodule
 //
 // Latency (en-high steps from window to median): LATENCY = 3 * WORD_W (three steps for the count
 // stage and for each disparity bit, the last one holding the output), whatever M.
-module fps_census7_d128u32_60c9ca_median_select #(
+module fps_census7_d128u32_6e208d_median_select #(
   // window side (3, 5 or 7)
   parameter M = 5,
   // word width: disparity bits plus the invalid flag on top (at least 2)
@@ -3536,10 +3539,10 @@ module fps_census7_d128u32_60c9ca_median_select #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (M != 3 && M != 5 && M != 7) begin : invalid_M
-      fps_census7_d128u32_60c9ca_invalid_parameters_median_select_M_is_not_3_5_or_7 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_median_select_M_is_not_3_5_or_7 failed ();
     end
     if (WORD_W < 2) begin : invalid_WORD_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_median_select_WORD_W_below_2 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_median_select_WORD_W_below_2 failed ();
     end
   endgenerate
   localparam N = M * M;
@@ -3710,7 +3713,7 @@ endmodule
 // a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
 // group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
 // slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_census7_d128u32_60c9ca_match_ring #(
+module fps_census7_d128u32_6e208d_match_ring #(
   // bits of one column
   parameter COLUMN_W = 48,
   // window side the lanes need (1: one code per disparity)
@@ -3729,7 +3732,7 @@ module fps_census7_d128u32_60c9ca_match_ring #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_census7_d128u32_60c9ca_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
     end
   endgenerate
   localparam LENGTH = DMAX + SPAN - 1;
@@ -3753,9 +3756,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values: fps_census7_d128u32_60c9ca_reduction_tree over {value, index}
+// Pipelined minimum (and its index) over N values: fps_census7_d128u32_6e208d_reduction_tree over {value, index}
 // summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_census7_d128u32_60c9ca_min_tree #(
+module fps_census7_d128u32_6e208d_min_tree #(
   // number of values
   parameter N = 8,
   // value width
@@ -3764,7 +3767,7 @@ module fps_census7_d128u32_60c9ca_min_tree #(
   parameter IDX_W = 3,
   // compare-select levels between registers
   parameter LEVELS_PER_STAGE = 3,
-  // the latency the caller plans with (fps_census7_d128u32_60c9ca_reduction_tree checks it)
+  // the latency the caller plans with (fps_census7_d128u32_6e208d_reduction_tree checks it)
   parameter LAT = 1
 ) (
   input  wire             clk,
@@ -3782,7 +3785,7 @@ module fps_census7_d128u32_60c9ca_min_tree #(
       assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
     end
   endgenerate
-  fps_census7_d128u32_60c9ca_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+  fps_census7_d128u32_6e208d_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
                             .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
     .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
 endmodule
@@ -3790,15 +3793,15 @@ endmodule
 
 `resetall
 `default_nettype none
-// The skeleton of the pipelined selection trees (fps_census7_d128u32_60c9ca_min_tree, fps_census7_d128u32_60c9ca_unique_tree): N
+// The skeleton of the pipelined selection trees (fps_census7_d128u32_6e208d_min_tree, fps_census7_d128u32_6e208d_unique_tree): N
 // summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
 // LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
 // last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
 // the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
-// summary that fps_census7_d128u32_60c9ca_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// summary that fps_census7_d128u32_6e208d_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
 // LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
 // formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
-module fps_census7_d128u32_60c9ca_reduction_tree #(
+module fps_census7_d128u32_6e208d_reduction_tree #(
   parameter N = 8,
   parameter W = 8,
   parameter IDX_W = 3,
@@ -3817,16 +3820,16 @@ module fps_census7_d128u32_60c9ca_reduction_tree #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_60c9ca_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
     end
     if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_60c9ca_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
     end
     if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_60c9ca_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
     end
     if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
-      fps_census7_d128u32_60c9ca_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
+      fps_census7_d128u32_6e208d_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
     end
   endgenerate
 
@@ -3846,7 +3849,7 @@ module fps_census7_d128u32_60c9ca_reduction_tree #(
           wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
           wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
           if (UNIQUE != 0) begin : unique_join
-            fps_census7_d128u32_60c9ca_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+            fps_census7_d128u32_6e208d_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
           end else begin : min_join
             wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
             assign s_d[i*S_W +: S_W] = take_b ? b : a;
