@@ -248,6 +248,22 @@ TEST_CASE("cache_key changes with everything that decides the result", "[synth]"
   CHECK(cache_key(cfg, "", "../x/y", verilog, script).find('/') == std::string::npos);
 }
 
+TEST_CASE("verilog_hash follows the gates, not the module names or the comments", "[synth]") {
+  const StereoConfig cfg = tiny_config();
+  // Off, the fused cost's truncation changes no gate, but renames every module (the prefix hashes
+  // every parameter) and the banner line that lists it.
+  StereoConfig renamed = cfg;
+  renamed.fused_trunc = cfg.fused_trunc + 1;
+  REQUIRE(config_tag(renamed) != config_tag(cfg));
+  CHECK(verilog_hash(renamed) == verilog_hash(cfg));
+  StereoConfig other = cfg;
+  other.p1 = cfg.p1 + 1;  // the reset value of a register
+  CHECK(verilog_hash(other) != verilog_hash(cfg));
+  other = cfg;
+  other.median = cfg.median == 0 ? 3 : 0;
+  CHECK(verilog_hash(other) != verilog_hash(cfg));
+}
+
 }  // namespace
 TEST_CASE("the parts, their defaults and the --part help come from the embedded part table", "[synth]") {
   const std::vector<Part>& table = parts();

@@ -485,7 +485,31 @@ void run(const SynthOptions& o) {
 }  // namespace
 
 std::string verilog_hash(const StereoConfig& cfg) {
-  return fmt::format("{:016x}", fnv1a64(verilog_text(rtl::emit(rtl::plan(cfg)))));
+  // What Yosys builds from: the Verilog files' code. Comments, the configuration's module prefix
+  // and its hash (of every parameter; also the CONFIG_ID register's value) are left out, so that a
+  // new parameter, which renames the modules, changes that constant and adds a banner line, leaves
+  // recorded results current.
+  const rtl::RtlDesign plan = rtl::plan(cfg);
+  const std::string id = plan.prefix.substr(plan.prefix.rfind('_') + 1);
+  auto replace_all = [](std::string& text, const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  };
+  auto normalised = [&](std::string text) {
+    replace_all(text, plan.prefix, "PREFIX");
+    replace_all(text, id, "ID");
+    return text;
+  };
+  std::string code;
+  for (const auto& file : rtl::emit(plan)) {
+    if (!ends_with(file.name, ".v")) continue;
+    code += normalised(file.name) + '\0';
+    for (const std::string& line : lines_of(file.text)) {
+      const std::string kept = normalised(line.substr(0, line.find("//")));
+      if (kept.find_first_not_of(" \t") != std::string::npos) code += kept + '\n';
+    }
+  }
+  return fmt::format("{:016x}", fnv1a64(code));
 }
 
 std::string run_child_command(const std::vector<std::string>& args) {

@@ -60,7 +60,8 @@ struct SynthReport {
 SynthReport parse_kv(const std::string& text);
 
 // The hash (16 hex digits) of the Verilog the generator emits for cfg, the files synth
-// synthesises: a recorded Yosys result is current only while its hash matches.
+// synthesises, without their comments and module prefix: a recorded Yosys result is current only
+// while its hash matches.
 std::string verilog_hash(const StereoConfig& cfg);
 
 // The human-readable table: every resource with its share of the part, the abc9 delay and
