@@ -139,6 +139,15 @@ bool written_in_place(const fs::path& path) {
   return ::stat(path.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
 }
 
+// Whether `place` (absolute, normalised) lies in /dev itself (not /dev/shm, a place for files):
+// there a run writes only into a device or a pipe. Replacing a link such as /dev/stdout (to
+// /proc/self/fd/1) where it leads to a regular file would break it for every program.
+bool in_device_directory(const fs::path& place) {
+  std::error_code ec;
+  const fs::path dir = fs::weakly_canonical(place.parent_path(), ec);
+  return !ec && dir == "/dev";
+}
+
 // A file created exclusively (never through a symlink), filled, flushed to disk; 0 or an errno.
 int fill_new_file(int fd, const char* data, size_t size) {
   int error = ::fchmod(fd, 0644) == 0 ? 0 : errno;
@@ -215,6 +224,9 @@ void OutputSet::add(const fs::path& path, const std::string& what, int kind) {
   }
   const auto name = [](const Entry& x) { return x.what + " " + quoted(x.path.string()); };
   if (kind != kInput && path.empty()) throw FileError(what + ": an empty file name");
+  if (kind != kInput && !written_in_place(path) && in_device_directory(e->place))
+    throw FileError(write_error(path, "in /dev a run writes only into a device or a pipe, and this is neither "
+                                      "(give a file name)"));
   std::vector<const Entry*> others;  // one file read twice is fine: an input against the outputs only
   for (const auto& other : outputs_) others.push_back(other.get());
   if (kind != kInput)
