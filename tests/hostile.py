@@ -443,6 +443,32 @@ def concurrent_directories():
           f"six writers of two designs to one directory: one whole design, nothing staged left ({codes})")
 
 
+def signals_in_commit():
+    """A signal between two renames of a commit waits for the commit's end: every output new, and no
+    swapped-out previous directory left under a temporary's name (once left when its files were
+    not the new run's)."""
+    d = fresh("swap")
+    out = os.path.join(d, "hls")
+    run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C2", "-o", out])
+    reference = os.path.join(WORK, "swap_reference")
+    shutil.rmtree(reference, ignore_errors=True)
+    run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C3", "-o", reference])
+    env = dict(os.environ, FPSTEREO_TEST_SIGNAL_AT_SWAP=str(int(signal.SIGTERM)))
+    r = run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C3", "-o", out], env=env)
+    check(r.returncode == -signal.SIGTERM and os.listdir(d) == ["hls"] and
+          sorted(os.listdir(out)) == sorted(os.listdir(reference)),
+          f"--emit hls: SIGTERM after the swap: the new directory whole, the previous one removed "
+          f"(got {r.returncode}, {sorted(os.listdir(d))})")
+    left, right = inputs(d)
+    for name in ("d.png", "d.pfm"):
+        write(os.path.join(d, name), "previous")
+    r = run([FPSTEREO, "run", left, right, *SMALL, "-o", os.path.join(d, "d.png"), "--pfm",
+             os.path.join(d, "d.pfm")], env=dict(env, FPSTEREO_TEST_SIGNAL_AT_SWAP=str(int(signal.SIGINT))))
+    check(r.returncode == -signal.SIGINT and read(os.path.join(d, "d.png")) != b"previous" and
+          read(os.path.join(d, "d.pfm")) != b"previous" and leftovers(d) == [],
+          f"run: SIGINT after the first rename: both outputs new, no temporary (got {r.returncode})")
+
+
 def signals_hangup():
     """SIGHUP, the third signal of the discipline, at the commit of eval's two outputs."""
     d = fresh("hangup")
@@ -458,7 +484,7 @@ def signals_hangup():
 
 for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, memory_limits, flags,
              odd_names, concurrent_writers, device_directory, links_and_names, concurrent_directories,
-             signals_hangup):
+             signals_in_commit, signals_hangup):
     print(f"-- {case.__name__}")
     try:
         case()

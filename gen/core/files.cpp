@@ -367,6 +367,10 @@ void OutputSet::commit() {
   }
   for (const auto& e : outputs_)
     if (e->in_place) write_in_place(e->path, e->bytes);
+  // A signal waits until every output is in place and every swapped-out directory removed: the
+  // handler, run between two renames, would leave one output new and the next old, or a previous
+  // directory (its files not this run's) under the temporary's name.
+  SignalsBlocked blocked;
   for (const auto& e : outputs_) {
     if (e->temp.empty()) continue;
     struct stat st;
@@ -374,6 +378,9 @@ void OutputSet::commit() {
     const int rc = replace ? ::renameat2(AT_FDCWD, e->temp.c_str(), AT_FDCWD, e->place.c_str(), RENAME_EXCHANGE)
                            : ::rename(e->temp.c_str(), e->place.c_str());
     if (rc != 0) throw FileError(write_error(e->path, std::strerror(errno)));
+    // Test hook (tests/hostile.py): FPSTEREO_TEST_SIGNAL_AT_SWAP=N raises signal N with this output
+    // in place and the rest of the commit to do.
+    if (const char* sig = std::getenv("FPSTEREO_TEST_SIGNAL_AT_SWAP")) ::raise(std::atoi(sig));
     sync_directory(e->place.parent_path());
     if (replace) {
       std::error_code ignored;
