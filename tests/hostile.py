@@ -260,6 +260,10 @@ def header_bomb():
           + png_chunk(b"IEND", b""))
     write(os.path.join(d, "bomb.pgm"), f"P5\n{side} {side}\n255\n".encode() + b"\0" * 1000)
     limit = "ulimit -v 1000000; exec \"$0\" \"$@\""  # 1 GB: a decoded bomb would not fit
+    # a side of 20 digits: the height after it read as the height, not as the width's last digits
+    write(os.path.join(d, "long.pgm"), b"P5\n99999999999999999999 2\n255\n" + b"\0" * 100)
+    expect_refusal([FPSTEREO, "run", os.path.join(d, "long.pgm"), RIGHT], "(13 digits or more)x2 pixels",
+                   "a PGM whose width has 20 digits")
     for bomb in ("bomb.png", "bomb.pgm"):
         start = time.time()
         expect_refusal(["sh", "-c", limit, FPSTEREO, "run", os.path.join(d, bomb), RIGHT], "header states 32000x32000",
@@ -300,6 +304,14 @@ def flags():
     out = ["-o", os.path.join(WORK, "f.csv"), "--html", "", "--cache", os.path.join(WORK, "f_cache")]
     expect_refusal([FPSTEREO, "dse", cones, "--jobs", "100000", *out], "--jobs 100000", "dse --jobs 100000")
     expect_refusal([FPSTEREO, "dse", cones, "-o", ""], "empty file name", "dse -o ''", 10)
+    # An empty output name (an unset shell variable) once meant no output at all, with exit 0.
+    for flag, name in (("-o", "--output"), ("--colour", "--colour"), ("--pfm", "--pfm"),
+                       ("--confidence-output", "--confidence-output")):
+        expect_refusal([FPSTEREO, "run", LEFT, RIGHT, *SMALL, flag, ""], f"{name}: an empty file name",
+                       f"run {flag} ''", 10)
+    expect_refusal([FPSTEREO, "eval", cones, "--csv", ""], "--csv: an empty file name", "eval --csv ''", 10)
+    expect_refusal([FPSTEREO, "synth", "--preset", "C2", "--netlist", ""], "--netlist: an empty file name",
+                   "synth --netlist ''", 10)
     expect_refusal([FPSTEREO, "dse", cones, "--yosys-limit", "-1", *out], "--yosys-limit -1", "dse --yosys-limit -1")
     expect_refusal([FPSTEREO, "dse", cones, "--min-fps", "nan", *out], "--min-fps 'nan'", "dse --min-fps nan")
     for clock in ("1e308", "inf", "nan", "-1"):
@@ -334,8 +346,145 @@ def concurrent_writers():
           "six concurrent writers of one output: one whole file, no temporary")
 
 
+def device_directory():
+    """/dev holds devices and links to open descriptors: a run writes there only into a device or a
+    pipe. `-o /dev/stdout` with standard output redirected to a file once replaced the machine's
+    /dev/stdout link with a PNG file; a new name in /dev was created as a file."""
+    d = fresh("devices")
+    left, right = inputs(d)
+    stray = "/dev/fpstereo-hostile-test.png"
+    expect_refusal([FPSTEREO, "run", left, right, *SMALL, "-o", stray], "in /dev a run writes only into a device",
+                   "run -o a new file in /dev")
+    check(not os.path.lexists(stray), "nothing created in /dev")
+    if os.path.lexists(stray):
+        os.remove(stray)
+    stray_dir = "/dev/fpstereo-hostile-rtl"
+    for name in (stray_dir, stray_dir + "/"):
+        expect_refusal([FPSTEREO_RTL, "--preset", "C2", "-o", name], "in /dev a run writes only into a device",
+                       f"fpstereo-rtl -o {name}")
+    check(not os.path.lexists(stray_dir), "no directory created in /dev")
+    if os.path.lexists(stray_dir):
+        shutil.rmtree(stray_dir)
+    if os.path.islink("/dev/stdout"):
+        with open(os.path.join(d, "stdout.txt"), "w") as redirected:
+            r = subprocess.run([FPSTEREO, "run", left, right, *SMALL, "-o", "/dev/stdout"], stdout=redirected,
+                               stderr=subprocess.PIPE, text=True, timeout=60)
+        intact = os.path.islink("/dev/stdout")
+        if not intact:  # put the machine's link back before failing
+            os.remove("/dev/stdout")
+            os.symlink("/proc/self/fd/1", "/dev/stdout")
+        err = r.stderr.strip()
+        check(r.returncode == 2 and "\n" not in err and "in /dev a run writes only" in err and intact,
+              f"run -o /dev/stdout into a file: refused, /dev/stdout still a link (got {r.returncode}: {err!r})")
+        r = subprocess.run([FPSTEREO, "run", left, right, *SMALL, "-o", "/dev/stdout"], capture_output=True,
+                           timeout=60)
+        check(r.returncode == 0 and r.stdout.startswith(b"\x89PNG") and os.path.islink("/dev/stdout"),
+              "run -o /dev/stdout into a pipe: the PNG written through it")
+    previous = os.path.join(d, "d.pfm")
+    write(previous, "previous")
+    expect_refusal([FPSTEREO, "run", left, right, *SMALL, "-o", "/dev/full", "--pfm", previous],
+                   "No space left on device", "run -o /dev/full --pfm FILE")
+    check(read(previous) == b"previous" and leftovers(d) == [], "/dev/full: the other output kept, no temporary")
+    r = subprocess.run([FPSTEREO, "config"], stdout=open("/dev/full", "w"), stderr=subprocess.PIPE, text=True,
+                       timeout=30)
+    err = r.stderr.strip()
+    check(r.returncode == 2 and "\n" not in err and "No space left on device" in err,
+          f"fpstereo config > /dev/full: one line, exit 2 (got {r.returncode}: {err!r})")
+
+
+def links_and_names():
+    d = fresh("links")
+    left, right = inputs(d)
+    original = read(left)
+    os.link(left, os.path.join(d, "hard.png"))
+    expect_refusal([FPSTEREO, "run", left, right, *SMALL, "-o", os.path.join(d, "hard.png")],
+                   "is the same file as left image", "run -o a hard link to LEFT")
+    check(read(left) == original, "the hard-linked input unchanged")
+    mine = os.path.join(d, "mine")
+    os.makedirs(mine)
+    write(os.path.join(mine, "notes.txt"), "mine")
+    os.symlink(mine, os.path.join(d, "rtl"))
+    r = run([FPSTEREO_RTL, "--preset", "C2", "-o", os.path.join(d, "rtl")])
+    check(r.returncode == 0 and not os.path.islink(os.path.join(d, "rtl")) and os.listdir(mine) == ["notes.txt"]
+          and read(os.path.join(mine, "notes.txt")) == b"mine",
+          "fpstereo-rtl -o a symlink to a user's directory: the link replaced, the directory untouched")
+    fifo = os.path.join(d, "cfg.json")
+    os.mkfifo(fifo)
+    expect_refusal([FPSTEREO, "config", "--config", fifo], "not a regular file", "--config a FIFO", 10)
+    cache_file = os.path.join(d, "cache")
+    write(cache_file, "a file")
+    r = run([FPSTEREO, "synth", "--preset", "C2", "--netlist", os.path.join(d, "n.json")],
+            env=dict(os.environ, XDG_CACHE_HOME=cache_file), timeout=30)
+    err = r.stderr.strip()
+    check(r.returncode == 2 and "\n" not in err and "Not a directory" in err and read(cache_file) == b"a file",
+          f"synth with XDG_CACHE_HOME a file: one line, exit 2 (got {r.returncode}: {err!r})")
+    dataset = os.path.join(d, "set")
+    shutil.copytree(os.path.join(EXAMPLES, "cones"), dataset)
+    with open(os.path.join(dataset, "pairs.csv"), "r+b") as f:
+        f.truncate(100 << 20)  # sparse: 100 MB of NUL bytes after the header
+    expect_refusal([FPSTEREO, "eval", dataset], "larger than 64 MiB", "eval with a 100 MB pairs.csv", 10)
+
+
+def concurrent_directories():
+    """Writers of two different designs to one directory: it ends up whole, one of the two."""
+    d = fresh("concurrent_rtl")
+    refs = {}
+    for preset in ("C2", "C3"):
+        refs[preset] = os.path.join(d, "ref_" + preset)
+        run([FPSTEREO_RTL, "--preset", preset, "-o", refs[preset]])
+    target = os.path.join(d, "out")
+    procs = [subprocess.Popen([FPSTEREO_RTL, "--preset", ("C2", "C3")[i % 2], "-o", target],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE) for i in range(6)]
+    codes = [p.wait(timeout=120) for p in procs]
+    contents = lambda path: {n: read(os.path.join(path, n)) for n in os.listdir(path)}
+    got = contents(target)
+    check(codes == [0] * 6 and got in (contents(refs["C2"]), contents(refs["C3"])) and
+          sorted(os.listdir(d)) == ["out", "ref_C2", "ref_C3"],
+          f"six writers of two designs to one directory: one whole design, nothing staged left ({codes})")
+
+
+def signals_in_commit():
+    """A signal between two renames of a commit waits for the commit's end: every output new, and no
+    swapped-out previous directory left under a temporary's name (once left when its files were
+    not the new run's)."""
+    d = fresh("swap")
+    out = os.path.join(d, "hls")
+    run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C2", "-o", out])
+    reference = os.path.join(WORK, "swap_reference")
+    shutil.rmtree(reference, ignore_errors=True)
+    run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C3", "-o", reference])
+    env = dict(os.environ, FPSTEREO_TEST_SIGNAL_AT_SWAP=str(int(signal.SIGTERM)))
+    r = run([FPSTEREO_RTL, "--emit", "hls", "--preset", "C3", "-o", out], env=env)
+    check(r.returncode == -signal.SIGTERM and os.listdir(d) == ["hls"] and
+          sorted(os.listdir(out)) == sorted(os.listdir(reference)),
+          f"--emit hls: SIGTERM after the swap: the new directory whole, the previous one removed "
+          f"(got {r.returncode}, {sorted(os.listdir(d))})")
+    left, right = inputs(d)
+    for name in ("d.png", "d.pfm"):
+        write(os.path.join(d, name), "previous")
+    r = run([FPSTEREO, "run", left, right, *SMALL, "-o", os.path.join(d, "d.png"), "--pfm",
+             os.path.join(d, "d.pfm")], env=dict(env, FPSTEREO_TEST_SIGNAL_AT_SWAP=str(int(signal.SIGINT))))
+    check(r.returncode == -signal.SIGINT and read(os.path.join(d, "d.png")) != b"previous" and
+          read(os.path.join(d, "d.pfm")) != b"previous" and leftovers(d) == [],
+          f"run: SIGINT after the first rename: both outputs new, no temporary (got {r.returncode})")
+
+
+def signals_hangup():
+    """SIGHUP, the third signal of the discipline, at the commit of eval's two outputs."""
+    d = fresh("hangup")
+    for name in ("r.json", "r.csv"):
+        write(os.path.join(d, name), "previous")
+    env = dict(os.environ, FPSTEREO_TEST_SIGNAL_AT_COMMIT=str(int(signal.SIGHUP)))
+    r = run([FPSTEREO, "eval", os.path.join(EXAMPLES, "cones"), "--dmax", "64", "--uf", "16", "--json",
+             os.path.join(d, "r.json"), "--csv", os.path.join(d, "r.csv")], env=env, timeout=120)
+    check(r.returncode == -signal.SIGHUP and read(os.path.join(d, "r.json")) == b"previous" and
+          read(os.path.join(d, "r.csv")) == b"previous" and leftovers(d) == [],
+          f"eval --json --csv: SIGHUP before commit leaves both outputs and no temporary (got {r.returncode})")
+
+
 for case in (aliasing, symlinks, fifos, full_disk, signals, synth_interrupted, header_bomb, memory_limits, flags,
-             odd_names, concurrent_writers):
+             odd_names, concurrent_writers, device_directory, links_and_names, concurrent_directories,
+             signals_in_commit, signals_hangup):
     print(f"-- {case.__name__}")
     try:
         case()

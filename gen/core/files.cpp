@@ -139,6 +139,15 @@ bool written_in_place(const fs::path& path) {
   return ::stat(path.c_str(), &st) == 0 && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
 }
 
+// Whether `place` (absolute, normalised) lies in /dev itself (not /dev/shm, a place for files):
+// there a run writes only into a device or a pipe. Replacing a link such as /dev/stdout (to
+// /proc/self/fd/1) where it leads to a regular file would break it for every program.
+bool in_device_directory(const fs::path& place) {
+  std::error_code ec;
+  const fs::path dir = fs::weakly_canonical(place.parent_path(), ec);
+  return !ec && dir == "/dev";
+}
+
 // A file created exclusively (never through a symlink), filled, flushed to disk; 0 or an errno.
 int fill_new_file(int fd, const char* data, size_t size) {
   int error = ::fchmod(fd, 0644) == 0 ? 0 : errno;
@@ -215,6 +224,9 @@ void OutputSet::add(const fs::path& path, const std::string& what, int kind) {
   }
   const auto name = [](const Entry& x) { return x.what + " " + quoted(x.path.string()); };
   if (kind != kInput && path.empty()) throw FileError(what + ": an empty file name");
+  if (kind != kInput && !written_in_place(path) && in_device_directory(e->place))
+    throw FileError(write_error(path, "in /dev a run writes only into a device or a pipe, and this is neither "
+                                      "(give a file name)"));
   std::vector<const Entry*> others;  // one file read twice is fine: an input against the outputs only
   for (const auto& other : outputs_) others.push_back(other.get());
   if (kind != kInput)
@@ -355,6 +367,10 @@ void OutputSet::commit() {
   }
   for (const auto& e : outputs_)
     if (e->in_place) write_in_place(e->path, e->bytes);
+  // A signal waits until every output is in place and every swapped-out directory removed: the
+  // handler, run between two renames, would leave one output new and the next old, or a previous
+  // directory (its files not this run's) under the temporary's name.
+  SignalsBlocked blocked;
   for (const auto& e : outputs_) {
     if (e->temp.empty()) continue;
     struct stat st;
@@ -362,6 +378,9 @@ void OutputSet::commit() {
     const int rc = replace ? ::renameat2(AT_FDCWD, e->temp.c_str(), AT_FDCWD, e->place.c_str(), RENAME_EXCHANGE)
                            : ::rename(e->temp.c_str(), e->place.c_str());
     if (rc != 0) throw FileError(write_error(e->path, std::strerror(errno)));
+    // Test hook (tests/hostile.py): FPSTEREO_TEST_SIGNAL_AT_SWAP=N raises signal N with this output
+    // in place and the rest of the commit to do.
+    if (const char* sig = std::getenv("FPSTEREO_TEST_SIGNAL_AT_SWAP")) ::raise(std::atoi(sig));
     sync_directory(e->place.parent_path());
     if (replace) {
       std::error_code ignored;

@@ -89,6 +89,10 @@ void without_stderr(F&& f) {
 
 bool is_space(uchar c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
+// A PNM side of 13 digits or more, as stated_size reports it.
+constexpr uint64_t kHugeSide = 1'000'000'000'000;
+std::string side_text(uint64_t side) { return side >= kHugeSide ? "(13 digits or more)" : std::to_string(side); }
+
 // The size a PNG, PNM (P1 .. P6) or JPEG header states, read before decoding so that a small
 // file claiming a huge image costs nothing; nullopt for other formats or a header cut short.
 std::optional<std::pair<uint64_t, uint64_t>> stated_size(const std::vector<uchar>& b) {
@@ -108,8 +112,10 @@ std::optional<std::pair<uint64_t, uint64_t>> stated_size(const std::vector<uchar
           while (pos < b.size() && b[pos] != '\n') ++pos;
         else
           ++pos;
-      for (int digits = 0; pos < b.size() && std::isdigit(b[pos]) && digits < 12; ++digits)
-        v = v * 10 + uint64_t(b[pos++] - '0');
+      // Every digit is read, so that the height starts after the whole width; a side of more than
+      // 12 digits stays at kHugeSide.
+      for (; pos < b.size() && std::isdigit(b[pos]); ++pos)
+        v = std::min(kHugeSide, v * 10 + uint64_t(b[pos] - '0'));
     }
     return std::pair{side[0], side[1]};
   }
@@ -127,7 +133,7 @@ std::optional<std::pair<uint64_t, uint64_t>> stated_size(const std::vector<uchar
 cv::Mat decode(const std::vector<uchar>& bytes, const std::string& path, const std::string& role) {
   if (const auto size = stated_size(bytes); size && (size->first > kMaxImageSide || size->second > kMaxImageSide))
     throw InputError(fmt::format("{} {}: the header states {}x{} pixels, more than {} on a side", role, quoted(path),
-                                 size->first, size->second, kMaxImageSide));
+                                 side_text(size->first), side_text(size->second), kMaxImageSide));
   cv::Mat image;
   try {
     if (!bytes.empty()) without_stderr([&] { image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED); });

@@ -56,6 +56,11 @@ int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseE
 
 namespace fpstereo {
 
+CLI::Validator output_file_name() {
+  return CLI::Validator([](std::string& name) { return name.empty() ? std::string("an empty file name") : std::string(); },
+                        "");
+}
+
 int finish_stdout(const std::string& tool, int exit_code) {
   errno = 0;
   std::cout.flush();

@@ -28,6 +28,10 @@ class ConfigFlags {
   std::map<std::string, std::string> values_;  // flags given on the command line
 };
 
+// The check of an output file option: an empty name (an unset shell variable, say) is refused
+// ("--pfm: an empty file name"), not taken as no output at all.
+CLI::Validator output_file_name();
+
 // The target clock of --clock-mhz: throws ConfigError unless 1 .. 1000 MHz (NaN and infinity
 // included), so that periods and frame rates stay numbers every reader takes.
 void check_clock_mhz(double clock_mhz);

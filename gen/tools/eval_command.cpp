@@ -344,8 +344,11 @@ void register_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--baseline", o->baseline, "also evaluate a baseline: opencv-sgbm")->type_name("NAME");
   add_sgbm_flags(*sub, *o);
   sub->add_option("--json", o->json_path, "write all results as JSON to FILE ('-': stdout)")
-      ->type_name("FILE");
-  sub->add_option("--csv", o->csv_path, "write all results as CSV to FILE ('-': stdout)")->type_name("FILE");
+      ->type_name("FILE")
+      ->check(output_file_name());
+  sub->add_option("--csv", o->csv_path, "write all results as CSV to FILE ('-': stdout)")
+      ->type_name("FILE")
+      ->check(output_file_name());
   sub->add_option("--pairs", o->pair_names, "evaluate only these pairs (comma-separated names)")
       ->delimiter(',')
       ->type_name("NAME");

@@ -132,10 +132,10 @@ int run_command_line(int argc, char** argv) {
   run_cmd->add_option("right", run.right, "right (match) image")->required();
   for (const PlaneInfo& info : all_planes()) {
     const std::string flag = info.plane == Plane::Disparity ? std::string("-o,") + info.option : info.option;
-    run_cmd->add_option(flag, run.plane_files[info.plane], info.file_help);
+    run_cmd->add_option(flag, run.plane_files[info.plane], info.file_help)->check(output_file_name());
     if (info.plane == Plane::Disparity) {  // the words' other renderings
-      run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar");
-      run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)");
+      run_cmd->add_option("--colour", run.colour, "colourised PNG with a colour bar")->check(output_file_name());
+      run_cmd->add_option("--pfm", run.pfm, "PFM (float disparity, inf = invalid)")->check(output_file_name());
     }
   }
   run_cmd
@@ -143,7 +143,8 @@ int run_command_line(int argc, char** argv) {
                    "also write the 8-bit gray inputs the pipeline reads, as binary PGM (the input format of "
                    "the generated HLS test bench and host program)")
       ->expected(2)
-      ->type_name("LEFT RIGHT");
+      ->type_name("LEFT RIGHT")
+      ->check(output_file_name());
   run.config.add_to(*run_cmd);
   run_cmd->callback([&] { exit_code = run_pair(run); });
 

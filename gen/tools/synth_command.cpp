@@ -608,10 +608,12 @@ void register_synth_command(CLI::App& app, int& exit_code) {
                 "print key=value lines (synth-yosys.sh --kv, plus config, synth_seconds, the logic depth and its "
                 "paths, cached)");
   sub->add_option("--log", o->log, "keep Yosys' log in FILE (runs Yosys even if a result is cached)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(output_file_name());
   sub->add_option("--netlist", o->netlist,
                   "keep the mapped netlist (Yosys JSON) in FILE (runs Yosys even if a result is cached)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(output_file_name());
   sub->footer(
       "A result is cached under the configuration, family, part and a hash of the emitted Verilog and of the "
       "script, so a changed generator never serves a stale report. Progress goes to stderr when it is "

@@ -69,7 +69,7 @@ fi
 
 probes=""
 while read -r wire signal; do
-  probes+="connect -set $wire $signal; "
+  probes+="connect -nounset -set $wire $signal; "
 done < <(sed -n 's|^[[:space:]]*// formal-probe:[[:space:]]*\([^[:space:]]*\)[[:space:]]*\([^[:space:]]*\).*|\1 \2|p' "${files[@]}")
 
 smt="$work/$top.smt2"
