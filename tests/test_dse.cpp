@@ -396,6 +396,8 @@ TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, 
     CHECK(html.find("<svg") != std::string::npos);
     CHECK(html.find("Pareto front") != std::string::npos);
     CHECK(html.find("<script") == std::string::npos);
+    // Which figures are the fast model's, and how far it was from Yosys.
+    CHECK(html.find(dse::model_note()) != std::string::npos);
     const std::vector<dse::Row> best = dse::recommend(first.rows, info.constraints);
     REQUIRE(best.size() == 3);
     for (const auto& r : best) CHECK(r.fps >= 1000);

@@ -192,11 +192,11 @@ std::vector<double> features(const rtl::RtlDesign& d) {
                                          : 0.0;
   // The word tag beside the confidence's division (fpstereo_confidence's data).
   const double tag = 1 + d.x_bits + d.out_row_bits + d.group_bits + w.output_word + (d.carries_whole ? w.disparity : 0);
-  // fpstereo_subpixel: the sums' history of wta_word_lag + G steps, the selection of three sums
-  // from dmax, and the fit's K + 3 division steps over sums widened by K bits.
+  // fpstereo_subpixel: the sums' history of wta_word_lag + G steps (uf sums each; the selection
+  // of three from dmax scales alike), and the fit's K + 3 division steps over sums widened by K.
   const double kbits = c.subpixel_bits;
   const double subpixel =
-      c.subpixel_bits > 0 ? (d.wta_word_lag * uf + 2 * dmax) * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits)
+      c.subpixel_bits > 0 ? (d.wta_word_lag * uf + dmax) * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits)
                           : 0.0;
   return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
@@ -223,12 +223,13 @@ const std::vector<std::string>& group_names() {
   return names;
 }
 
-// The weights of "cost and filters" are the previous fit's coefficients (13 designs of the Verilog
-// before the 300 MHz registers, 2026-11-25): their ratios stand, their scale is refitted. Those
-// registers went into the aggregation and the cost lanes' trees, so for FF the aggregation and
-// the cost lanes have coefficients of their own. The new stages' terms count their datapath bits
-// and share one coefficient. Four or five coefficients per resource can be fitted from the few
-// Yosys runs a refit affords (each takes minutes to an hour); seventeen free ones could not.
+// Within "cost lanes" and "cost and filters" the terms keep the previous fit's coefficients as
+// weights (13 designs of the Verilog before the 300 MHz registers, 2026-11-25); only each group's
+// scale is refitted. Those registers went into the aggregation and the lanes' trees: the
+// aggregation has its own coefficients, the lanes their own FF coefficient (for LUT they stay in
+// "cost and filters", which leave-one-out preferred). The new stages' terms count their datapath
+// bits and share one coefficient. Five coefficients per resource can be fitted from the few Yosys runs a refit
+// affords (each takes minutes to an hour); seventeen free ones could not.
 const std::vector<TermTie>& term_ties() {
   static const std::vector<TermTie> ties = {
       {0, 0, 1, 1},                 // top/control
