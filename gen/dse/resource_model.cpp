@@ -302,8 +302,14 @@ StereoConfig config_from_flags(const std::string& flags) {
 
 std::vector<std::string> stale_records(const FitProvenance& p) {
   std::vector<std::string> stale;
-  for (const FitRecord& r : p.records)
-    if (verilog_hash(config_from_flags(r.flags)) != r.verilog_hash) stale.push_back(r.name);
+  for (const FitRecord& r : p.records) {
+    bool current = false;
+    try {
+      current = verilog_hash(config_from_flags(r.flags)) == r.verilog_hash;
+    } catch (const ConfigError&) {  // flags the generator no longer takes: their Verilog is gone too
+    }
+    if (!current) stale.push_back(r.name);
+  }
   return stale;
 }
 
