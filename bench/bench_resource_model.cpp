@@ -23,6 +23,7 @@
 #include <map>
 #include <sstream>
 
+#include "files.hpp"
 #include "resource_fit.hpp"
 #include "rtl_emitter.hpp"
 #include "synth_command.hpp"
@@ -126,9 +127,7 @@ int main(int argc, char** argv) {
       coef = dse::refit(rows);
       const std::string text = dse::coefficients_source(rows, coef);
       if (!write.empty()) {
-        std::ofstream out(write);
-        out << text;
-        if (!out) throw std::runtime_error("cannot write " + write);
+        write_file_atomically(write, text);
         std::cerr << "wrote " << write << " (rebuild to use it)\n";
       }
       std::cout << text << "\n";

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "files.hpp"
 #include "rtl_emitter.hpp"
 #include "synth_command.hpp"
 
@@ -65,13 +66,12 @@ void read_fit_data(const std::string& path, std::vector<YosysRow>& rows) {
 }
 
 void write_fit_data(const std::string& path, const std::vector<YosysRow>& rows) {
-  std::ofstream out(path);
-  out << kHeader << "\n";
+  std::string text = std::string(kHeader) + "\n";
   for (const auto& r : rows)
     if (r.have_yosys)
-      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.name, r.role, r.lut, r.ff, r.bram18, r.bram36,
-                         r.bram36_equiv, r.dsp, r.seconds, r.memories, r.verilog_hash);
-  if (!out) throw std::runtime_error("cannot write " + path);
+      text += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.name, r.role, r.lut, r.ff, r.bram18, r.bram36,
+                          r.bram36_equiv, r.dsp, r.seconds, r.memories, r.verilog_hash);
+  write_file_atomically(path, text);
 }
 
 bool is_stale(const YosysRow& r) { return r.have_yosys && r.verilog_hash != verilog_hash(r.cfg); }
