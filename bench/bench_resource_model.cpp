@@ -9,7 +9,10 @@
 //                                              without a current result (cached; serial) and
 //                                              rewrite the data file first
 //   bench_resource_model --refit --write FILE  fit LUT/FF/DSP on the "fit" rows, write the
-//                                              coefficients (gen/dse/resource_coefficients.inc)
+//                                              coefficients, the records and the held-out errors
+//                                              (gen/dse/resource_coefficients.inc)
+//   bench_resource_model --fail-on-stale       exit 1 unless every configuration has a current
+//                                              result (ctest -L resource-data)
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
@@ -20,7 +23,8 @@
 #include <map>
 #include <sstream>
 
-#include "resource_model.hpp"
+#include "files.hpp"
+#include "resource_fit.hpp"
 #include "rtl_emitter.hpp"
 #include "synth_command.hpp"
 
@@ -28,86 +32,8 @@ using namespace fpstereo;
 
 namespace {
 
-struct Row {
-  std::string name, role, flags;
-  StereoConfig cfg;
-  // Yosys
-  double lut = 0, ff = 0, dsp = 0, bram36_equiv = 0, seconds = 0;
-  int64_t bram18 = 0, bram36 = 0;
-  std::string memories;  // name=words x bits:target;...
-  std::string verilog_hash;  // of the Verilog Yosys ran on (empty: not recorded)
-  bool have_yosys = false;
-  // A result is stale once the generator emits other Verilog for the configuration.
-  bool stale() const { return have_yosys && verilog_hash != fpstereo::verilog_hash(cfg); }
-};
-
-StereoConfig parse_flags(const std::string& flags) {
-  std::istringstream in(flags);
-  std::string key, value;
-  StereoConfig cfg;
-  while (in >> key >> value) set_param(cfg, key.substr(2), value);
-  validate(cfg);
-  return cfg;
-}
-
-std::vector<Row> read_configs(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::vector<Row> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream s(line);
-    Row r;
-    s >> r.name >> r.role;
-    std::getline(s, r.flags);
-    r.flags = r.flags.substr(r.flags.find_first_not_of(' '));
-    r.cfg = parse_flags(r.flags);
-    rows.push_back(r);
-  }
-  return rows;
-}
-
-const char* kHeader = "name,role,lut,ff,bram18,bram36,bram36_equiv,dsp,synth_seconds,memories,verilog_hash";
-
-void read_data(const std::string& path, std::vector<Row>& rows) {
-  std::ifstream in(path);
-  if (!in) return;
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::stringstream s(line);
-    std::string cell;
-    while (std::getline(s, cell, ',')) f.push_back(cell);
-    if (f.size() < 10) continue;
-    for (auto& r : rows)
-      if (r.name == f[0]) {
-        r.lut = std::stod(f[2]);
-        r.ff = std::stod(f[3]);
-        r.bram18 = std::stoll(f[4]);
-        r.bram36 = std::stoll(f[5]);
-        r.bram36_equiv = std::stod(f[6]);
-        r.dsp = std::stod(f[7]);
-        r.seconds = std::stod(f[8]);
-        r.memories = f[9];
-        r.verilog_hash = f.size() > 10 ? f[10] : "";
-        r.have_yosys = true;
-      }
-  }
-}
-
-void write_data(const std::string& path, const std::vector<Row>& rows) {
-  std::ofstream out(path);
-  out << kHeader << "\n";
-  for (const auto& r : rows)
-    if (r.have_yosys)
-      out << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", r.name, r.role, r.lut, r.ff, r.bram18, r.bram36,
-                         r.bram36_equiv, r.dsp, r.seconds, r.memories, r.verilog_hash);
-}
-
 // One `fpstereo synth --kv` run (served from synth's cache when it has the design).
-void collect(Row& r, const std::string& fpstereo) {
+void collect(dse::YosysRow& r, const std::string& fpstereo) {
   const std::string cmd = fmt::format("nice -n 10 {} synth {} --kv", fpstereo, r.flags);
   std::cerr << r.name << ": " << cmd << "\n";
   FILE* p = popen(cmd.c_str(), "r");
@@ -133,37 +59,10 @@ void collect(Row& r, const std::string& fpstereo) {
   r.have_yosys = true;
 }
 
-std::string coefficient_list(const std::vector<double>& c) {
-  std::string s;
-  for (double v : c) s += fmt::format("{}{:.6g}", s.empty() ? "" : ", ", v);
-  return s;
-}
-
-dse::Coefficients refit(const std::vector<Row>& rows) {
-  std::vector<std::vector<double>> a, ad;
-  std::vector<double> lut, ff, dsp, wl, wf, wd;
-  for (const auto& r : rows) {
-    if (r.role != "fit" || !r.have_yosys) continue;
-    const rtl::RtlDesign d = rtl::plan(r.cfg);
-    a.push_back(dse::features(d));
-    ad.push_back(dse::dsp_features(d));
-    lut.push_back(r.lut);
-    ff.push_back(r.ff);
-    dsp.push_back(r.dsp);
-    // Relative errors are what the model is judged by: weight each row by 1 / value^2.
-    wl.push_back(1.0 / (r.lut * r.lut));
-    wf.push_back(1.0 / (r.ff * r.ff));
-    wd.push_back(1.0);
-  }
-  if (a.empty()) throw std::runtime_error("no fit rows with Yosys results");
-  return {dse::fit_nonnegative(a, lut, wl), dse::fit_nonnegative(a, ff, wf),
-          dse::fit_nonnegative(ad, dsp, wd)};
-}
-
 double pct(double model, double ref) { return ref == 0 ? 0 : 100.0 * (model - ref) / ref; }
 
 // The memories whose mapping the model gets wrong (name, Yosys target, model target).
-std::string memory_mismatches(const Row& r, const dse::ResourceEstimate& e) {
+std::string memory_mismatches(const dse::YosysRow& r, const dse::ResourceEstimate& e) {
   std::string out;
   std::stringstream s(r.memories);
   std::string item;
@@ -197,7 +96,7 @@ int main(int argc, char** argv) {
   std::string configs = std::string(FPSTEREO_SOURCE_DIR) + "/bench/resource_fit_configs.txt";
   std::string data = std::string(FPSTEREO_SOURCE_DIR) + "/bench/resource_fit_data.csv";
   std::string fpstereo = FPSTEREO_BINARY, write;
-  bool do_collect = false, do_refit = false, memories = false;
+  bool do_collect = false, do_refit = false, memories = false, leave_one_out = false, fail_on_stale = false;
   app.add_option("--configs", configs, "configuration list (name role flags)");
   app.add_option("--data", data, "Yosys results (CSV)");
   app.add_flag("--collect", do_collect,
@@ -206,35 +105,29 @@ int main(int argc, char** argv) {
   app.add_flag("--refit", do_refit, "fit LUT/FF/DSP coefficients on the fit rows");
   app.add_option("--write", write, "with --refit: write the coefficients to FILE (.inc)");
   app.add_flag("--memories", memories, "list every memory whose mapping the model gets wrong");
+  app.add_flag("--leave-one-out", leave_one_out,
+               "also each fit row's error when the fit leaves it out (cross-validation within the fit rows)");
+  bool show_terms = false;
+  app.add_flag("--terms", show_terms, "also print each design's terms (the features LUT and FF are linear in)");
+  app.add_flag("--fail-on-stale", fail_on_stale,
+               "exit 1 when a configuration has no result or a stale one (the data need --collect)");
   CLI11_PARSE(app, argc, argv);
   try {
-    std::vector<Row> rows = read_configs(configs);
-    read_data(data, rows);
+    std::vector<dse::YosysRow> rows = dse::read_fit_configs(configs);
+    dse::read_fit_data(data, rows);
     if (do_collect) {
       for (auto& r : rows)
-        if (!r.have_yosys || r.stale()) {
+        if (!r.have_yosys || dse::is_stale(r)) {
           collect(r, fpstereo);
-          write_data(data, rows);  // after each run: an interrupted collection keeps what it has
+          dse::write_fit_data(data, rows);  // after each run: an interrupted collection keeps what it has
         }
     }
     dse::Coefficients coef = dse::fitted_coefficients();
     if (do_refit) {
-      coef = refit(rows);
-      const std::string text = fmt::format(
-          "// Generated by `build/bench/bench_resource_model --refit --write "
-          "gen/dse/resource_coefficients.inc`\n"
-          "// from bench/resource_fit_data.csv (the configurations marked \"fit\"). Do not edit by hand.\n"
-          "// Terms: {}.\n"
-          "constexpr double kLut[] = {{{}}};\nconstexpr double kFf[] = {{{}}};\nconstexpr double kDsp[] = "
-          "{{{}}};\n",
-          [] {
-            std::string s;
-            for (const auto& n : dse::feature_names()) s += (s.empty() ? "" : ", ") + n;
-            return s;
-          }(),
-          coefficient_list(coef.lut), coefficient_list(coef.ff), coefficient_list(coef.dsp));
+      coef = dse::refit(rows);
+      const std::string text = dse::coefficients_source(rows, coef);
       if (!write.empty()) {
-        std::ofstream(write) << text;
+        write_file_atomically(write, text);
         std::cerr << "wrote " << write << " (rebuild to use it)\n";
       }
       std::cout << text << "\n";
@@ -243,47 +136,76 @@ int main(int argc, char** argv) {
     fmt::print("{:<5} {:<8} {:>7} {:>7} {:>7} | {:>7} {:>7} {:>7} | {:>7} {:>7} | {:>4} {:>4} | config\n",
                "name", "role", "LUT", "model", "err%", "FF", "model", "err%", "BRAM36", "model", "DSP",
                "mdl");
-    struct Summary {
-      double lut_max = 0, ff_max = 0, lut_sum = 0, ff_sum = 0;
-      int n = 0, bram_exact = 0;
-    } fit, held;
-    std::string mismatches, stale;
+    std::string mismatches, stale, missing;
     int stale_count = 0, recorded = 0;
     for (const auto& r : rows) {
-      if (!r.have_yosys) continue;
+      if (!r.have_yosys) {
+        missing += (missing.empty() ? "" : " ") + r.name;
+        continue;
+      }
       recorded++;
-      if (r.stale()) {
+      if (dse::is_stale(r)) {
         stale += (stale.empty() ? "" : " ") + r.name;
         stale_count++;
       }
       const rtl::RtlDesign d = rtl::plan(r.cfg);
       const dse::ResourceEstimate e = dse::estimate(d, coef);
-      const double el = pct(e.lut, r.lut), ef = pct(e.ff, r.ff);
       fmt::print(
           "{:<5} {:<8} {:>7.0f} {:>7.0f} {:>+7.1f} | {:>7.0f} {:>7.0f} {:>+7.1f} | {:>7} {:>7} | {:>4} "
           "{:>4.0f} | {}\n",
-          r.name, r.role, r.lut, e.lut, el, r.ff, e.ff, ef, r.bram36_equiv, e.bram36_equiv(), r.dsp, e.dsp,
-          r.flags);
-      Summary& s = r.role == "fit" ? fit : held;
-      s.n++;
-      s.lut_max = std::max(s.lut_max, std::abs(el));
-      s.ff_max = std::max(s.ff_max, std::abs(ef));
-      s.lut_sum += std::abs(el);
-      s.ff_sum += std::abs(ef);
-      s.bram_exact += e.bram18 == r.bram18 && e.bram36 == r.bram36;
+          r.name, r.role, r.lut, e.lut, pct(e.lut, r.lut), r.ff, e.ff, pct(e.ff, r.ff), r.bram36_equiv,
+          e.bram36_equiv(), r.dsp, e.dsp, r.flags);
       if (memories) mismatches += memory_mismatches(r, e);
+      if (show_terms) {
+        const std::vector<double> f = dse::features(d);
+        std::string terms;
+        for (size_t j = 0; j < f.size(); ++j)
+          if (f[j] != 0) terms += fmt::format("{}{} {:g}", terms.empty() ? "" : ", ", dse::feature_names()[j], f[j]);
+        fmt::print("      terms: {}\n", terms);
+      }
     }
-    for (const auto& [label, s] : {std::pair<const char*, Summary>{"fit", fit}, {"held-out", held}})
-      if (s.n)
+    for (const auto& [label, role] : {std::pair<const char*, const char*>{"fit", "fit"}, {"held-out", "heldout"}}) {
+      const dse::ErrorSummary s = dse::summarise(rows, role, coef);
+      if (s.designs)
         fmt::print(
             "{:<8} ({:>2} configs): BRAM exact (RAMB18 and RAMB36 counts) {}/{}; |LUT err| mean {:.1f} % max "
             "{:.1f} %; |FF err| mean {:.1f} % max {:.1f} %\n",
-            label, s.n, s.bram_exact, s.n, s.lut_sum / s.n, s.lut_max, s.ff_sum / s.n, s.ff_max);
+            label, s.designs, s.bram_exact, s.designs, s.lut_mean, s.lut_max, s.ff_mean, s.ff_max);
+    }
+    if (leave_one_out) {
+      // Each fit row against a fit of the others: how the model does on designs it has not seen,
+      // without looking at the held-out rows.
+      dse::ErrorSummary s;
+      for (size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].role != "fit" || !rows[i].have_yosys) continue;
+        std::vector<dse::YosysRow> others = rows;
+        others[i].role = "left-out";
+        const dse::ErrorSummary one = dse::summarise(others, "left-out", dse::refit(others));
+        fmt::print("left out {:<5}: LUT {:.1f} %, FF {:.1f} %\n", rows[i].name, one.lut_max, one.ff_max);
+        s.designs++;
+        s.lut_mean += one.lut_max;
+        s.ff_mean += one.ff_max;
+        s.lut_max = std::max(s.lut_max, one.lut_max);
+        s.ff_max = std::max(s.ff_max, one.ff_max);
+      }
+      if (s.designs)
+        fmt::print("leave-one-out ({} fit rows): |LUT err| mean {:.1f} % max {:.1f} %; |FF err| mean {:.1f} % max "
+                   "{:.1f} %\n",
+                   s.designs, s.lut_mean / s.designs, s.lut_max, s.ff_mean / s.designs, s.ff_max);
+    }
     if (memories) std::cout << (mismatches.empty() ? "every memory mapped as Yosys maps it\n" : mismatches);
     fmt::print(
         "stale: {} of {} recorded rows came from other Verilog than the generator emits today (or record no "
         "hash){}{}\n",
         stale_count, recorded, stale.empty() ? "" : ": ", stale);
+    if (!missing.empty()) fmt::print("without a Yosys result: {}\n", missing);
+    if (fail_on_stale && (stale_count > 0 || !missing.empty())) {
+      std::cerr << "bench_resource_model: the resource data are not current (stale:" << (stale.empty() ? " none" : " " + stale)
+                << "; missing:" << (missing.empty() ? " none" : " " + missing)
+                << "); run build/bench/bench_resource_model --collect, then --refit --write "
+                   "gen/dse/resource_coefficients.inc\n";
+      return 1;
+    }
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "bench_resource_model: " << e.what() << "\n";

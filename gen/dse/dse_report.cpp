@@ -425,13 +425,12 @@ std::string to_html(const std::vector<Row>& rows, const ReportInfo& info) {
       "pixels, "
       "pixel counts pooled over the pairs. uf and resolution do not change the output (each "
       "accuracy-distinct "
-      "configuration is evaluated once): they drive resources and frame rate only. Resources: the fast model "
-      "(block RAM exactly as Yosys maps it, LUT/FF/DSP fitted against Yosys); fps = clock / cycles per frame "
-      "of "
-      "the generated design.</p>\n<p>Command: <code>{}</code></p>\n<div class=\"plots\">\n{}{}</div>\n",
+      "configuration is evaluated once): they drive resources and frame rate only. fps = clock / cycles per "
+      "frame of the generated design.</p>\n<p>Resources: {} The column Yosys LUT / BRAM36 is Yosys' "
+      "(with --yosys-front).</p>\n<p>Command: <code>{}</code></p>\n<div class=\"plots\">\n{}{}</div>\n",
       rows.size(), escape(info.part), info.clock_mhz, escape(info.dataset),
       info.skipped ? fmt::format(" {} invalid combinations skipped.", info.skipped) : std::string(),
-      escape(info.command),
+      escape(model_note()), escape(info.command),
       scatter(rows, "D1 against resource use (colour: cost function)", "D1 all, % (filled)", d1_of, false,
               true),
       scatter(rows, "Frame rate against resource use", "frames per second (log)", fps_of, true, false));

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
 
+#include "synth_command.hpp"
 #include "widths.hpp"
 
 namespace fpstereo::dse {
@@ -123,7 +126,6 @@ void map_memory(MemoryEstimate& m) {
 const std::vector<std::string>& feature_names() {
   static const std::vector<std::string> names = {"top/control",
                                                  "path lanes",
-                                                 "path sum+WTA",
                                                  "code cost lanes",
                                                  "pixel cost lanes",
                                                  "match ring",
@@ -131,7 +133,14 @@ const std::vector<std::string>& feature_names() {
                                                  "median",
                                                  "LR1",
                                                  "LR2",
-                                                 "ZSAD lanes"};
+                                                 "ZSAD lanes",
+                                                 "second best",
+                                                 "confidence",
+                                                 "sub-pixel",
+                                                 "adaptive P2",
+                                                 "offset delays",
+                                                 "right view",
+                                                 "gap interpolation"};
   return names;
 }
 
@@ -144,53 +153,184 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double n = c.window, k = c.shd_window;
   // The match ring (fpstereo_match_ring.v) keeps dmax + span - 1 match columns in registers.
   double code_lanes = 0, pixel_lanes = 0, ring = 0, zero_mean = 0;
+  // fpstereo_cost_history: one match column and the base (data and its centre's position).
+  double column = 0, base = 0;
   switch (c.cost) {
     case CostFunction::Census:
     case CostFunction::Rank:
       code_lanes = uf * w.code;
       ring = dmax * w.code;
+      column = base = w.code;
       break;
     // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window.
     case CostFunction::Shd:
       code_lanes = uf * k * k * w.code;
       ring = (dmax + k - 1) * k * w.code;
+      column = k * w.code;
+      base = k * k * w.code;
       break;
     case CostFunction::Sad:
       pixel_lanes = uf * n * n * w.pixel;
       ring = (dmax + n - 1) * n * w.pixel;
+      column = n * w.pixel + d.column_sum_bits;
+      base = n * n * w.pixel;
       break;
     case CostFunction::Zsad:  // plus the ring of column sums, the means and their subtraction
       pixel_lanes = uf * n * n * w.pixel;
       zero_mean = pixel_lanes;
       ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
+      column = n * w.pixel + d.column_sum_bits;
+      base = n * n * w.pixel;
       break;
   }
-  return {1.0, uf * c.path_count() * w.path_cost * sides, uf * w.aggregated * sides, code_lanes, pixel_lanes,
-          ring, c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
+  // The disparity offset delays one side by |min-disp| slots (fpstereo_cost_history): the match
+  // columns when it is positive, the base and its position when negative; shift-register LUTs of
+  // up to 32 steps each.
+  const double offset_steps = std::ceil(std::abs(c.min_disp) / 32.0);
+  const double offset = c.min_disp > 0   ? column * offset_steps
+                        : c.min_disp < 0 ? (base + d.x_bits + d.signed_y_bits + d.cost_row_bits) * offset_steps
+                                         : 0.0;
+  // The word tag beside the confidence's division (fpstereo_confidence's data).
+  const double tag = 1 + d.x_bits + d.out_row_bits + d.group_bits + w.output_word + (d.carries_whole ? w.disparity : 0);
+  // fpstereo_subpixel: the sums' history of wta_word_lag + G steps (uf sums each; the selection
+  // of three from dmax scales alike), and the fit's K + 3 division steps over sums widened by K.
+  const double kbits = c.subpixel_bits;
+  const double subpixel =
+      c.subpixel_bits > 0 ? (d.wta_word_lag * uf + dmax) * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits)
+                          : 0.0;
+  return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring,
+          c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
           // LR2's uf-wide part is the second aggregation (sides); the rest is per design.
-          c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean};
+          c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean,
+          // fpstereo_wta_unique's tree carries the second-best sum beside the best.
+          d.finds_second_best ? uf * w.aggregated : 0.0,
+          // 8 restoring steps over the sums, the word waiting 10 steps beside them.
+          c.confidence ? 16.0 * w.aggregated + 10 * tag : 0.0, subpixel,
+          // fpstereo_adaptive_p2: per path the pixel step, its product and P2; the penalties
+          // then ride above the cost words.
+          c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0, offset,
+          // The right view's output register and its stream's handshake (Dm exists for the check).
+          c.right_view ? 3.0 * (w.disparity + 1) : 0.0,
+          // fpstereo_gap_fill: the row's words and their positions (its RAMs are block RAM).
+          c.gap_interpolation ? double(w.output_word + d.x_bits) : 0.0};
 }
 
-const std::vector<std::string>& dsp_feature_names() {
-  static const std::vector<std::string> names = {"base", "LR1", "LR2", "ZSAD means"};
+const std::vector<std::string>& group_names() {
+  static const std::vector<std::string> names = {"constant", "aggregation", "cost and filters", "new stages",
+                                                 "cost lanes"};
   return names;
 }
 
-// DSPs are the few multiplies of RAM address arithmetic and ZSAD's means (the base window's and
-// one per lane).
-std::vector<double> dsp_features(const rtl::RtlDesign& d) {
-  return {1.0, d.cfg.lr == LrCheck::Lr1 ? 1.0 : 0.0, d.cfg.lr == LrCheck::Lr2 ? 1.0 : 0.0,
-          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0};
+// Within "cost lanes" and "cost and filters" the terms keep the previous fit's coefficients as
+// weights (13 designs of the Verilog before the 300 MHz registers, 2026-11-25); only each group's
+// scale is refitted. Those registers went into the aggregation and the lanes' trees: the
+// aggregation has its own coefficients, the lanes their own FF coefficient (for LUT they stay in
+// "cost and filters", which leave-one-out preferred). The new stages' terms count their datapath
+// bits and share one coefficient. Five coefficients per resource can be fitted from the few Yosys runs a refit
+// affords (each takes minutes to an hour); seventeen free ones could not.
+const std::vector<TermTie>& term_ties() {
+  static const std::vector<TermTie> ties = {
+      {0, 0, 1, 1},                 // top/control
+      {1, 1, 1, 1},                 // path lanes
+      {2, 4, 2.84331, 0.457788},    // code cost lanes
+      {2, 4, 5.53235, 0.749707},    // pixel cost lanes
+      {2, 2, 1.03102, 1.00672},     // match ring
+      {2, 2, 3.31595, 0.886662},    // transform
+      {2, 2, 4.77856, 4.13908},     // median
+      {2, 2, 4.58489, 0.545498},    // LR1
+      {2, 2, 1417.79, 403.825},     // LR2
+      {2, 4, 3.50621, 0.130742},    // ZSAD lanes
+      {3, 3, 1, 1},                 // second best
+      {3, 3, 1, 1},                 // confidence
+      {3, 3, 1, 1},                 // sub-pixel
+      {3, 3, 1, 1},                 // adaptive P2
+      {3, 3, 1, 0},                 // offset delays: shift-register LUTs
+      {3, 3, 1, 1},                 // right view
+      {3, 3, 1, 1},                 // gap interpolation
+  };
+  return ties;
 }
 
-const Coefficients& fitted_coefficients() {
+const std::vector<std::string>& dsp_feature_names() {
+  static const std::vector<std::string> names = {"base", "LR1", "LR2", "ZSAD means", "uniqueness"};
+  return names;
+}
+
+// DSPs are the few multiplies of RAM address arithmetic, ZSAD's means (the base window's and
+// one per lane) and the uniqueness test's products (fpstereo_wta_unique).
+std::vector<double> dsp_features(const rtl::RtlDesign& d) {
+  return {1.0, d.cfg.lr == LrCheck::Lr1 ? 1.0 : 0.0, d.cfg.lr == LrCheck::Lr2 ? 1.0 : 0.0,
+          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0, d.cfg.uniqueness != 0 ? 1.0 : 0.0};
+}
+
+namespace {
 #include "resource_coefficients.inc"
-  static const Coefficients c = {std::vector<double>(std::begin(kLut), std::end(kLut)),
-                                 std::vector<double>(std::begin(kFf), std::end(kFf)),
-                                 std::vector<double>(std::begin(kDsp), std::end(kDsp))};
+}  // namespace
+
+const Coefficients& fitted_coefficients() {
+  static const Coefficients c = [] {
+    Coefficients k = {std::vector<double>(std::begin(kLut), std::end(kLut)),
+                      std::vector<double>(std::begin(kFf), std::end(kFf)),
+                      std::vector<double>(std::begin(kDsp), std::end(kDsp))};
+    if (k.lut.size() != feature_names().size() || k.ff.size() != feature_names().size() ||
+        k.dsp.size() != dsp_feature_names().size())
+      throw std::logic_error("gen/dse/resource_coefficients.inc does not have the model's terms: refit it "
+                             "(bench_resource_model --refit --write)");
+    return k;
+  }();
   return c;
+}
+
+const FitProvenance& fit_provenance() {
+  static const FitProvenance p = {std::vector<FitRecord>(std::begin(kRecords), std::end(kRecords)), kHeldOut};
+  return p;
+}
+
+StereoConfig config_from_flags(const std::string& flags) {
+  std::istringstream in(flags);
+  std::string key, value;
+  StereoConfig cfg;
+  while (in >> key >> value) {
+    if (key.size() < 3 || key.compare(0, 2, "--") != 0) throw ConfigError("expected --name value, got " + key);
+    set_param(cfg, key.substr(2), value);
+  }
+  validate(cfg);
+  return cfg;
+}
+
+std::vector<std::string> stale_records(const FitProvenance& p) {
+  std::vector<std::string> stale;
+  for (const FitRecord& r : p.records) {
+    bool current = false;
+    try {
+      current = verilog_hash(config_from_flags(r.flags)) == r.verilog_hash;
+    } catch (const ConfigError&) {  // flags the generator no longer takes: their Verilog is gone too
+    }
+    if (!current) stale.push_back(r.name);
+  }
+  return stale;
+}
+
+std::string model_note(const FitProvenance& p) {
+  int fit = 0;
+  for (const FitRecord& r : p.records) fit += std::string(r.role) == "fit";
+  const ErrorSummary& h = p.heldout;
+  std::string note = fmt::format(
+      "LUT, FF and DSP are the fast resource model's estimates (no Yosys run), fitted to {} Yosys results; "
+      "BRAM is the model's mapping of each memory as Yosys maps it. On {} held-out designs the model was off "
+      "Yosys by a mean |error| of {:.1f} % (max {:.1f} %) in LUT and {:.1f} % (max {:.1f} %) in FF; BRAM exact "
+      "on {} of {}.",
+      fit, h.designs, h.lut_mean, h.lut_max, h.ff_mean, h.ff_max, h.bram_exact, h.designs);
+  const std::vector<std::string> stale = stale_records(p);
+  if (stale.empty()) return note + " Every one of those Yosys results is of the Verilog the generator emits today.";
+  std::string names;
+  for (const auto& n : stale) names += (names.empty() ? "" : " ") + n;
+  return note + fmt::format(
+                    " Stale: {} of the {} Yosys results came from Verilog the generator no longer emits ({}), "
+                    "so these figures may be off; rerun `bench_resource_model --collect`, then `--refit`.",
+                    stale.size(), p.records.size(), names);
 }
 
 namespace {

@@ -33,6 +33,15 @@ void map_memory(MemoryEstimate& memory);
 // The closed-form terms LUT and FF are linear in; names for the fit's report.
 const std::vector<std::string>& feature_names();
 std::vector<double> features(const rtl::RtlDesign& design);
+// How the fit ties the terms together: each term enters one group's feature with a weight (a
+// group and weight for LUT, another for FF), and the fit finds one coefficient per group and
+// resource; a term's coefficient is its group's times its weight.
+struct TermTie {
+  int lut_group, ff_group;
+  double lut_weight, ff_weight;
+};
+const std::vector<TermTie>& term_ties();
+const std::vector<std::string>& group_names();
 const std::vector<std::string>& dsp_feature_names();
 std::vector<double> dsp_features(const rtl::RtlDesign& design);
 
@@ -41,6 +50,34 @@ struct Coefficients {
 };
 // The committed fit (gen/dse/resource_coefficients.inc).
 const Coefficients& fitted_coefficients();
+
+// How far the model is from Yosys over a set of designs: |error| in percent of Yosys' figure.
+struct ErrorSummary {
+  int designs = 0, bram_exact = 0;  // BRAM exact: the RAMB18 and RAMB36 counts both equal
+  double lut_mean = 0, lut_max = 0, ff_mean = 0, ff_max = 0;
+};
+// A Yosys result behind the committed fit: the configuration (fpstereo flags), whether the fit used
+// it ("fit") or only checked it ("heldout"), and the hash of the Verilog Yosys ran on.
+struct FitRecord {
+  const char* name;
+  const char* role;
+  const char* flags;
+  const char* verilog_hash;
+};
+// What the committed coefficients came from, written with them by bench_resource_model --refit:
+// the records and the held-out designs' errors at that time.
+struct FitProvenance {
+  std::vector<FitRecord> records;
+  ErrorSummary heldout;
+};
+const FitProvenance& fit_provenance();
+// A configuration from fpstereo flags ("--cost census --dmax 64 ..."); throws ConfigError.
+StereoConfig config_from_flags(const std::string& flags);
+// The records whose Verilog the generator no longer emits (emits every recorded design once).
+std::vector<std::string> stale_records(const FitProvenance& provenance = fit_provenance());
+// One paragraph for the DSE's reports: which figures are the model's, its held-out errors against
+// Yosys, and the stale records if there are any.
+std::string model_note(const FitProvenance& provenance = fit_provenance());
 
 struct ResourceEstimate {
   double lut = 0, ff = 0, dsp = 0;

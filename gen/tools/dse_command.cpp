@@ -177,6 +177,7 @@ void print_recommendations(const std::vector<dse::Row>& rows, const dse::Constra
                                    : std::string());
     fmt::print("    {}\n", dse::rtl_command(r.cfg));
   }
+  fmt::print("resources: {}\n", dse::model_note());
 }
 
 void write_outputs(std::vector<dse::Row>& rows, const OutputOptions& o, dse::ReportInfo info, OutputSet& outputs) {
