@@ -365,6 +365,20 @@ def device_directory():
     check(not os.path.lexists(stray_dir), "no directory created in /dev")
     if os.path.lexists(stray_dir):
         shutil.rmtree(stray_dir)
+    # Caches are directories a run creates: none in /dev either (dse's once was).
+    stray_cache = "/dev/fpstereo-hostile-cache"
+    out = ["-o", os.path.join(d, "dse.csv"), "--html", os.path.join(d, "dse.html")]
+    expect_refusal([FPSTEREO, "dse", os.path.join(EXAMPLES, "cones"), "--cost", "census", "--window", "5", "--dmax",
+                    "64", "--uf", "16", "--refine", "none", "--median", "off", "--resolution", "450x375",
+                    "--cache", stray_cache + "/sub", *out], "in /dev a run writes only into a device",
+                   "dse --cache in /dev", timeout=120)
+    # A small design, should the refusal ever be lost: Yosys then ends within the timeout.
+    expect_refusal([FPSTEREO, "synth", "--width", "32", "--height", "8", "--dmax", "16", "--uf", "16", "--window", "3",
+                    "--median", "0", "--paths", "0", "--cache", stray_cache], "in /dev a run writes only into a device",
+                   "synth --cache in /dev", timeout=120)
+    check(not os.path.lexists(stray_cache), "no cache directory created in /dev")
+    if os.path.lexists(stray_cache):
+        shutil.rmtree(stray_cache)
     if os.path.islink("/dev/stdout"):
         with open(os.path.join(d, "stdout.txt"), "w") as redirected:
             r = subprocess.run([FPSTEREO, "run", left, right, *SMALL, "-o", "/dev/stdout"], stdout=redirected,

@@ -173,6 +173,19 @@ enum Kind { kInput, kFile, kDirectory };
 
 }  // namespace
 
+void create_cache_directory(const fs::path& dir) {
+  std::error_code ec;
+  // The directories to be made: from the first missing ancestor down.
+  for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !ec && !p.empty() && !fs::exists(p, ec);
+       p = p.parent_path()) {
+    if (in_device_directory(p))
+      throw FileError("cache " + quoted(dir.string()) + ": in /dev a run writes only into a device or a pipe");
+    if (p == p.parent_path()) break;
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw FileError("cache " + quoted(dir.string()) + ": cannot create the directory: " + ec.message());
+}
+
 struct OutputSet::Entry {
   fs::path path;
   std::string what;

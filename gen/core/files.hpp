@@ -22,6 +22,9 @@ class FileError : public std::runtime_error {
 std::filesystem::path cache_dir(const std::string& what);
 // The rule for help texts: "$XDG_CACHE_HOME/fpstereo/<what> or ~/.cache/fpstereo/<what>".
 std::string cache_dir_rule(const std::string& what);
+// Creates a cache directory with its missing parents, never one in /dev itself (where a run
+// writes only into devices and pipes). Throws FileError naming the directory and the reason.
+void create_cache_directory(const std::filesystem::path& dir);
 
 // ---- all-or-nothing outputs ----------------------------------------------------------------
 //

@@ -93,9 +93,8 @@ Accuracy accuracy_from_json(const nlohmann::json& j) {
 class AccuracyCache {
  public:
   explicit AccuracyCache(fs::path dir) : dir_(std::move(dir)) {
-    std::error_code ec;
-    fs::create_directories(dir_, ec);
-    if (ec || ::access(dir_.c_str(), R_OK | W_OK | X_OK) != 0)
+    create_cache_directory(dir_);
+    if (::access(dir_.c_str(), R_OK | W_OK | X_OK) != 0)
       throw InputError(fmt::format("cache {}: not a writable directory", quoted(dir_.string())));
   }
   fs::path path(const std::string& key, const std::string& dataset_id) const {

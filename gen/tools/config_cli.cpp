@@ -61,6 +61,12 @@ CLI::Validator output_file_name() {
                         "");
 }
 
+CLI::Validator decimal_number() {
+  return CLI::Validator(
+      [](std::string& text) { return parse_decimal(text) ? std::string() : quoted(text) + " is not a decimal number"; },
+      "");
+}
+
 int finish_stdout(const std::string& tool, int exit_code) {
   errno = 0;
   std::cout.flush();

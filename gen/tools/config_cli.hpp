@@ -32,6 +32,10 @@ class ConfigFlags {
 // ("--pfm: an empty file name"), not taken as no output at all.
 CLI::Validator output_file_name();
 
+// The check of a number option: a plain decimal ("300", "2.5e2"), as the parameter table and
+// pairs.csv take them; hexadecimal, "inf" and "nan" are refused, not read by strtod's rules.
+CLI::Validator decimal_number();
+
 // The target clock of --clock-mhz: throws ConfigError unless 1 .. 1000 MHz (NaN and infinity
 // included), so that periods and frame rates stay numbers every reader takes.
 void check_clock_mhz(double clock_mhz);

@@ -349,7 +349,7 @@ void register_dse_command(CLI::App& app, int& exit_code) {
            spec.help + " [C2: " + spec.get(StereoConfig{}) + "]")
         ->group(base);
   }
-  sub->add_option("--clock-mhz", o->clock_mhz, "clock for the frame rate")->capture_default_str();
+  sub->add_option("--clock-mhz", o->clock_mhz, "clock for the frame rate")->check(decimal_number())->capture_default_str();
   sub->add_option("--cache", o->cache, "accuracy cache [" + cache_dir_rule("dse") + "]");
   sub->add_option("--jobs", o->jobs, "golden-model threads")->capture_default_str();
   sub->add_option(

@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
   app.add_option(
          "--clock-mhz", clock_mhz,
          "with -o: target clock of the out-of-context XDC (or of run_hls.tcl with --emit hls), in MHz")
+      ->check(decimal_number())
       ->capture_default_str();
   std::string emit = "verilog";
   app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")

@@ -468,6 +468,7 @@ void run(const SynthOptions& o) {
   if (!script_text) throw SynthError(fmt::format("cannot read {}", quoted(script.string())));
   const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
   const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
+  create_cache_directory(cache);
   const fs::path record_path = cache / (key + ".kv");
 
   // A log or netlist exists only if Yosys runs, so asking for one bypasses the cache too.
