@@ -69,8 +69,8 @@ int main(int argc, char** argv) {
   app.add_option("--emit", emit, "verilog, or hls: the Vitis HLS C++ project (needs -o)")
       ->capture_default_str();
   hls::HlsOptions hls_options;
-  app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")
-      ->capture_default_str();
+  CLI::Option* part = app.add_option("--part", hls_options.part, "with --emit hls: the part run_hls.tcl targets")
+                          ->capture_default_str();
   try {
     app.parse(argc, argv);
     check_clock_mhz(clock_mhz);  // a bad clock is an error with or without -o
@@ -78,6 +78,9 @@ int main(int argc, char** argv) {
       return report_error("fpstereo-rtl", "--emit " + quoted(emit) + ": expected verilog or hls");
     if (emit == "hls" && out_dir.empty())
       return report_error("fpstereo-rtl", "--emit hls writes a directory: give -o DIR");
+    // The Verilog names no part (the block design takes the project's): a --part would be lost.
+    if (emit == "verilog" && part->count() > 0)
+      return report_error("fpstereo-rtl", "--part is for --emit hls (run_hls.tcl's part); the Verilog names none");
     OutputSet outputs;
     flags.declare_input(outputs);
     if (!out_dir.empty()) outputs.add_directory(out_dir, "-o directory");
