@@ -184,9 +184,9 @@ expect_error("cannot create directory '${WORK}/corrupt.png/new\\nline'" -o "${WO
 
 # A write error on standard output is an error, not a silent success.
 set(STDOUT_TO /dev/full)
-expect_error("cannot write to standard output" --dmax 16 --uf 4 --width 32 --height 8)
+expect_error("cannot write to standard output: No space left on device" --dmax 16 --uf 4 --width 32 --height 8)
 set(FPSTEREO ${FPSTEREO_MAIN})
-expect_error("cannot write to standard output" config)
+expect_error("cannot write to standard output: No space left on device" config)
 expect_error("cannot write to standard output" run --width 450 --height 375 --dmax 64 --uf 16 ${L} ${R})
 set(PROGRESS_FIRST ON)
 expect_error("cannot write to standard output" eval --dmax 64 --uf 16 ${EXAMPLES}/cones)

@@ -5,6 +5,8 @@
 //                                                  (constraints/README.md)
 //   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, docs/hls.md)
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -90,9 +92,14 @@ int main(int argc, char** argv) {
     } else {
       options.control = !no_axi_lite;
       const rtl::RtlDesign design = rtl::plan(flags.resolve(), options);
-      if (out_dir.empty())
-        std::cout << rtl::emit_single_file(design);
-      else
+      if (out_dir.empty()) {
+        errno = 0;
+        std::cout << rtl::emit_single_file(design) << std::flush;
+        // The reason now, while errno still holds the failed write's (finish_stdout only sees the state).
+        if (!std::cout)
+          return report_error("fpstereo-rtl", std::string("cannot write to standard output") +
+                                                  (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+      } else
         write_directory(design, outputs, out_dir, clock_mhz);
     }
     outputs.commit();
