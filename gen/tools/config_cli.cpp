@@ -67,6 +67,11 @@ CLI::Validator decimal_number() {
       "");
 }
 
+int report_stdout_error(const std::string& tool, int error) {
+  return report_error(tool, std::string("cannot write to standard output") +
+                                (error ? std::string(": ") + std::strerror(error) : std::string()));
+}
+
 int finish_stdout(const std::string& tool, int exit_code) {
   errno = 0;
   std::cout.flush();
@@ -74,8 +79,7 @@ int finish_stdout(const std::string& tool, int exit_code) {
   if (!failed) return exit_code;
   const int error = errno;
   std::clearerr(stdout);
-  return report_error(tool, std::string("cannot write to standard output") +
-                                (error ? std::string(": ") + std::strerror(error) : std::string()));
+  return report_stdout_error(tool, error);
 }
 
 }  // namespace fpstereo

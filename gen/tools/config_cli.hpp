@@ -51,5 +51,7 @@ int report_parse_error(CLI::App& app, const std::string& tool, const CLI::ParseE
 // (a full disk, /dev/full) is never a success. Returns exit_code, or reports the write error as
 // one line and returns kExitBadInput.
 int finish_stdout(const std::string& tool, int exit_code);
+// "<tool>: cannot write to standard output: <strerror(error)>" (no reason when error is 0); returns 2.
+int report_stdout_error(const std::string& tool, int error);
 
 }  // namespace fpstereo

@@ -6,7 +6,6 @@
 //   fpstereo-rtl --emit hls --preset C2 -o DIR     the Vitis HLS C++ project (hls/, docs/hls.md)
 #include <CLI/CLI.hpp>
 #include <cerrno>
-#include <cstring>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -96,9 +95,7 @@ int main(int argc, char** argv) {
         errno = 0;
         std::cout << rtl::emit_single_file(design) << std::flush;
         // The reason now, while errno still holds the failed write's (finish_stdout only sees the state).
-        if (!std::cout)
-          return report_error("fpstereo-rtl", std::string("cannot write to standard output") +
-                                                  (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+        if (!std::cout) return report_stdout_error("fpstereo-rtl", errno);
       } else
         write_directory(design, outputs, out_dir, clock_mhz);
     }
