@@ -34,6 +34,12 @@ void append_escaped(std::string& out, const std::string& text, bool quote_too) {
 
 }  // namespace
 
+std::string trim(const std::string& text) {
+  static const char* const kBlank = " \t\r\n";
+  const size_t first = text.find_first_not_of(kBlank);
+  return first == std::string::npos ? "" : text.substr(first, text.find_last_not_of(kBlank) - first + 1);
+}
+
 std::string one_line(const std::string& text) {
   std::string out;
   append_escaped(out, text, false);

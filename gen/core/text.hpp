@@ -20,6 +20,9 @@ std::string quoted(const std::string& value);
 // better match), which escapes no control characters.
 inline std::string quoted(std::string& value) { return quoted(std::as_const(value)); }
 
+// `text` without the spaces, tabs and line ends around it.
+std::string trim(const std::string& text);
+
 // Whether `text` ends with `suffix` (a file name's extension, say).
 inline bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;

@@ -23,12 +23,6 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kColumns = {"pair",     "left",     "right",      "gt_occ",     "gt_noc",
                                            "noc_mask", "gt_scale", "gt_invalid", "max_disp_px"};
 
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
-}
-
 // Plain comma separation: the format has no quoting (paths and names contain no commas).
 std::vector<std::string> split_fields(const std::string& line) {
   std::vector<std::string> fields;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "module_signature.hpp"
+#include "text.hpp"
 
 namespace fpstereo::rtl {
 namespace {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "rtl_templates.hpp"
+#include "text.hpp"
 
 namespace fpstereo::rtl {
 namespace {
@@ -178,11 +179,6 @@ std::string strip_comments(const std::string& text) {
 }
 
 }  // namespace
-
-std::string trim(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\n");
-  return b == std::string::npos ? "" : s.substr(b, s.find_last_not_of(" \t\n") - b + 1);
-}
 
 std::vector<std::string> verilog_list_items(const std::string& list) {
   std::vector<std::string> out;

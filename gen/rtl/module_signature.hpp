@@ -36,7 +36,6 @@ const ModuleSignature& template_signature(const std::string& module);
 // The top-level items of a comma-separated Verilog list (parameters, ports, a concatenation's
 // parts), trimmed; commas inside parentheses, brackets and braces do not separate.
 std::vector<std::string> verilog_list_items(const std::string& list);
-std::string trim(const std::string& text);
 
 // Integer value of a constant Verilog expression over named values: decimal and sized literals,
 // + - * / % ** << >>, comparisons, && || !, ?: and $clog2. nullopt when it names an unknown value

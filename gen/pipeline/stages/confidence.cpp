@@ -21,8 +21,9 @@ class ConfidenceStage : public Stage {
     const int data_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + d.widths.output_word +
                           (whole ? d.widths.disparity : 0);
     auto data = [&](const std::string& words) {
-      const std::string t = word_tag(words, true);
-      return t.substr(0, t.size() - 1) + ", " + words + "_word" + (whole ? ", " + words + "_whole}" : "}");
+      std::vector<std::string> fields{words + "_word"};
+      if (whole) fields.push_back(words + "_whole");
+      return word_tag(words, true, fields);
     };
     const std::string in = streams.words, out = "rated";
     core.text("\n  // Confidence: the word waits beside the division.\n");

@@ -38,8 +38,11 @@ void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, 
   if (with_whole) core.wire(words + "_whole", g.widths.disparity);
 }
 
-std::string word_tag(const std::string& words, bool with_group) {
-  return fmt::format("{{{0}_active, {0}_x, {0}_slot", words) + (with_group ? fmt::format(", {}_group}}", words) : "}");
+std::string word_tag(const std::string& words, bool with_group, const std::vector<std::string>& extra) {
+  std::string tag = fmt::format("{{{0}_active, {0}_x, {0}_slot", words);
+  if (with_group) tag += ", " + words + "_group";
+  for (const std::string& net : extra) tag += ", " + net;
+  return tag + "}";
 }
 
 std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope) {

@@ -25,8 +25,8 @@ Connections stream_connections(const PixelStream& in, const PixelStream& out);
 // The nets of the words in chain order named `words`: _group, _active, _x, _slot, a _word of
 // word_bits and, with_whole, the whole D (_whole).
 void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, int word_bits, bool with_whole);
-// Their position as one tag: {_active, _x, _slot} and, with_group, _group.
-std::string word_tag(const std::string& words, bool with_group);
+// Their position as one tag: {_active, _x, _slot}, with_group _group, then the extra nets.
+std::string word_tag(const std::string& words, bool with_group, const std::vector<std::string>& extra = {});
 
 // The aggregator's memories below scope (fpstereo_aggregator.v), and its parameters but
 // MATCH_SIDE, which LR2's match side sets itself.

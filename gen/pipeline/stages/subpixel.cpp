@@ -20,8 +20,7 @@ class SubpixelStage : public Stage {
     const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + (whole ? d.widths.disparity : 0);
     const std::string in = streams.words, out = "refined";
     auto tag = [&](const std::string& words, const std::string& whole_d) {
-      const std::string t = word_tag(words, true);
-      return whole ? t.substr(0, t.size() - 1) + ", " + whole_d + "}" : t;
+      return word_tag(words, true, whole ? std::vector<std::string>{whole_d} : std::vector<std::string>{});
     };
     core.text("\n  // Sub-pixel fit: the refined word, subpixel-bits + 6 steps after the whole one.\n");
     word_wires(core, d, out, d.widths.output_word, whole);
