@@ -125,6 +125,15 @@ TEST_CASE("the builder refuses a connection whose width is not the port's", "[bu
   core.stage("select");
   core.instance("fpstereo_delay", "part", {{"WIDTH", "6"}}, {{"in", "{in[3:0], 1'b0}"}});
   CHECK(error_of(core) == "net {in[3:0], 1'b0}: 5 bits, but stage select (instance part, port in) is 6 bits");
+  // A part-select must lie inside its net.
+  CoreBuilder outside = delay_core(8, 8);
+  outside.stage("select");
+  outside.instance("fpstereo_delay", "part", {{"WIDTH", "4"}}, {{"in", "in[8:5]"}});
+  CHECK(error_of(outside) == "net in: stage select (instance part, port in) reads `in[8:5]`, outside its 8 bits");
+  CoreBuilder reversed = delay_core(8, 8);
+  reversed.stage("select");
+  reversed.instance("fpstereo_delay", "part", {{"WIDTH", "4"}}, {{"in", "{in[0:3]}"}});
+  CHECK(error_of(reversed) == "net in: stage select (instance part, port in) reads `in[0:3]`, outside its 8 bits");
 }
 
 TEST_CASE("the builder refuses unknown ports, unconnected ports and undeclared nets", "[builder]") {

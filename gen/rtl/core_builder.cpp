@@ -153,14 +153,14 @@ class NetTable {
   }
   // The parts of a connection's expression; a part that is no net, part-select or sized constant
   // is an expression whose names are read whole and whose width is not known.
-  std::vector<Reference> references(const std::string& expression) const {
+  std::vector<Reference> references(const std::string& expression, const std::string& who) const {
     static const std::regex identifier(R"(^[A-Za-z_]\w*$)"), select(R"(^([A-Za-z_]\w*)\s*\[\s*(\d+)\s*(?::\s*(\d+)\s*)?\]$)"),
         constant(R"(^(\d+)\s*'\s*[dDbBhHoO]\s*[0-9a-fA-F_]+$)");
     const std::string e = trim(expression);
     if (one_concatenation(e)) {
       std::vector<Reference> out;
       for (const auto& part : verilog_list_items(e.substr(1, e.size() - 2)))
-        for (const auto& r : references(part)) out.push_back(r);
+        for (const auto& r : references(part, who)) out.push_back(r);
       return out;
     }
     std::smatch m;
@@ -168,7 +168,11 @@ class NetTable {
     if (std::regex_match(e, m, identifier)) throw std::logic_error(fmt::format("net {}: connected but never declared", e));
     if (std::regex_match(e, m, select)) {
       const int64_t hi = std::stoll(m[2]), lo = m[3].matched ? std::stoll(m[3]) : hi;
-      return {{m[1], true, hi - lo + 1}};
+      const std::string net = m[1];
+      if (has(net) && (hi < lo || hi >= at(net).declaration.bits))
+        throw std::logic_error(fmt::format("net {}: {} reads `{}`, outside its {} bits", net, who, e,
+                                           at(net).declaration.bits));
+      return {{net, true, hi - lo + 1}};
     }
     if (std::regex_match(e, m, constant)) return {{"", false, std::stoll(m[1])}};
     std::vector<Reference> out;
@@ -246,7 +250,7 @@ std::string CoreBuilder::module_text(const std::string& name) const {
         expression = port.name;
       }
       resolved[i].push_back({port.name, expression});
-      const auto refs = nets.references(expression);
+      const auto refs = nets.references(expression, who);
       for (const auto& r : refs) {
         if (r.net.empty()) continue;
         if (!port.input && (r.partial || r.in_expression))
