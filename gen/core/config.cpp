@@ -75,7 +75,7 @@ std::string enum_name(E value, const std::vector<std::pair<std::string, E>>& tab
 
 unsigned parse_paths(const std::string& name, const std::string& text) {
   if (text == "all") return kAllPaths;
-  if (text.empty()) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
+  if (text.empty()) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135,180");
   unsigned mask = 0;
   std::vector<std::string> items(1);
   for (char c : text) {  // keeps empty items, unlike getline
@@ -93,9 +93,9 @@ unsigned parse_paths(const std::string& name, const std::string& text) {
         mask |= p.mask;
         found = true;
       }
-    if (!found) reject(name, quoted(text), "expected a comma-separated subset of 0,45,90,135");
+    if (!found) reject(name, quoted(text), "expected a comma-separated subset of 0,45,90,135,180");
   }
-  if (mask == 0) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
+  if (mask == 0) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135,180");
   return mask;
 }
 
@@ -116,7 +116,7 @@ void check_odd_window(const std::string& name, int v, int lo, int hi) {
 
 const std::vector<PathDirection>& path_directions() {
   static const std::vector<PathDirection> dirs = {
-      {kPath0, 0, -1, 0}, {kPath45, 45, -1, -1}, {kPath90, 90, 0, -1}, {kPath135, 135, 1, -1}};
+      {kPath0, 0, -1, 0}, {kPath45, 45, -1, -1}, {kPath90, 90, 0, -1}, {kPath135, 135, 1, -1}, {kPath180, 180, 1, 0}};
   return dirs;
 }
 
@@ -175,7 +175,7 @@ const std::vector<ParamSpec>& param_specs() {
       {"uf", "unroll factor: disparities per clock, a divisor of dmax",
        [](StereoConfig& c, const std::string& v) { c.uf = parse_int("uf", v); },
        [](const StereoConfig& c) { return std::to_string(c.uf); }},
-      {"paths", "aggregation paths: comma-separated subset of 0,45,90,135, or all",
+      {"paths", "aggregation paths: comma-separated subset of 0,45,90,135,180 (180: right to left, models only), or all (= 0,45,90,135)",
        [](StereoConfig& c, const std::string& v) { c.paths = parse_paths("paths", v); },
        [](const StereoConfig& c) { return paths_to_string(c.paths); }},
       {"p1", "SGM penalty for a disparity change of 1: 0 to 255, at most p2",
@@ -251,8 +251,11 @@ void validate(const StereoConfig& c) {
   if (c.dmax > c.width)
     reject("dmax", std::to_string(c.dmax),
            "must not exceed the image width (" + std::to_string(c.width) + ")");
-  if ((c.paths & ~unsigned(kAllPaths)) != 0 || c.paths == 0)
-    reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135");
+  if ((c.paths & ~unsigned(kEveryPath)) != 0 || c.paths == 0)
+    reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135,180");
+  // MGM's second predecessor is defined for the four raster-order paths only (section 3).
+  if (c.mgm && (c.paths & kPath180))
+    reject("mgm", "on", "not defined for the 180-degree path (paths = " + paths_to_string(c.paths) + ")");
   check_range("p1", c.p1, 0, 255);
   check_range("p2", c.p2, 0, 4095);
   if (c.p1 > c.p2) reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
