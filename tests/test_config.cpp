@@ -210,7 +210,16 @@ TEST_CASE("paths: 180 is a fifth path, 'all' stays the four raster-order ones", 
   set_param(c, "paths", "all");
   CHECK(c.paths == unsigned(kAllPaths));
   CHECK(c.path_count() == 4);
-  for (const auto& name : preset_names()) CHECK((preset(name).paths & kPath180) == 0);
+  for (const auto& name : preset_names()) CHECK(((preset(name).paths & kPath180) == 0 || name == "A5"));
+  StereoConfig a5 = preset("A5");  // A4 and the options A5 adds, nothing else
+  CHECK(a5.paths == unsigned(kEveryPath));
+  CHECK(a5.speckle_size == 100);
+  CHECK(a5.fused_weight == 4);
+  a5.paths = kAllPaths;
+  a5.speckle_size = 0;
+  a5.fused_weight = 0;
+  a5.fused_trunc = preset("A4").fused_trunc;
+  CHECK(a5 == preset("A4"));
   set_param(c, "paths", "0,180");
   c.mgm = true;
   CHECK(rejection(c) == "mgm = on: not defined for the 180-degree path (paths = 0,180)");
