@@ -438,7 +438,6 @@ class PathAggregator {
     Predecessor pred{zeros_.data() + 1, 0, 0};
     for (int x = width_ - 1; x >= 0; --x) {
       step_paths<1>(cost + size_t(x) * dmax, sum + size_t(x) * dmax, {pred}, {row.costs(x)}, minimum);
-      row.minimum[size_t(x)] = minimum[0];
       if (x > 0) pred = {row.costs(x), minimum[0], T(minimum[0] + penalty2(guide.at(x - 1, y), guide.at(x, y)))};
     }
   }
@@ -506,8 +505,8 @@ class PathAggregator {
 
   const StereoConfig& cfg_;
   const int width_, stride_, adapt_;
-  std::vector<PathState> paths_;                 // the raster-order paths
-  std::optional<RowBuffer> right_to_left_;       // the 180-degree path's costs of the row
+  std::vector<PathState> paths_;            // the raster-order paths
+  std::optional<RowBuffer> right_to_left_;  // the 180-degree path's costs of the last row
   std::vector<T> zeros_;  // the predecessor of a path start
 };
 
