@@ -2,12 +2,15 @@
 # Accuracy of the options beyond the paper against OpenCV's StereoSGBM (MODE_SGBM and MODE_HH4),
 # per dataset of a stereo data folder, for the two KITTI sets pooled and for every pair pooled,
 # as the table of docs/accuracy.md, "Accuracy beyond the paper" (markdown on stdout):
-#   bench/accuracy-beyond.sh [--build-dir B] [--speckle | --fused] [DATA]      (DATA: ../shared/data/stereo)
+#   bench/accuracy-beyond.sh [--build-dir B] [--speckle | --fused | --path180] [DATA]   (DATA: ../shared/data/stereo)
 # With --speckle, the table of docs/accuracy.md, "Speckle filter": A4 with speckle sizes 0, 50,
 # 100, 200 and ranges 1, 2, against MODE_HH4 without and with OpenCV's speckle filter (100, 2).
 # With --fused, the table of docs/accuracy.md, "Fused matching cost": A4 and A4 with the fused
 # cost's two chosen settings, without and with the speckle filter (100, 2), against MODE_HH4
 # without and with its own.
+# With --path180, the table of docs/accuracy.md, "Right-to-left path": A4 with the 180-degree path
+# added (and paths 0,90,180 and the 45/135 variants), without and with the speckle filter
+# (100, 2) and the fused cost, against MODE_HH4 without and with its own speckle filter.
 # Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
 # after KITTI background interpolation of invalid pixels.
 set -euo pipefail
@@ -17,17 +20,19 @@ build=$root/build
 data=$root/../shared/data/stereo
 speckle=0
 fused=0
+path180=0
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
                  shift 2 ;;
     --speckle) speckle=1; shift ;;
     --fused) fused=1; shift ;;
+    --path180) path180=1; shift ;;
     -*) fail "unknown option '$1'" ;;
     *) data=$1; shift ;;
   esac
 done
-[ $speckle = 1 ] && [ $fused = 1 ] && fail "--speckle and --fused each make a table of their own: give one"
+[ $((speckle + fused + path180)) -gt 1 ] && fail "--speckle, --fused and --path180 each make a table of their own: give one"
 [ -x "$build/fpstereo" ] || fail "$build/fpstereo not found: build the project first (scripts/build.sh)"
 [ -d "$data" ] || fail "no data folder '$data'"
 data=$(cd "$data" && pwd)
@@ -73,6 +78,18 @@ if [ $fused = 1 ]; then
     methods+=("A4$filter" "A4$filter --fused-term intensity --fused-weight 4 --fused-trunc 32"
               "A4$filter --fused-term gradient --fused-weight 4 --fused-trunc 16")
   done
+  baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")
+fi
+
+if [ $path180 = 1 ]; then
+  # The settings were chosen on KITTI 2012, Middlebury 2001/03 and FlyingThings3D (docs/accuracy.md).
+  speckle_on=" --speckle-size 100 --speckle-range 2"
+  intensity=" --fused-term intensity --fused-weight 4 --fused-trunc 32"
+  gradient=" --fused-term gradient --fused-weight 4 --fused-trunc 16"
+  methods=("A4" "A4 --paths 0,45,90,135,180" "A4 --paths 0,90,180" "A4$speckle_on")
+  for paths in 0,45,90,135,180 0,90,180 0,45,90,180 0,90,135,180; do methods+=("A4$speckle_on --paths $paths"); done
+  methods+=("A4$speckle_on$intensity" "A4$speckle_on$intensity --paths 0,45,90,135,180"
+            "A4$speckle_on$gradient --paths 0,45,90,135,180" "A4$speckle_on$intensity --paths 0,90,180")
   baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")
 fi
 

@@ -1,8 +1,8 @@
 // Times the golden model (C2: census 7x7, dmax 128, 4 paths, median 5) against OpenCV's
 // StereoSGBM (MODE_SGBM, blockSize 5, 128 disparities) on the same 1242x375 pair, both on one
 // thread, and prints the ratio (target: at most 0.5); then the golden model's speed-up on two
-// threads over one, with the outputs compared. The runs alternate, so a change in the machine's
-// load reaches all of them alike.
+// threads over one, with the outputs compared; and C2 with the 180-degree path as a fifth path,
+// against C2. The runs alternate, so a change in the machine's load reaches all of them alike.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
 
   const StereoConfig cfg = preset("C2");
   check_pair(left, right, cfg);
+  StereoConfig with_180 = cfg;
+  with_180.paths = kEveryPath;
   SgbmOptions sgbm;
   sgbm.mode = "sgbm";
   sgbm.block = 5;
@@ -58,18 +60,23 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "bench: the golden model's output on two threads differs from one thread's\n");
     return 1;
   }
-  std::vector<double> golden_ms, golden2_ms, opencv_ms;
+  run_golden(with_180, left, right);
+  std::vector<double> golden_ms, golden2_ms, opencv_ms, golden180_ms;
   for (int i = 0; i < runs; ++i) {
     golden_ms.push_back(time_ms([&] { run_golden(cfg, left, right); }));
     opencv_ms.push_back(time_ms([&] { run_sgbm(left, right, sgbm); }));
     golden2_ms.push_back(time_ms([&] { run_golden(cfg, left, right, 2); }));
+    golden180_ms.push_back(time_ms([&] { run_golden(with_180, left, right); }));
   }
-  const double golden = median(golden_ms), opencv = median(opencv_ms), golden2 = median(golden2_ms);
+  const double golden = median(golden_ms), opencv = median(opencv_ms), golden2 = median(golden2_ms),
+               golden180 = median(golden180_ms);
   fmt::print("pair: {} ({}x{}), median of {} runs\n", left_path, left.width, left.height, runs);
   fmt::print("golden model (C2: census 7x7, dmax 128, 4 paths, median 5), 1 thread: {:8.1f} ms\n", golden);
   fmt::print("OpenCV StereoSGBM (MODE_SGBM, block 5, 128 disparities), 1 thread:   {:8.1f} ms\n", opencv);
   fmt::print("ratio golden / OpenCV: {:.2f} (target <= 0.50)\n", golden / opencv);
   fmt::print("golden model, 2 threads: {:8.1f} ms, speed-up over 1 thread {:.2f} (same output)\n", golden2,
              golden / golden2);
+  fmt::print("golden model, C2 with the 180-degree path (5 paths), 1 thread: {:8.1f} ms, ratio to OpenCV {:.2f}, "
+             "to C2 {:.2f}\n", golden180, golden180 / opencv, golden180 / golden);
   return 0;
 }

@@ -148,8 +148,10 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"uf", "0", "uf = 0: must divide dmax (128)"},
       {"uf", "48", "uf = 48: must divide dmax (128)"},
       {"uf", "256", "uf = 256: must divide dmax (128)"},
-      {"paths", "", "paths = '': expected a non-empty subset of 0,45,90,135"},
-      {"paths", "0,30", "paths = '0,30': expected a comma-separated subset of 0,45,90,135"},
+      {"paths", "", "paths = '': expected a non-empty subset of 0,45,90,135,180"},
+      {"paths", "0,30", "paths = '0,30': expected a comma-separated subset of 0,45,90,135,180"},
+      {"paths", "0,225", "paths = '0,225': expected a comma-separated subset of 0,45,90,135,180"},
+      {"paths", "180,180", "paths = '180,180': each angle at most once"},
       {"paths", "0,0", "paths = '0,0': each angle at most once"},
       {"p1", "-1", "p1 = -1: must be in 0 .. 255"},
       {"p1", "100", "p1 = 100: must not exceed p2 (86)"},
@@ -172,8 +174,8 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"fused-trunc", "0", "fused-trunc = 0: must be in 1 .. 255"},
       {"fused-trunc", "256", "fused-trunc = 256: must be in 1 .. 255"},
       {"fused-term", "census", "fused-term = 'census': expected one of intensity gradient"},
-      {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135"},
-      {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135"},
+      {"paths", "0,", "paths = '0,': expected a comma-separated subset of 0,45,90,135,180"},
+      {"paths", ",90", "paths = ',90': expected a comma-separated subset of 0,45,90,135,180"},
       {"dmax", "+64", "dmax = '+64': expected an integer"},
       {"dmax", " 64", "dmax = ' 64': expected an integer"},
       {"dmax", "64 ", "dmax = '64 ': expected an integer"},
@@ -194,6 +196,33 @@ TEST_CASE("compose_config: a preset given as '' is an error, not the defaults", 
   CHECK(compose_config(std::nullopt, "", {}) == StereoConfig{});
   CHECK(compose_config(std::string("C0"), "", {{"median", "3"}}).median == 3);
   CHECK_THROWS_WITH(compose_config(std::string(""), "", {}), Catch::StartsWith("preset = '': expected one of"));
+}
+
+TEST_CASE("paths: 180 is a fifth path, 'all' stays the four raster-order ones", "[config]") {
+  StereoConfig c;
+  set_param(c, "paths", "0, 90,180");
+  CHECK(c.paths == (kPath0 | kPath90 | kPath180));
+  CHECK(c.path_count() == 3);
+  CHECK(paths_to_string(c.paths) == "0,90,180");
+  set_param(c, "paths", "180,135,90,45,0");
+  CHECK(c.paths == unsigned(kEveryPath));
+  CHECK(c.path_count() == 5);
+  set_param(c, "paths", "all");
+  CHECK(c.paths == unsigned(kAllPaths));
+  CHECK(c.path_count() == 4);
+  for (const auto& name : preset_names()) CHECK(((preset(name).paths & kPath180) == 0 || name == "A5"));
+  StereoConfig a5 = preset("A5");  // A4 and the options A5 adds, nothing else
+  CHECK(a5.paths == unsigned(kEveryPath));
+  CHECK(a5.speckle_size == 100);
+  CHECK(a5.fused_weight == 4);
+  a5.paths = kAllPaths;
+  a5.speckle_size = 0;
+  a5.fused_weight = 0;
+  a5.fused_trunc = preset("A4").fused_trunc;
+  CHECK(a5 == preset("A4"));
+  set_param(c, "paths", "0,180");
+  c.mgm = true;
+  CHECK(rejection(c) == "mgm = on: not defined for the 180-degree path (paths = 0,180)");
 }
 
 TEST_CASE("invalid combinations are rejected", "[config]") {

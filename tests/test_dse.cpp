@@ -308,6 +308,18 @@ TEST_CASE("a value is refused only when no combination could use it", "[dse]") {
   CHECK(dse::parse_axis("p1=").values.empty());
 }
 
+TEST_CASE("a combination the hardware generators refuse is skipped with their reason", "[dse]") {
+  // The models have the 180-degree path, the hardware not yet: no accuracy run is spent on it.
+  dse::SpaceText t = single_design_space();
+  dse::set_axis(t, dse::parse_axis("paths=all/0,90,180"));
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  REQUIRE(configs.size() == 1);
+  CHECK(configs[0].paths == unsigned(kAllPaths));
+  REQUIRE(skipped.size() == 1);
+  CHECK(skipped[0].reason.find("the 180-degree path is not in the hardware generators yet") != std::string::npos);
+}
+
 TEST_CASE("the axes enumerate in the old nested loops' order: cost outermost, uf fastest", "[dse]") {
   const dse::SpaceText t = space_with({{"cost", {"census", "sad"}},
                                        {"window", {"3", "5"}},

@@ -37,11 +37,12 @@ StereoConfig random_config(std::mt19937& rng) {
   c.dmax = pick(rng, {16, 24, 32, 48});
   c.uf = pick(rng, {1, 8, 16});
   if (c.dmax % c.uf != 0) c.uf = c.dmax;
-  c.paths = std::uniform_int_distribution<unsigned>(1, kAllPaths)(rng);
+  c.paths = std::uniform_int_distribution<unsigned>(1, kEveryPath)(rng);
   c.p1 = std::uniform_int_distribution<int>(0, 40)(rng);
   c.p2 = c.p1 + std::uniform_int_distribution<int>(0, 200)(rng);
   c.p2_adapt = pick(rng, {0, 0, 1, 4, 16});
   c.mgm = pick(rng, {false, true});
+  if (c.mgm) c.paths = (c.paths & kAllPaths) != 0 ? c.paths & kAllPaths : unsigned(kPath0);  // MGM refuses 180
   c.min_disp = pick(rng, {0, 0, 3, -5, -20});
   c.lr = pick(rng, {LrCheck::None, LrCheck::Lr1, LrCheck::Lr2});
   c.lr_threshold = pick(rng, {0, 1, 2});
@@ -118,6 +119,8 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"paths", "45"},
                            {"paths", "90"},
                            {"paths", "135"},
+                           {"paths", "180"},
+                           {"paths", "0,45,90,135,180"},
                            {"lr", "lr1"},
                            {"lr", "lr2"},
                            {"uniqueness", "20"},
@@ -142,6 +145,14 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
     c.p2_adapt = 6;
     set_param(c, "paths", paths);
     variants.emplace_back(std::string("mgm=on p2-adapt=6 paths=") + paths, c);
+  }
+  for (const char* lr : {"lr1", "lr2"}) {
+    // The 180-degree path with adaptive P2, on both sides of the left-right check.
+    StereoConfig c = base;
+    set_param(c, "paths", "0,90,180");
+    set_param(c, "lr", lr);
+    c.p2_adapt = 6;
+    variants.emplace_back(std::string("paths=0,90,180 p2-adapt=6 lr=") + lr, c);
   }
   StereoConfig parabola = base;
   parabola.subpixel_bits = 2;
@@ -218,6 +229,43 @@ TEST_CASE("mgm: path costs stay within Cmax + P2, the width of section 'Bit widt
     INFO("P2 " << p2);
     CHECK(max_path == w.path_cost_max);
     CHECK(max_sum == w.aggregated_max);
+  }
+}
+
+TEST_CASE("the 180-degree path is the 0-degree path of the mirrored row", "[models]") {
+  // Section 3: L_180 runs from the row's last pixel leftwards against (x + 1, y), with adaptive P2
+  // on the pair (x, x + 1); mirroring the row's costs and guide turns it into L_0.
+  std::mt19937 rng(180);
+  const int width = 37, height = 5, dmax = 16;
+  StereoConfig cfg;
+  cfg.dmax = dmax;
+  cfg.uf = 16;
+  cfg.p1 = 9;
+  cfg.p2 = 70;
+  StereoConfig mirrored_cfg = cfg;
+  cfg.paths = kPath180;
+  mirrored_cfg.paths = kPath0;
+  const GrayImage guide = test::random_image(width, height, rng);
+  GrayImage mirrored_guide(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) mirrored_guide.at(width - 1 - x, y) = guide.at(x, y);
+  const uint32_t sentinel = std::numeric_limits<uint32_t>::max() / 2;
+  golden::PathAggregator<uint32_t> path180(cfg, width, sentinel, 8), path0(mirrored_cfg, width, sentinel, 8);
+  std::vector<uint32_t> cost(size_t(width) * dmax), mirrored_cost(cost.size()), sum(cost.size()), mirrored_sum(cost.size());
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x)
+      for (int d = 0; d < dmax; ++d) {
+        const uint32_t c = uint32_t(rng() % 49);
+        cost[size_t(x * dmax + d)] = c;
+        mirrored_cost[size_t((width - 1 - x) * dmax + d)] = c;
+      }
+    path180.push_row(y, cost.data(), sum.data(), guide);
+    path0.push_row(y, mirrored_cost.data(), mirrored_sum.data(), mirrored_guide);
+    for (int x = 0; x < width; ++x)
+      for (int d = 0; d < dmax; ++d) {
+        INFO("row " << y << " pixel " << x << " disparity " << d);
+        REQUIRE(sum[size_t(x * dmax + d)] == mirrored_sum[size_t((width - 1 - x) * dmax + d)]);
+      }
   }
 }
 

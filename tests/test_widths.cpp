@@ -169,7 +169,8 @@ TEST_CASE("path cost and sum widths hold the worst case and are minimal", "[widt
                               {CostFunction::Sad, 5},
                               {CostFunction::Zsad, 3}})
     for (int p2 : {0, 7, 86, 300})
-      for (unsigned paths : {unsigned(kAllPaths), unsigned(kPath0), unsigned(kPath45 | kPath135)}) {
+      for (unsigned paths : {unsigned(kAllPaths), unsigned(kPath0), unsigned(kPath45 | kPath135), unsigned(kPath180),
+                             unsigned(kEveryPath)}) {
         StereoConfig cfg;
         cfg.cost = cost;
         cfg.window = window;

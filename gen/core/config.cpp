@@ -75,7 +75,7 @@ std::string enum_name(E value, const std::vector<std::pair<std::string, E>>& tab
 
 unsigned parse_paths(const std::string& name, const std::string& text) {
   if (text == "all") return kAllPaths;
-  if (text.empty()) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
+  if (text.empty()) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135,180");
   unsigned mask = 0;
   std::vector<std::string> items(1);
   for (char c : text) {  // keeps empty items, unlike getline
@@ -93,9 +93,9 @@ unsigned parse_paths(const std::string& name, const std::string& text) {
         mask |= p.mask;
         found = true;
       }
-    if (!found) reject(name, quoted(text), "expected a comma-separated subset of 0,45,90,135");
+    if (!found) reject(name, quoted(text), "expected a comma-separated subset of 0,45,90,135,180");
   }
-  if (mask == 0) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135");
+  if (mask == 0) reject(name, quoted(text), "expected a non-empty subset of 0,45,90,135,180");
   return mask;
 }
 
@@ -116,7 +116,7 @@ void check_odd_window(const std::string& name, int v, int lo, int hi) {
 
 const std::vector<PathDirection>& path_directions() {
   static const std::vector<PathDirection> dirs = {
-      {kPath0, 0, -1, 0}, {kPath45, 45, -1, -1}, {kPath90, 90, 0, -1}, {kPath135, 135, 1, -1}};
+      {kPath0, 0, -1, 0}, {kPath45, 45, -1, -1}, {kPath90, 90, 0, -1}, {kPath135, 135, 1, -1}, {kPath180, 180, 1, 0}};
   return dirs;
 }
 
@@ -175,7 +175,7 @@ const std::vector<ParamSpec>& param_specs() {
       {"uf", "unroll factor: disparities per clock, a divisor of dmax",
        [](StereoConfig& c, const std::string& v) { c.uf = parse_int("uf", v); },
        [](const StereoConfig& c) { return std::to_string(c.uf); }},
-      {"paths", "aggregation paths: comma-separated subset of 0,45,90,135, or all",
+      {"paths", "aggregation paths: comma-separated subset of 0,45,90,135,180 (180: right to left, models only), or all (= 0,45,90,135)",
        [](StereoConfig& c, const std::string& v) { c.paths = parse_paths("paths", v); },
        [](const StereoConfig& c) { return paths_to_string(c.paths); }},
       {"p1", "SGM penalty for a disparity change of 1: 0 to 255, at most p2",
@@ -251,8 +251,11 @@ void validate(const StereoConfig& c) {
   if (c.dmax > c.width)
     reject("dmax", std::to_string(c.dmax),
            "must not exceed the image width (" + std::to_string(c.width) + ")");
-  if ((c.paths & ~unsigned(kAllPaths)) != 0 || c.paths == 0)
-    reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135");
+  if ((c.paths & ~unsigned(kEveryPath)) != 0 || c.paths == 0)
+    reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135,180");
+  // MGM's second predecessor is defined for the four raster-order paths only (section 3).
+  if (c.mgm && (c.paths & kPath180))
+    reject("mgm", "on", "not defined for the 180-degree path (paths = " + paths_to_string(c.paths) + ")");
   check_range("p1", c.p1, 0, 255);
   check_range("p2", c.p2, 0, 4095);
   if (c.p1 > c.p2) reject("p1", std::to_string(c.p1), "must not exceed p2 (" + std::to_string(c.p2) + ")");
@@ -269,10 +272,10 @@ void validate(const StereoConfig& c) {
     reject("right-view", "on", "needs a left-right check (lr = lr1 or lr2), whose match side it streams");
 }
 
-std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4", "A2", "A3", "A4"}; }
+std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4", "A2", "A3", "A4", "A5"}; }
 
 StereoConfig preset(const std::string& name) {
-  // All presets: 4 paths, P1 = 7, P2 = 86, median 5, 1242x375 (the defaults), as in the paper.
+  // All presets but A5: 4 paths, P1 = 7, P2 = 86, median 5, 1242x375 (the defaults), as in the paper.
   // S0/S1 are the paper's xfOpenCV baselines; their parameters equal C0/C1, only the
   // implementation in the paper differs.
   StereoConfig c;
@@ -293,7 +296,7 @@ StereoConfig preset(const std::string& name) {
   } else if (name == "C4") {
     census(7, 128, 32);
     c.lr = LrCheck::Lr2;
-  } else if (name == "A2" || name == "A3" || name == "A4") {
+  } else if (name == "A2" || name == "A3" || name == "A4" || name == "A5") {
     // Beyond the paper: C2, C3 and C4 with a 9 x 9 census, adaptive P2, a 7 x 7 median and four
     // fraction bits (docs/accuracy.md, "Accuracy beyond the paper").
     census(9, 128, 32);
@@ -301,6 +304,17 @@ StereoConfig preset(const std::string& name) {
     c.p2_adapt = 4;
     c.median = 7;
     c.subpixel_bits = 4;
+    if (name == "A5") {
+      // A4 with the 180-degree path, the speckle filter (100, 2) and the fused intensity cost
+      // (k 4, T 32), chosen on some pairs (docs/accuracy.md, "Right-to-left path"). Models only:
+      // its hardware needs the 180-degree path, the speckle filter's stage and the fused cost.
+      c.paths = kEveryPath;
+      c.speckle_size = 100;
+      c.speckle_range = 2;
+      c.fused_weight = 4;
+      c.fused_trunc = 32;
+      c.fused_term = FusedTerm::Intensity;
+    }
   } else {
     std::string allowed = "expected one of";
     for (const auto& n : preset_names()) allowed += " " + n;

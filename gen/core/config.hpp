@@ -20,15 +20,19 @@ enum class SubpixelFit { Equiangular, Parabola };
 // difference of the two pixels' intensities, or of their horizontal gradients.
 enum class FusedTerm { Intensity, Gradient };
 
-// Aggregation path bit masks. The angle names the direction the path comes from in raster
-// order: 0 = from the left (x-1, y), 45 = from the upper left (x-1, y-1),
-// 90 = from above (x, y-1), 135 = from the upper right (x+1, y-1).
+// Aggregation path bit masks. The angle names the direction the path comes from: 0 = from the
+// left (x-1, y), 45 = from the upper left (x-1, y-1), 90 = from above (x, y-1), 135 = from the
+// upper right (x+1, y-1), 180 = from the right (x+1, y), computed over a row once its costs are
+// known (docs/semantics.md section 3).
 enum PathMask : unsigned {
   kPath0 = 1u << 0,
   kPath45 = 1u << 1,
   kPath90 = 1u << 2,
   kPath135 = 1u << 3,
+  kPath180 = 1u << 4,
+  // "all": the four paths the hardware streams in raster order; presets keep them.
   kAllPaths = kPath0 | kPath45 | kPath90 | kPath135,
+  kEveryPath = kAllPaths | kPath180,
 };
 
 struct PathDirection {
@@ -36,7 +40,7 @@ struct PathDirection {
   int angle;
   int dx, dy;  // offset from a pixel to its predecessor on the path
 };
-// The four paths in a fixed order; every model iterates them in this order.
+// The five paths in a fixed order; every model iterates them in this order.
 const std::vector<PathDirection>& path_directions();
 
 // The largest speckle_size: the filter's delay and its label memories grow with it.
@@ -112,7 +116,8 @@ struct ParamSpec {
 const std::vector<ParamSpec>& param_specs();
 void set_param(StereoConfig& cfg, const std::string& name, const std::string& value);
 
-// Named presets: the FP-Stereo paper's table (S0, S1, C0 .. C4) and ours beyond it (A2 .. A4).
+// Named presets: the FP-Stereo paper's table (S0, S1, C0 .. C4) and ours beyond it (A2 .. A5;
+// A5 in the models only).
 std::vector<std::string> preset_names();
 StereoConfig preset(const std::string& name);  // throws ConfigError for an unknown name
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "config.hpp"
@@ -303,8 +304,10 @@ class CostRows {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Section 3: path costs and their sum, one row at a time. Each path keeps the row it is writing
-// and the previous row; the 0-degree path reads its predecessor from the row being written.
+// Section 3: path costs and their sum, one row at a time. Each raster-order path keeps the row it
+// is writing and the previous row; the 0-degree path reads its predecessor from the row being
+// written. The 180-degree path runs over the row once its costs are all known, from the last
+// pixel to the first, in a second pass that adds to the sums.
 // With mgm on, each path also reads a second predecessor, a right angle from the first
 // (section 3, "MGM"): the 0-degree path's is (x, y-1), the 90-degree path's (x-1, y).
 template <class T>
@@ -314,15 +317,18 @@ class PathAggregator {
   PathAggregator(const StereoConfig& cfg, int width, T sentinel, int adapt)
       : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt), zeros_(size_t(stride_), T(0)) {
     for (const auto& dir : path_directions())
-      if (cfg.paths & dir.mask)
+      if ((cfg.paths & dir.mask) && dir.mask != kPath180)
         paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{}, RowBuffer(width, stride_, sentinel),
                                    RowBuffer(width, stride_, sentinel)});
+    if (cfg.paths & kPath180) right_to_left_.emplace(width, stride_, sentinel);
   }
 
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
   // the image whose steps lower P2 (read only when adapt is not 0).
   void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
-    if (!cfg_.mgm) {
+    if (paths_.empty()) {
+      std::fill(sum, sum + size_t(width_) * size_t(cfg_.dmax), T(0));
+    } else if (!cfg_.mgm) {
       switch (paths_.size()) {
         case 1: push_row_fused<1>(y, cost, sum, guide); break;
         case 2: push_row_fused<2>(y, cost, sum, guide); break;
@@ -339,16 +345,20 @@ class PathAggregator {
       }
     }
     for (auto& path : paths_) std::swap(path.current, path.previous);
+    if (right_to_left_) push_row_right_to_left(y, cost, sum, guide);
   }
 
   // The path costs of the last row pushed, for tests that check widths.
   T max_path_cost() const {
     T m = 0;
-    for (const auto& path : paths_)
+    auto row_max = [&](const RowBuffer& row) {
       for (int x = 0; x < width_; ++x) {
-        const T* L = path.previous.costs(x);
+        const T* L = row.costs(x);
         m = std::max(m, *std::max_element(L, L + cfg_.dmax));
       }
+    };
+    for (const auto& path : paths_) row_max(path.previous);
+    if (right_to_left_) row_max(*right_to_left_);
     return m;
   }
 
@@ -419,6 +429,19 @@ class PathAggregator {
     }
   }
 
+  // The 180-degree path over row y, from the last pixel (a path start) to the first, each pixel
+  // against its right neighbour (x + 1, y); adds its costs to the sums the other paths wrote.
+  void push_row_right_to_left(int y, const T* cost, T* sum, const GrayImage& guide) {
+    const size_t dmax = size_t(cfg_.dmax);
+    RowBuffer& row = *right_to_left_;
+    std::array<T, 1> minimum;
+    Predecessor pred{zeros_.data() + 1, 0, 0};
+    for (int x = width_ - 1; x >= 0; --x) {
+      step_paths<1>(cost + size_t(x) * dmax, sum + size_t(x) * dmax, {pred}, {row.costs(x)}, minimum);
+      if (x > 0) pred = {row.costs(x), minimum[0], T(minimum[0] + penalty2(guide.at(x - 1, y), guide.at(x, y)))};
+    }
+  }
+
   // With MGM: path costs of pixel (x, y) on one path; adds them to S and returns their minimum.
   T push_mgm_pixel(PathState& path, int x, int y, const T* C, T* S, const GrayImage& guide) const {
     const Offset first{path.dir.dx, path.dir.dy, true}, second = path.second;
@@ -482,7 +505,8 @@ class PathAggregator {
 
   const StereoConfig& cfg_;
   const int width_, stride_, adapt_;
-  std::vector<PathState> paths_;
+  std::vector<PathState> paths_;            // the raster-order paths
+  std::optional<RowBuffer> right_to_left_;  // the 180-degree path's costs of the last row
   std::vector<T> zeros_;  // the predecessor of a path start
 };
 

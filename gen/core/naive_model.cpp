@@ -202,8 +202,9 @@ bool second_predecessor(const StereoConfig& cfg, int dx, int dy, int& sx, int& s
   return true;
 }
 
-// One path's L_r volume by explicit recursion (section 3). Raster order suffices because
-// every predecessor (x-1,y), (x-1,y-1), (x,y-1), (x+1,y-1) is earlier in raster order.
+// One path's L_r volume by explicit recursion (section 3). Rows top to bottom, and within a row
+// away from a predecessor in the same row: left to right, but right to left for the 180-degree
+// path, whose predecessor is (x+1, y); the others lie in the row above.
 // With mgm, L_r = C + floor((T1 + T2) / 2) over the predecessors in the image (one: its T).
 Volume path_costs(const StereoConfig& cfg, const Volume& c, const GrayImage* guide, int dx, int dy) {
   const int w = c.width, h = c.height, D = c.depth;
@@ -221,8 +222,10 @@ Volume path_costs(const StereoConfig& cfg, const Volume& c, const GrayImage* gui
   };
   int sx = 0, sy = 0;
   const bool mgm = second_predecessor(cfg, dx, dy, sx, sy);
+  const bool right_to_left = dy == 0 && dx > 0;
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
+    for (int i = 0; i < w; ++i) {
+      const int x = right_to_left ? w - 1 - i : i;
       const bool first = in_image(x + dx, y + dy);
       const bool second = mgm && in_image(x + sx, y + sy);
       for (int d = 0; d < D; ++d) {

@@ -258,7 +258,7 @@ std::vector<StereoConfig> enumerate(const Space& space, const StereoConfig& base
     for (size_t i = 0; i < space.size(); ++i)
       for (const Setting& s : space[i].values[at[i]]) set_param(c, s.parameter, s.value);
     try {
-      validate(c);
+      rtl::plan_geometry(c);  // validates, then refuses what the hardware generators do not build
       out.push_back(c);
     } catch (const ConfigError& e) {
       skipped.push_back({c, e.what()});

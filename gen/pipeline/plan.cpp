@@ -48,6 +48,10 @@ void check_hardware_rules(const StereoConfig& cfg) {
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
     throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
                       std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
+  // The 180-degree path is specified in the models first (docs/semantics.md section 3).
+  if (cfg.paths & kPath180)
+    throw ConfigError("paths = " + paths_to_string(cfg.paths) +
+                      ": the 180-degree path is not in the hardware generators yet (the models have it); drop 180");
 }
 
 }  // namespace
