@@ -307,9 +307,8 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire history_slot;
   wire [191:0] costs;
   fps_census7_d128u32_6c9a83_point_cost #(
-    .HAMMING(1), .CODE_W(48), .WEIGHT(0), .TRUNC(20), .FEATURE_W(8), .GRADIENT(0), .LANES_LAT(2), .DMAX(128),
-    .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1), .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0),
-    .LAT(2)
+    .HAMMING(1), .CODE_W(48), .LANES_LAT(2), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1),
+    .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
     .code_base(code_base), .code_match(code_match), .feature_base(8'd0), .feature_match(8'd0),

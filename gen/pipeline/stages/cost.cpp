@@ -76,27 +76,25 @@ class CostStage : public Stage {
     }
     core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
-    // costs validate() lets have it); without it their ports read 0.
+    // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
+    // defaults (off), so its unused settings change no text.
     Connections features;
     if (cost_ != CostFunction::Sad && cost_ != CostFunction::Zsad) {
-      const bool fused = c.fused_weight != 0;
-      const int feature_bits = fused ? w.fused_feature : 8;
+      parameters = parameters + Connections{{"LANES_LAT", num(d.cost_lanes_latency)}};
+      features = {{"feature_base", "8'd0"}, {"feature_match", "8'd0"}};
+    }
+    if (c.fused_weight != 0) {
+      const std::string gradient = c.fused_term == FusedTerm::Gradient ? "1" : "0";
+      const std::string feature_bits = num(w.fused_feature);
       parameters = parameters + Connections{{"WEIGHT", num(c.fused_weight)},
                                             {"TRUNC", num(c.fused_trunc)},
-                                            {"FEATURE_W", num(feature_bits)},
-                                            {"GRADIENT", fused && c.fused_term == FusedTerm::Gradient ? "1" : "0"},
-                                            {"LANES_LAT", num(d.cost_lanes_latency)}};
-      features = {{"feature_base", fmt::format("{}'d0", feature_bits)},
-                  {"feature_match", fmt::format("{}'d0", feature_bits)}};
-      if (fused) {
-        core.wire("feature_base", feature_bits);
-        core.wire("feature_match", feature_bits);
-        core.instance("fpstereo_fused_features", "fused_features",
-                      {{"N", num(c.window)},
-                       {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"},
-                       {"FEATURE_W", num(feature_bits)}});
-        features = {};
-      }
+                                            {"FEATURE_W", feature_bits},
+                                            {"GRADIENT", gradient}};
+      core.wire("feature_base", w.fused_feature);
+      core.wire("feature_match", w.fused_feature);
+      core.instance("fpstereo_fused_features", "fused_features",
+                    {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
+      features = {};
     }
     core.wire("history_x", d.x_bits);
     core.wire("history_y", d.signed_y_bits, true);
