@@ -67,13 +67,17 @@ struct ZsadPixel {
 
 template <class C>
 using CensusCode = typename CensusCodeOf<C::kWindow>::type;
-// What the cost window slides over: census codes (census, SHD), rank values, pixels (SAD) or
-// pixels with their means (ZSAD).
+// The code a census, SHD or rank cost compares: a census code or a rank value.
 template <class C>
-using Feature =
-    std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
-                       std::conditional_t<C::kCost == Cost::Rank, ap_uint<C::kCodeBits>,
-                                          std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>>;
+using Code = std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd, CensusCode<C>,
+                                ap_uint<C::kCodeBits>>;
+// What the cost window slides over: codes (census, SHD, rank), with the fused cost the pixel's
+// feature above the code (C::kFusedFeatureBits, fused_feature), pixels (SAD) or pixels with
+// their means (ZSAD).
+template <class C>
+using Feature = std::conditional_t<C::kCost == Cost::Census || C::kCost == Cost::Shd || C::kCost == Cost::Rank,
+                                   ap_uint<C::kCodeBits + C::kFusedFeatureBits>,
+                                   std::conditional_t<C::kCost == Cost::Zsad, ZsadPixel, Pixel>>;
 // With adaptive P2 a cost word carries, above its uf costs, the pixel's P2 for each of the four
 // paths, C::kPenaltyBits (penalty_stage, attach_penalties; the aggregation's base instance reads them).
 template <class C>
@@ -196,7 +200,20 @@ window_pixels:
 // ---------------------------------------------------------------------------------------------
 // Section 2: transforms. Census: one bit per neighbour, 1 iff centre > neighbour, the first window
 // position in the most significant bit. Rank: neighbours below the centre. ZSAD: the pixel and
-// floor(window sum / N^2).
+// floor(window sum / N^2). The fused cost's feature (semantics section 2, "Fused cost"): the
+// centre pixel, or I(x+1) - I(x-1) on the centre row (the window reads 0 outside the image) in
+// two's complement.
+template <class C>
+Feature<C> with_fused_feature(const Code<C>& code, const Window<Pixel, C::kWindow>& w) {
+  Feature<C> f = code;
+  if constexpr (C::kFusedFeatureBits != 0) {
+    constexpr int r = C::kWindow / 2, mask = (1 << C::kFusedFeatureBits) - 1;
+    const int feature = C::kFusedGradient ? int(w.v[r][r + 1]) - int(w.v[r][r - 1]) : int(w.v[r][r]);
+    f.range(C::kCodeBits + C::kFusedFeatureBits - 1, C::kCodeBits) = feature & mask;
+  }
+  return f;
+}
+
 template <class C>
 Feature<C> transform_window(const Window<Pixel, C::kWindow>& w) {
   constexpr int N = C::kWindow, r = N / 2;
@@ -210,13 +227,13 @@ Feature<C> transform_window(const Window<Pixel, C::kWindow>& w) {
         code.range(bit, bit) = centre > int(w.v[row][col]) ? 1 : 0;
         --bit;
       }
-    return code;
+    return with_fused_feature<C>(code, w);
   } else if constexpr (C::kCost == Cost::Rank) {
     int rank = 0;
     for (int row = 0; row < N; ++row)
       for (int col = 0; col < N; ++col)
         if (!(row == r && col == r)) rank += int(w.v[row][col]) < centre;
-    return Feature<C>(rank);
+    return with_fused_feature<C>(Code<C>(rank), w);
   } else {
     int sum = 0;
     for (int row = 0; row < N; ++row)
@@ -248,8 +265,26 @@ int hamming(const ap_uint<W>& a, const ap_uint<W>& b) {
 }
 inline int abs_diff(int a, int b) { return a > b ? a - b : b - a; }
 
+// The fused cost's pixel-wise term of two window centres (semantics section 2, "Fused cost"):
+// floor(k * min(|F_B - F_M|, T) / 8), 0 without the fused cost.
+template <class C>
+int fused_feature_value(const Feature<C>& f) {
+  const int v = int(f.range(C::kCodeBits + C::kFusedFeatureBits - 1, C::kCodeBits));
+  return C::kFusedGradient && v >= 256 ? v - 512 : v;  // the gradient's two's complement
+}
+template <class C>
+int fused_term(const Feature<C>& base, const Feature<C>& match) {
+  if constexpr (C::kFusedFeatureBits == 0) {
+    return 0;
+  } else {
+    const int diff = abs_diff(fused_feature_value<C>(base), fused_feature_value<C>(match));
+    return C::kFusedWeight * (diff < C::kFusedTrunc ? diff : C::kFusedTrunc) / 8;
+  }
+}
+
 // The cost of the current pixel against the match window that spans history[at .. at + 2r]
-// (history[j] is a match column of the cost window, r its radius, the newest at j = 0).
+// (history[j] is a match column of the cost window, r its radius, the newest at j = 0), with the
+// fused cost's term of the two windows' centres.
 template <class C>
 int window_cost(const Window<Feature<C>, C::kCostWindow>& base,
                 const Feature<C> history[][C::kCostWindow], int at) {
@@ -260,15 +295,17 @@ int window_cost(const Window<Feature<C>, C::kCostWindow>& base,
       const Feature<C>& b = base.v[row][col];
       const Feature<C>& m = history[at + 2 * r - col][row];
       if constexpr (C::kCost == Cost::Census || C::kCost == Cost::Shd) {
-        sum += hamming(b, m);
+        sum += hamming(Code<C>(b), Code<C>(m));
       } else if constexpr (C::kCost == Cost::Zsad) {
         const int base_mean = base.v[r][r].mean, match_mean = history[at + r][r].mean;
         sum += abs_diff(int(b.pixel) - base_mean, int(m.pixel) - match_mean);
+      } else if constexpr (C::kCost == Cost::Rank) {
+        sum += abs_diff(int(Code<C>(b)), int(Code<C>(m)));
       } else {
         sum += abs_diff(int(b), int(m));
       }
     }
-  return sum;
+  return sum + fused_term<C>(base.v[r][r], history[at + r][r]);
 }
 
 // min-disp m (semantics section 2): index d pairs base pixel x with match pixel x - m - d. With

@@ -57,7 +57,7 @@ module fpstereo_cost_lanes #(
 
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
-  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : CODE_W;
   // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
   localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
   localparam SETS = (CHUNKS + 7) / 8;
@@ -104,10 +104,14 @@ module fpstereo_cost_lanes #(
         end
         assign cost = total;
       end else begin : absolute_difference
-        // rank values and costs have the same width
         always @(posedge clk)
           if (en) part <= base_code > m ? base_code - m : m - base_code;
-        assign cost = part;
+        // the costs are wider than the rank values where they hold the fused cost's term too
+        if (COST_W > CODE_W) begin : widened
+          assign cost = {{(COST_W-CODE_W){1'b0}}, part};
+        end else begin : same_width
+          assign cost = part;
+        end
       end
       always @(posedge clk)
         if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);

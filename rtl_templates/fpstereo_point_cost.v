@@ -4,7 +4,8 @@
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
 // costs the lanes compute in this slot; fpstereo_cost_history holds them, with the disparity
-// offset's delays.
+// offset's delays. With the fused cost (WEIGHT above 0) each code travels with its pixel's feature
+// (fpstereo_fused_features) through the history, and fpstereo_fused_term adds the pixel-wise term.
 module fpstereo_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -18,7 +19,14 @@ module fpstereo_point_cost #(
   parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
-  // the cost lanes' latency the stage plans with (fpstereo_cost_lanes checks it)
+  // the fused cost: WEIGHT in eighths (0: off), TRUNC, the features' width and signedness
+  parameter WEIGHT = 0,
+  parameter TRUNC = 20,
+  parameter FEATURE_W = 8,
+  parameter GRADIENT = 0,
+  // the cost lanes' latency, and the stage's (the lanes' plus the fused term's step, or the same);
+  // fpstereo_cost_lanes and fpstereo_fused_term check them
+  parameter LANES_LAT = 2,
   parameter LAT = 2
 ) (
   input  wire                   clk,
@@ -29,6 +37,10 @@ module fpstereo_point_cost #(
   input  wire [X_W-1:0]         frame_width,
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
+  /* verilator lint_off UNUSEDSIGNAL */  // the fused cost's only
+  input  wire [FEATURE_W-1:0]   feature_base,
+  input  wire [FEATURE_W-1:0]   feature_match,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [COST_ROW_W-1:0]    transform_slot,
@@ -38,18 +50,54 @@ module fpstereo_point_cost #(
   output wire [UF*COST_W-1:0]   costs
 );
   localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
-  wire [CODE_W-1:0]     code_base_h;
+  // A history entry: the code, with the fused cost its pixel's feature above it.
+  localparam FUSED = WEIGHT != 0;
+  localparam ENTRY_W = CODE_W + (FUSED ? FEATURE_W : 0);
+  wire [ENTRY_W-1:0]    base_entry, match_entry, base_entry_h;
   wire [POSITION_W-1:0] history;
-  wire [UF*CODE_W-1:0]  match_lanes;
-  fpstereo_cost_history #(.BASE_W(CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX),
+  wire [UF*ENTRY_W-1:0] match_view;
+  generate
+    if (FUSED) begin : with_features
+      assign base_entry = {feature_base, code_base};
+      assign match_entry = {feature_match, code_match};
+    end else begin : codes_only
+      assign base_entry = code_base;
+      assign match_entry = code_match;
+    end
+  endgenerate
+  fpstereo_cost_history #(.BASE_W(ENTRY_W), .POSITION_W(POSITION_W), .COLUMN_W(ENTRY_W), .SPAN(1), .DMAX(DMAX),
                           .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(code_base),
-    .position({transform_x, transform_y, transform_slot}), .column(code_match), .base_held(code_base_h),
-    .position_held(history), .view(match_lanes));
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_entry),
+    .position({transform_x, transform_y, transform_slot}), .column(match_entry), .base_held(base_entry_h),
+    .position_held(history), .view(match_view));
   assign {history_x, history_y, history_slot} = history;
+  // Lane l reads view entry l.
+  reg [UF*CODE_W-1:0] match_lanes;
+  integer l;
+  always @*
+    for (l = 0; l < UF; l = l + 1) match_lanes[l*CODE_W +: CODE_W] = match_view[l*ENTRY_W +: CODE_W];
+  wire [UF*COST_W-1:0] lane_costs;
   fpstereo_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
-    .x(history_x), .width(frame_width), .costs(costs));
+                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
+    .clk(clk), .en(adv), .base_code(base_entry_h[CODE_W-1:0]), .match_codes(match_lanes), .group(group),
+    .x(history_x), .width(frame_width), .costs(lane_costs));
+  generate
+    if (FUSED) begin : fused
+      reg [UF*FEATURE_W-1:0] match_features;
+      integer f;
+      always @*
+        for (f = 0; f < UF; f = f + 1)
+          match_features[f*FEATURE_W +: FEATURE_W] = match_view[f*ENTRY_W + CODE_W +: FEATURE_W];
+      fpstereo_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
+                            .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
+        .clk(clk), .en(adv), .base_feature(base_entry_h[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
+        .plain_costs(lane_costs), .costs(costs));
+    end else begin : plain
+      if (LAT != LANES_LAT) begin : invalid_LAT
+        fpstereo_invalid_parameters_point_cost_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
+      end
+      assign costs = lane_costs;
+    end
+  endgenerate
 endmodule
 `resetall

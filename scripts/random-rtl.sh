@@ -55,6 +55,9 @@ draw() {
   add --subpixel-bits 0 0 2 4
   add --subpixel-fit equiangular parabola
   add --confidence off on
+  add --fused-weight 0 0 1 4 11 32
+  add --fused-trunc 8 32 255
+  add --fused-term intensity gradient
 }
 
 failed=0

@@ -138,10 +138,12 @@ if(EXISTS ${WORK}/hls_speckle)
   message(SEND_ERROR "fpstereo-rtl --emit hls --speckle-size 1 left ${WORK}/hls_speckle behind")
 endif()
 expect_error("speckle-size = 4097: must be in 0 .. 4096" --speckle-size 4097)
-expect_error("fused-weight = 8: not in the hardware generators yet (the models have it); use 0" --fused-weight 8)
-expect_error("fused-weight = 1: not in the hardware generators yet" --emit hls --fused-weight 1 -o ${WORK}/hls_fused)
+expect_error("fused-weight = 8: needs cost census, rank or shd (sad already compares intensities)" --cost sad
+             --fused-weight 8)
+expect_error("fused-weight = 1: needs cost census, rank or shd" --emit hls --cost zsad --fused-weight 1
+             -o ${WORK}/hls_fused)
 if(EXISTS ${WORK}/hls_fused)
-  message(SEND_ERROR "fpstereo-rtl --emit hls --fused-weight 1 left ${WORK}/hls_fused behind")
+  message(SEND_ERROR "fpstereo-rtl --emit hls --cost zsad --fused-weight 1 left ${WORK}/hls_fused behind")
 endif()
 expect_error("fused-weight = 4: needs cost census, rank or shd (sad already compares intensities)"
              --cost sad --fused-weight 4)

@@ -31,6 +31,10 @@ std::vector<StereoConfig> covering_configs() {
       c.right_view = lr != LrCheck::None;
       c.p2_adapt = cost != CostFunction::Shd && lr != LrCheck::Lr1 ? 4 : 0;  // the RTL has it but with SHD
       c.confidence = cost == CostFunction::Census || cost == CostFunction::Sad;
+      // The fused cost where validate() allows it (not SAD, ZSAD), both terms, and off with LR1.
+      const bool compares_codes = cost != CostFunction::Sad && cost != CostFunction::Zsad;
+      c.fused_weight = compares_codes && lr != LrCheck::Lr1 ? 4 : 0;
+      c.fused_term = lr == LrCheck::Lr2 ? FusedTerm::Gradient : FusedTerm::Intensity;
       out.push_back(c);
     }
   return out;
@@ -43,10 +47,9 @@ TEST_CASE("every configuration parameter is owned by a stage", "[stages]") {
   for (const auto& cfg : covering_configs())
     for (const auto& stage : rtl::plan(cfg).stages)
       for (const auto& knob : stage->knobs()) owned.insert(knob);
-  // The speckle filter and the fused cost are in the models only: the hardware generators refuse
-  // them until their stages have them (docs/semantics.md sections 2 and 5a), which will own these.
-  const std::set<std::string> models_only = {"speckle-size", "speckle-range", "fused-weight", "fused-trunc",
-                                             "fused-term"};
+  // The speckle filter is in the models only: the hardware generators refuse it until its stage
+  // has it (docs/semantics.md section 5a), which will own these.
+  const std::set<std::string> models_only = {"speckle-size", "speckle-range"};
   for (const auto& spec : param_specs()) {
     INFO("parameter " << spec.name);
     CHECK(owned.count(spec.name) == (models_only.count(spec.name) ? 0 : 1));

@@ -38,7 +38,10 @@ Widths derive_widths(const StereoConfig& cfg) {
       break;
   }
   // The fused cost's pixel-wise term reaches its bound where the difference reaches the truncation.
-  if (cfg.fused_weight != 0) w.cost_max += uint64_t(cfg.fused_weight) * uint64_t(cfg.fused_trunc) / kFusedWeightDivisor;
+  if (cfg.fused_weight != 0) {
+    w.cost_max += uint64_t(cfg.fused_weight) * uint64_t(cfg.fused_trunc) / kFusedWeightDivisor;
+    w.fused_feature = cfg.fused_term == FusedTerm::Gradient ? 9 : 8;  // -255 .. 255 or 0 .. 255
+  }
   w.cost = bits_for(w.cost_max);
   w.path_cost_max = w.cost_max + uint64_t(cfg.p2);
   w.path_cost = bits_for(w.path_cost_max);

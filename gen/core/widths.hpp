@@ -14,6 +14,7 @@ int bits_for(uint64_t max_value);
 struct Widths {
   int pixel = 8;
   int code = 0;           // census code (N*N-1 bits) or rank value; 8 for SAD/ZSAD (the pixel)
+  int fused_feature = 0;  // the fused cost's pixel feature: 8 (intensity), 9 (signed gradient), 0 (off)
   uint64_t cost_max = 0;  // largest matching cost (with the fused term), also the cost of an out-of-image match
   int cost = 0;
   uint64_t path_cost_max = 0;  // cost_max + P2

@@ -148,6 +148,13 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << (cfg.subpixel_fit == SubpixelFit::Equiangular ? "true" : "false") << ";  // else the parabola\n"
      << "  // Widths (derive_widths, docs/semantics.md \"Bit widths\").\n"
      << "  static constexpr int kCodeBits = " << w.code << ";\n"
+     << "  // The fused cost (docs/semantics.md section 2): weight k in eighths, truncation, the feature's\n"
+     << "  // bits above the code (0: off) and whether it is the horizontal gradient (else the intensity).\n"
+     << "  static constexpr int kFusedWeight = " << cfg.fused_weight << ";\n"
+     << "  static constexpr int kFusedTrunc = " << cfg.fused_trunc << ";\n"
+     << "  static constexpr int kFusedFeatureBits = " << w.fused_feature << ";\n"
+     << "  static constexpr bool kFusedGradient = " << (cfg.fused_term == FusedTerm::Gradient ? "true" : "false")
+     << ";\n"
      << "  static constexpr int kCostMax = " << w.cost_max << ";\n"
      << "  static constexpr int kCostBits = " << w.cost << ";\n"
      << "  static constexpr int kPathCostBits = " << w.path_cost << ";\n"

@@ -39,10 +39,6 @@ void check_hardware_rules(const StereoConfig& cfg) {
   if (cfg.speckle_size != 0)
     throw ConfigError("speckle-size = " + std::to_string(cfg.speckle_size) +
                       ": not in the hardware generators yet (the models have it); use 0");
-  // The fused cost is specified in the models first (docs/semantics.md section 2).
-  if (cfg.fused_weight != 0)
-    throw ConfigError("fused-weight = " + std::to_string(cfg.fused_weight) +
-                      ": not in the hardware generators yet (the models have it); use 0");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
@@ -84,7 +80,10 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
                              (cfg.cost == CostFunction::Shd && cfg.shd_window > 1);
   // Census codes of more than 8 chunks of 6 bits sum their counts in sets first (one step more).
   const bool long_codes = !windowed_cost && cfg.cost != CostFunction::Rank && g.widths.code > 48;
-  g.cost_latency = !windowed_cost ? (long_codes ? 3 : 2) : cfg.cost == CostFunction::Zsad ? 8 : 4;
+  g.cost_lanes_latency = !windowed_cost ? (long_codes ? 3 : 2) : cfg.cost == CostFunction::Zsad ? 8 : 4;
+  // The fused cost's term takes three steps beside the lanes, then one to add (fpstereo_fused_term).
+  constexpr int kFusedTermSteps = 3;
+  g.cost_latency = cfg.fused_weight == 0 ? g.cost_lanes_latency : std::max(g.cost_lanes_latency, kFusedTermSteps) + 1;
   g.column_sum_bits = bits_for(255u * uint64_t(cfg.window));
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);
   std::tie(g.mean_mul, g.mean_shift) =

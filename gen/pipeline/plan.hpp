@@ -36,7 +36,8 @@ struct Geometry {
   // SAD and ZSAD; and the rows by which the windows delay the stream up to the cost.
   int cost_window = 1;
   int window_fill_rows = 0;
-  int cost_latency = 1;     // register stages of the cost lanes
+  int cost_lanes_latency = 1;  // register stages of the cost lanes
+  int cost_latency = 1;        // and of the cost stage: the lanes', with the fused cost's term one more
   int column_sum_bits = 0;  // SAD/ZSAD: bits of a window column's pixel sum
   uint64_t mean_mul = 1;    // ZSAD: floor(s / N^2) == (s * mean_mul) >> mean_shift
   int mean_shift = 0;

@@ -37,7 +37,7 @@
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
-//   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp
+//   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
 //   aggregation                          1     0    5   paths, p1, p2, mgm, dmax, uf
 //   LR1 match side                       0     0    0   lr, min-disp
@@ -309,13 +309,13 @@ module fps_census7_d128u32_6e208d_sgm_core (
   wire history_slot;
   wire [191:0] costs;
   fps_census7_d128u32_6e208d_point_cost #(
-    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1), .X_W(11),
-    .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
+    .HAMMING(1), .CODE_W(48), .LANES_LAT(2), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1),
+    .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
   ) cost (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
-    .code_base(code_base), .code_match(code_match), .transform_x(transform_x), .transform_y(transform_y),
-    .transform_slot(transform_slot), .history_x(history_x), .history_y(history_y),
-    .history_slot(history_slot), .costs(costs));
+    .code_base(code_base), .code_match(code_match), .feature_base(8'd0), .feature_match(8'd0),
+    .transform_x(transform_x), .transform_y(transform_y), .transform_slot(transform_slot),
+    .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs));
 
   // Cost reorder RAM.
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
@@ -1340,7 +1340,8 @@ endmodule
 // match ring, which holds the last DMAX match codes; the lanes give UF costs per step
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
 // costs the lanes compute in this slot; fps_census7_d128u32_6e208d_cost_history holds them, with the disparity
-// offset's delays.
+// offset's delays. With the fused cost (WEIGHT above 0) each code travels with its pixel's feature
+// (fps_census7_d128u32_6e208d_fused_features) through the history, and fps_census7_d128u32_6e208d_fused_term adds the pixel-wise term.
 module fps_census7_d128u32_6e208d_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -1354,7 +1355,14 @@ module fps_census7_d128u32_6e208d_point_cost #(
   parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
-  // the cost lanes' latency the stage plans with (fps_census7_d128u32_6e208d_cost_lanes checks it)
+  // the fused cost: WEIGHT in eighths (0: off), TRUNC, the features' width and signedness
+  parameter WEIGHT = 0,
+  parameter TRUNC = 20,
+  parameter FEATURE_W = 8,
+  parameter GRADIENT = 0,
+  // the cost lanes' latency, and the stage's (the lanes' plus the fused term's step, or the same);
+  // fps_census7_d128u32_6e208d_cost_lanes and fps_census7_d128u32_6e208d_fused_term check them
+  parameter LANES_LAT = 2,
   parameter LAT = 2
 ) (
   input  wire                   clk,
@@ -1365,6 +1373,10 @@ module fps_census7_d128u32_6e208d_point_cost #(
   input  wire [X_W-1:0]         frame_width,
   input  wire [CODE_W-1:0]      code_base,
   input  wire [CODE_W-1:0]      code_match,
+  /* verilator lint_off UNUSEDSIGNAL */  // the fused cost's only
+  input  wire [FEATURE_W-1:0]   feature_base,
+  input  wire [FEATURE_W-1:0]   feature_match,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [COST_ROW_W-1:0]    transform_slot,
@@ -1374,19 +1386,55 @@ module fps_census7_d128u32_6e208d_point_cost #(
   output wire [UF*COST_W-1:0]   costs
 );
   localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
-  wire [CODE_W-1:0]     code_base_h;
+  // A history entry: the code, with the fused cost its pixel's feature above it.
+  localparam FUSED = WEIGHT != 0;
+  localparam ENTRY_W = CODE_W + (FUSED ? FEATURE_W : 0);
+  wire [ENTRY_W-1:0]    base_entry, match_entry, base_entry_h;
   wire [POSITION_W-1:0] history;
-  wire [UF*CODE_W-1:0]  match_lanes;
-  fps_census7_d128u32_6e208d_cost_history #(.BASE_W(CODE_W), .POSITION_W(POSITION_W), .COLUMN_W(CODE_W), .SPAN(1), .DMAX(DMAX),
+  wire [UF*ENTRY_W-1:0] match_view;
+  generate
+    if (FUSED) begin : with_features
+      assign base_entry = {feature_base, code_base};
+      assign match_entry = {feature_match, code_match};
+    end else begin : codes_only
+      assign base_entry = code_base;
+      assign match_entry = code_match;
+    end
+  endgenerate
+  fps_census7_d128u32_6e208d_cost_history #(.BASE_W(ENTRY_W), .POSITION_W(POSITION_W), .COLUMN_W(ENTRY_W), .SPAN(1), .DMAX(DMAX),
                           .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(code_base),
-    .position({transform_x, transform_y, transform_slot}), .column(code_match), .base_held(code_base_h),
-    .position_held(history), .view(match_lanes));
+    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_entry),
+    .position({transform_x, transform_y, transform_slot}), .column(match_entry), .base_held(base_entry_h),
+    .position_held(history), .view(match_view));
   assign {history_x, history_y, history_slot} = history;
+  // Lane l reads view entry l.
+  reg [UF*CODE_W-1:0] match_lanes;
+  integer l;
+  always @*
+    for (l = 0; l < UF; l = l + 1) match_lanes[l*CODE_W +: CODE_W] = match_view[l*ENTRY_W +: CODE_W];
+  wire [UF*COST_W-1:0] lane_costs;
   fps_census7_d128u32_6e208d_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
-    .clk(clk), .en(adv), .base_code(code_base_h), .match_codes(match_lanes), .group(group),
-    .x(history_x), .width(frame_width), .costs(costs));
+                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
+    .clk(clk), .en(adv), .base_code(base_entry_h[CODE_W-1:0]), .match_codes(match_lanes), .group(group),
+    .x(history_x), .width(frame_width), .costs(lane_costs));
+  generate
+    if (FUSED) begin : fused
+      reg [UF*FEATURE_W-1:0] match_features;
+      integer f;
+      always @*
+        for (f = 0; f < UF; f = f + 1)
+          match_features[f*FEATURE_W +: FEATURE_W] = match_view[f*ENTRY_W + CODE_W +: FEATURE_W];
+      fps_census7_d128u32_6e208d_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
+                            .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
+        .clk(clk), .en(adv), .base_feature(base_entry_h[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
+        .plain_costs(lane_costs), .costs(costs));
+    end else begin : plain
+      if (LAT != LANES_LAT) begin : invalid_LAT
+        fps_census7_d128u32_6e208d_invalid_parameters_point_cost_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
+      end
+      assign costs = lane_costs;
+    end
+  endgenerate
 endmodule
 `resetall
 
@@ -2934,7 +2982,7 @@ module fps_census7_d128u32_6e208d_cost_lanes #(
 
   // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
   localparam CHUNKS = (CODE_W + 5) / 6;
-  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : COST_W;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : CODE_W;
   // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
   localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
   localparam SETS = (CHUNKS + 7) / 8;
@@ -2981,10 +3029,14 @@ module fps_census7_d128u32_6e208d_cost_lanes #(
         end
         assign cost = total;
       end else begin : absolute_difference
-        // rank values and costs have the same width
         always @(posedge clk)
           if (en) part <= base_code > m ? base_code - m : m - base_code;
-        assign cost = part;
+        // the costs are wider than the rank values where they hold the fused cost's term too
+        if (COST_W > CODE_W) begin : widened
+          assign cost = {{(COST_W-CODE_W){1'b0}}, part};
+        end else begin : same_width
+          assign cost = part;
+        end
       end
       always @(posedge clk)
         if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
@@ -3000,6 +3052,110 @@ module fps_census7_d128u32_6e208d_cost_lanes #(
       end
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The fused cost (docs/semantics.md, section 2, "Fused cost"): each lane's cost plus
+// floor(WEIGHT * min(|F_B - F_M|, TRUNC) / 8), F the pixels' features (fps_census7_d128u32_6e208d_fused_features).
+// The features enter with the lanes' inputs and the plain costs leave the lanes LANES_LAT steps
+// later. The term takes three register steps (the absolute difference, its truncation, the
+// weighting as shifts and adds: no multiplier), the shorter of the two waits for the other, and a
+// last step adds them. A plain cost of COST_MAX marks a match pixel outside the row (in the row
+// it stays at most COST_MAX - floor(WEIGHT * TRUNC / 8)): that cost stays COST_MAX.
+module fps_census7_d128u32_6e208d_fused_term #(
+  parameter UF = 8,
+  parameter COST_W = 6,
+  // the largest cost, the term's bound included (gen/core/widths.cpp)
+  parameter COST_MAX = 40,
+  // 1: signed features (the gradient, 9 bits); 0: intensities (8 bits)
+  parameter GRADIENT = 0,
+  parameter FEATURE_W = 8,
+  // the weight in eighths (1 .. 32) and the truncation (1 .. 255)
+  parameter WEIGHT = 4,
+  parameter TRUNC = 32,
+  // the lanes' latency, and the latency the instantiating stage plans with (checked:
+  // max(LANES_LAT, 3) + 1)
+  parameter LANES_LAT = 2,
+  parameter LAT = 4
+) (
+  input  wire                    clk,
+  input  wire                    en,
+  input  wire [FEATURE_W-1:0]    base_feature,
+  input  wire [UF*FEATURE_W-1:0] match_features,
+  input  wire [UF*COST_W-1:0]    plain_costs,
+  output reg  [UF*COST_W-1:0]    costs
+);
+  localparam TERM_STEPS = 3;
+  localparam ALIGNED = LANES_LAT > TERM_STEPS ? LANES_LAT : TERM_STEPS;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (WEIGHT < 1 || WEIGHT > 32 || TRUNC < 1 || TRUNC > 255 || FEATURE_W != (GRADIENT != 0 ? 9 : 8) ||
+        COST_MAX >= (1 << COST_W) || WEIGHT * TRUNC / 8 > COST_MAX) begin : invalid
+      fps_census7_d128u32_6e208d_invalid_parameters_fused_term_needs_WEIGHT_1_to_32_TRUNC_1_to_255_and_COST_MAX_holding_the_term failed ();
+    end
+    if (LANES_LAT < 1 || LAT != ALIGNED + 1) begin : invalid_LAT
+      fps_census7_d128u32_6e208d_invalid_parameters_fused_term_LAT_is_not_the_latency failed ();
+    end
+  endgenerate
+  // WEIGHT * TRUNC < 8 * (COST_MAX + 1): the weighted difference fits in COST_W + 3 bits, and so
+  // does the truncated difference; the truncation compares in a width that holds both.
+  localparam PRODUCT_W = COST_W + 3;
+  localparam COMPARE_W = PRODUCT_W + FEATURE_W + 1;
+  localparam [COMPARE_W-1:0] TRUNC_WIDE = TRUNC[COMPARE_W-1:0];
+
+  wire [UF*COST_W-1:0] plain_aligned, terms_aligned;
+  reg  [UF*COST_W-1:0] terms;
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      // Both features widened by one bit, signed: the gradient sign-extended, intensities as they are.
+      wire signed [FEATURE_W:0] b = {GRADIENT != 0 ? base_feature[FEATURE_W-1] : 1'b0, base_feature};
+      wire [FEATURE_W-1:0] mf = match_features[l*FEATURE_W +: FEATURE_W];
+      wire signed [FEATURE_W:0] m = {GRADIENT != 0 ? mf[FEATURE_W-1] : 1'b0, mf};
+      wire signed [FEATURE_W:0] b_minus_m = b - m, m_minus_b = m - b;
+      // Step 1: the absolute difference (0 .. 510 fits FEATURE_W + 1 bits as a non-negative value).
+      reg [FEATURE_W:0] difference;
+      always @(posedge clk)
+        if (en) difference <= b > m ? b_minus_m : m_minus_b;
+      // Step 2: truncated at TRUNC.
+      wire [COMPARE_W-1:0] difference_wide = {{PRODUCT_W{1'b0}}, difference};
+      reg [PRODUCT_W-1:0] truncated;
+      always @(posedge clk)
+        if (en) truncated <= difference_wide > TRUNC_WIDE ? TRUNC_WIDE[PRODUCT_W-1:0] : difference_wide[PRODUCT_W-1:0];
+      // Step 3: floor(WEIGHT * truncated / 8), the product as a sum of shifted copies.
+      reg [PRODUCT_W-1:0] product;
+      integer bit_i;
+      always @* begin
+        product = {PRODUCT_W{1'b0}};
+        for (bit_i = 0; bit_i < 6; bit_i = bit_i + 1)
+          if (((WEIGHT >> bit_i) & 1) != 0) product = product + (truncated << bit_i);
+      end
+      always @(posedge clk)
+        if (en) terms[l*COST_W +: COST_W] <= product[PRODUCT_W-1:3];
+    end
+    // The shorter of the two paths waits for the longer.
+    if (LANES_LAT < TERM_STEPS) begin : plain_waits
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(UF*COST_W), .DEPTH(TERM_STEPS - LANES_LAT)) plain_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(plain_costs), .out(plain_aligned));
+    end else begin : plain_in_time
+      assign plain_aligned = plain_costs;
+    end
+    if (LANES_LAT > TERM_STEPS) begin : terms_wait
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(UF*COST_W), .DEPTH(LANES_LAT - TERM_STEPS)) term_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(terms), .out(terms_aligned));
+    end else begin : terms_in_time
+      assign terms_aligned = terms;
+    end
+    // The last step: the sum, or COST_MAX outside the row.
+    for (l = 0; l < UF; l = l + 1) begin : sum
+      wire [COST_W-1:0] plain = plain_aligned[l*COST_W +: COST_W];
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= plain == COST_MAX[COST_W-1:0] ? COST_MAX[COST_W-1:0]
+                                                                          : plain + terms_aligned[l*COST_W +: COST_W];
     end
   endgenerate
 endmodule

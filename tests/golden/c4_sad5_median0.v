@@ -37,7 +37,7 @@
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
-//   cost                                 0     1    4   cost, window, shd-window, dmax, uf, p2-adapt, min-disp
+//   cost                                 0     1    4   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
 //   LR2 match side                       0     0    0   lr, paths, p1, p2, min-disp
 //   aggregation                          1     0    5   paths, p1, p2, mgm, dmax, uf

@@ -1,4 +1,5 @@
 // Matching costs: uf per step from the match ring and the cost lanes of the cost function; with
+// the fused cost, the pixel-wise term added (fpstereo_fused_features, fpstereo_fused_term); with
 // adaptive P2, each path's P2 for the pixel beside its costs (fpstereo_adaptive_p2).
 #include <fmt/core.h>
 
@@ -18,11 +19,12 @@ class CostStage : public Stage {
   std::string title() const override { return "cost"; }
   // min-disp delays the match columns (or, below 0, the base) before the match ring.
   std::vector<std::string> knobs() const override {
-    return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt", "min-disp"};
+    return {"cost", "window", "shd-window", "dmax", "uf", "p2-adapt", "min-disp", "fused-weight", "fused-trunc",
+            "fused-term"};
   }
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
-  // fpstereo_cost_history); the lanes take their register stages.
+  // fpstereo_cost_history); the lanes take their register stages (with the fused cost, the term's).
   Latency latency(const Geometry& g) const override {
     const Latency wait = base_wait(g.cfg);
     return {wait.rows, 1 + wait.slots, g.cost_latency};
@@ -32,6 +34,12 @@ class CostStage : public Stage {
     const int64_t bits = int64_t(g.cfg.shd_window - 1) * std::max(1, g.widths.code);
     std::vector<StageMemory> m = {{"core.cost.base_codes.line_buffer.mem", g.row_slots, bits},
                                   {"core.cost.match_codes.line_buffer.mem", g.row_slots, bits}};
+    // The fused cost's features wait beside the codes in windows of their own.
+    if (g.cfg.fused_weight != 0) {
+      const int64_t feature_bits = int64_t(g.cfg.shd_window - 1) * g.widths.fused_feature;
+      m.push_back({"core.cost.with_features.base_features.line_buffer.mem", g.row_slots, feature_bits});
+      m.push_back({"core.cost.with_features.match_features.line_buffer.mem", g.row_slots, feature_bits});
+    }
     // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2).
     if (g.cfg.p2_adapt != 0 && base_wait(g.cfg).rows > 0)
       m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(g.cfg).rows * g.row_slots, 4 * 8});
@@ -67,6 +75,27 @@ class CostStage : public Stage {
         break;
     }
     core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
+    // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
+    // defaults (off), so its unused settings change no text.
+    Connections features;
+    if (cost_ != CostFunction::Sad && cost_ != CostFunction::Zsad) {
+      parameters = parameters + Connections{{"LANES_LAT", num(d.cost_lanes_latency)}};
+      features = {{"feature_base", "8'd0"}, {"feature_match", "8'd0"}};
+    }
+    if (c.fused_weight != 0) {
+      const std::string gradient = c.fused_term == FusedTerm::Gradient ? "1" : "0";
+      const std::string feature_bits = num(w.fused_feature);
+      parameters = parameters + Connections{{"WEIGHT", num(c.fused_weight)},
+                                            {"TRUNC", num(c.fused_trunc)},
+                                            {"FEATURE_W", feature_bits},
+                                            {"GRADIENT", gradient}};
+      core.wire("feature_base", w.fused_feature);
+      core.wire("feature_match", w.fused_feature);
+      core.instance("fpstereo_fused_features", "fused_features",
+                    {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
+      features = {};
+    }
     core.wire("history_x", d.x_bits);
     core.wire("history_y", d.signed_y_bits, true);
     core.wire("history_slot", d.cost_row_bits);
@@ -81,7 +110,8 @@ class CostStage : public Stage {
                                            {"SIGNED_Y_W", num(d.signed_y_bits)},
                                            {"G_W", num(d.group_bits)},
                                            {"MIN_DISP", num(c.min_disp)},
-                                           {"LAT", num(d.cost_latency)}});
+                                           {"LAT", num(d.cost_latency)}},
+                  features);
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
     core.wire("cost_penalties", d.penalty_bits);
