@@ -15,9 +15,10 @@
 
 namespace fpstereo::speckle_hw {
 
-// The rows the stage holds for a speckle size S: S rows for a region to close, S + 1 for the kill
-// chain to drain (its backlog is at most (S + 1) * W runs), one for the closure test.
-inline int rows_held(int size) { return 2 * size + 2; }
+// The rows the stage holds for a speckle size S when a word enters at most once every k clocks:
+// S rows for a region to close and one to see it closed, ceil(S / k) for the kill chain (its
+// backlog is under S * W runs, drained one a clock) and one for the chain's own pipeline.
+inline int rows_held(int size, int clocks_per_word = 1) { return size + 2 + (size + clocks_per_word - 1) / clocks_per_word; }
 
 class StreamingSpeckleModel {
  public:
