@@ -29,7 +29,7 @@ class StreamingSpeckleModel {
         prev_words_(size_t(width), invalid), row_labels_(size_t(width), kNone),
         parent_(2, std::vector<int>(size_t(width))), resolved_(2, std::vector<int>(size_t(width))),
         classes_(2, std::vector<ClassRecord>(size_t(width))),
-        joined_(2, std::vector<Joined>(size_t(width))), run_row_(words_.size(), -1), pixel_row_(words_.size(), -1) {}
+        run_row_(words_.size(), -1), pixel_row_(words_.size(), -1) {}
 
   struct Output {
     int row;  // the stream's row count: frames follow each other without a gap
@@ -75,9 +75,9 @@ class StreamingSpeckleModel {
     int count = 0;
     int last_x = 0;
     List runs;
-  };
-  struct Joined {  // a class of the row above met by the row being labelled
-    long row = -1;
+    // Set by the next row when it meets the class, with the tag of the stack entry it joined;
+    // cleared by the finalisation that writes the record, so no stale mark survives a row.
+    bool met = false;
     int tag = kNone;
   };
   struct Finalised {
@@ -159,9 +159,9 @@ class StreamingSpeckleModel {
     a.count = count;
   }
 
-  ClassRecord lookup_class(int label) const {
+  ClassRecord& class_of_row_above(int label) {
     const int b = bank(row_ - 1);
-    for (const Finalised& f : finalising_)  // the queue's bypass
+    for (Finalised& f : finalising_)  // the queue's bypass
       if (f.bank == b && f.label == label) return f.record;
     return classes_[size_t(b)][size_t(label)];
   }
@@ -236,8 +236,8 @@ class StreamingSpeckleModel {
   void start_row(bool frame_start) { above_frame_start_ = frame_start || row_ == 0; }
 
   void join_above(int c, int b) {
-    Joined& j = joined_[size_t(bank(row_ - 1))][size_t(c)];
-    if (j.row == row_) {  // c's set already has pixels in this row: planarity makes it the top
+    ClassRecord& j = class_of_row_above(c);
+    if (j.met) {  // c's set already has pixels in this row: planarity makes it the top
       require(!stack_.empty() && stack_.back().tag == j.tag, "a met class is not the top of the stack");
       if (current_on_stack_) return;  // the same set
       Set& top = stack_.back();
@@ -257,10 +257,10 @@ class StreamingSpeckleModel {
       current_ = top;  // marker only: the data lives in the stack's top while on the stack
       return;
     }
-    const ClassRecord above = lookup_class(c);
+    const ClassRecord above = j;
     Set& s = holder();
     join_lists(s, above.runs, above.count);
-    j.row = row_;
+    j.met = true;
     if (current_on_stack_) {
       s.last_right = std::max(s.last_right, above.last_x);
       j.tag = s.tag;
@@ -279,9 +279,8 @@ class StreamingSpeckleModel {
 
   // A class of the row above whose last pixel is at x_ and that this row did not meet is closed.
   void close_if_done(int c) {
-    const ClassRecord above = lookup_class(c);
-    if (above.last_x != x_) return;
-    if (joined_[size_t(bank(row_ - 1))][size_t(c)].row == row_) return;
+    const ClassRecord& above = class_of_row_above(c);
+    if (above.last_x != x_ || above.met) return;
     if (!big(above.count)) enqueue_kill(above.runs);
   }
 
@@ -317,7 +316,6 @@ class StreamingSpeckleModel {
   std::vector<int> row_labels_;       // W: a label a pixel, the row above's until overwritten
   std::vector<std::vector<int>> parent_, resolved_;  // 2 banks x W, by label
   std::vector<std::vector<ClassRecord>> classes_;    // 2 banks x W, by root label
-  std::vector<std::vector<Joined>> joined_;          // 2 banks x W, by the above row's root label
   std::vector<Set> stack_;
   std::optional<Set> current_;
   bool current_on_stack_ = false;
