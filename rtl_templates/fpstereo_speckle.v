@@ -105,6 +105,9 @@ module fpstereo_speckle #(
   // --- registered reads of the word's step ---
   reg [WORD_W-1:0] word_q, aw_q, ex_word_q;
   reg              first_q, ah_q, ex_kill_q;
+  reg              left_q;                    // the word joins the pixel left of it (phase 2)
+  reg              up_q;                      // the word joins the pixel above it (phase 3)
+  reg              top_at_x_q;                // the top's last pixel above is at x (phase 3)
   reg [X_W-1:0]    al_q, c_q;
   reg [C_W-1:0]    rc_count;
   reg [X_W-1:0]    rc_last;
@@ -154,7 +157,7 @@ module fpstereo_speckle #(
   reg [X_W-1:0]    fin_label, fin_last;
   reg [C_W-1:0]    fin_count, sum;
   reg [P_W-1:0]    fin_head, fin_tail;
-  reg              up, absorbed;
+  reg              absorbed, extended;
 
   always @(*) begin
     n_cur_act = cur_act; n_cur_on = cur_on; n_cur_label = cur_label; n_cur_last = cur_last;
@@ -168,10 +171,9 @@ module fpstereo_speckle #(
     wr_fin = 1'b0; wr_late = 1'b0; fin_label = {X_W{1'b0}}; fin_last = {X_W{1'b0}};
     fin_count = {C_W{1'b0}}; fin_head = {P_W{1'b0}}; fin_tail = {P_W{1'b0}};
     push = 1'b0; enqueue = 1'b0;
-    sum = {C_W{1'b0}}; absorbed = 1'b0;
-    up = !no_above && have_above && ah_q && connected(aw_q, word_q);
+    sum = {C_W{1'b0}}; absorbed = 1'b0; extended = 1'b0;
     // Joins: the class above, or (met before) its set, which is the top of the stack.
-    if (up && word_q != INVALID) begin
+    if (up_q) begin
       if (rc_met) begin
         if (!cur_on) begin  // the current set joins the top
           sum = sat_add(top_count, cur_count);
@@ -199,7 +201,10 @@ module fpstereo_speckle #(
         if (cur_on) begin
           n_top_count = sum;
           if (sum != BIG) n_top_tail = rc_tail;
-          if (rc_last > top_right) n_top_right = rc_last;
+          if (rc_last > top_right) begin
+            n_top_right = rc_last;
+            extended = 1'b1;
+          end
         end else begin
           n_cur_count = sum;
           if (sum != BIG) n_cur_tail = rc_tail;
@@ -216,8 +221,9 @@ module fpstereo_speckle #(
     end
     // A class of the row above not met by its last pixel is closed; a small one is killed.
     if (have_above && ah_q && rc_last == x && !rc_met && !absorbed && rc_count != BIG) enqueue = 1'b1;
-    // The top whose last pixel above is at x leaves the stack.
-    if (n_sp != 0 && n_top_right == x) begin
+    // The top whose last pixel above is at x leaves the stack (an entry pushed or extended now
+    // reaches beyond x: a stack entry's last pixel above is never left of the cursor).
+    if (top_at_x_q && !push && !extended) begin
       if (n_cur_on) begin
         n_cur_label = n_top_label; n_cur_count = n_top_count; n_cur_head = n_top_head;
         n_cur_tail = n_top_tail; n_cur_last = n_top_last;
@@ -239,9 +245,8 @@ module fpstereo_speckle #(
   end
 
   // Phase 2's run bookkeeping: the current run ends where a pixel is not connected to its left.
-  wire left = x != 0 && connected(left_word, word_q);
-  wire run_ends = cur_act && !left;
-  wire starts = word_q != INVALID && !left;
+  wire run_ends = cur_act && !left_q;
+  wire starts = word_q != INVALID && !left_q;
 
   wire [X_W-1:0] res_parent = parent_mem[{~bank, res_next[X_W-1:0]}];
   wire k_last = k_at == k_tail;
@@ -308,6 +313,7 @@ module fpstereo_speckle #(
           kill_mem[pos] <= 1'b0;
           above_word[x] <= word_q;
           c_q <= root_mem[al_q];
+          left_q <= x != 0 && connected(left_word, word_q);
           if (x == 0) no_above <= first_q;
           phase <= 2'd2;
         end
@@ -315,6 +321,8 @@ module fpstereo_speckle #(
           rc_count <= cls_count[{~bank, c_q}]; rc_last <= cls_last[{~bank, c_q}];
           rc_head <= cls_head[{~bank, c_q}]; rc_tail <= cls_tail[{~bank, c_q}];
           rc_met <= cls_met[{~bank, c_q}];
+          up_q <= !no_above && have_above && ah_q && connected(aw_q, word_q);
+          top_at_x_q <= sp != 0 && top_right == x;
           below_q <= stack_mem[sp >= 2 ? sp - 2 : 0];
           if (run_ends && !cur_on) begin  // finalised
             cls_count[{bank, cur_label}] <= cur_count; cls_last[{bank, cur_label}] <= cur_last;
@@ -335,7 +343,7 @@ module fpstereo_speckle #(
             cur_last <= x;
             parent_mem[{bank, next_label[X_W-1:0]}] <= next_label[X_W-1:0];
             next_label <= next_label + 1'b1;
-          end else if (left) begin
+          end else if (left_q) begin
             if (cur_on) begin
               top_count <= sat_add(top_count, {{(C_W - 1){1'b0}}, 1'b1});
               top_last <= x;
