@@ -7,7 +7,9 @@
 // 4 clocks (in_ready is high one clock in four): the labeller's step is spread over 4 phases so
 // that every memory read is registered. Rows follow each other without a gap; the first word of
 // each frame comes with in_first (nothing above it connects), and the last frame leaves when
-// ROWS more rows (of any words, in_first on the first) push it out.
+// ROWS more rows (of any words, in_first on the first) push it out. Every memory is a RAM
+// template with a registered read (fpstereo_ram_sdp; the kill bits fpstereo_ram_tdp), so that
+// the row-sized and ROWS x W tables map to block RAM.
 module fpstereo_speckle #(
   // pixels a row
   parameter W = 32,
@@ -49,6 +51,7 @@ module fpstereo_speckle #(
   localparam C_W = $clog2(S + 2);             // counts 0 .. S + 1 (S + 1: big)
   localparam DEPTH = (W + 1) / 2;             // the stack's entries at most
   localparam SP_W = $clog2(DEPTH + 1);
+  localparam SA_W = DEPTH > 1 ? $clog2(DEPTH) : 1;  // the entries below the top: sp - 1 of them
   localparam LABELS = 2 << X_W;               // {bank, label}: two rows' labels
   localparam SLOT_W = $clog2(ROWS);
   localparam integer BIG_I = S + 1, LAST_X_I = W - 1, LAST_SLOT_I = ROWS - 1, LAST_POS_I = POS - 1;
@@ -57,25 +60,13 @@ module fpstereo_speckle #(
   localparam [SLOT_W-1:0] LAST_SLOT = LAST_SLOT_I[SLOT_W-1:0];
   localparam [P_W-1:0] LAST_POS = LAST_POS_I[P_W-1:0];
 
-  // --- memories ---
-  reg [WORD_W-1:0] words_mem [0:POS-1];       // the held words
-  reg              kill_mem  [0:POS-1];       // a run's kill bit, at its first pixel
-  reg [P_W-1:0]    next_mem  [0:POS-1];       // the runs lists and the kill chain
-  reg [WORD_W-1:0] above_word [0:W-1];        // the row above
-  reg              above_has  [0:W-1];        // the row above's pixel is valid (has a label)
-  reg [X_W-1:0]    above_label [0:W-1];
-  reg [X_W-1:0]    parent_mem [0:LABELS-1];   // {bank, label}
-  reg [X_W-1:0]    root_mem   [0:W-1];        // the previous row's labels, resolved
-  reg [C_W-1:0]    cls_count [0:LABELS-1];    // class records {bank, root label}
-  reg [X_W-1:0]    cls_last  [0:LABELS-1];
-  reg [P_W-1:0]    cls_head  [0:LABELS-1];
-  reg [P_W-1:0]    cls_tail  [0:LABELS-1];
-  // Met by the next row. A met class is the top of the stack (the stack lemma), so the hardware
-  // needs no tag to find it; the cycle-level model checks the lemma with tags.
-  reg              cls_met   [0:LABELS-1];
   // stack entries below the top: {label, count, head, tail, last_left, last_right}
   localparam E_W = X_W + C_W + 2 * P_W + 2 * X_W;
-  reg [E_W-1:0]    stack_mem [0:DEPTH-1];
+  // a class record of a row: {count, last x, runs list head, tail, met by the next row}. A met
+  // class is the top of the stack (the stack lemma), so the hardware needs no tag to find it;
+  // the cycle-level model checks the lemma with tags.
+  localparam CLS_W = C_W + X_W + 2 * P_W + 1;
+  localparam ABOVE_W = WORD_W + 1 + X_W;      // the row above: {word, valid, label}
 
   localparam integer R_I = R;
   localparam [WORD_W:0] RANGE = R_I[WORD_W:0];
@@ -102,18 +93,14 @@ module fpstereo_speckle #(
   assign in_ready = phase == 2'd0 && !rst;
   wire accept = in_valid && in_ready;
 
-  // --- registered reads of the word's step ---
-  reg [WORD_W-1:0] word_q, aw_q, ex_word_q;
-  reg              first_q, ah_q, ex_kill_q;
+  // --- the word's step ---
+  reg [WORD_W-1:0] word_q;
+  reg              first_q;
   reg              left_q;                    // the word joins the pixel left of it (phase 2)
   reg              up_q;                      // the word joins the pixel above it (phase 3)
   reg              top_at_x_q;                // the top's last pixel above is at x (phase 3)
-  reg [X_W-1:0]    al_q, c_q;
-  reg [C_W-1:0]    rc_count;
-  reg [X_W-1:0]    rc_last;
-  reg [P_W-1:0]    rc_head, rc_tail;
-  reg              rc_met;
-  reg [E_W-1:0]    below_q;                   // the entry under the top
+  reg              x0_q;                      // the word is a row's first (phase 2)
+  reg [X_W-1:0]    c_q;                       // the class of the pixel above (phase 3)
 
   // --- the labeller's sets: the current run's, and the top of the stack ---
   reg              cur_act, cur_on;           // a current run; its set is the top
@@ -129,17 +116,92 @@ module fpstereo_speckle #(
 
   // --- the row-end resolution and the kill chain ---
   reg [X_W:0]      res_next, res_count;
+  reg              res1_valid, res2_valid;    // the resolution's pipeline: parent read, root read, write
+  reg [X_W-1:0]    res1_label, res2_label, res2_root_prev;
+  reg              res2_self, res2_forward;   // the label is its own root; its parent is the label written now
   reg              k_pending;
   reg [P_W-1:0]    k_at, k_tail;
-  reg              late_valid;                // the set a row's last pixel finalised, written a clock later
-  reg              late_bank;
-  reg [X_W-1:0]    late_label, late_last;
-  reg [C_W-1:0]    late_count;
-  reg [P_W-1:0]    late_head, late_tail;
+  reg              k_bypass;                  // the run link read last clock was written in that clock
+  reg [P_W-1:0]    k_bypass_data;
+  // The class write left over from phase 3 (the met mark, or the set a row's last pixel
+  // finalised), done in the next clock, where no other class write can be.
+  reg              post_valid;
+  reg [X_W:0]      post_addr;
+  reg [CLS_W-1:0]  post_data;
 
   // --- the exit ---
   reg [WORD_W-1:0] ex_left;
   reg              ex_killed;
+
+  // --- the memories ---
+  // The held words: read in phase 0 (the exit's word, ROWS rows old), written in phase 1.
+  wire [WORD_W-1:0] ex_word;
+  fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(POS), .ADDR_W(P_W)) words_mem (
+    .clk(clk), .we(phase == 2'd1), .waddr(pos), .wdata(word_q),
+    .re(accept), .raddr(pos), .rdata(ex_word));
+  // A run's kill bit, at its first pixel: the exit reads it (phase 0) and clears it (phase 1) on
+  // one port, the kill chain sets it on the other, every clock.
+  wire ex_kill, unused_kill_b;
+  fpstereo_ram_tdp #(.WIDTH(1), .DEPTH(POS), .ADDR_W(P_W)) kill_mem (
+    .clk(clk), .we_a(phase == 2'd1), .re_a(accept), .addr_a(pos), .wdata_a(1'b0), .rdata_a(ex_kill),
+    .we_b(k_pending), .re_b(1'b0), .addr_b(k_at), .wdata_b(1'b1), .rdata_b(unused_kill_b));
+  // The runs lists and the kill chain: the labeller's splice or the chain's append (never both at
+  // one pixel) writes; the chain reads the link of the run it goes to.
+  wire             next_we;
+  wire [P_W-1:0]   next_waddr, next_wdata, next_rdata, k_at_next;
+  fpstereo_ram_sdp #(.WIDTH(P_W), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
+    .clk(clk), .we(next_we), .waddr(next_waddr), .wdata(next_wdata),
+    .re(1'b1), .raddr(k_at_next), .rdata(next_rdata));
+  // The row above, read in phase 0, written in phase 3.
+  wire [WORD_W-1:0] aw;
+  wire              ah;
+  wire [X_W-1:0]    al;
+  wire [X_W-1:0]    this_label_w;
+  fpstereo_ram_sdp #(.WIDTH(ABOVE_W), .DEPTH(W), .ADDR_W(X_W)) above_mem (
+    .clk(clk), .we(phase == 2'd3), .waddr(x), .wdata({word_q, word_q != INVALID, this_label_w}),
+    .re(accept), .raddr(x), .rdata({aw, ah, al}));
+  // Parents {bank, label}: a new label (phase 2) or a join (phase 3) writes this row's bank; the
+  // resolution reads the row above's.
+  wire             parent_we;
+  wire [X_W-1:0]   parent_wlabel, parent_wdata, res_parent;
+  wire res_go = res_next < res_count;
+  fpstereo_ram_sdp #(.WIDTH(X_W), .DEPTH(LABELS), .ADDR_W(X_W + 1)) parent_mem (
+    .clk(clk), .we(parent_we), .waddr({bank, parent_wlabel}), .wdata(parent_wdata),
+    .re(res_go), .raddr({~bank, res_next[X_W-1:0]}), .rdata(res_parent));
+  // The row above's labels resolved, in two copies written together: the resolution reads one
+  // (a parent's root), the labeller the other (phase 1; label 0 is its own root, and the labeller
+  // may read it before the resolution has written it).
+  wire [X_W-1:0]   res_root_w, parent_root, c_root;
+  fpstereo_ram_sdp #(.WIDTH(X_W), .DEPTH(W), .ADDR_W(X_W)) root_res_mem (
+    .clk(clk), .we(res2_valid), .waddr(res2_label), .wdata(res_root_w),
+    .re(res1_valid), .raddr(res_parent), .rdata(parent_root));
+  fpstereo_ram_sdp #(.WIDTH(X_W), .DEPTH(W), .ADDR_W(X_W)) root_mem (
+    .clk(clk), .we(res2_valid), .waddr(res2_label), .wdata(res_root_w),
+    .re(phase == 2'd1), .raddr(al), .rdata(c_root));
+  wire [X_W-1:0]   c = c_root & {X_W{!x0_q}};
+  // The class records {bank, root label}: this row's sets finalised (phase 2, phase 3, or the
+  // clock after phase 3), the row above's read in phase 2 and marked met the clock after phase 3.
+  wire             cls_we;
+  wire [X_W:0]     cls_waddr;
+  wire [CLS_W-1:0] cls_wdata;
+  wire [C_W-1:0]   rc_count;
+  wire [X_W-1:0]   rc_last;
+  wire [P_W-1:0]   rc_head, rc_tail;
+  wire             rc_met;
+  fpstereo_ram_sdp #(.WIDTH(CLS_W), .DEPTH(LABELS), .ADDR_W(X_W + 1)) cls_mem (
+    .clk(clk), .we(cls_we), .waddr(cls_waddr), .wdata(cls_wdata),
+    .re(phase == 2'd2), .raddr({~bank, c}), .rdata({rc_count, rc_last, rc_head, rc_tail, rc_met}));
+  // The stack's entries below the top: the one under the top is read in phase 2, a push written
+  // in phase 3.
+  wire [E_W-1:0]   below;
+  wire             stack_we;
+  localparam [SA_W-1:0] TWO = 2;
+  wire [SA_W-1:0]  stack_push_at = sp[SA_W-1:0] - 1'b1;  // sp - 1 < DEPTH: no wrap
+  wire [SA_W-1:0]  stack_below_at = sp >= 2 ? sp[SA_W-1:0] - TWO : {SA_W{1'b0}};
+  fpstereo_ram_sdp #(.WIDTH(E_W), .DEPTH(DEPTH), .ADDR_W(SA_W)) stack_mem (
+    .clk(clk), .we(stack_we), .waddr(stack_push_at),
+    .wdata({top_label, top_count, top_head, top_tail, top_last, top_right}),
+    .re(phase == 2'd2), .raddr(stack_below_at), .rdata(below));
 
   // Phase 3: the step of docs/speckle-hardware.md after the run bookkeeping of phase 2, as
   // blocking updates of copies of the state; the clocked block below stores the results.
@@ -220,7 +282,7 @@ module fpstereo_speckle #(
       end
     end
     // A class of the row above not met by its last pixel is closed; a small one is killed.
-    if (have_above && ah_q && rc_last == x && !rc_met && !absorbed && rc_count != BIG) enqueue = 1'b1;
+    if (have_above && ah && rc_last == x && !rc_met && !absorbed && rc_count != BIG) enqueue = 1'b1;
     // The top whose last pixel above is at x leaves the stack (an entry pushed or extended now
     // reaches beyond x: a stack entry's last pixel above is never left of the cursor).
     if (top_at_x_q && !push && !extended) begin
@@ -234,7 +296,7 @@ module fpstereo_speckle #(
         fin_last = n_top_last;
       end
       n_sp = n_sp - 1'b1;
-      {n_top_label, n_top_count, n_top_head, n_top_tail, n_top_last, n_top_right} = below_q;
+      {n_top_label, n_top_count, n_top_head, n_top_tail, n_top_last, n_top_right} = below;
     end
     this_label = n_cur_on ? n_top_label : n_cur_label;
     // The row's end finalises the current set (the stack is empty by now).
@@ -248,8 +310,32 @@ module fpstereo_speckle #(
   wire run_ends = cur_act && !left_q;
   wire starts = word_q != INVALID && !left_q;
 
-  wire [X_W-1:0] res_parent = parent_mem[{~bank, res_next[X_W-1:0]}];
+  assign this_label_w = this_label;
+  assign parent_we = (phase == 2'd2 && starts) || (phase == 2'd3 && wr_parent);
+  assign parent_wlabel = phase == 2'd2 ? next_label[X_W-1:0] : wr_parent_at;
+  assign parent_wdata = phase == 2'd2 ? next_label[X_W-1:0] : wr_parent_data;
+  wire fin_run = run_ends && !cur_on;        // phase 2: the run's set is finalised
+  assign cls_we = post_valid || (phase == 2'd2 && fin_run) || (phase == 2'd3 && wr_fin);
+  assign cls_waddr = post_valid ? post_addr : {bank, phase == 2'd2 ? cur_label : fin_label};
+  assign cls_wdata = post_valid ? post_data
+                   : phase == 2'd2 ? {cur_count, cur_last, cur_head, cur_tail, 1'b0}
+                   : {fin_count, fin_last, fin_head, fin_tail, 1'b0};
+  assign stack_we = phase == 2'd3 && push && sp != 0;
+  // The resolution's root of a label: itself, or its parent's root (forwarded when the parent is
+  // the label written in this clock, which the read could not see yet).
+  assign res_root_w = res2_self ? res2_label : res2_forward ? res2_root_prev : parent_root;
+
+  // The kill chain walks one run a clock; a closed small region's list starts it or goes behind
+  // its tail.
   wire k_last = k_at == k_tail;
+  wire k_continue = k_pending && !k_last;
+  wire append = phase == 2'd3 && enqueue;
+  wire [P_W-1:0] k_link = k_bypass ? k_bypass_data : next_rdata;
+  assign k_at_next = (append && !k_continue) ? rc_head : k_link;
+  wire splice = phase == 2'd3 && wr_next;
+  assign next_we = splice || (append && k_continue);
+  assign next_waddr = splice ? wr_next_at : k_tail;
+  assign next_wdata = splice ? wr_next_data : rc_head;
 
   always @(posedge clk) begin
     if (rst) begin
@@ -257,78 +343,57 @@ module fpstereo_speckle #(
       no_above <= 1'b1; pos <= {P_W{1'b0}};
       cur_act <= 1'b0; cur_on <= 1'b0; sp <= {SP_W{1'b0}}; next_label <= {(X_W + 1){1'b0}};
       res_next <= {(X_W + 1){1'b0}}; res_count <= {(X_W + 1){1'b0}};
-      k_pending <= 1'b0; late_valid <= 1'b0; out_valid <= 1'b0;
+      res1_valid <= 1'b0; res2_valid <= 1'b0;
+      k_pending <= 1'b0; post_valid <= 1'b0; out_valid <= 1'b0;
       have_above <= 1'b0;
     end else begin
       out_valid <= 1'b0;
       // The row-end resolution: one label a clock, parents always smaller.
-      if (res_next < res_count) begin
-        root_mem[res_next[X_W-1:0]] <= res_parent == res_next[X_W-1:0] ? res_parent : root_mem[res_parent];
-        res_next <= res_next + 1'b1;
-      end
-      // The late finalisation of a row's last set.
-      if (late_valid) begin
-        cls_count[{late_bank, late_label}] <= late_count; cls_last[{late_bank, late_label}] <= late_last;
-        cls_head[{late_bank, late_label}] <= late_head; cls_tail[{late_bank, late_label}] <= late_tail;
-        cls_met[{late_bank, late_label}] <= 1'b0;
-        late_valid <= 1'b0;
-      end
-      // The kill chain: one run a clock; a new list starts it or goes behind its tail.
-      if (k_pending) kill_mem[k_at] <= 1'b1;
-      if (phase == 2'd3 && enqueue) begin
-        if (k_pending && !k_last) begin
-          next_mem[k_tail] <= rc_head;
-          k_at <= next_mem[k_at];
-        end else begin
-          k_at <= rc_head;
-        end
+      if (res_go) res_next <= res_next + 1'b1;
+      res1_valid <= res_go;
+      res1_label <= res_next[X_W-1:0];
+      res2_valid <= res1_valid;
+      res2_label <= res1_label;
+      res2_self <= res_parent == res1_label;
+      res2_forward <= res2_valid && res_parent == res2_label;
+      res2_root_prev <= res_root_w;
+      post_valid <= 1'b0;
+      // The kill chain (its link read bypassed when the link is written as it is read).
+      k_bypass <= next_we && next_waddr == k_at_next;
+      k_bypass_data <= next_wdata;
+      if (append) begin
+        k_at <= k_at_next;
         k_tail <= rc_tail;
         k_pending <= 1'b1;
       end else if (k_pending) begin
         if (k_last) k_pending <= 1'b0;
-        else k_at <= next_mem[k_at];
+        else k_at <= k_at_next;
       end
       case (phase)
         2'd0: if (accept) begin
           word_q <= in_word;
           first_q <= in_first;
-          aw_q <= above_word[x];
-          ah_q <= above_has[x];
-          al_q <= above_label[x];
-          ex_word_q <= words_mem[pos];
-          ex_kill_q <= kill_mem[pos];
           phase <= 2'd1;
         end
         2'd1: begin
           // The exit: a run's kill bit is at its first pixel.
-          if (x == 0 || !connected(ex_left, ex_word_q)) begin
-            ex_killed <= ex_kill_q;
-            out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
+          if (x == 0 || !connected(ex_left, ex_word)) begin
+            ex_killed <= ex_kill;
+            out_word <= (ex_word != INVALID && ex_kill) ? INVALID : ex_word;
           end else begin
-            out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
+            out_word <= (ex_word != INVALID && ex_killed) ? INVALID : ex_word;
           end
-          ex_left <= ex_word_q;
+          ex_left <= ex_word;
           out_valid <= full;
-          words_mem[pos] <= word_q;
-          kill_mem[pos] <= 1'b0;
-          above_word[x] <= word_q;
-          c_q <= root_mem[al_q];
+          x0_q <= x == 0;
           left_q <= x != 0 && connected(left_word, word_q);
           if (x == 0) no_above <= first_q;
           phase <= 2'd2;
         end
         2'd2: begin
-          rc_count <= cls_count[{~bank, c_q}]; rc_last <= cls_last[{~bank, c_q}];
-          rc_head <= cls_head[{~bank, c_q}]; rc_tail <= cls_tail[{~bank, c_q}];
-          rc_met <= cls_met[{~bank, c_q}];
-          up_q <= !no_above && have_above && ah_q && connected(aw_q, word_q);
+          c_q <= c;
+          up_q <= !no_above && have_above && ah && connected(aw, word_q);
           top_at_x_q <= sp != 0 && top_right == x;
-          below_q <= stack_mem[sp >= 2 ? sp - 2 : 0];
-          if (run_ends && !cur_on) begin  // finalised
-            cls_count[{bank, cur_label}] <= cur_count; cls_last[{bank, cur_label}] <= cur_last;
-            cls_head[{bank, cur_label}] <= cur_head; cls_tail[{bank, cur_label}] <= cur_tail;
-            cls_met[{bank, cur_label}] <= 1'b0;
-          end
           if (run_ends) begin
             cur_act <= 1'b0;
             cur_on <= 1'b0;
@@ -341,7 +406,6 @@ module fpstereo_speckle #(
             cur_head <= pos;
             cur_tail <= pos;
             cur_last <= x;
-            parent_mem[{bank, next_label[X_W-1:0]}] <= next_label[X_W-1:0];
             next_label <= next_label + 1'b1;
           end else if (left_q) begin
             if (cur_on) begin
@@ -360,22 +424,17 @@ module fpstereo_speckle #(
           top_label <= n_top_label; top_last <= n_top_last; top_right <= n_top_right;
           top_count <= n_top_count; top_head <= n_top_head; top_tail <= n_top_tail;
           sp <= n_sp;
-          if (push && sp != 0)
-            stack_mem[sp - 1] <= {top_label, top_count, top_head, top_tail, top_last, top_right};
-          if (wr_next) next_mem[wr_next_at] <= wr_next_data;
-          if (wr_parent) parent_mem[{bank, wr_parent_at}] <= wr_parent_data;
-          if (wr_met) cls_met[{~bank, c_q}] <= 1'b1;
-          if (wr_fin) begin
-            cls_count[{bank, fin_label}] <= fin_count; cls_last[{bank, fin_label}] <= fin_last;
-            cls_head[{bank, fin_label}] <= fin_head; cls_tail[{bank, fin_label}] <= fin_tail;
-            cls_met[{bank, fin_label}] <= 1'b0;
-          end
+          // The row's last set goes in the next clock; the met mark of the row's last pixel is
+          // then dropped (the next row overwrites this bank before the row after reads it).
           if (wr_late) begin
-            late_valid <= 1'b1; late_bank <= bank; late_label <= n_cur_label; late_count <= n_cur_count;
-            late_head <= n_cur_head; late_tail <= n_cur_tail; late_last <= n_cur_last;
+            post_valid <= 1'b1;
+            post_addr <= {bank, n_cur_label};
+            post_data <= {n_cur_count, n_cur_last, n_cur_head, n_cur_tail, 1'b0};
+          end else if (wr_met) begin
+            post_valid <= 1'b1;
+            post_addr <= {~bank, c_q};
+            post_data <= {rc_count, rc_last, rc_head, rc_tail, 1'b1};
           end
-          above_has[x] <= word_q != INVALID;
-          above_label[x] <= this_label;
           left_word <= word_q;
           if (x == LAST_X) begin
             x <= {X_W{1'b0}};
