@@ -90,6 +90,10 @@ module fpstereo_speckle #(
   reg              no_above;                  // this row is a frame's first
   reg              have_above;                // a row has entered since reset
   reg [P_W-1:0]    pos;                       // slot * W + x
+  // The word's position again, as the write address of the words and the row above: with the
+  // read's own address Yosys (0.23) takes the two ports for one and maps them to LUTRAM.
+  reg [P_W-1:0]    pos_w;
+  reg [X_W-1:0]    x_w;
   assign in_ready = phase == 2'd0 && !rst;
   wire accept = in_valid && in_ready;
 
@@ -137,7 +141,7 @@ module fpstereo_speckle #(
   // The held words: read in phase 0 (the exit's word, ROWS rows old), written in phase 1.
   wire [WORD_W-1:0] ex_word;
   fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(POS), .ADDR_W(P_W)) words_mem (
-    .clk(clk), .we(phase == 2'd1), .waddr(pos), .wdata(word_q),
+    .clk(clk), .we(phase == 2'd1), .waddr(pos_w), .wdata(word_q),
     .re(accept), .raddr(pos), .rdata(ex_word));
   // A run's kill bit, at its first pixel: the exit reads it (phase 0) and clears it (phase 1) on
   // one port, the kill chain sets it on the other, every clock.
@@ -158,7 +162,7 @@ module fpstereo_speckle #(
   wire [X_W-1:0]    al;
   wire [X_W-1:0]    this_label_w;
   fpstereo_ram_sdp #(.WIDTH(ABOVE_W), .DEPTH(W), .ADDR_W(X_W)) above_mem (
-    .clk(clk), .we(phase == 2'd3), .waddr(x), .wdata({word_q, word_q != INVALID, this_label_w}),
+    .clk(clk), .we(phase == 2'd3), .waddr(x_w), .wdata({word_q, word_q != INVALID, this_label_w}),
     .re(accept), .raddr(x), .rdata({aw, ah, al}));
   // Parents {bank, label}: a new label (phase 2) or a join (phase 3) writes this row's bank; the
   // resolution reads the row above's.
@@ -373,6 +377,8 @@ module fpstereo_speckle #(
         2'd0: if (accept) begin
           word_q <= in_word;
           first_q <= in_first;
+          pos_w <= pos;
+          x_w <= x;
           phase <= 2'd1;
         end
         2'd1: begin
