@@ -103,8 +103,17 @@ module fpstereo_speckle #(
   reg              left_q;                    // the word joins the pixel left of it (phase 2)
   reg              up_q;                      // the word joins the pixel above it (phase 3)
   reg              top_at_x_q;                // the top's last pixel above is at x (phase 3)
-  reg              x0_q;                      // the word is a row's first (phase 2)
-  reg [X_W-1:0]    c_q;                       // the class of the pixel above (phase 3)
+  reg              x0_q;                      // the word is a row's first (phase 1)
+  reg [X_W-1:0]    c_q;                       // the class of the pixel above (phase 2)
+  // The reads of the big memories, registered once more: a memory of many block RAMs ends in a
+  // multiplexer, which should not add to the logic after it.
+  reg [WORD_W-1:0] ex_word_q;                 // the exit's word and kill bit (phase 2)
+  reg              ex_kill_q;
+  reg [C_W-1:0]    rc_count;                  // the class record of the pixel above (phase 3)
+  reg [X_W-1:0]    rc_last;
+  reg [P_W-1:0]    rc_head, rc_tail;
+  reg              rc_met;
+  reg [E_W-1:0]    below_q;                   // the entry under the top (phase 3)
 
   // --- the labeller's sets: the current run's, and the top of the stack ---
   reg              cur_act, cur_on;           // a current run; its set is the top
@@ -156,14 +165,15 @@ module fpstereo_speckle #(
   fpstereo_ram_sdp #(.WIDTH(P_W), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
     .clk(clk), .we(next_we), .waddr(next_waddr), .wdata(next_wdata),
     .re(1'b1), .raddr(k_at_next), .rdata(next_rdata));
-  // The row above, read in phase 0, written in phase 3.
+  // The row above: the next pixel's read in phase 3 (a clock ahead of its root), this pixel's
+  // write.
   wire [WORD_W-1:0] aw;
   wire              ah;
   wire [X_W-1:0]    al;
   wire [X_W-1:0]    this_label_w;
   fpstereo_ram_sdp #(.WIDTH(ABOVE_W), .DEPTH(W), .ADDR_W(X_W)) above_mem (
     .clk(clk), .we(phase == 2'd3), .waddr(x_w), .wdata({word_q, word_q != INVALID, this_label_w}),
-    .re(accept), .raddr(x), .rdata({aw, ah, al}));
+    .re(phase == 2'd3), .raddr(x == LAST_X ? {X_W{1'b0}} : x + 1'b1), .rdata({aw, ah, al}));
   // Parents {bank, label}: a new label (phase 2) or a join (phase 3) writes this row's bank; the
   // resolution reads the row above's.
   wire             parent_we;
@@ -173,7 +183,7 @@ module fpstereo_speckle #(
     .clk(clk), .we(parent_we), .waddr({bank, parent_wlabel}), .wdata(parent_wdata),
     .re(res_go), .raddr({~bank, res_next[X_W-1:0]}), .rdata(res_parent));
   // The row above's labels resolved, in two copies written together: the resolution reads one
-  // (a parent's root), the labeller the other (phase 1; label 0 is its own root, and the labeller
+  // (a parent's root), the labeller the other (phase 0; label 0 is its own root, and the labeller
   // may read it before the resolution has written it).
   wire [X_W-1:0]   res_root_w, parent_root, c_root;
   fpstereo_ram_sdp #(.WIDTH(X_W), .DEPTH(W), .ADDR_W(X_W)) root_res_mem (
@@ -181,21 +191,18 @@ module fpstereo_speckle #(
     .re(res1_valid), .raddr(res_parent), .rdata(parent_root));
   fpstereo_ram_sdp #(.WIDTH(X_W), .DEPTH(W), .ADDR_W(X_W)) root_mem (
     .clk(clk), .we(res2_valid), .waddr(res2_label), .wdata(res_root_w),
-    .re(phase == 2'd1), .raddr(al), .rdata(c_root));
+    .re(phase == 2'd0), .raddr(al), .rdata(c_root));
   wire [X_W-1:0]   c = c_root & {X_W{!x0_q}};
   // The class records {bank, root label}: this row's sets finalised (phase 2, phase 3, or the
-  // clock after phase 3), the row above's read in phase 2 and marked met the clock after phase 3.
+  // clock after phase 3), the row above's read in phase 1 and marked met the clock after phase 3.
   wire             cls_we;
   wire [X_W:0]     cls_waddr;
   wire [CLS_W-1:0] cls_wdata;
-  wire [C_W-1:0]   rc_count;
-  wire [X_W-1:0]   rc_last;
-  wire [P_W-1:0]   rc_head, rc_tail;
-  wire             rc_met;
+  wire [CLS_W-1:0] cls_rdata;
   fpstereo_ram_sdp #(.WIDTH(CLS_W), .DEPTH(LABELS), .ADDR_W(X_W + 1)) cls_mem (
     .clk(clk), .we(cls_we), .waddr(cls_waddr), .wdata(cls_wdata),
-    .re(phase == 2'd2), .raddr({~bank, c}), .rdata({rc_count, rc_last, rc_head, rc_tail, rc_met}));
-  // The stack's entries below the top: the one under the top is read in phase 2, a push written
+    .re(phase == 2'd1), .raddr({~bank, c}), .rdata(cls_rdata));
+  // The stack's entries below the top: the one under the top is read in phase 1, a push written
   // in phase 3.
   wire [E_W-1:0]   below;
   wire             stack_we;
@@ -205,7 +212,7 @@ module fpstereo_speckle #(
   fpstereo_ram_sdp #(.WIDTH(E_W), .DEPTH(DEPTH), .ADDR_W(SA_W)) stack_mem (
     .clk(clk), .we(stack_we), .waddr(stack_push_at),
     .wdata({top_label, top_count, top_head, top_tail, top_last, top_right}),
-    .re(phase == 2'd2), .raddr(stack_below_at), .rdata(below));
+    .re(phase == 2'd1), .raddr(stack_below_at), .rdata(below));
 
   // Phase 3: the step of docs/speckle-hardware.md after the run bookkeeping of phase 2, as
   // blocking updates of copies of the state; the clocked block below stores the results.
@@ -300,7 +307,7 @@ module fpstereo_speckle #(
         fin_last = n_top_last;
       end
       n_sp = n_sp - 1'b1;
-      {n_top_label, n_top_count, n_top_head, n_top_tail, n_top_last, n_top_right} = below;
+      {n_top_label, n_top_count, n_top_head, n_top_tail, n_top_last, n_top_right} = below_q;
     end
     this_label = n_cur_on ? n_top_label : n_cur_label;
     // The row's end finalises the current set (the stack is empty by now).
@@ -379,25 +386,29 @@ module fpstereo_speckle #(
           first_q <= in_first;
           pos_w <= pos;
           x_w <= x;
+          x0_q <= x == 0;
           phase <= 2'd1;
         end
         2'd1: begin
-          // The exit: a run's kill bit is at its first pixel.
-          if (x == 0 || !connected(ex_left, ex_word)) begin
-            ex_killed <= ex_kill;
-            out_word <= (ex_word != INVALID && ex_kill) ? INVALID : ex_word;
-          end else begin
-            out_word <= (ex_word != INVALID && ex_killed) ? INVALID : ex_word;
-          end
-          ex_left <= ex_word;
-          out_valid <= full;
-          x0_q <= x == 0;
+          ex_word_q <= ex_word;
+          ex_kill_q <= ex_kill;
+          c_q <= c;
           left_q <= x != 0 && connected(left_word, word_q);
           if (x == 0) no_above <= first_q;
           phase <= 2'd2;
         end
         2'd2: begin
-          c_q <= c;
+          // The exit: a run's kill bit is at its first pixel.
+          if (x0_q || !connected(ex_left, ex_word_q)) begin
+            ex_killed <= ex_kill_q;
+            out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
+          end else begin
+            out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
+          end
+          ex_left <= ex_word_q;
+          out_valid <= full;
+          {rc_count, rc_last, rc_head, rc_tail, rc_met} <= cls_rdata;
+          below_q <= below;
           up_q <= !no_above && have_above && ah && connected(aw, word_q);
           top_at_x_q <= sp != 0 && top_right == x;
           if (run_ends) begin
