@@ -80,6 +80,14 @@ module fpstereo_speckle #(
   function [C_W-1:0] sat_add(input [C_W-1:0] a, input [C_W-1:0] b);
     sat_add = ({1'b0, a} + {1'b0, b} > {1'b0, BIG}) ? BIG : a + b;
   endfunction
+  // a + b + 1, and whether it reaches S + 1 (then the sum is S + 1: big for good)
+  function [C_W:0] big_and_sum_plus_1(input [C_W-1:0] a, input [C_W-1:0] b);
+    reg [C_W:0] total;
+    begin
+      total = {1'b0, a} + {1'b0, b} + 1'b1;
+      big_and_sum_plus_1 = total >= {1'b0, BIG} ? {1'b1, BIG} : {1'b0, total[C_W-1:0]};
+    end
+  endfunction
 
   // --- position and phase ---
   reg [1:0]        phase;                     // 0: waiting for a word; 1 .. 3: its steps
@@ -114,6 +122,17 @@ module fpstereo_speckle #(
   reg [P_W-1:0]    rc_head, rc_tail;
   reg              rc_met;
   reg [E_W-1:0]    below_q;                   // the entry under the top (phase 3)
+  // Phase 3's compares and sums, prepared in phase 2 from the class record and the counts as
+  // phase 2 leaves them.
+  reg              closes_q;                  // the class's last pixel above is at x
+  reg              beyond_x_q;                // ... right of x
+  reg              beyond_right_q;            // ... right of the top's
+  reg              small_q;                   // the class has at most S pixels
+  reg              row_end_q;                 // x is the row's last
+  reg              cur_smaller_q;             // the current set's label is below the top's
+  reg [C_W-1:0]    join_sum_q, absorb_sum_q;  // the top with the current set; the class with the set
+  reg              join_big_q, absorb_big_q;  // the sum is S + 1 or more: its list is dropped
+  reg              ex_joins_q;                // the exit's word joins the one left of it (phase 3)
 
   // --- the labeller's sets: the current run's, and the top of the stack ---
   reg              cur_act, cur_on;           // a current run; its set is the top
@@ -229,6 +248,7 @@ module fpstereo_speckle #(
   reg [X_W-1:0]    wr_parent_at, wr_parent_data, this_label;
   reg [X_W-1:0]    fin_label, fin_last;
   reg [C_W-1:0]    fin_count, sum;
+  reg              big;
   reg [P_W-1:0]    fin_head, fin_tail;
   reg              absorbed, extended;
 
@@ -244,20 +264,20 @@ module fpstereo_speckle #(
     wr_fin = 1'b0; wr_late = 1'b0; fin_label = {X_W{1'b0}}; fin_last = {X_W{1'b0}};
     fin_count = {C_W{1'b0}}; fin_head = {P_W{1'b0}}; fin_tail = {P_W{1'b0}};
     push = 1'b0; enqueue = 1'b0;
-    sum = {C_W{1'b0}}; absorbed = 1'b0; extended = 1'b0;
+    sum = {C_W{1'b0}}; big = 1'b0; absorbed = 1'b0; extended = 1'b0;
     // Joins: the class above, or (met before) its set, which is the top of the stack.
     if (up_q) begin
       if (rc_met) begin
         if (!cur_on) begin  // the current set joins the top
-          sum = sat_add(top_count, cur_count);
-          if (sum != BIG) begin
+          sum = join_sum_q; big = join_big_q;
+          if (!big) begin
             wr_next = 1'b1; wr_next_at = top_tail; wr_next_data = cur_head;
             n_top_tail = cur_tail;
           end
           n_top_count = sum;
           n_top_last = x;
           wr_parent = 1'b1;
-          if (cur_label < top_label) begin
+          if (cur_smaller_q) begin
             wr_parent_at = top_label; wr_parent_data = cur_label; n_top_label = cur_label;
           end else begin
             wr_parent_at = cur_label; wr_parent_data = top_label;
@@ -266,25 +286,25 @@ module fpstereo_speckle #(
         end
       end else begin  // the class joins the current set (on the stack or not)
         absorbed = 1'b1;
-        sum = sat_add(cur_on ? top_count : cur_count, rc_count);
-        if (sum != BIG) begin
+        sum = absorb_sum_q; big = absorb_big_q;
+        if (!big) begin
           wr_next = 1'b1; wr_next_at = cur_on ? top_tail : cur_tail; wr_next_data = rc_head;
         end
         wr_met = 1'b1;
         if (cur_on) begin
           n_top_count = sum;
-          if (sum != BIG) n_top_tail = rc_tail;
-          if (rc_last > top_right) begin
+          if (!big) n_top_tail = rc_tail;
+          if (beyond_right_q) begin
             n_top_right = rc_last;
             extended = 1'b1;
           end
         end else begin
           n_cur_count = sum;
-          if (sum != BIG) n_cur_tail = rc_tail;
-          if (rc_last > x) begin  // open: push it
+          if (!big) n_cur_tail = rc_tail;
+          if (beyond_x_q) begin  // open: push it
             push = 1'b1;
             n_top_label = cur_label; n_top_count = sum;
-            n_top_head = cur_head; n_top_tail = (sum != BIG) ? rc_tail : cur_tail;
+            n_top_head = cur_head; n_top_tail = big ? cur_tail : rc_tail;
             n_top_last = cur_last; n_top_right = rc_last;
             n_sp = sp + 1'b1;
             n_cur_on = 1'b1;
@@ -293,7 +313,7 @@ module fpstereo_speckle #(
       end
     end
     // A class of the row above not met by its last pixel is closed; a small one is killed.
-    if (have_above && ah && rc_last == x && !rc_met && !absorbed && rc_count != BIG) enqueue = 1'b1;
+    if (have_above && ah && closes_q && !rc_met && !absorbed && small_q) enqueue = 1'b1;
     // The top whose last pixel above is at x leaves the stack (an entry pushed or extended now
     // reaches beyond x: a stack entry's last pixel above is never left of the cursor).
     if (top_at_x_q && !push && !extended) begin
@@ -311,7 +331,7 @@ module fpstereo_speckle #(
     end
     this_label = n_cur_on ? n_top_label : n_cur_label;
     // The row's end finalises the current set (the stack is empty by now).
-    if (x == LAST_X && n_cur_act) begin
+    if (row_end_q && n_cur_act) begin
       wr_late = 1'b1;
       n_cur_act = 1'b0;
     end
@@ -320,6 +340,12 @@ module fpstereo_speckle #(
   // Phase 2's run bookkeeping: the current run ends where a pixel is not connected to its left.
   wire run_ends = cur_act && !left_q;
   wire starts = word_q != INVALID && !left_q;
+  // Phase 3's sums with the counts phase 2 leaves: the word's own pixel is the + 1 (a new run's
+  // count, or the one phase 2 adds to the current or the top set).
+  wire [C_W-1:0] cls_count_r = cls_rdata[CLS_W-1 -: C_W];
+  wire [X_W-1:0] cls_last_r = cls_rdata[CLS_W-1-C_W -: X_W];
+  wire [C_W:0] join_next = big_and_sum_plus_1(top_count, starts ? {C_W{1'b0}} : cur_count);
+  wire [C_W:0] absorb_next = big_and_sum_plus_1(starts ? {C_W{1'b0}} : cur_on ? top_count : cur_count, cls_count_r);
 
   assign this_label_w = this_label;
   assign parent_we = (phase == 2'd2 && starts) || (phase == 2'd3 && wr_parent);
@@ -337,7 +363,8 @@ module fpstereo_speckle #(
   assign res_root_w = res2_self ? res2_label : res2_forward ? res2_root_prev : parent_root;
 
   // The kill chain walks one run a clock; a closed small region's list starts it or goes behind
-  // its tail.
+  // its tail. The labeller's splices are to open lists, never the chain's, so only an append can
+  // write the link the chain reads.
   wire k_last = k_at == k_tail;
   wire k_continue = k_pending && !k_last;
   wire append = phase == 2'd3 && enqueue;
@@ -370,8 +397,8 @@ module fpstereo_speckle #(
       res2_root_prev <= res_root_w;
       post_valid <= 1'b0;
       // The kill chain (its link read bypassed when the link is written as it is read).
-      k_bypass <= next_we && next_waddr == k_at_next;
-      k_bypass_data <= next_wdata;
+      k_bypass <= append && k_continue && k_tail == k_link;
+      k_bypass_data <= rc_head;
       if (append) begin
         k_at <= k_at_next;
         k_tail <= rc_tail;
@@ -398,16 +425,17 @@ module fpstereo_speckle #(
           phase <= 2'd2;
         end
         2'd2: begin
-          // The exit: a run's kill bit is at its first pixel.
-          if (x0_q || !connected(ex_left, ex_word_q)) begin
-            ex_killed <= ex_kill_q;
-            out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
-          end else begin
-            out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
-          end
+          ex_joins_q <= !x0_q && connected(ex_left, ex_word_q);
           ex_left <= ex_word_q;
-          out_valid <= full;
           {rc_count, rc_last, rc_head, rc_tail, rc_met} <= cls_rdata;
+          closes_q <= cls_last_r == x;
+          beyond_x_q <= cls_last_r > x;
+          beyond_right_q <= cls_last_r > top_right;
+          small_q <= cls_count_r != BIG;
+          row_end_q <= x == LAST_X;
+          cur_smaller_q <= (starts ? next_label[X_W-1:0] : cur_label) < top_label;
+          {join_big_q, join_sum_q} <= join_next;
+          {absorb_big_q, absorb_sum_q} <= absorb_next;
           below_q <= below;
           up_q <= !no_above && have_above && ah && connected(aw, word_q);
           top_at_x_q <= sp != 0 && top_right == x;
@@ -436,6 +464,14 @@ module fpstereo_speckle #(
           phase <= 2'd3;
         end
         default: begin
+          // The exit: a run's kill bit is at its first pixel.
+          if (!ex_joins_q) begin
+            ex_killed <= ex_kill_q;
+            out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
+          end else begin
+            out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
+          end
+          out_valid <= full;
           cur_act <= n_cur_act; cur_on <= n_cur_on; cur_label <= n_cur_label; cur_last <= n_cur_last;
           cur_count <= n_cur_count; cur_head <= n_cur_head; cur_tail <= n_cur_tail;
           top_label <= n_top_label; top_last <= n_top_last; top_right <= n_top_right;
