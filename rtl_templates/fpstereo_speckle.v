@@ -108,8 +108,9 @@ module fpstereo_speckle #(
   // --- the word's step ---
   reg [WORD_W-1:0] word_q;
   reg              first_q;
+  reg              word_valid_q;              // the word is not the invalid word
+  reg              up_raw_q;                  // the word is within range of the one above (phase 2)
   reg              left_q;                    // the word joins the pixel left of it (phase 2)
-  reg              up_q;                      // the word joins the pixel above it (phase 3)
   reg              top_at_x_q;                // the top's last pixel above is at x (phase 3)
   reg              x0_q;                      // the word is a row's first (phase 1)
   reg [X_W-1:0]    c_q;                       // the class of the pixel above (phase 2)
@@ -133,6 +134,8 @@ module fpstereo_speckle #(
   reg [C_W-1:0]    join_sum_q, absorb_sum_q;  // the top with the current set; the class with the set
   reg              join_big_q, absorb_big_q;  // the sum is S + 1 or more: its list is dropped
   reg              ex_joins_q;                // the exit's word joins the one left of it (phase 3)
+  reg              join_q;                    // the current set joins the top (the class above was met)
+  reg              absorb_q;                  // the class above joins the current set
 
   // --- the labeller's sets: the current run's, and the top of the stack ---
   reg              cur_act, cur_on;           // a current run; its set is the top
@@ -153,8 +156,10 @@ module fpstereo_speckle #(
   reg              res2_self, res2_forward;   // the label is its own root; its parent is the label written now
   reg              k_pending;
   reg [P_W-1:0]    k_at, k_tail;
-  reg              k_bypass;                  // the run link read last clock was written in that clock
-  reg [P_W-1:0]    k_bypass_data;
+  // The last append, a clock later: if the chain has just come to the run it wrote, the link
+  // read in that clock was the old one.
+  reg              k_appended;
+  reg [P_W-1:0]    k_appended_at, k_appended_link;
   // The class write left over from phase 3 (the met mark, or the set a row's last pixel
   // finalised), done in the next clock, where no other class write can be.
   reg              post_valid;
@@ -266,49 +271,45 @@ module fpstereo_speckle #(
     push = 1'b0; enqueue = 1'b0;
     sum = {C_W{1'b0}}; big = 1'b0; absorbed = 1'b0; extended = 1'b0;
     // Joins: the class above, or (met before) its set, which is the top of the stack.
-    if (up_q) begin
-      if (rc_met) begin
-        if (!cur_on) begin  // the current set joins the top
-          sum = join_sum_q; big = join_big_q;
-          if (!big) begin
-            wr_next = 1'b1; wr_next_at = top_tail; wr_next_data = cur_head;
-            n_top_tail = cur_tail;
-          end
-          n_top_count = sum;
-          n_top_last = x;
-          wr_parent = 1'b1;
-          if (cur_smaller_q) begin
-            wr_parent_at = top_label; wr_parent_data = cur_label; n_top_label = cur_label;
-          end else begin
-            wr_parent_at = cur_label; wr_parent_data = top_label;
-          end
+    if (join_q) begin  // the current set joins the top (met before)
+      sum = join_sum_q; big = join_big_q;
+      if (!big) begin
+        wr_next = 1'b1; wr_next_at = top_tail; wr_next_data = cur_head;
+        n_top_tail = cur_tail;
+      end
+      n_top_count = sum;
+      n_top_last = x;
+      wr_parent = 1'b1;
+      if (cur_smaller_q) begin
+        wr_parent_at = top_label; wr_parent_data = cur_label; n_top_label = cur_label;
+      end else begin
+        wr_parent_at = cur_label; wr_parent_data = top_label;
+      end
+      n_cur_on = 1'b1;
+    end else if (absorb_q) begin  // the class joins the current set (on the stack or not)
+      absorbed = 1'b1;
+      sum = absorb_sum_q; big = absorb_big_q;
+      if (!big) begin
+        wr_next = 1'b1; wr_next_at = cur_on ? top_tail : cur_tail; wr_next_data = rc_head;
+      end
+      wr_met = 1'b1;
+      if (cur_on) begin
+        n_top_count = sum;
+        if (!big) n_top_tail = rc_tail;
+        if (beyond_right_q) begin
+          n_top_right = rc_last;
+          extended = 1'b1;
+        end
+      end else begin
+        n_cur_count = sum;
+        if (!big) n_cur_tail = rc_tail;
+        if (beyond_x_q) begin  // open: push it
+          push = 1'b1;
+          n_top_label = cur_label; n_top_count = sum;
+          n_top_head = cur_head; n_top_tail = big ? cur_tail : rc_tail;
+          n_top_last = cur_last; n_top_right = rc_last;
+          n_sp = sp + 1'b1;
           n_cur_on = 1'b1;
-        end
-      end else begin  // the class joins the current set (on the stack or not)
-        absorbed = 1'b1;
-        sum = absorb_sum_q; big = absorb_big_q;
-        if (!big) begin
-          wr_next = 1'b1; wr_next_at = cur_on ? top_tail : cur_tail; wr_next_data = rc_head;
-        end
-        wr_met = 1'b1;
-        if (cur_on) begin
-          n_top_count = sum;
-          if (!big) n_top_tail = rc_tail;
-          if (beyond_right_q) begin
-            n_top_right = rc_last;
-            extended = 1'b1;
-          end
-        end else begin
-          n_cur_count = sum;
-          if (!big) n_cur_tail = rc_tail;
-          if (beyond_x_q) begin  // open: push it
-            push = 1'b1;
-            n_top_label = cur_label; n_top_count = sum;
-            n_top_head = cur_head; n_top_tail = big ? cur_tail : rc_tail;
-            n_top_last = cur_last; n_top_right = rc_last;
-            n_sp = sp + 1'b1;
-            n_cur_on = 1'b1;
-          end
         end
       end
     end
@@ -339,9 +340,11 @@ module fpstereo_speckle #(
 
   // Phase 2's run bookkeeping: the current run ends where a pixel is not connected to its left.
   wire run_ends = cur_act && !left_q;
-  wire starts = word_q != INVALID && !left_q;
+  wire starts = word_valid_q && !left_q;
   // Phase 3's sums with the counts phase 2 leaves: the word's own pixel is the + 1 (a new run's
   // count, or the one phase 2 adds to the current or the top set).
+  wire up_next = !no_above && have_above && ah && up_raw_q;  // the word joins the pixel above
+  wire cur_on_next = cur_on && !run_ends && !starts;         // cur_on as phase 2 leaves it
   wire [C_W-1:0] cls_count_r = cls_rdata[CLS_W-1 -: C_W];
   wire [X_W-1:0] cls_last_r = cls_rdata[CLS_W-1-C_W -: X_W];
   wire [C_W:0] join_next = big_and_sum_plus_1(top_count, starts ? {C_W{1'b0}} : cur_count);
@@ -368,7 +371,7 @@ module fpstereo_speckle #(
   wire k_last = k_at == k_tail;
   wire k_continue = k_pending && !k_last;
   wire append = phase == 2'd3 && enqueue;
-  wire [P_W-1:0] k_link = k_bypass ? k_bypass_data : next_rdata;
+  wire [P_W-1:0] k_link = (k_appended && k_at == k_appended_at) ? k_appended_link : next_rdata;
   assign k_at_next = (append && !k_continue) ? rc_head : k_link;
   wire splice = phase == 2'd3 && wr_next;
   assign next_we = splice || (append && k_continue);
@@ -397,8 +400,9 @@ module fpstereo_speckle #(
       res2_root_prev <= res_root_w;
       post_valid <= 1'b0;
       // The kill chain (its link read bypassed when the link is written as it is read).
-      k_bypass <= append && k_continue && k_tail == k_link;
-      k_bypass_data <= rc_head;
+      k_appended <= append && k_continue;
+      k_appended_at <= k_tail;
+      k_appended_link <= rc_head;
       if (append) begin
         k_at <= k_at_next;
         k_tail <= rc_tail;
@@ -411,6 +415,7 @@ module fpstereo_speckle #(
         2'd0: if (accept) begin
           word_q <= in_word;
           first_q <= in_first;
+          word_valid_q <= in_word != INVALID;
           pos_w <= pos;
           x_w <= x;
           x0_q <= x == 0;
@@ -421,6 +426,7 @@ module fpstereo_speckle #(
           ex_kill_q <= ex_kill;
           c_q <= c;
           left_q <= x != 0 && connected(left_word, word_q);
+          up_raw_q <= connected(aw, word_q);
           if (x == 0) no_above <= first_q;
           phase <= 2'd2;
         end
@@ -437,7 +443,8 @@ module fpstereo_speckle #(
           {join_big_q, join_sum_q} <= join_next;
           {absorb_big_q, absorb_sum_q} <= absorb_next;
           below_q <= below;
-          up_q <= !no_above && have_above && ah && connected(aw, word_q);
+          join_q <= up_next && cls_rdata[0] && !cur_on_next;
+          absorb_q <= up_next && !cls_rdata[0];
           top_at_x_q <= sp != 0 && top_right == x;
           if (run_ends) begin
             cur_act <= 1'b0;
