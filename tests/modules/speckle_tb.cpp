@@ -18,6 +18,22 @@ struct SpeckleParams {
 
 using fpstereo::DisparityImage;
 
+// A frame where a label's parent is the label just before it, which the row-end resolution
+// resolves while that label's root is being written (its forward): row 1's labels 1 and 2 join
+// label 0; in row 2 label 1 is a root, and label 2 starts at (4, 2), which keeps label 2, before it
+// joins label 1's set at (5, 2); row 3 reads label 2 at (4, 3). A stale root for label 2 (label
+// 1's of row 1, i.e. 0) sends row 3 to the lone pixel at (0, 2) instead of the region of 18
+// pixels, more than the S of any set, which keeps all of it. Needs w >= 8.
+DisparityImage forwarded_root_frame(int w, uint16_t invalid) {
+  DisparityImage m(w, 5, invalid);
+  for (int x = 0; x < 8; ++x) m.at(x, 0) = 10;
+  for (int x : {0, 2, 3, 5, 6, 7}) m.at(x, 1) = 10;
+  m.at(0, 2) = 30;
+  for (int x : {2, 4, 5}) m.at(x, 2) = 10;
+  m.at(4, 3) = 10;
+  return m;
+}
+
 // A frame of words in 0 .. 40 (or below the invalid word) with invalid pixels, in one of the
 // shapes of tests/test_speckle_hw_model.cpp: patches with noise and holes, bars of single-pixel
 // runs, nested arches, combs, and arches and cups of about S pixels (one leg joins the other's
@@ -101,6 +117,9 @@ int run_speckle(const char* name, const SpeckleParams& p, const modtb::Options& 
   };
   std::vector<Word> stream;
   long words_wanted = o.cycles * 10;
+  frames.push_back(forwarded_root_frame(p.W, invalid));
+  for (int y = 0; y < frames.back().height; ++y)
+    for (int x = 0; x < p.W; ++x) stream.push_back({frames.back().at(x, y), x == 0 && y == 0});
   while (long(stream.size()) < words_wanted) {
     const int h = int(rng.range(1, 40));
     frames.push_back(random_frame(p.W, h, p.S, p.R, invalid, rng));
