@@ -69,9 +69,12 @@ TEST_CASE("every template is used by some configuration", "[stages]") {
       for (const auto& [name, text] : rtl::templates())
         if (file.name == d.prefix + name.substr(std::string("fpstereo").size()) + ".v") used.insert(name);
   }
+  // Not a stage yet (docs/speckle-hardware.md, What remains): the speckle filter's module and the
+  // true dual-port RAM only it uses. Once a configuration uses them, this exception must go.
+  const std::set<std::string> not_yet_a_stage = {"fpstereo_speckle", "fpstereo_ram_tdp"};
   for (const auto& [name, text] : rtl::templates()) {
     INFO("template " << name);
-    CHECK(used.count(name) == 1);
+    CHECK(used.count(name) == (not_yet_a_stage.count(name) ? 0U : 1U));
   }
 }
 

@@ -52,3 +52,9 @@ modtb_set(subpixel_fit subpixel_fit_k5_d256 TOP fpstereo_subpixel_fit SOURCES fp
           PARAMS DMAX=256 DISP_W=8 SUM_W=14 K=5 EQUIANGULAR=1 OUT_W=13)
 modtb_set(subpixel_fit subpixel_fit_k3_parabola_d16 TOP fpstereo_subpixel_fit SOURCES fpstereo_subpixel_fit.v
           PARAMS DMAX=16 DISP_W=4 SUM_W=6 K=3 EQUIANGULAR=0 OUT_W=7)
+modtb_set(speckle speckle_w32_s6_r2 TOP fpstereo_speckle SOURCES fpstereo_speckle.v fpstereo_ram_sdp.v fpstereo_ram_tdp.v
+          PARAMS W=32 S=6 R=2 WORD_W=8)
+modtb_set(speckle speckle_w17_s13_r0 TOP fpstereo_speckle SOURCES fpstereo_speckle.v fpstereo_ram_sdp.v fpstereo_ram_tdp.v
+          PARAMS W=17 S=13 R=0 WORD_W=12)
+modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckle.v fpstereo_ram_sdp.v fpstereo_ram_tdp.v
+          PARAMS W=24 S=1 R=1 WORD_W=6)
