@@ -66,15 +66,22 @@ module fpstereo_speckle_stage #(
   wire signed [SIGNED_Y_W-1:0] lagged = $signed({2'b00, in_y}) - LAG_Y;
   wire signed [SIGNED_Y_W-1:0] exit_y = wrapped && lagged < 0 ? lagged + height_y : lagged;
   wire exit_event = in_x < frame_width && exit_y >= 0 && exit_y < height_y + EXTRA_ROWS;
-  // The slot taken last, whose exit word the filter holds when the next slot's word comes.
-  reg           prev_event;
+  // The slot taken last, whose exit word the filter holds when the next slot's word comes. The
+  // stream out starts with the first slot whose exit row is not above the frame (as the disparity
+  // reorder RAM's starts with row 0), so that every slot it passes has a position.
+  reg           prev_event, prev_started;
   reg [X_W-1:0] prev_x;
-  /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever prev_event
+  /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 once started
   reg signed [SIGNED_Y_W-1:0] prev_y;
   /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk)
-    if (restart) prev_event <= 1'b0;
-    else if (take) prev_event <= exit_event;
+    if (restart) begin
+      prev_event <= 1'b0;
+      prev_started <= 1'b0;
+    end else if (take) begin
+      prev_event <= exit_event;
+      if (exit_y >= 0) prev_started <= 1'b1;
+    end
   always @(posedge clk)
     if (take) begin
       prev_x <= in_x;
@@ -85,7 +92,7 @@ module fpstereo_speckle_stage #(
       out_done <= 1'b0;
       out_event <= 1'b0;
     end else if (adv) begin
-      out_done <= in_done;
+      out_done <= in_done && prev_started;
       out_event <= in_done && prev_event;
     end
   always @(posedge clk)
