@@ -49,17 +49,21 @@ module fpstereo_speckle_stage #(
       fpstereo_invalid_parameters_speckle_stage_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
   localparam integer ROWS_I = ROWS;
   localparam signed [SIGNED_Y_W-1:0] LAG_Y = ROWS_I[SIGNED_Y_W-1:0];
   wire take = adv && in_done;
+  // Slots outside the frame (bubbles, the rows below it in a lone frame's drain) enter as the
+  // invalid word: the stages before leave whatever word there.
+  wire in_frame = in_x < frame_width && in_y < frame_height;
   wire [DISP_W:0] filtered;
   /* verilator lint_off UNUSEDSIGNAL */  // slots come G >= 4 steps apart: always ready, and the
   wire ready, exit_valid;                 // exit word is there by the next slot's word
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_speckle #(.W(ROW_SLOTS), .S(S), .R(R), .WORD_W(DISP_W + 1), .INVALID({1'b1, {DISP_W{1'b0}}}),
+  fpstereo_speckle #(.W(ROW_SLOTS), .S(S), .R(R), .WORD_W(DISP_W + 1), .INVALID(INVALID_WORD),
                      .ROWS(ROWS)) filter (
     .clk(clk), .rst(restart), .in_valid(take), .in_ready(ready), .in_first(in_x == 0 && in_y == 0),
-    .in_word(in_word), .out_valid(exit_valid), .out_word(filtered));
+    .in_word(in_frame ? in_word : INVALID_WORD), .out_valid(exit_valid), .out_word(filtered));
   // The position of the word that leaves: ROWS rows above the entering one, the previous frame's
   // row once wrapped.
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
