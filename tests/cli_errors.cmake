@@ -137,8 +137,8 @@ expect_error("speckle-size = 100: the speckle filter's stage needs dmax / uf >= 
 if(EXISTS ${WORK}/rtl_speckle_uf)
   message(SEND_ERROR "fpstereo-rtl --dmax 64 --uf 32 --speckle-size 100 left ${WORK}/rtl_speckle_uf behind")
 endif()
-expect_error("speckle-size = 1: not in the HLS path yet (the models and the RTL have it); use 0" --emit hls --speckle-size 1
-             -o ${WORK}/hls_speckle)
+expect_error("speckle-size = 1: the speckle filter's stage needs dmax / uf >= 4 (1)" --emit hls --dmax 32 --uf 32
+             --speckle-size 1 -o ${WORK}/hls_speckle)
 if(EXISTS ${WORK}/hls_speckle)
   message(SEND_ERROR "fpstereo-rtl --emit hls --speckle-size 1 left ${WORK}/hls_speckle behind")
 endif()

@@ -1,6 +1,10 @@
 // Speckle filter (fpstereo_speckle_stage around fpstereo_speckle, docs/speckle-hardware.md): every
 // slot's word enters the filter, and the word of the same slot speckle_rows rows earlier leaves
-// with the next slot's word, registered: speckle_rows rows, one slot and one step behind.
+// with the next slot's word, registered: speckle_rows rows, one slot and one step behind. The HLS
+// path runs the kernel speckle_filter (hls/fpstereo_hls.hpp).
+#include <fmt/core.h>
+
+#include "hls_text.hpp"
 #include "stage_list.hpp"
 #include "stage_support.hpp"
 
@@ -55,11 +59,18 @@ class SpeckleStage : public Stage {
                   Connections{{"in_done", in.done}, {"out_done", out.done}} + stream_connections(in, out));
   }
 
-  // ---- HLS: not there yet; the generator refuses the configuration.
-  std::string hls_calls(const RtlDesign& d, HlsStreams&) const override {
-    throw ConfigError("speckle-size = " + std::to_string(d.cfg.speckle_size) +
-                      ": not in the HLS path yet (the models and the RTL have it); use 0");
+  // ---- HLS: the models' one-pass labelling (speckle_filter), S rows behind its input.
+  std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
+    const std::string in = s.base;
+    s.base = "despeckled";
+    return "\n  // Speckle filter.\n" + hls::stream_declarations("Word<C>", {s.base}) +
+           fmt::format("  speckle_filter<C>({}, {}, W, H);\n", in, s.base);
   }
+  HlsLoop hls_loop(const Geometry& g) const override {
+    const int64_t S = g.cfg.speckle_size;
+    return {"speckle filter (each with a root search)", "(H+S)*W", (int64_t(g.cfg.height) + S) * g.cfg.width};
+  }
+  int hls_fill_rows(const Geometry& g) const override { return g.cfg.speckle_size; }
 };
 
 }  // namespace
