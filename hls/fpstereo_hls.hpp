@@ -898,6 +898,82 @@ lr_check_pixels:
 }
 
 // ---------------------------------------------------------------------------------------------
+// Section 5a: the speckle filter. Each row's runs (valid neighbours within the range) get labels,
+// which union-find joins with the labels above them; a region's pixel count, saturated at S + 1,
+// lives at its root, always a label of the newest row the region reaches, so no label in use
+// points into a row that has left the ring of S + 1 rows. Row y leaves once row y + S has been
+// labelled: a region that still reaches row y + S spans S + 1 rows and stays, any other is closed
+// and its count final. The root search is a walk of unbounded length, so this kernel does not
+// reach II = 1 (the RTL's stage avoids the walk, docs/speckle-hardware.md).
+template <class C>
+bool speckle_connected(int a, int b) {
+  const int step = a > b ? a - b : b - a;
+  return a != C::kInvalidWord && b != C::kInvalidWord && step <= C::kSpeckleRange;
+}
+
+// The root of a label, halving the path on the way (a parent is never in an older row).
+inline int speckle_root(int* parent, int label) {
+speckle_find:
+  while (parent[label] != label) {
+    parent[label] = parent[parent[label]];
+    label = parent[label];
+  }
+  return label;
+}
+
+template <class C>
+void speckle_filter(hls::stream<Word<C>>& in, hls::stream<Word<C>>& out, int width, int height) {
+  constexpr int kSize = C::kSpeckleSize, kRows = kSize + 1, kNoLabel = -1;
+  constexpr int kBig = kSize + 1;  // a count that has passed S
+  static int words[kRows][C::kMaxWidth];
+  static int labels[kRows][C::kMaxWidth];  // a run's label: its row's slot * kMaxWidth + its first x
+  static int parent[kRows * C::kMaxWidth], count[kRows * C::kMaxWidth];
+speckle_rows:
+  for (int y = 0; y < height + kSize; ++y) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight + C::kSpeckleSize
+    if (y < height) {
+      const int slot = y % kRows, above = (y + kSize) % kRows;
+    speckle_label:
+      for (int x = 0; x < width; ++x) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth
+        const int v = int(in.read());
+        words[slot][x] = v;
+        int label = kNoLabel;
+        if (v != C::kInvalidWord) {
+          if (x > 0 && speckle_connected<C>(words[slot][x - 1], v)) {
+            label = labels[slot][x - 1];
+            const int root = speckle_root(parent, label);
+            count[root] = count[root] < kBig ? count[root] + 1 : kBig;
+          } else {
+            label = slot * C::kMaxWidth + x;
+            parent[label] = label;
+            count[label] = 1;
+          }
+          if (y > 0 && speckle_connected<C>(words[above][x], v)) {
+            const int root = speckle_root(parent, label), other = speckle_root(parent, labels[above][x]);
+            if (root != other) {
+              parent[other] = root;
+              count[root] = count[root] + count[other] < kBig ? count[root] + count[other] : kBig;
+            }
+          }
+        }
+        labels[slot][x] = label;
+      }
+    }
+    if (y >= kSize) {
+      const int slot = (y - kSize) % kRows;
+    speckle_decide:
+      for (int x = 0; x < width; ++x) {
+#pragma HLS LOOP_TRIPCOUNT max = C::kMaxWidth
+        const int v = words[slot][x];
+        const bool speckle = v != C::kInvalidWord && count[speckle_root(parent, labels[slot][x])] <= kSize;
+        out.write(Word<C>(speckle ? int(C::kInvalidWord) : v));
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Section 6: the lower median of the valid values in the window (positions outside the image
 // arrive as invalid); an invalid centre stays invalid. Each valid value is the median iff the
 // number of valid values below it is at most the rank sought and those at or below exceed it.

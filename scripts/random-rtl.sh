@@ -42,6 +42,7 @@ draw() {
   flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
          --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 17 - 8)))
   add --uf "${divisors[@]}"
+  local uf=$REPLY
   add --cost census rank sad zsad shd
   add --window 3 5 7
   add --shd-window 1 3 5
@@ -58,6 +59,11 @@ draw() {
   add --fused-weight 0 0 1 4 11 32
   add --fused-trunc 8 32 255
   add --fused-term intensity gradient
+  # The speckle filter's stage takes a word once in 4 clocks (dmax / uf >= 4).
+  if (( dmax / uf >= 4 )); then
+    add --speckle-size 0 0 2 5 12
+    add --speckle-range 0 1 2
+  fi
 }
 
 failed=0

@@ -132,8 +132,13 @@ expect_error("paths = 0,180: the 180-degree path is not in the hardware generato
 if(EXISTS ${WORK}/hls_path180)
   message(SEND_ERROR "fpstereo-rtl --emit hls --paths 0,180 left ${WORK}/hls_path180 behind")
 endif()
-expect_error("speckle-size = 100: not in the hardware generators yet (the models have it); use 0" --speckle-size 100)
-expect_error("speckle-size = 1: not in the hardware generators yet" --emit hls --speckle-size 1 -o ${WORK}/hls_speckle)
+expect_error("speckle-size = 100: the speckle filter's stage needs dmax / uf >= 4 (2); use a smaller uf or speckle-size 0"
+             --dmax 64 --uf 32 --speckle-size 100 -o ${WORK}/rtl_speckle_uf)
+if(EXISTS ${WORK}/rtl_speckle_uf)
+  message(SEND_ERROR "fpstereo-rtl --dmax 64 --uf 32 --speckle-size 100 left ${WORK}/rtl_speckle_uf behind")
+endif()
+expect_error("speckle-size = 1: the speckle filter's stage needs dmax / uf >= 4 (1)" --emit hls --dmax 32 --uf 32
+             --speckle-size 1 -o ${WORK}/hls_speckle)
 if(EXISTS ${WORK}/hls_speckle)
   message(SEND_ERROR "fpstereo-rtl --emit hls --speckle-size 1 left ${WORK}/hls_speckle behind")
 endif()

@@ -58,6 +58,8 @@ check_module(fused_term "-GWEIGHT=8 -GTRUNC=40" "-GWEIGHT=8 -GTRUNC=40 -GLANES_L
              fused_term_LAT_is_not_the_latency delay)
 check_module(speckle "-GW=1242 -GS=100 -GWORD_W=12 -GR=32" "-GW=32 -GS=8 -GROWS=11"
   speckle_ROWS_below_S_plus_2_plus_ceil_S_over_4 ram_sdp ram_tdp)
+check_module(speckle_stage "-GROW_SLOTS=40 -GG=4 -GS=6" "-GROW_SLOTS=40 -GG=2 -GS=6"
+  speckle_stage_G_below_4 speckle ram_sdp ram_tdp)
 check_module(wta "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=2"
   "-GUF=16 -GLANE_W=4 -GLEVELS_PER_STAGE=2 -GTREE_LAT=1" reduction_tree_LAT_is_not_the_tree_latency
   delay min_tree reduction_tree unique_join)

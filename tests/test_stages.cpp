@@ -35,6 +35,7 @@ std::vector<StereoConfig> covering_configs() {
       const bool compares_codes = cost != CostFunction::Sad && cost != CostFunction::Zsad;
       c.fused_weight = compares_codes && lr != LrCheck::Lr1 ? 4 : 0;
       c.fused_term = lr == LrCheck::Lr2 ? FusedTerm::Gradient : FusedTerm::Intensity;
+      c.speckle_size = cost == CostFunction::Census || cost == CostFunction::Rank ? 6 : 0;
       out.push_back(c);
     }
   return out;
@@ -47,12 +48,9 @@ TEST_CASE("every configuration parameter is owned by a stage", "[stages]") {
   for (const auto& cfg : covering_configs())
     for (const auto& stage : rtl::plan(cfg).stages)
       for (const auto& knob : stage->knobs()) owned.insert(knob);
-  // The speckle filter is in the models only: the hardware generators refuse it until its stage
-  // has it (docs/semantics.md section 5a), which will own these.
-  const std::set<std::string> models_only = {"speckle-size", "speckle-range"};
   for (const auto& spec : param_specs()) {
     INFO("parameter " << spec.name);
-    CHECK(owned.count(spec.name) == (models_only.count(spec.name) ? 0 : 1));
+    CHECK(owned.count(spec.name) == 1);
   }
   for (const auto& knob : owned) {
     INFO("knob " << knob);
@@ -69,12 +67,9 @@ TEST_CASE("every template is used by some configuration", "[stages]") {
       for (const auto& [name, text] : rtl::templates())
         if (file.name == d.prefix + name.substr(std::string("fpstereo").size()) + ".v") used.insert(name);
   }
-  // Not a stage yet (docs/speckle-hardware.md, What remains): the speckle filter's module and the
-  // true dual-port RAM only it uses. Once a configuration uses them, this exception must go.
-  const std::set<std::string> not_yet_a_stage = {"fpstereo_speckle", "fpstereo_ram_tdp"};
   for (const auto& [name, text] : rtl::templates()) {
     INFO("template " << name);
-    CHECK(used.count(name) == (not_yet_a_stage.count(name) ? 0U : 1U));
+    CHECK(used.count(name) == 1U);
   }
 }
 

@@ -139,6 +139,9 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << "  static constexpr fpstereo_hls::Lr kLr = fpstereo_hls::Lr::" << lr_enum(cfg.lr) << ";\n"
      << "  static constexpr int kLrThreshold = " << cfg.lr_threshold << ";\n"
      << "  static constexpr int kUniqueness = " << cfg.uniqueness << ";  // 0: no uniqueness hardware\n"
+     << "  static constexpr int kSpeckleSize = " << cfg.speckle_size << ";  // 0: off\n"
+     << "  static constexpr int kSpeckleRange = " << (cfg.speckle_range << cfg.subpixel_bits)
+     << ";  // in output-word units (r << sub-pixel bits)\n"
      << "  static constexpr int kMedian = " << cfg.median << ";\n"
      << "  static constexpr bool kGapInterpolation = " << (cfg.gap_interpolation ? "true" : "false") << ";\n"
      << "  static constexpr int kSubpixelBits = " << cfg.subpixel_bits << ";  // 0: whole pixels\n"

@@ -35,10 +35,11 @@ void check_hardware_rules(const StereoConfig& cfg) {
   // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md, "MGM-style
   // aggregation"), so the aggregator keeps one predecessor per path.
   if (cfg.mgm) throw ConfigError("mgm = on: not in the hardware generators (the models have it)");
-  // The speckle filter's stage is specified in the models first (docs/semantics.md section 5a).
-  if (cfg.speckle_size != 0)
-    throw ConfigError("speckle-size = " + std::to_string(cfg.speckle_size) +
-                      ": not in the hardware generators yet (the models have it); use 0");
+  // The speckle filter's module takes a word once in 4 clocks (docs/speckle-hardware.md).
+  if (cfg.speckle_size != 0 && cfg.dmax / cfg.uf < kSpeckleClocksPerWord)
+    throw ConfigError("speckle-size = " + std::to_string(cfg.speckle_size) + ": the speckle filter's stage needs dmax / uf >= " +
+                      std::to_string(kSpeckleClocksPerWord) + " (" + std::to_string(cfg.dmax / cfg.uf) +
+                      "); use a smaller uf or speckle-size 0");
   // A search range wider than the row searches nothing: the hardware keeps LR2's match side
   // (dmax + min-disp slots behind) and the offset's delays within a row-time.
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
@@ -94,6 +95,10 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.finds_second_best = cfg.uniqueness != 0 || cfg.confidence;
   g.wta_word_lag = g.finds_second_best ? g.unique_tree_latency + Geometry::kUniqueWordSteps : g.wta_tree_latency;
   g.subpixel_steps = cfg.subpixel_bits != 0 ? cfg.subpixel_bits + 6 : 0;
+  // D = S + 2 + ceil(S / 4) at a word every 4 clocks (docs/speckle-hardware.md, "Why it is bounded").
+  g.speckle_rows = cfg.speckle_size != 0
+                       ? cfg.speckle_size + 2 + ceil_div(cfg.speckle_size, kSpeckleClocksPerWord)
+                       : 0;
   // A chain's next pixel must find the previous pixel's minimum finished: the last group, the
   // path lanes (two steps, fpstereo_path_lanes), the tree and the running minimum take
   // G - 1 + 2 + latency + 1 steps; K chains give it K * G (fpstereo_aggregator checks it).

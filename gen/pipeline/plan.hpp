@@ -24,6 +24,9 @@ struct RtlOptions {
 // Bits of the confidence (0..255) that rides above each word from the winner-take-all on.
 constexpr int kConfidenceBits = 8;
 
+// The clocks fpstereo_speckle takes a word (its first form): a slot of G >= 4 steps gives them.
+constexpr int kSpeckleClocksPerWord = 4;
+
 // The geometry: what the configuration fixes before any stage is placed. Stages read it to state
 // their latencies and memories.
 struct Geometry {
@@ -66,6 +69,9 @@ struct Geometry {
   // confidence) the group join's and the test's registers.
   int wta_word_lag = 0;
   int subpixel_steps = 0;  // the sub-pixel fit's: subpixel-bits + 6 (0 without it)
+  // Rows the speckle filter holds, its latency in rows (0 without it); the output's confidence
+  // rows wait as long.
+  int speckle_rows = 0;
   // The words from the winner-take-all to the disparity reorder RAM: with sub-pixel output and a
   // left-right check they carry the whole D under the refined disparity, as the check compares
   // whole disparities (semantics section 5); the RAM keeps the confidence above them.

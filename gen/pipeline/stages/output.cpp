@@ -44,11 +44,13 @@ class OutputStage : public Stage {
 
  private:
   // Rows of confidences between the disparity reorder RAM and the output: more than the rows the
-  // median and gap interpolation delay the stream; none when nothing but the check lies between.
+  // speckle filter, the median and gap interpolation delay the stream; none when nothing but the
+  // check lies between.
   static int confidence_rows(const Geometry& g) {
     const StereoConfig& c = g.cfg;
-    if (!c.confidence || (c.median == 0 && !c.gap_interpolation && c.lr == LrCheck::None)) return 0;
-    return c.median / 2 + (c.gap_interpolation ? 1 : 0) + 2;
+    if (!c.confidence || (c.speckle_size == 0 && c.median == 0 && !c.gap_interpolation && c.lr == LrCheck::None))
+      return 0;
+    return g.speckle_rows + c.median / 2 + (c.gap_interpolation ? 1 : 0) + 2;
   }
   // The pixel's confidence beside its word, registered with it.
   static void confidence_verilog(CoreBuilder& core, const RtlDesign& d, const PixelStream& s) {

@@ -13,6 +13,7 @@ std::vector<StagePtr> pipeline_stages(const StereoConfig& c) {
   stages.push_back(disparity_reorder_stage());
   if (c.lr != LrCheck::None) stages.push_back(lr_check_stage(c));
   if (c.right_view) stages.push_back(right_view_stage());
+  if (c.speckle_size != 0) stages.push_back(speckle_stage());
   if (c.median != 0) stages.push_back(median_stage());
   if (c.gap_interpolation) stages.push_back(gap_stage());
   stages.push_back(output_stage());

@@ -26,6 +26,7 @@ StagePtr confidence_stage();
 StagePtr disparity_reorder_stage();
 StagePtr lr_check_stage(const StereoConfig& cfg);
 StagePtr right_view_stage();
+StagePtr speckle_stage();
 StagePtr median_stage();
 StagePtr gap_stage();
 StagePtr output_stage();
