@@ -299,12 +299,11 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double word_tag = 1 + d.x_bits + d.out_row_bits;
   // The word tag beside the confidence's division (fpstereo_confidence's data).
   const double tag = 1 + d.x_bits + d.out_row_bits + d.group_bits + w.output_word + (d.carries_whole ? w.disparity : 0);
-  // fpstereo_subpixel: the sums' history of wta_word_lag + G steps (uf sums each; the selection
-  // of three from dmax scales alike), and the fit's K + 3 division steps over sums widened by K.
+  // fpstereo_subpixel: the selection of three sums from dmax, and the fit's K + 3 division steps
+  // over sums widened by K (the sums' history is registers).
   const double kbits = c.subpixel_bits;
   const double subpixel =
-      c.subpixel_bits > 0 ? (d.wta_word_lag * uf + dmax) * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits)
-                          : 0.0;
+      c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
@@ -334,45 +333,46 @@ std::vector<double> features(const rtl::RtlDesign& d) {
 }
 
 const std::vector<std::string>& group_names() {
-  static const std::vector<std::string> names = {"constant",   "aggregation", "cost and filters", "new stages",
-                                                 "registers", "window cost lanes"};
+  static const std::vector<std::string> names = {"constant", "aggregation", "stages", "registers",
+                                                 "window cost lanes"};
   return names;
 }
 
-// LUT: within "cost and filters" the terms keep the coefficients of a fit of 13 designs of the
-// Verilog before the 300 MHz registers (2026-11-25) as weights, only the group's scale is
-// refitted; the aggregation has its own coefficient; the new stages' terms count their datapath
-// bits and share one. FF: the register terms count flip-flops, so they share one coefficient
-// (near 1: Yosys trims and merges a few); the terms that already are register counts (the
-// confidence's steps, adaptive P2's, the right view's) join them, the window-cost lanes of SAD,
-// ZSAD and SHD, not counted, have their own. Four coefficients per resource can be fitted from
-// the few Yosys runs a refit affords (each takes minutes to an hour); 25 free ones could not.
+// LUT: the path lanes have their own coefficient; the other stages' terms share one ("stages"),
+// each weighted by the LUTs per term unit its modules had in the hierarchical Yosys synthesis of
+// fit designs f02, f03, f09 and f17 (docs/resource-model.md; the weights of SAD's and ZSAD's
+// lanes, not among those, are an older fit's). The fitted scale then absorbs what flattening
+// saves. FF: the register terms count flip-flops, so they share one coefficient (near 1: Yosys
+// trims and merges a few); the terms that already are register counts (the confidence's steps,
+// adaptive P2's, the right view's) join them; the window-cost lanes of SAD, ZSAD and SHD, not
+// counted, have their own. Three coefficients per resource can be fitted from the few Yosys runs
+// a refit affords (each takes minutes to an hour); 24 free ones could not.
 const std::vector<TermTie>& term_ties() {
   static const std::vector<TermTie> ties = {
-      {0, 0, 1, 1},              // top/control
-      {1, 4, 1, 0},              // path lanes
-      {2, 4, 2.84331, 0},        // code cost lanes
-      {2, 4, 5.53235, 0},        // pixel cost lanes
-      {2, 4, 1.03102, 0},        // match ring (its registers: cost registers)
-      {2, 4, 3.31595, 0},        // transform
-      {2, 4, 4.77856, 0},        // median
-      {2, 4, 4.58489, 0},        // LR1
-      {2, 4, 1417.79, 0},        // LR2
-      {2, 4, 3.50621, 0},        // ZSAD lanes
-      {3, 4, 1, 0},              // second best
-      {3, 4, 1, 0},              // winner-take-all tree
-      {3, 4, 1, 1},              // confidence: its steps' registers
-      {3, 4, 1, 0},              // sub-pixel
-      {3, 4, 1, 1},              // adaptive P2: its registers
-      {3, 4, 1, 1},              // right view: its registers
-      {3, 4, 1, 0},              // gap interpolation
-      {0, 4, 0, 1},              // aggregation registers
-      {0, 4, 0, 1},              // cost registers
-      {0, 4, 0, 1},              // winner-take-all registers
-      {0, 4, 0, 1},              // median registers
-      {0, 4, 0, 1},              // sub-pixel registers
-      {0, 4, 0, 1},              // check and gap registers
-      {0, 5, 0, 1},              // window cost lanes
+      {0, 0, 1, 1},        // top/control
+      {1, 3, 1, 0},        // path lanes
+      {2, 3, 1.7, 0},      // code cost lanes: census 1.85 (f02), 1.7 (f09, f17); rank 5.1 (f03)
+      {2, 3, 5.53235, 0},  // pixel cost lanes
+      {2, 3, 1.0, 0},      // match ring (its registers: cost registers)
+      {2, 3, 1.1, 0},      // transform: census 1.08 to 1.1, rank 1.77
+      {2, 3, 5.4, 0},      // median: 5.0 (f02), 5.9 (f03)
+      {2, 3, 2.5, 0},      // LR1: the match side and the check (f02)
+      {2, 3, 500, 0},      // LR2: the second aggregator's own logic, the check (f03, f09)
+      {2, 3, 3.50621, 0},  // ZSAD lanes
+      {2, 3, 13.5, 0},     // second best: 13.1 to 15
+      {2, 3, 1.6, 0},      // winner-take-all tree: LR2's match side (f03)
+      {2, 3, 0.57, 1},     // confidence: 0.56 to 0.59; its steps' registers
+      {2, 3, 0.65, 0},     // sub-pixel: 0.65 to 0.66
+      {2, 3, 1.55, 1},     // adaptive P2: 1.37 to 1.72; its registers
+      {2, 3, 1, 1},        // right view; its registers
+      {2, 3, 7.0, 0},      // gap interpolation: 7.0 to 7.05
+      {0, 3, 0, 1},        // aggregation registers
+      {0, 3, 0, 1},        // cost registers
+      {0, 3, 0, 1},        // winner-take-all registers
+      {0, 3, 0, 1},        // median registers
+      {0, 3, 0, 1},        // sub-pixel registers
+      {0, 3, 0, 1},        // check and gap registers
+      {0, 4, 0, 1},        // window cost lanes
   };
   return ties;
 }
