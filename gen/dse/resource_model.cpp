@@ -46,6 +46,7 @@ const std::vector<RamOption>& block_options() {
 struct Choice {
   double cost = std::numeric_limits<double>::infinity();
   int64_t cells = 0;
+  int64_t deep = 1;  // cells the depth is split over (mult_a)
   const RamOption* option = nullptr;
 };
 
@@ -67,23 +68,23 @@ Choice best_block(int64_t words, int64_t bits) {
       const int64_t mult_a = ceil_div(words, int64_t(1) << (o.abits - int(b)));
       const int64_t repl = ceil_div(mult_a * swizzle, unit);
       const double cost = double(o.cost) * double(repl) + split_cost(mult_a, bits) + kEmulation;
-      if (cost < best.cost) best = {cost, repl, &o};
+      if (cost < best.cost) best = {cost, repl, mult_a, &o};
     }
   return best;
 }
 
 // Distributed RAM with a widthscale cost: 16 per LUT-width of data (integer division, as Yosys).
-double best_distributed(int64_t words, int64_t bits) {
+Choice best_distributed(int64_t words, int64_t bits) {
   struct Lutram {
     int abits, width;
   };
   // SDP (one write, one read port) 32 x 14 and 64 x 7; DP 32 x 8 .. 256 x 1.
   static const Lutram options[] = {{5, 14}, {6, 7}, {5, 8}, {6, 4}, {7, 2}, {8, 1}};
-  double best = std::numeric_limits<double>::infinity();
+  Choice best;
   for (const Lutram& o : options) {
     const int64_t mult_a = ceil_div(words, int64_t(1) << o.abits);
     const double cost = double(16 * mult_a * bits / o.width) + split_cost(mult_a, bits) + kEmulation;
-    best = std::min(best, cost);
+    if (cost < best.cost) best = {cost, 0, mult_a, nullptr};
   }
   return best;
 }
@@ -107,15 +108,18 @@ std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& d) {
 
 void map_memory(MemoryEstimate& m) {
   const double logic = double(m.words * m.bits);
-  const double lutram = best_distributed(m.words, m.bits);
+  const Choice lutram = best_distributed(m.words, m.bits);
   const Choice block = m.sync_read ? best_block(m.words, m.bits) : Choice{};
   m.bram18 = m.bram36 = 0;
-  if (block.cost < lutram && block.cost < logic) {
+  m.read_mux_bits = 0;
+  if (block.cost < lutram.cost && block.cost < logic) {
     m.target = "bram";
     m.bram18 = int(block.cells * block.option->bram18_cells);
     m.bram36 = int(block.cells * block.option->bram36_cells);
-  } else if (lutram < logic) {
+    m.read_mux_bits = (block.deep - 1) * m.bits;
+  } else if (lutram.cost < logic) {
     m.target = "lutram";
+    m.read_mux_bits = (lutram.deep - 1) * m.bits;
   } else {
     m.target = "ff";
   }
@@ -141,6 +145,7 @@ const std::vector<std::string>& feature_names() {
                                                  "adaptive P2",
                                                  "right view",
                                                  "gap interpolation",
+                                                 "memory read multiplexers",
                                                  "aggregation registers",
                                                  "cost registers",
                                                  "winner-take-all registers",
@@ -206,6 +211,12 @@ double winner_registers(const rtl::RtlDesign& d, bool second_best, double tag) {
   return tree_register_nodes(d.cfg.uf, rtl::Geometry::kUniqueLevelsPerStage) * summary +
          (d.unique_tree_latency + rtl::Geometry::kUniqueWordSteps) * (tag + d.group_bits) +
          (5 * sum + disp + 2) + 8 + 2 * product + 4 * sum + 2 * disp + 3;
+}
+
+double memory_read_mux_bits(const rtl::RtlDesign& d) {
+  double bits = 0;
+  for (const MemoryEstimate& m : design_memories(d)) bits += double(m.read_mux_bits);
+  return bits;
 }
 
 // fpstereo_point_cost (census, rank): the match ring, each lane's Hamming chunk counts (census)
@@ -323,6 +334,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           c.right_view ? 3.0 * (w.disparity + 1) : 0.0,
           // fpstereo_gap_fill: the row's words and their positions (its RAMs are block RAM).
           c.gap_interpolation ? double(w.output_word + d.x_bits) : 0.0,
+          // The read multiplexers of the RAMs whose depth is split over several cells.
+          memory_read_mux_bits(d),
           // the FF terms: register bits (see above)
           aggregator_registers(d, d.penalty_bits) + (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0),
           cost_registers(d, ring), winner_registers(d, d.finds_second_best, word_tag) +
@@ -366,6 +379,7 @@ const std::vector<TermTie>& term_ties() {
       {2, 3, 1.55, 1},     // adaptive P2: 1.37 to 1.72; its registers
       {2, 3, 1, 1},        // right view; its registers
       {2, 3, 7.0, 0},      // gap interpolation: 7.0 to 7.05
+      {2, 3, 0.5, 0},      // memory read multiplexers: 0.43 to 0.77 (f02, f03, f09, f17; Yosys' cost 0.5)
       {0, 3, 0, 1},        // aggregation registers
       {0, 3, 0, 1},        // cost registers
       {0, 3, 0, 1},        // winner-take-all registers
