@@ -184,7 +184,8 @@ double aggregator_registers(const rtl::RtlDesign& d, int penalty_bits) {
   const double costs = uf * d.widths.cost;
   const bool path0 = (c.paths & kPath0) != 0, path45 = (c.paths & kPath45) != 0;
   // per path: the lanes' neighbour and stay candidates (one bit wider), the path costs, the
-  // predecessor's minimum and flag; the minimum tree's registered nodes and its running minimum
+  // predecessor's minimum and flag; the minimum tree's registered nodes (their lane index is
+  // unused) and its running minimum
   const double lanes = paths * (2 * uf * (pw + 1) + uf * pw + pw + 1);
   const double minima = paths * (tree_register_nodes(c.uf, d.levels_per_stage) + 1) * pw;
   // the predecessors' lanes held for the 45, 90 and 135 degree paths, the lanes d - 1 and the
@@ -213,6 +214,7 @@ double winner_registers(const rtl::RtlDesign& d, bool second_best, double tag) {
          (5 * sum + disp + 2) + 8 + 2 * product + 4 * sum + 2 * disp + 3;
 }
 
+// The LUT term of the RAMs whose depth is split over several cells: their read multiplexers.
 double memory_read_mux_bits(const rtl::RtlDesign& d) {
   double bits = 0;
   for (const MemoryEstimate& m : design_memories(d)) bits += double(m.read_mux_bits);
@@ -276,7 +278,8 @@ double check_and_gap_registers(const rtl::RtlDesign& d) {
 
 }  // namespace
 
-// Each term is the bit count of one stage's datapath; its coefficient is LUTs (or FFs) per bit.
+// The LUT terms are bit counts of the stages' datapaths, their coefficients LUTs per bit; the FF
+// terms count the stages' register bits (above). term_ties() says which term serves which.
 std::vector<double> features(const rtl::RtlDesign& d) {
   const StereoConfig& c = d.cfg;
   const Widths& w = d.widths;
