@@ -208,7 +208,7 @@ double winner_registers(const rtl::RtlDesign& d, bool second_best, double tag) {
     return tree_register_nodes(d.cfg.uf, d.levels_per_stage) * (sum + d.lane_bits) +
            d.wta_tree_latency * (tag + d.group_bits) + sum + disp;
   const double summary = 5 * sum + d.lane_bits + 2;  // best, all, but first, but last, second
-  const double product = sum + 8;                   // a sum times the percentage
+  const double product = sum + 8;                    // a sum times the percentage
   return tree_register_nodes(d.cfg.uf, rtl::Geometry::kUniqueLevelsPerStage) * summary +
          (d.unique_tree_latency + rtl::Geometry::kUniqueWordSteps) * (tag + d.group_bits) +
          (5 * sum + disp + 2) + 8 + 2 * product + 4 * sum + 2 * disp + 3;
@@ -341,7 +341,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           memory_read_mux_bits(d),
           // the FF terms: register bits (see above)
           aggregator_registers(d, d.penalty_bits) + (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0),
-          cost_registers(d, ring), winner_registers(d, d.finds_second_best, word_tag) +
+          cost_registers(d, ring),
+          winner_registers(d, d.finds_second_best, word_tag) +
               (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0),
           median_registers(d), subpixel_registers(d), check_and_gap_registers(d),
           // SAD, ZSAD and SHD: every lane sums a whole window (fpstereo_window_cost_lanes)
