@@ -122,9 +122,9 @@ int main(int argc, char** argv) {
           dse::write_fit_data(data, rows);  // after each run: an interrupted collection keeps what it has
         }
     }
-    dse::Coefficients coef = dse::fitted_coefficients();
+    // A refit does not read the committed coefficients: they may predate a change of the terms.
+    dse::Coefficients coef = do_refit ? dse::refit(rows) : dse::fitted_coefficients();
     if (do_refit) {
-      coef = dse::refit(rows);
       const std::string text = dse::coefficients_source(rows, coef);
       if (!write.empty()) {
         write_file_atomically(write, text);

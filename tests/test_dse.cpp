@@ -101,6 +101,33 @@ TEST_CASE("block RAM of single memories as Yosys 0.23 maps them", "[dse]") {
   CHECK(mapped(16, 224).target == "lutram");
 }
 
+TEST_CASE("a RAM split in depth has a read multiplexer over its cells", "[dse]") {
+  // One cell deep: no multiplexer.
+  CHECK(mapped(900, 32).read_mux_bits == 0);
+  CHECK(mapped(14416, 28).read_mux_bits == 0);
+  CHECK(mapped(28800, 20).read_mux_bits == 0);
+  // 10256 x 32 (f09's path rows, uf 4, G 16): 32 bits swizzle to 36, 1K x 36 per RAMB36 -> 11 cells
+  // deep at 11 x 257 + 0.5 x 10 x 32 + 0.5 x 11 + 2 = 2994.5, below 1K x 18 RAMB18s (22 cells,
+  // 3003.5) and 2K x 18 RAMB36s (12 cells); its read multiplexer picks one of 11 words of 32 bits.
+  // Yosys: 150 LUTs per row RAM in f09's hierarchical synthesis.
+  const dse::MemoryEstimate row = mapped(10256, 32);
+  CHECK(row.bram36 == 11);
+  CHECK(row.bram18 == 0);
+  CHECK(row.read_mux_bits == 10 * 32);
+}
+
+// The FF terms count register bits as the Verilog declares them, so their fitted coefficient is
+// near 1 (Yosys trims a few and merges equal registers): far from it, the counts no longer
+// describe the Verilog.
+TEST_CASE("the fitted coefficient of the register terms is near one flip-flop per counted bit", "[dse]") {
+  const auto& names = dse::feature_names();
+  const auto at = std::find(names.begin(), names.end(), "aggregation registers");
+  REQUIRE(at != names.end());
+  const double per_bit = dse::fitted_coefficients().ff[size_t(at - names.begin())];
+  CHECK(per_bit > 0.9);
+  CHECK(per_bit < 1.05);
+}
+
 TEST_CASE("block RAM of a whole design matches the hand derivation (and Yosys)", "[dse]") {
   // census 5x5, dmax 64, uf 4, 900x260, no median: K = 2, G = 16, 900 slots.
   // Line buffers 2 x 1, cost RAM 20, three path rows 3 x 14, disparity RAM 1 -> 65 RAMB36;

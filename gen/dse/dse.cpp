@@ -458,8 +458,10 @@ SweepResult sweep(const SweepOptions& o) {
       try {
         const std::string& key = todo[i];
         const Accuracy a = evaluate_accuracy(members[key].front(), ds, frame_threads);
-        cache.store(cache.path(key, ds.id), key, a);
         std::lock_guard<std::mutex> g(lock);
+        // Under the lock: write_file_atomically stages its temporaries in one process-wide list
+        // (the signal handler's), which two threads must not change at once.
+        cache.store(cache.path(key, ds.id), key, a);
         accuracy[key] = a;
         result.evaluated++;
         progress.step(++done);

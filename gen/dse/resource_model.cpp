@@ -46,6 +46,7 @@ const std::vector<RamOption>& block_options() {
 struct Choice {
   double cost = std::numeric_limits<double>::infinity();
   int64_t cells = 0;
+  int64_t deep = 1;  // cells the depth is split over (mult_a)
   const RamOption* option = nullptr;
 };
 
@@ -67,23 +68,23 @@ Choice best_block(int64_t words, int64_t bits) {
       const int64_t mult_a = ceil_div(words, int64_t(1) << (o.abits - int(b)));
       const int64_t repl = ceil_div(mult_a * swizzle, unit);
       const double cost = double(o.cost) * double(repl) + split_cost(mult_a, bits) + kEmulation;
-      if (cost < best.cost) best = {cost, repl, &o};
+      if (cost < best.cost) best = {cost, repl, mult_a, &o};
     }
   return best;
 }
 
 // Distributed RAM with a widthscale cost: 16 per LUT-width of data (integer division, as Yosys).
-double best_distributed(int64_t words, int64_t bits) {
+Choice best_distributed(int64_t words, int64_t bits) {
   struct Lutram {
     int abits, width;
   };
   // SDP (one write, one read port) 32 x 14 and 64 x 7; DP 32 x 8 .. 256 x 1.
   static const Lutram options[] = {{5, 14}, {6, 7}, {5, 8}, {6, 4}, {7, 2}, {8, 1}};
-  double best = std::numeric_limits<double>::infinity();
+  Choice best;
   for (const Lutram& o : options) {
     const int64_t mult_a = ceil_div(words, int64_t(1) << o.abits);
     const double cost = double(16 * mult_a * bits / o.width) + split_cost(mult_a, bits) + kEmulation;
-    best = std::min(best, cost);
+    if (cost < best.cost) best = {cost, 0, mult_a, nullptr};
   }
   return best;
 }
@@ -107,15 +108,18 @@ std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& d) {
 
 void map_memory(MemoryEstimate& m) {
   const double logic = double(m.words * m.bits);
-  const double lutram = best_distributed(m.words, m.bits);
+  const Choice lutram = best_distributed(m.words, m.bits);
   const Choice block = m.sync_read ? best_block(m.words, m.bits) : Choice{};
   m.bram18 = m.bram36 = 0;
-  if (block.cost < lutram && block.cost < logic) {
+  m.read_mux_bits = 0;
+  if (block.cost < lutram.cost && block.cost < logic) {
     m.target = "bram";
     m.bram18 = int(block.cells * block.option->bram18_cells);
     m.bram36 = int(block.cells * block.option->bram36_cells);
-  } else if (lutram < logic) {
+    m.read_mux_bits = (block.deep - 1) * m.bits;
+  } else if (lutram.cost < logic) {
     m.target = "lutram";
+    m.read_mux_bits = (lutram.deep - 1) * m.bits;
   } else {
     m.target = "ff";
   }
@@ -135,16 +139,147 @@ const std::vector<std::string>& feature_names() {
                                                  "LR2",
                                                  "ZSAD lanes",
                                                  "second best",
+                                                 "winner-take-all tree",
                                                  "confidence",
                                                  "sub-pixel",
                                                  "adaptive P2",
-                                                 "offset delays",
                                                  "right view",
-                                                 "gap interpolation"};
+                                                 "gap interpolation",
+                                                 "memory read multiplexers",
+                                                 "aggregation registers",
+                                                 "cost registers",
+                                                 "winner-take-all registers",
+                                                 "median registers",
+                                                 "sub-pixel registers",
+                                                 "check and gap registers",
+                                                 "window cost lanes"};
   return names;
 }
 
-// Each term is the bit count of one stage's datapath; its coefficient is LUTs (or FFs) per bit.
+namespace {
+
+// ---- register bits, counted from the plan as the stages' Verilog declares them -----------------
+// Most flip-flops are pipeline registers whose width and depth the plan fixes; these counts are
+// the FF terms (Yosys removes a few bits and merges equal registers, which the fitted
+// coefficient absorbs). Shift registers without a reset and without taps become SRL LUTs and
+// are not counted.
+
+int clog2(int n) { return n > 1 ? bits_for(uint64_t(n - 1)) : 0; }
+
+// Nodes of fpstereo_reduction_tree's registered levels over n leaves: every levels_per_stage-th
+// level and the root.
+double tree_register_nodes(int n, int levels_per_stage) {
+  const int levels = clog2(n);
+  double nodes = 0;
+  for (int l = 0; l <= levels; ++l)
+    if (l == levels || (l > 0 && l % levels_per_stage == 0)) nodes += double((n + (1 << l) - 1) >> l);
+  return nodes;
+}
+
+// fpstereo_aggregator, its fpstereo_path_lanes and fpstereo_path_minimum per path. The lanes'
+// copies of the cost word are one register after Yosys merges them.
+double aggregator_registers(const rtl::RtlDesign& d, int penalty_bits) {
+  const StereoConfig& c = d.cfg;
+  const double uf = c.uf, paths = c.path_count(), pw = d.widths.path_cost;
+  const double costs = uf * d.widths.cost;
+  const bool path0 = (c.paths & kPath0) != 0, path45 = (c.paths & kPath45) != 0;
+  // per path: the lanes' neighbour and stay candidates (one bit wider), the path costs, the
+  // predecessor's minimum and flag; the minimum tree's registered nodes (their lane index is
+  // unused) and its running minimum
+  const double lanes = paths * (2 * uf * (pw + 1) + uf * pw + pw + 1);
+  const double minima = paths * (tree_register_nodes(c.uf, d.levels_per_stage) + 1) * pw;
+  // the predecessors' lanes held for the 45, 90 and 135 degree paths, the lanes d - 1 and the
+  // minima beside them, and the per-chain minima of the 0 and 45 degree paths
+  const double predecessors = (paths - (path0 ? 1 : 0)) * uf * pw + paths * 2 * pw +
+                              ((path0 ? 1 : 0) + (path45 ? 1 : 0)) * d.chains * pw;
+  // the tag S1 .. S5 and its delay to the minima; the schedule's counters
+  const double tag = 1 + d.x_bits + (d.y_bits + 1) + d.group_bits + d.chain_bits + d.out_row_bits;
+  const double tags = (4 + d.path_tree_latency) * tag + d.group_bits + 2 * d.chain_bits + d.x_bits +
+                      d.cost_row_bits + d.out_row_bits;
+  return lanes + minima + predecessors + 2 * costs + penalty_bits + uf * d.widths.aggregated + tags;
+}
+
+// fpstereo_wta (the plain minimum tree) or fpstereo_wta_unique (the tree of best and second best,
+// registered after each join, then the group join and the test's registers), with the word's tag
+// delayed beside them.
+double winner_registers(const rtl::RtlDesign& d, bool second_best, double tag) {
+  const double sum = d.widths.aggregated, disp = d.widths.disparity;
+  if (!second_best)
+    return tree_register_nodes(d.cfg.uf, d.levels_per_stage) * (sum + d.lane_bits) +
+           d.wta_tree_latency * (tag + d.group_bits) + sum + disp;
+  const double summary = 5 * sum + d.lane_bits + 2;  // best, all, but first, but last, second
+  const double product = sum + 8;                    // a sum times the percentage
+  return tree_register_nodes(d.cfg.uf, rtl::Geometry::kUniqueLevelsPerStage) * summary +
+         (d.unique_tree_latency + rtl::Geometry::kUniqueWordSteps) * (tag + d.group_bits) +
+         (5 * sum + disp + 2) + 8 + 2 * product + 4 * sum + 2 * disp + 3;
+}
+
+// The LUT term of the RAMs whose depth is split over several cells: their read multiplexers.
+double memory_read_mux_bits(const rtl::RtlDesign& d) {
+  double bits = 0;
+  for (const MemoryEstimate& m : design_memories(d)) bits += double(m.read_mux_bits);
+  return bits;
+}
+
+// fpstereo_point_cost (census, rank): the match ring, each lane's Hamming chunk counts (census)
+// or difference (rank), its border flag and cost; the window-cost lanes of SAD, ZSAD and SHD
+// are a term of their own. Then the transform's two codes, the front end's two pixel windows
+// and the cost reorder's tag beside the cost latency.
+double cost_registers(const rtl::RtlDesign& d, double ring) {
+  const StereoConfig& c = d.cfg;
+  const Widths& w = d.widths;
+  double lanes = 0;
+  if (c.cost == CostFunction::Census) {
+    const int chunks = (w.code + 5) / 6, sets = (chunks + 7) / 8;  // 6-bit popcounts, summed by 8
+    lanes = c.uf * (3.0 * chunks + 1 + w.cost + (chunks > 8 ? sets * w.cost + 1 : 0));
+  } else if (c.cost == CostFunction::Rank) {
+    lanes = c.uf * (w.code + 1.0 + w.cost);
+  }
+  const double codes = c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2.0 * w.code;
+  const double windows = 2.0 * c.window * c.window * w.pixel;
+  const double reorder_tag = d.cost_latency * (1.0 + d.x_bits + d.cost_row_bits + d.group_bits);
+  return ring + lanes + codes + windows + reorder_tag;
+}
+
+// fpstereo_median: the window of words, fpstereo_median_select's copy of it and the two beside
+// the rank count, per result bit the candidates' flags (the values' lower bits ride in shift-
+// register LUTs), the position's delay of 3 steps per word bit and the output registers.
+double median_registers(const rtl::RtlDesign& d) {
+  const int m = d.cfg.median;
+  if (m == 0) return 0;
+  const double word = d.widths.output_word, cells = double(m) * m;
+  const double position = 1.0 + d.x_bits + d.y_bits;
+  return cells * word + 3 * cells * word + 2 * cells * d.widths.output_disparity + 3 * word * position +
+         (position + d.x_bits + d.signed_y_bits + 1) + word;
+}
+
+// fpstereo_subpixel: the sums of the dmax disparities it selects from (the older steps of the
+// history have no taps: shift-register LUTs), the tag beside the fit's steps, the selection's
+// window and three sums, and fpstereo_subpixel_fit's division steps.
+double subpixel_registers(const rtl::RtlDesign& d) {
+  const StereoConfig& c = d.cfg;
+  if (c.subpixel_bits == 0) return 0;
+  const double sum = d.widths.aggregated, disp = d.widths.disparity, k = c.subpixel_bits;
+  const double tag = 1 + d.x_bits + d.out_row_bits + d.group_bits + (d.carries_whole ? disp : 0);
+  const int low_bits = d.widths.disparity - d.widths.disparity / 2;
+  const double window = ((1 << low_bits) + 2) * sum;
+  return c.dmax * sum + d.subpixel_steps * (tag + 1) + 3 * disp + window + 3 * sum +
+         (k + 2) * (2 * (sum + k) + disp);
+}
+
+// fpstereo_lr_check's two register steps (position, words, the match side's disparity) and
+// fpstereo_gap_fill's three (position, word, the row's last valid word).
+double check_and_gap_registers(const rtl::RtlDesign& d) {
+  const double position = 1.0 + d.x_bits + d.y_bits, word = d.widths.output_word;
+  const double check = d.cfg.lr != LrCheck::None ? 2 * (position + 1) + 3 * word + d.widths.disparity : 0.0;
+  const double gap = d.cfg.gap_interpolation ? 3 * position + 2 * word : 0.0;
+  return check + gap;
+}
+
+}  // namespace
+
+// The LUT terms are bit counts of the stages' datapaths, their coefficients LUTs per bit; the FF
+// terms count the stages' register bits (above). term_ties() says which term serves which.
 std::vector<double> features(const rtl::RtlDesign& d) {
   const StereoConfig& c = d.cfg;
   const Widths& w = d.widths;
@@ -153,51 +288,36 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double n = c.window, k = c.shd_window;
   // The match ring (fpstereo_match_ring.v) keeps dmax + span - 1 match columns in registers.
   double code_lanes = 0, pixel_lanes = 0, ring = 0, zero_mean = 0;
-  // fpstereo_cost_history: one match column and the base (data and its centre's position).
-  double column = 0, base = 0;
   switch (c.cost) {
     case CostFunction::Census:
     case CostFunction::Rank:
       code_lanes = uf * w.code;
       ring = dmax * w.code;
-      column = base = w.code;
       break;
     // The window costs (fpstereo_window_cost_lanes.v): every lane sums a whole window.
     case CostFunction::Shd:
       code_lanes = uf * k * k * w.code;
       ring = (dmax + k - 1) * k * w.code;
-      column = k * w.code;
-      base = k * k * w.code;
       break;
     case CostFunction::Sad:
       pixel_lanes = uf * n * n * w.pixel;
       ring = (dmax + n - 1) * n * w.pixel;
-      column = n * w.pixel + d.column_sum_bits;
-      base = n * n * w.pixel;
       break;
     case CostFunction::Zsad:  // plus the ring of column sums, the means and their subtraction
       pixel_lanes = uf * n * n * w.pixel;
       zero_mean = pixel_lanes;
       ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
-      column = n * w.pixel + d.column_sum_bits;
-      base = n * n * w.pixel;
       break;
   }
-  // The disparity offset delays one side by |min-disp| slots (fpstereo_cost_history): the match
-  // columns when it is positive, the base and its position when negative; shift-register LUTs of
-  // up to 32 steps each.
-  const double offset_steps = std::ceil(std::abs(c.min_disp) / 32.0);
-  const double offset = c.min_disp > 0   ? column * offset_steps
-                        : c.min_disp < 0 ? (base + d.x_bits + d.signed_y_bits + d.cost_row_bits) * offset_steps
-                                         : 0.0;
+  // The tag beside the winner-take-all's tree (fpstereo_wta, fpstereo_wta_unique).
+  const double word_tag = 1 + d.x_bits + d.out_row_bits;
   // The word tag beside the confidence's division (fpstereo_confidence's data).
   const double tag = 1 + d.x_bits + d.out_row_bits + d.group_bits + w.output_word + (d.carries_whole ? w.disparity : 0);
-  // fpstereo_subpixel: the sums' history of wta_word_lag + G steps (uf sums each; the selection
-  // of three from dmax scales alike), and the fit's K + 3 division steps over sums widened by K.
+  // fpstereo_subpixel: the selection of three sums from dmax, and the fit's K + 3 division steps
+  // over sums widened by K (the sums' history is registers).
   const double kbits = c.subpixel_bits;
   const double subpixel =
-      c.subpixel_bits > 0 ? (d.wta_word_lag * uf + dmax) * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits)
-                          : 0.0;
+      c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
@@ -206,49 +326,71 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean,
           // fpstereo_wta_unique's tree carries the second-best sum beside the best.
           d.finds_second_best ? uf * w.aggregated : 0.0,
+          // fpstereo_wta's minimum tree: the base side's without that, and LR2's match side's.
+          ((d.finds_second_best ? 0 : 1) + (c.lr == LrCheck::Lr2 ? 1 : 0)) * uf * w.aggregated,
           // 8 restoring steps over the sums, the word waiting 10 steps beside them.
           c.confidence ? 16.0 * w.aggregated + 10 * tag : 0.0, subpixel,
           // fpstereo_adaptive_p2: per path the pixel step, its product and P2; the penalties
           // then ride above the cost words.
-          c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0, offset,
+          c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0,
           // The right view's output register and its stream's handshake (Dm exists for the check).
           c.right_view ? 3.0 * (w.disparity + 1) : 0.0,
           // fpstereo_gap_fill: the row's words and their positions (its RAMs are block RAM).
-          c.gap_interpolation ? double(w.output_word + d.x_bits) : 0.0};
+          c.gap_interpolation ? double(w.output_word + d.x_bits) : 0.0,
+          // The read multiplexers of the RAMs whose depth is split over several cells.
+          memory_read_mux_bits(d),
+          // the FF terms: register bits (see above)
+          aggregator_registers(d, d.penalty_bits) + (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0),
+          cost_registers(d, ring),
+          winner_registers(d, d.finds_second_best, word_tag) +
+              (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0),
+          median_registers(d), subpixel_registers(d), check_and_gap_registers(d),
+          // SAD, ZSAD and SHD: every lane sums a whole window (fpstereo_window_cost_lanes)
+          c.cost == CostFunction::Shd ? code_lanes : pixel_lanes};
 }
 
 const std::vector<std::string>& group_names() {
-  static const std::vector<std::string> names = {"constant", "aggregation", "cost and filters", "new stages",
-                                                 "cost lanes"};
+  static const std::vector<std::string> names = {"constant", "aggregation", "stages", "registers",
+                                                 "window cost lanes"};
   return names;
 }
 
-// Within "cost lanes" and "cost and filters" the terms keep the previous fit's coefficients as
-// weights (13 designs of the Verilog before the 300 MHz registers, 2026-11-25); only each group's
-// scale is refitted. Those registers went into the aggregation and the lanes' trees: the
-// aggregation has its own coefficients, the lanes their own FF coefficient (for LUT they stay in
-// "cost and filters", which leave-one-out preferred). The new stages' terms count their datapath
-// bits and share one coefficient. Five coefficients per resource can be fitted from the few Yosys runs a refit
-// affords (each takes minutes to an hour); seventeen free ones could not.
+// LUT: the path lanes have their own coefficient; the other stages' terms share one ("stages"),
+// each weighted by the LUTs per term unit its modules had in the hierarchical Yosys synthesis of
+// fit designs f02, f03, f09 and f17 (docs/resource-model.md; the weights of SAD's and ZSAD's
+// lanes, not among those, are an older fit's). The fitted scale then absorbs what flattening
+// saves. FF: the register terms count flip-flops, so they share one coefficient (near 1: Yosys
+// trims and merges a few); the terms that already are register counts (the confidence's steps,
+// adaptive P2's, the right view's) join them; the window-cost lanes of SAD, ZSAD and SHD, not
+// counted, have their own. Three coefficients per resource can be fitted from the few Yosys runs
+// a refit affords (each takes minutes to an hour); 24 free ones could not.
 const std::vector<TermTie>& term_ties() {
   static const std::vector<TermTie> ties = {
-      {0, 0, 1, 1},                 // top/control
-      {1, 1, 1, 1},                 // path lanes
-      {2, 4, 2.84331, 0.457788},    // code cost lanes
-      {2, 4, 5.53235, 0.749707},    // pixel cost lanes
-      {2, 2, 1.03102, 1.00672},     // match ring
-      {2, 2, 3.31595, 0.886662},    // transform
-      {2, 2, 4.77856, 4.13908},     // median
-      {2, 2, 4.58489, 0.545498},    // LR1
-      {2, 2, 1417.79, 403.825},     // LR2
-      {2, 4, 3.50621, 0.130742},    // ZSAD lanes
-      {3, 3, 1, 1},                 // second best
-      {3, 3, 1, 1},                 // confidence
-      {3, 3, 1, 1},                 // sub-pixel
-      {3, 3, 1, 1},                 // adaptive P2
-      {3, 3, 1, 0},                 // offset delays: shift-register LUTs
-      {3, 3, 1, 1},                 // right view
-      {3, 3, 1, 1},                 // gap interpolation
+      {0, 0, 1, 1},        // top/control
+      {1, 3, 1, 0},        // path lanes
+      {2, 3, 1.7, 0},      // code cost lanes: census 1.85 (f02), 1.7 (f09, f17); rank 5.1 (f03)
+      {2, 3, 5.53235, 0},  // pixel cost lanes
+      {2, 3, 1.0, 0},      // match ring (its registers: cost registers)
+      {2, 3, 1.1, 0},      // transform: census 1.08 to 1.1, rank 1.77
+      {2, 3, 5.4, 0},      // median: 5.0 (f02), 5.9 (f03)
+      {2, 3, 2.5, 0},      // LR1: the match side and the check (f02)
+      {2, 3, 500, 0},      // LR2: the second aggregator's own logic, the check (f03, f09)
+      {2, 3, 3.50621, 0},  // ZSAD lanes
+      {2, 3, 13.5, 0},     // second best: 13.1 to 15
+      {2, 3, 1.6, 0},      // winner-take-all tree: LR2's match side (f03)
+      {2, 3, 0.57, 1},     // confidence: 0.56 to 0.59; its steps' registers
+      {2, 3, 0.65, 0},     // sub-pixel: 0.65 to 0.66
+      {2, 3, 1.55, 1},     // adaptive P2: 1.37 to 1.72; its registers
+      {2, 3, 1, 1},        // right view; its registers
+      {2, 3, 7.0, 0},      // gap interpolation: 7.0 to 7.05
+      {2, 3, 0.5, 0},      // memory read multiplexers: 0.43 to 0.77 (f02, f03, f09, f17; Yosys' cost 0.5)
+      {0, 3, 0, 1},        // aggregation registers
+      {0, 3, 0, 1},        // cost registers
+      {0, 3, 0, 1},        // winner-take-all registers
+      {0, 3, 0, 1},        // median registers
+      {0, 3, 0, 1},        // sub-pixel registers
+      {0, 3, 0, 1},        // check and gap registers
+      {0, 4, 0, 1},        // window cost lanes
   };
   return ties;
 }

@@ -21,13 +21,15 @@ struct MemoryEstimate {
   bool sync_read = true;  // fpstereo_ram_sdp; fpstereo_ram_async can only become LUTRAM
   std::string target;     // "bram", "lutram" or "ff"
   int bram18 = 0, bram36 = 0;
+  // Bits of the read multiplexer over the cells a split depth needs: (cells deep - 1) x bits.
+  int64_t read_mux_bits = 0;
 };
 
 // The memories of a design: its stages' (gen/pipeline/stage.hpp), in data order.
 std::vector<MemoryEstimate> design_memories(const rtl::RtlDesign& design);
 
 // memory_libmap's choice for one words x bits memory with one write and one registered read port:
-// fills target, bram18 and bram36.
+// fills target, bram18, bram36 and read_mux_bits.
 void map_memory(MemoryEstimate& memory);
 
 // The closed-form terms LUT and FF are linear in; names for the fit's report.
