@@ -272,7 +272,7 @@ void validate(const StereoConfig& c) {
     reject("right-view", "on", "needs a left-right check (lr = lr1 or lr2), whose match side it streams");
 }
 
-std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4", "A2", "A3", "A4", "A5"}; }
+std::vector<std::string> preset_names() { return {"S0", "S1", "C0", "C1", "C2", "C3", "C4", "A2", "A3", "A4", "A5", "A6"}; }
 
 StereoConfig preset(const std::string& name) {
   // All presets but A5: 4 paths, P1 = 7, P2 = 86, median 5, 1242x375 (the defaults), as in the paper.
@@ -296,7 +296,7 @@ StereoConfig preset(const std::string& name) {
   } else if (name == "C4") {
     census(7, 128, 32);
     c.lr = LrCheck::Lr2;
-  } else if (name == "A2" || name == "A3" || name == "A4" || name == "A5") {
+  } else if (name == "A2" || name == "A3" || name == "A4" || name == "A5" || name == "A6") {
     // Beyond the paper: C2, C3 and C4 with a 9 x 9 census, adaptive P2, a 7 x 7 median and four
     // fraction bits (docs/accuracy.md, "Accuracy beyond the paper").
     census(9, 128, 32);
@@ -304,11 +304,12 @@ StereoConfig preset(const std::string& name) {
     c.p2_adapt = 4;
     c.median = 7;
     c.subpixel_bits = 4;
-    if (name == "A5") {
-      // A4 with the 180-degree path, the speckle filter (100, 2) and the fused intensity cost
-      // (k 4, T 32), chosen on some pairs (docs/accuracy.md, "Right-to-left path"). Models only:
-      // its hardware needs the 180-degree path, the speckle filter's stage and the fused cost.
-      c.paths = kEveryPath;
+    if (name == "A5" || name == "A6") {
+      // A6: A4 with the speckle filter (100, 2) and the fused intensity cost (k 4, T 32), the
+      // best four-path setting on the tuning pairs (docs/accuracy.md, "Right-to-left path").
+      // A5 adds the 180-degree path, chosen on the same pairs; models only: the hardware has no
+      // 180-degree path yet.
+      if (name == "A5") c.paths = kEveryPath;
       c.speckle_size = 100;
       c.speckle_range = 2;
       c.fused_weight = 4;

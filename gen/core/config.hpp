@@ -116,7 +116,7 @@ struct ParamSpec {
 const std::vector<ParamSpec>& param_specs();
 void set_param(StereoConfig& cfg, const std::string& name, const std::string& value);
 
-// Named presets: the FP-Stereo paper's table (S0, S1, C0 .. C4) and ours beyond it (A2 .. A5;
+// Named presets: the FP-Stereo paper's table (S0, S1, C0 .. C4) and ours beyond it (A2 .. A6;
 // A5 in the models only).
 std::vector<std::string> preset_names();
 StereoConfig preset(const std::string& name);  // throws ConfigError for an unknown name
