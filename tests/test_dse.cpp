@@ -17,6 +17,7 @@
 #include "resource_model.hpp"
 #include "rtl_emitter.hpp"
 #include "synth_command.hpp"
+#include "test_support.hpp"
 
 using namespace fpstereo;
 namespace fs = std::filesystem;
@@ -34,7 +35,7 @@ dse::MemoryEstimate mapped(int64_t words, int64_t bits) {
 // A small dataset from crops of the bundled Cones pair: two pairs, ground truth included. Each test
 // writes its own (ctest runs the test cases in parallel processes).
 fs::path tiny_dataset(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
+  const fs::path dir = test::scratch_path(name);
   fs::create_directories(dir);
   const std::string ex = FPSTEREO_EXAMPLES_DIR "/cones/";
   const cv::Mat left = cv::imread(ex + "left.png", cv::IMREAD_GRAYSCALE);
@@ -77,7 +78,7 @@ dse::SweepOptions tiny_sweep(const fs::path& cache, const std::string& data) {
 }
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / name;
+  const fs::path p = test::scratch_path(name);
   fs::remove_all(p);
   return p;
 }
@@ -408,7 +409,7 @@ TEST_CASE("a tiny sweep: skipped combinations, one golden run per accuracy key, 
       s.shard_index = i;
       s.shard_count = 3;
       const fs::path csv =
-          fs::temp_directory_path() / ("fpstereo_test_dse_shard" + std::to_string(i) + ".csv");
+          test::scratch_path("fpstereo_test_dse_shard" + std::to_string(i) + ".csv");
       std::ofstream(csv) << dse::to_csv(dse::sweep(s).rows);
       for (auto& r : dse::read_csv(csv.string())) merged.push_back(r);
     }
@@ -484,7 +485,7 @@ TEST_CASE("every CSV column reads back what was written", "[dse]") {
   row.yosys_lut = 12000;
   row.yosys_ff = 23000;
   row.yosys_bram36 = 16.5;
-  const fs::path csv = fs::temp_directory_path() / "fpstereo_test_dse_columns.csv";
+  const fs::path csv = test::scratch_path("fpstereo_test_dse_columns.csv");
   dse::Row blank;
   blank.part = "xck26";  // every row names a known part
   const std::string text = dse::to_csv({row, blank});
@@ -513,7 +514,7 @@ TEST_CASE("dse CSV: a bad cell is an error naming the file, line and column", "[
   for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
   if (line.back() == ',') cells.emplace_back();
   REQUIRE(cells.size() == names.size());
-  const fs::path csv = fs::temp_directory_path() / "fpstereo_test_dse_bad_cell.csv";
+  const fs::path csv = test::scratch_path("fpstereo_test_dse_bad_cell.csv");
   const auto error_with = [&](const std::string& column, const std::string& value) {
     std::vector<std::string> changed = cells;
     changed[size_t(std::find(names.begin(), names.end(), column) - names.begin())] = value;

@@ -1,13 +1,36 @@
-// Image and configuration generators shared by the test files.
+// Image and configuration generators and scratch paths shared by the test files.
 #pragma once
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <functional>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "config.hpp"
 #include "image.hpp"
 
 namespace fpstereo::test {
+
+// A path under the temporary directory that no other process uses (two test runs on one machine,
+// from two build trees, never share a scratch file), removed when the test process exits. The
+// process id goes before the extension, so a ".csv" stays one.
+inline std::filesystem::path scratch_path(const std::string& name) {
+  struct Scratch {
+    std::vector<std::filesystem::path> paths;
+    ~Scratch() {
+      std::error_code ec;
+      for (const auto& p : paths) std::filesystem::remove_all(p, ec);
+    }
+  };
+  static Scratch scratch;
+  const std::filesystem::path n(name);
+  const std::string unique = n.stem().string() + "." + std::to_string(::getpid()) + n.extension().string();
+  scratch.paths.push_back(std::filesystem::temp_directory_path() / unique);
+  return scratch.paths.back();
+}
 
 inline GrayImage random_image(int width, int height, std::mt19937& rng, int levels = 256) {
   GrayImage img(width, height);

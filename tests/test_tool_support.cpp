@@ -12,6 +12,7 @@
 #include "files.hpp"
 #include "hash.hpp"
 #include "text.hpp"
+#include "test_support.hpp"
 
 using namespace fpstereo;
 namespace fs = std::filesystem;
@@ -41,7 +42,7 @@ class ScopedEnv {
 };
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
+  const fs::path dir = test::scratch_path(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
