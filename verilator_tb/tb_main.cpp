@@ -412,7 +412,11 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     errors = 1;
   } else if (fault == "disable") {
     // CONTROL.enable = 0 during A; F is skipped; enable = 1 before B is offered.
-    run.plan.actions.push_back({1, {{reg("CONTROL"), 0}}, false, a_beats + f_beats});
+    // Not at A's first beat taken: the input register slices take two beats of a stream before
+    // the framing stage sees its start, and the right stream may not have offered its start yet,
+    // so a write then can land before A starts, and the design rightly skips A as well as F.
+    // Half-way through A's left beats, A has started.
+    run.plan.actions.push_back({a_beats / 2, {{reg("CONTROL"), 0}}, false, a_beats + f_beats});
     run.plan.actions.push_back({a_beats + f_beats, {{reg("CONTROL"), 1}}, false, a_beats + f_beats, true});
     done = 3;
     dropped = 1;
