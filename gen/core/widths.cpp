@@ -10,6 +10,8 @@ int bits_for(uint64_t max_value) {
   return bits;
 }
 
+int clog2(int64_t n) { return n > 1 ? bits_for(uint64_t(n - 1)) : 0; }
+
 Widths derive_widths(const StereoConfig& cfg) {
   Widths w;
   const uint64_t n = uint64_t(cfg.window) * uint64_t(cfg.window);  // pixels in the cost window

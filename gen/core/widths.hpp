@@ -10,6 +10,8 @@ namespace fpstereo {
 
 // Number of bits needed to hold every value in 0 .. max_value (at least 1).
 int bits_for(uint64_t max_value);
+// Verilog's $clog2: bits to address n entries (0 for n <= 1).
+int clog2(int64_t n);
 
 struct Widths {
   int pixel = 8;

@@ -164,8 +164,6 @@ namespace {
 // coefficient absorbs). Shift registers without a reset and without taps become SRL LUTs and
 // are not counted.
 
-int clog2(int n) { return n > 1 ? bits_for(uint64_t(n - 1)) : 0; }
-
 // Nodes of fpstereo_reduction_tree's registered levels over n leaves: every levels_per_stage-th
 // level and the root.
 double tree_register_nodes(int n, int levels_per_stage) {

@@ -11,11 +11,6 @@ namespace fpstereo::rtl {
 namespace {
 
 int ceil_div(int64_t a, int64_t b) { return int((a + b - 1) / b); }
-int clog2(int64_t v) {
-  int bits = 0;
-  while ((int64_t(1) << bits) < v) ++bits;
-  return bits;
-}
 
 // floor(s / divisor) == (s * mul) >> shift for every s in 0 .. max_value: the smallest shift
 // whose rounded-up reciprocal is exact over the range (checked exhaustively).
@@ -54,7 +49,7 @@ void check_hardware_rules(const StereoConfig& cfg) {
 }  // namespace
 
 int min_tree_latency(int n, int levels_per_stage) {
-  const int levels = n > 1 ? clog2(n) : 0;
+  const int levels = clog2(n);
   return std::max(1, ceil_div(levels, levels_per_stage));
 }
 

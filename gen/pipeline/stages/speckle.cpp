@@ -11,13 +11,6 @@
 namespace fpstereo::rtl {
 namespace {
 
-// Verilog's $clog2, for the widths fpstereo_speckle derives from its parameters.
-int clog2(int64_t v) {
-  int bits = 0;
-  while ((int64_t(1) << bits) < v) ++bits;
-  return bits;
-}
-
 class SpeckleStage : public Stage {
  public:
   std::string title() const override { return "speckle filter"; }
