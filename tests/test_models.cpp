@@ -101,6 +101,31 @@ TEST_CASE("golden model equals the naive model on random configurations, on 1 to
   }
 }
 
+TEST_CASE("golden model in column bands (2 to 4 threads) equals the naive model", "[models]") {
+  // The configurations whose rows the threads share by columns (golden_model.cpp, "Column
+  // bands"): no 180-degree path, no LR2; bands of a few columns, narrower than dmax, so that the
+  // LR1 check reads sums several bands away.
+  std::mt19937 rng(20261126);
+  for (int i = 0; i < 120; ++i) {
+    StereoConfig cfg = random_config(rng);
+    cfg.paths = (cfg.paths & kAllPaths) != 0 ? cfg.paths & kAllPaths : unsigned(kPath0);
+    if (cfg.lr == LrCheck::Lr2) cfg.lr = LrCheck::Lr1;
+    validate(cfg);
+    const auto [left, right] = random_pair(cfg, rng);
+    const int threads = 2 + i % 3;
+    std::vector<Plane> planes{Plane::Disparity, Plane::Confidence};
+    if (cfg.lr != LrCheck::None) planes.push_back(Plane::Right);
+    const Planes naive = run_naive(cfg, left, right, planes);
+    const Planes golden = run_golden(cfg, left, right, planes, threads);
+    INFO("case " << i << ", " << threads << " threads\n" << describe(cfg));
+    for (const Plane plane : planes) {
+      const Comparison cmp = compare_words(naive.at(plane), golden.at(plane));
+      INFO(plane_info(plane).name << ": " << cmp.report());
+      REQUIRE(cmp.equal());
+    }
+  }
+}
+
 TEST_CASE("golden model equals the naive model for each option alone", "[models]") {
   std::mt19937 rng(7);
   StereoConfig base;

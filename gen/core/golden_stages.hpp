@@ -62,12 +62,12 @@ void for_each_window_neighbour(const GrayImage& img, int window, Visit visit) {
     }
 }
 
-// Census codes of image row y into planes[0][x] (low 64 bits) and planes[1][x] (the rest, for
-// codes above 64 bits); padded: scratch for width + window - 1 pixels.
+// Census codes of image row y, columns begin .. end - 1, into planes[0][x] (low 64 bits) and
+// planes[1][x] (the rest, for codes above 64 bits); padded: scratch for width + window - 1 pixels.
 inline void census_row(const GrayImage& img, int y, int window, uint8_t* padded,
-                       const std::array<uint64_t*, kMaxCodeWords>& planes) {
+                       const std::array<uint64_t*, kMaxCodeWords>& planes, int begin, int end) {
   const int r = window / 2, bits = window * window - 1, width = img.width;
-  for (int i = 0; i < (bits + 63) / 64; ++i) std::fill(planes[size_t(i)], planes[size_t(i)] + width, 0);
+  for (int i = 0; i < (bits + 63) / 64; ++i) std::fill(planes[size_t(i)] + begin, planes[size_t(i)] + end, 0);
   const uint8_t* centre = &img.at(0, y);
   int bit = bits - 1;  // the first window position in the most significant bit
   for (int dy = -r; dy <= r; ++dy) {
@@ -79,7 +79,7 @@ inline void census_row(const GrayImage& img, int y, int window, uint8_t* padded,
       const uint8_t* neighbour = padded + r + dx;
       uint64_t* codes = planes[size_t(bit / 64)];
       const int shift = bit % 64;
-      for (int x = 0; x < width; ++x) codes[x] |= uint64_t(centre[x] > neighbour[x]) << shift;
+      for (int x = begin; x < end; ++x) codes[x] |= uint64_t(centre[x] > neighbour[x]) << shift;
       --bit;
     }
   }
@@ -93,7 +93,7 @@ inline CensusPlanes census_transform(const GrayImage& img, int window) {
   for (int y = 0; y < img.height; ++y) {
     std::array<uint64_t*, kMaxCodeWords> rows{};
     for (int i = 0; i < codes.words; ++i) rows[size_t(i)] = &codes.plane[size_t(i)].at(0, y);
-    census_row(img, y, window, padded.data(), rows);
+    census_row(img, y, window, padded.data(), rows, 0, img.width);
   }
   return codes;
 }
@@ -124,7 +124,7 @@ class CostRows {
       case CostFunction::Census:
         // Codes row by row as compute() needs them (section 1-2), in buffers kept across rows.
         padded_.resize(size_t(base.width + cfg.window - 1));
-        for (auto* row : {&base_row_, &match_row_})
+        for (auto* row : {&base_row_, &match_row_, &mirrored_row_})
           for (auto& plane : *row) plane.resize(size_t(base.width));
         break;
       case CostFunction::Shd:
@@ -153,38 +153,41 @@ class CostRows {
   }
 
   // Index d is the disparity min_disp + d: base pixel x against match pixel x - min_disp - d.
-  void compute(int y, T* out) {
+  // Writes the costs of columns begin .. end - 1 (a band of the row, section "Threads" of
+  // docs/golden-model-speed.md) at their places in the row.
+  void compute(int y, T* out) { compute(y, out, 0, base_.width); }
+  void compute(int y, T* out, int begin, int end) {
     const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
     // The indices whose match pixel lies in the row: d_lo(x) <= d < d_hi(x).
     auto d_lo = [&](int x) { return std::clamp(x - m - width + 1, 0, dmax); };
     auto d_hi = [&](int x) { return std::clamp(x - m + 1, 0, dmax); };
     switch (cfg_.cost) {
       case CostFunction::Census:
-        census_costs(y, out);
+        census_costs(y, out, begin, end);
         break;
       case CostFunction::Rank:
-        for (int x = 0; x < width; ++x)
+        for (int x = begin; x < end; ++x)
           for (int d = d_lo(x); d < d_hi(x); ++d)
             out[x * dmax + d] = T(std::abs(base_ranks_.at(x, y) - match_ranks_.at(x - m - d, y)));
         break;
       case CostFunction::Sad:
-        box_sum_row(y, cfg_.window, out, [&](int xb, int yy, int d) {
+        box_sum_row(y, cfg_.window, out, begin, end, [&](int xb, int yy, int d) {
           return std::abs(pixel_or_zero(base_, xb, yy) - pixel_or_zero(match_, xb - m - d, yy));
         });
         break;
       case CostFunction::Shd:
-        box_sum_row(y, cfg_.shd_window, out, [&](int xb, int yy, int d) {
+        box_sum_row(y, cfg_.shd_window, out, begin, end, [&](int xb, int yy, int d) {
           return shd_term(xb, xb - m - d, yy);
         });
         break;
       case CostFunction::Zsad:
-        for (int x = 0; x < width; ++x)
+        for (int x = begin; x < end; ++x)
           for (int d = d_lo(x); d < d_hi(x); ++d) out[x * dmax + d] = T(zsad(x, y, m + d));
         break;
     }
-    if (cfg_.fused_weight != 0) add_fused_term(y, out);
+    if (cfg_.fused_weight != 0) add_fused_term(y, out, begin, end);
     // Match pixel outside the row: the largest cost.
-    for (int x = 0; x < width; ++x) {
+    for (int x = begin; x < end; ++x) {
       for (int d = 0; d < d_lo(x); ++d) out[x * dmax + d] = cost_max_;
       for (int d = d_hi(x); d < dmax; ++d) out[x * dmax + d] = cost_max_;
     }
@@ -193,18 +196,24 @@ class CostRows {
  private:
   // Census costs of row y: per base pixel, the Hamming distances to the match codes of its
   // disparity range, a loop over contiguous words that the compiler vectorises.
-  void census_costs(int y, T* out) {
+  void census_costs(int y, T* out, int begin, int end) {
     const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
     const bool two_words = cfg_.window * cfg_.window - 1 > 64;
-    census_row(base_, y, cfg_.window, padded_.data(), {base_row_[0].data(), base_row_[1].data()});
-    census_row(match_, y, cfg_.window, padded_.data(), {match_row_[0].data(), match_row_[1].data()});
+    census_row(base_, y, cfg_.window, padded_.data(), {base_row_[0].data(), base_row_[1].data()}, begin, end);
+    // The match pixels the band reads, x - m - d for d in 0 .. dmax - 1.
+    const int match_begin = std::clamp(begin - m - dmax + 1, 0, width), match_end = std::clamp(end - m, 0, width);
+    if (match_begin < match_end)
+      census_row(match_, y, cfg_.window, padded_.data(), {match_row_[0].data(), match_row_[1].data()}, match_begin,
+                 match_end);
     // The match codes reversed: ascending disparities then read ascending addresses.
-    for (auto& plane : match_row_) std::reverse(plane.begin(), plane.end());
+    for (int i = 0; i < (two_words ? 2 : 1); ++i)
+      for (int xm = match_begin; xm < match_end; ++xm)
+        mirrored_row_[size_t(i)][size_t(width - 1 - xm)] = match_row_[size_t(i)][size_t(xm)];
     const uint64_t* base0 = base_row_[0].data();
-    const uint64_t* mirrored0 = match_row_[0].data();
+    const uint64_t* mirrored0 = mirrored_row_[0].data();
     const uint64_t* base1 = two_words ? base_row_[1].data() : nullptr;
-    const uint64_t* mirrored1 = two_words ? match_row_[1].data() : nullptr;
-    for (int x = 0; x < width; ++x) {
+    const uint64_t* mirrored1 = two_words ? mirrored_row_[1].data() : nullptr;
+    for (int x = begin; x < end; ++x) {
       const int lo = std::clamp(x - m - width + 1, 0, dmax), hi = std::clamp(x - m + 1, 0, dmax);
       T* __restrict costs = out + size_t(x) * size_t(dmax);
       // The match pixel x - m - d sits at width - 1 - x + m + d of the mirrored row.
@@ -223,11 +232,11 @@ class CostRows {
 
   // The fused cost's pixel-wise term (section 2) added to the costs of row y whose match pixel
   // lies in the row.
-  void add_fused_term(int y, T* out) {
+  void add_fused_term(int y, T* out, int begin, int end) {
     const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
     pixel_features(base_, y, base_feature_);
     pixel_features(match_, y, match_feature_);
-    for (int x = 0; x < width; ++x) {
+    for (int x = begin; x < end; ++x) {
       const int lo = std::clamp(x - m - width + 1, 0, dmax), hi = std::clamp(x - m + 1, 0, dmax);
       for (int d = lo; d < hi; ++d)
         out[x * dmax + d] += fused_term_of_[size_t(std::abs(base_feature_[size_t(x)] - match_feature_[size_t(x - m - d)]))];
@@ -255,24 +264,24 @@ class CostRows {
     return h;
   }
 
-  // out[x, d] = sum over the window x offsets of (sum over the window rows of term(x', y', d)),
-  // as a column sum followed by a sliding horizontal sum.
+  // out[x, d] for x in begin .. end - 1 = sum over the window x offsets of (sum over the window
+  // rows of term(x', y', d)), as a column sum followed by a sliding horizontal sum.
   template <class Term>
-  void box_sum_row(int y, int window, T* out, Term term) const {
-    const int width = base_.width, dmax = cfg_.dmax, r = window / 2;
-    std::vector<int> column(size_t(width + 2 * r));
+  void box_sum_row(int y, int window, T* out, int begin, int end, Term term) const {
+    const int dmax = cfg_.dmax, r = window / 2;
+    std::vector<int> column(size_t(end - begin + 2 * r));  // columns begin - r .. end + r - 1
     for (int d = 0; d < dmax; ++d) {
-      for (int xc = -r; xc < width + r; ++xc) {
+      for (int xc = begin - r; xc < end + r; ++xc) {
         int sum = 0;
         for (int dy = -r; dy <= r; ++dy) sum += term(xc, y + dy, d);
-        column[size_t(xc + r)] = sum;
+        column[size_t(xc - begin + r)] = sum;
       }
       int sum = 0;
       for (int i = 0; i < window - 1; ++i) sum += column[size_t(i)];
-      for (int x = 0; x < width; ++x) {
-        sum += column[size_t(x + 2 * r)];
+      for (int x = begin; x < end; ++x) {
+        sum += column[size_t(x - begin + 2 * r)];
         out[x * dmax + d] = T(sum);
-        sum -= column[size_t(x)];
+        sum -= column[size_t(x - begin)];
       }
     }
   }
@@ -294,8 +303,8 @@ class CostRows {
   const GrayImage& base_;
   const GrayImage& match_;
   CensusPlanes base_codes_, match_codes_;  // SHD
-  // Census: one row of codes per image (the match row reversed), and scratch for census_row.
-  std::array<std::vector<uint64_t>, kMaxCodeWords> base_row_, match_row_;
+  // Census: one row of codes per image, the match row also reversed, and scratch for census_row.
+  std::array<std::vector<uint64_t>, kMaxCodeWords> base_row_, match_row_, mirrored_row_;
   std::vector<uint8_t> padded_;
   Image<int> base_ranks_, match_ranks_;
   Image<int> base_means_, match_means_;
@@ -304,10 +313,13 @@ class CostRows {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Section 3: path costs and their sum, one row at a time. Each raster-order path keeps the row it
-// is writing and the previous row; the 0-degree path reads its predecessor from the row being
-// written. The 180-degree path runs over the row once its costs are all known, from the last
-// pixel to the first, in a second pass that adds to the sums.
+// Section 3: path costs and their sum, one row at a time. Each raster-order path keeps two rows,
+// row y in buffer y % 2: the row it is writing and the previous row; the 0-degree path reads its
+// predecessor from the row being written. The 180-degree path runs over the row once its costs
+// are all known, from the last pixel to the first, in a second pass that adds to the sums.
+// A row may be pushed in column bands, from several threads, in an order that respects the
+// recursion's dependencies (golden_model.cpp, "Column bands"); without the 180-degree path, a
+// pixel reads only its left neighbour in its row and three neighbours in the row above.
 // With mgm on, each path also reads a second predecessor, a right angle from the first
 // (section 3, "MGM"): the 0-degree path's is (x, y-1), the 90-degree path's (x-1, y).
 template <class T>
@@ -318,33 +330,39 @@ class PathAggregator {
       : cfg_(cfg), width_(width), stride_(cfg.dmax + 2), adapt_(adapt), zeros_(size_t(stride_), T(0)) {
     for (const auto& dir : path_directions())
       if ((cfg.paths & dir.mask) && dir.mask != kPath180)
-        paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{}, RowBuffer(width, stride_, sentinel),
-                                   RowBuffer(width, stride_, sentinel)});
+        paths_.push_back(PathState{dir, cfg.mgm ? mgm_offset(dir) : Offset{},
+                                   {RowBuffer(width, stride_, sentinel), RowBuffer(width, stride_, sentinel)}});
     if (cfg.paths & kPath180) right_to_left_.emplace(width, stride_, sentinel);
   }
 
   // Consumes the cost row of image row y (rows arrive in order 0, 1, ...) and writes S; guide is
   // the image whose steps lower P2 (read only when adapt is not 0).
   void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
+    last_row_ = y;
+    push_band(y, cost, sum, guide, 0, width_);
+  }
+
+  // The same for columns begin .. end - 1 of row y (cost and sum: the whole row's layout); the
+  // 180-degree path needs the whole row.
+  void push_band(int y, const T* cost, T* sum, const GrayImage& guide, int begin, int end) {
     if (paths_.empty()) {
-      std::fill(sum, sum + size_t(width_) * size_t(cfg_.dmax), T(0));
+      std::fill(sum + size_t(begin) * size_t(cfg_.dmax), sum + size_t(end) * size_t(cfg_.dmax), T(0));
     } else if (!cfg_.mgm) {
       switch (paths_.size()) {
-        case 1: push_row_fused<1>(y, cost, sum, guide); break;
-        case 2: push_row_fused<2>(y, cost, sum, guide); break;
-        case 3: push_row_fused<3>(y, cost, sum, guide); break;
-        default: push_row_fused<4>(y, cost, sum, guide); break;
+        case 1: push_band_fused<1>(y, cost, sum, guide, begin, end); break;
+        case 2: push_band_fused<2>(y, cost, sum, guide, begin, end); break;
+        case 3: push_band_fused<3>(y, cost, sum, guide, begin, end); break;
+        default: push_band_fused<4>(y, cost, sum, guide, begin, end); break;
       }
     } else {
       const size_t dmax = size_t(cfg_.dmax);
-      for (int x = 0; x < width_; ++x) {
+      for (int x = begin; x < end; ++x) {
         T* S = sum + size_t(x) * dmax;
         std::fill(S, S + dmax, T(0));
         for (auto& path : paths_)
-          path.current.minimum[size_t(x)] = push_mgm_pixel(path, x, y, cost + size_t(x) * dmax, S, guide);
+          path.rows[y & 1].minimum[size_t(x)] = push_mgm_pixel(path, x, y, cost + size_t(x) * dmax, S, guide);
       }
     }
-    for (auto& path : paths_) std::swap(path.current, path.previous);
     if (right_to_left_) push_row_right_to_left(y, cost, sum, guide);
   }
 
@@ -357,7 +375,7 @@ class PathAggregator {
         m = std::max(m, *std::max_element(L, L + cfg_.dmax));
       }
     };
-    for (const auto& path : paths_) row_max(path.previous);
+    for (const auto& path : paths_) row_max(path.rows[last_row_ & 1]);
     if (right_to_left_) row_max(*right_to_left_);
     return m;
   }
@@ -391,7 +409,7 @@ class PathAggregator {
   struct PathState {
     PathDirection dir;
     Offset second;
-    RowBuffer current, previous;
+    std::array<RowBuffer, 2> rows;  // row y in rows[y % 2]
   };
 
   // One predecessor in the recursion of section 3: its path costs, their minimum, and the jump
@@ -400,9 +418,9 @@ class PathAggregator {
     const T* costs;
     T minimum, jump;
   };
-  Predecessor predecessor(const PathState& path, Offset o, int x, int y, const GrayImage& guide) const {
+  [[gnu::always_inline]] Predecessor predecessor(const PathState& path, Offset o, int x, int y, const GrayImage& guide) const {
     if (x + o.dx < 0 || x + o.dx >= width_ || (o.dy != 0 && y == 0)) return {zeros_.data() + 1, 0, 0};
-    const RowBuffer& row = o.dy == 0 ? path.current : path.previous;
+    const RowBuffer& row = path.rows[(y + o.dy) & 1];
     const int px = x + o.dx;
     const T minimum = row.minimum[size_t(px)];
     return {row.costs(px), minimum, T(minimum + penalty2(guide.at(x, y), guide.at(px, y + o.dy)))};
@@ -411,21 +429,21 @@ class PathAggregator {
   // Without MGM: every path of a pixel in one pass over the disparities, so that the pixel's
   // costs are read and its sums written once.
   template <int N>
-  void push_row_fused(int y, const T* cost, T* sum, const GrayImage& guide) {
+  void push_band_fused(int y, const T* cost, T* sum, const GrayImage& guide, int begin, int end) {
     const size_t dmax = size_t(cfg_.dmax);
     std::array<Predecessor, N> pred;
     std::array<T*, N> L;
     std::array<T, N> minimum;
-    for (int x = 0; x < width_; ++x) {
+    for (int x = begin; x < end; ++x) {
       T* S = sum + size_t(x) * dmax;
       std::fill(S, S + dmax, T(0));
       for (int p = 0; p < N; ++p) {
         PathState& path = paths_[size_t(p)];
         pred[size_t(p)] = predecessor(path, {path.dir.dx, path.dir.dy, true}, x, y, guide);
-        L[size_t(p)] = path.current.costs(x);
+        L[size_t(p)] = path.rows[y & 1].costs(x);
       }
       step_paths<N>(cost + size_t(x) * dmax, S, pred, L, minimum);
-      for (int p = 0; p < N; ++p) paths_[size_t(p)].current.minimum[size_t(x)] = minimum[size_t(p)];
+      for (int p = 0; p < N; ++p) paths_[size_t(p)].rows[y & 1].minimum[size_t(x)] = minimum[size_t(p)];
     }
   }
 
@@ -446,7 +464,7 @@ class PathAggregator {
   T push_mgm_pixel(PathState& path, int x, int y, const T* C, T* S, const GrayImage& guide) const {
     const Offset first{path.dir.dx, path.dir.dy, true}, second = path.second;
     auto inside = [&](Offset o) { return x + o.dx >= 0 && x + o.dx < width_ && (o.dy == 0 || y > 0); };
-    T* L = path.current.costs(x);
+    T* L = path.rows[y & 1].costs(x);
     if (inside(first) && inside(second))
       return step2(C, predecessor(path, first, x, y, guide), predecessor(path, second, x, y, guide), L, S);
     std::array<T, 1> minimum;
@@ -508,6 +526,7 @@ class PathAggregator {
   std::vector<PathState> paths_;            // the raster-order paths
   std::optional<RowBuffer> right_to_left_;  // the 180-degree path's costs of the last row
   std::vector<T> zeros_;  // the predecessor of a path start
+  int last_row_ = 0;  // of push_row(), for max_path_cost()
 };
 
 // ---------------------------------------------------------------------------------------------
