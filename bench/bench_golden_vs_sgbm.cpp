@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
              golden / golden2);
   fmt::print("two frames at once on two threads: {:8.1f} ms, {:.2f} times one thread's throughput "
              "(what the second core gives now)\n", two_frames, 2 * golden / two_frames);
-  fmt::print("A6 (LR2: path groups), 1 thread {:8.1f} ms, 2 threads {:8.1f} ms, speed-up {:.2f} (same output)\n",
+  fmt::print("A6 (LR2, speckle filter), 1 thread {:8.1f} ms, 2 threads {:8.1f} ms, speed-up {:.2f} (same output)\n",
              median(a6_ms), median(a6_2_ms), median(a6_ms) / median(a6_2_ms));
   fmt::print("golden model, C2 with the 180-degree path (5 paths), 1 thread: {:8.1f} ms, ratio to OpenCV {:.2f}, "
              "to C2 {:.2f}\n", golden180, golden180 / opencv, golden180 / golden);

@@ -16,6 +16,7 @@
 #include <thread>
 #include <limits>
 #include <stdexcept>
+#include <system_error>
 #include <type_traits>
 
 #include "gap_fill.hpp"
@@ -158,11 +159,11 @@ void median_filter_rows(DisparityImage& map, int window, uint16_t invalid, int v
   }
 }
 
-// Runs work(t) for t = 0 .. threads - 1, t = 0 on the calling thread, and rethrows the first
-// exception. The helpers start once all of them exist: if one cannot be created, none runs (work
-// may wait for the others, as the column bands' steps do).
+// Runs work(t) for t = 0 .. threads - 1 at once, t = 0 on the calling thread, and rethrows the
+// first exception. The helpers start once all of them exist (work may wait for the others, as
+// the column bands' steps do): if one cannot be created, none runs and the result is false.
 template <class Work>
-void run_on_threads(int threads, Work work) {
+[[nodiscard]] bool run_on_threads(int threads, Work work) {
   std::vector<std::exception_ptr> errors(static_cast<size_t>(threads));
   std::mutex gate_mutex;
   std::condition_variable gate;
@@ -193,16 +194,17 @@ void run_on_threads(int threads, Work work) {
         }
         guarded(t);
       });
-  } catch (...) {
+  } catch (const std::system_error&) {
     open_gate(Start::Abandon);
     for (auto& helper : helpers) helper.join();
-    throw;
+    return false;
   }
   open_gate(Start::Go);
   guarded(0);
   for (auto& helper : helpers) helper.join();
   for (const auto& error : errors)
     if (error) std::rethrow_exception(error);
+  return true;
 }
 
 // The median filter over bands of rows, one per thread. The r rows on each side of an inner
@@ -217,10 +219,12 @@ void median_filter(DisparityImage& map, int window, uint16_t invalid, int values
   };
   for (int t = 1; t < threads; ++t)
     for (int y = edge(t) - r; y < edge(t) + r; ++y) std::copy(&map.at(0, y), &map.at(0, y) + width, halo_row(t, y));
-  run_on_threads(threads, [&](int t) {
+  auto band = [&](int t) {
     median_filter_rows(map, window, invalid, values, edge(t), edge(t + 1),
                        [&](int y) { return y < edge(t) ? halo_row(t, y) : halo_row(t + 1, y); });
-  });
+  };
+  if (!run_on_threads(threads, band))  // no threads to be had: the bands one after the other
+    for (int t = 0; t < threads; ++t) band(t);
 }
 
 void interpolate_gaps(DisparityImage& map, uint16_t invalid) {
@@ -239,23 +243,35 @@ struct SideViews {
   DisparityImage* confidence = nullptr;
 };
 
+// The match pixels whose disparities finishing columns begin .. end - 1 reads: x - m - d for the
+// check, and begin .. end - 1 for the right view.
+std::pair<int, int> match_columns(const StereoConfig& cfg, int width, int begin, int end) {
+  const int m = cfg.min_disp;
+  return {std::clamp(std::min(begin, begin - m - cfg.dmax + 1), 0, width), std::clamp(std::max(end, end - m), 0, width)};
+}
+
+// LR2's match-side costs of match pixels begin .. end - 1 from the base side's cost row: every
+// cost is symmetric in its two images, so the match side's cost at (x', d) is the base side's
+// at (x' + m + d, d); beyond the row it is Cmax (section 5).
+template <class T>
+void match_side_costs(const T* cost, int width, int dmax, int m, T cost_max, int begin, int end, T* match_cost) {
+  for (int xm = begin; xm < end; ++xm)
+    for (int d = 0; d < dmax; ++d) {
+      const int x = xm + m + d;
+      match_cost[size_t(xm) * size_t(dmax) + size_t(d)] =
+          x >= 0 && x < width ? cost[size_t(x) * size_t(dmax) + size_t(d)] : cost_max;
+    }
+}
+
 template <class T>
 class RowFinisher {
  public:
-  RowFinisher(const StereoConfig& cfg, const Widths& widths, const GrayImage& right, const SideViews& side,
-              DisparityImage& out, T sentinel)
-      : cfg_(cfg), widths_(widths), right_(right), side_(side), out_(out), width_(right.width),
-        whole_(size_t(width_)), refined_(size_t(width_)), match_disparity_(size_t(width_)) {
-    if (cfg.lr == LrCheck::Lr2) {
-      // LR2's match side aggregates its own paths; P2 stays constant there (section 3).
-      match_paths_.emplace(cfg, width_, sentinel, 0);
-      match_cost_.resize(size_t(width_) * size_t(cfg.dmax));
-      match_sum_.resize(match_cost_.size());
-    }
-  }
+  RowFinisher(const StereoConfig& cfg, const Widths& widths, const SideViews& side, DisparityImage& out)
+      : cfg_(cfg), widths_(widths), side_(side), out_(out), width_(out.width), whole_(size_t(width_)),
+        refined_(size_t(width_)), match_disparity_(size_t(width_)) {}
 
-  // Row y from its sums (and, for LR2, its costs; LR2 needs the whole row).
-  void finish(int y, const T* sum, const T* cost, int begin, int end) {
+  // Row y from its sums (and, for LR2, the match side's sums, at least of the match_columns()).
+  void finish(int y, const T* sum, const T* match_sum, int begin, int end) {
     const int width = width_, dmax = cfg_.dmax, m = cfg_.min_disp;
     int* row = whole_.data();
     for (int x = begin; x < end; ++x) {
@@ -266,24 +282,12 @@ class RowFinisher {
       refined_[size_t(x)] = refined_disparity(S, dmax, d, cfg_);
     }
 
-    // The match pixels the check reads (x - m - d) and those of the right view (begin .. end - 1).
-    const int match_begin = std::clamp(std::min(begin, begin - m - dmax + 1), 0, width);
-    const int match_end = std::clamp(std::max(end, end - m), 0, width);
+    const auto [match_begin, match_end] = match_columns(cfg_, width, begin, end);
     if (cfg_.lr == LrCheck::Lr1)
       match_disparities_from_base(sum, width, dmax, m, match_begin, match_end, match_disparity_.data());
-    if (cfg_.lr == LrCheck::Lr2) {
-      // Every cost is symmetric in its two images, so the match side's cost at (x', d) is the
-      // base side's cost at (x' + m + d, d); beyond the row it is Cmax (section 5).
-      for (int xm = 0; xm < width; ++xm)
-        for (int d = 0; d < dmax; ++d) {
-          const int x = xm + m + d;
-          match_cost_[size_t(xm) * size_t(dmax) + size_t(d)] =
-              x >= 0 && x < width ? cost[size_t(x) * size_t(dmax) + size_t(d)] : T(widths_.cost_max);
-        }
-      match_paths_->push_row(y, match_cost_.data(), match_sum_.data(), right_);
-      for (int xm = 0; xm < width; ++xm)
-        match_disparity_[size_t(xm)] = winner(match_sum_.data() + size_t(xm) * size_t(dmax), dmax);
-    }
+    if (cfg_.lr == LrCheck::Lr2)
+      for (int xm = match_begin; xm < match_end; ++xm)
+        match_disparity_[size_t(xm)] = winner(match_sum + size_t(xm) * size_t(dmax), dmax);
     if (side_.right != nullptr)
       for (int xm = begin; xm < end; ++xm) side_.right->at(xm, y) = uint16_t(match_disparity_[size_t(xm)]);
     if (cfg_.lr != LrCheck::None)
@@ -303,34 +307,34 @@ class RowFinisher {
   static constexpr int kInvalid = -1;  // a whole disparity once a check fails
   const StereoConfig& cfg_;
   const Widths& widths_;
-  const GrayImage& right_;
   const SideViews side_;
   DisparityImage& out_;
   const int width_;
   // Per row: the whole disparities, the refined ones, the match side's.
   std::vector<int> whole_, refined_, match_disparity_;
-  std::optional<PathAggregator<T>> match_paths_;  // LR2
-  std::vector<T> match_cost_, match_sum_;         // LR2
 };
 
 // ---------------------------------------------------------------------------------------------
 // Column bands: the frame's threads share each row by columns (docs/golden-model-speed.md).
-// Without the 180-degree path, pixel (x, y) depends on (x - 1, y) and on x - 1, x and x + 1 of
-// row y - 1 (MGM's second predecessors among them). With 2T bands of the row (thread t owns bands 2t and 2t + 1), band b of
-// row y runs at step 2y + b: its left neighbour band finished row y one step earlier, its right
+// Pixel (x, y) of a raster-order path depends on (x - 1, y) and on x - 1, x and x + 1 of row
+// y - 1 (MGM's second predecessors among them), and of the 180-degree path on (x + 1, y). With
+// 2T bands of the row (thread t owns bands 2t and 2t + 1; one thread runs the row as one band,
+// with no one to wait for), band b of row y runs the raster-order
+// paths at step 2y + b: its left neighbour band finished row y one step earlier, its right
 // neighbour finished row y - 1 one step earlier, and at every step each thread has exactly one
-// band to run. A barrier separates the steps. Thread t finishes its columns of row y once every
-// band it reads has the row: its own, and with LR1 up to dmax - 1 columns to the right; the
-// last reads come at most 2T + 1 steps after the first band of the row, so the sums live in a
-// ring of T + 1 rows. What crosses between threads per row is
-// a pixel's path costs at each band edge and those dmax columns, not whole rows: on the shared
-// VM here, moving a row of sums between cores cost more than aggregating it.
+// band to run. The 180-degree path runs band b at step 2y + 4T - 2 - b, from the right, after
+// the band's raster-order paths. LR2's match side is the same wavefront 2T steps later, when
+// the base costs it reads (up to dmax columns to the right) are there. A barrier separates the
+// steps. Thread t finishes its columns of row y once every band it reads has the row: its own,
+// and the bands holding the sums the left-right check reads. The rows live in rings deep enough
+// for the last read. What crosses between threads per row is a pixel's path costs at each band
+// edge and the dmax columns the check reads, not whole rows: on the shared VM here, moving a row
+// of sums between cores cost more than aggregating it.
 
 // The threads the bands can use: every thread needs two bands of at least one column.
-int column_band_threads(const StereoConfig& cfg, int width, int threads) {
-  if (threads < 2 || (cfg.paths & kPath180) || cfg.lr == LrCheck::Lr2) return 1;
-  return std::min(threads, width / 2);
-}
+int column_band_threads(int width, int threads) { return std::clamp(width / 2, 1, threads); }
+// One thread runs the row as one band.
+int column_bands(int threads) { return threads == 1 ? 1 : 2 * threads; }
 
 // A barrier between the bands' steps. A step takes tens of microseconds and waking a sleeping
 // thread about 30 us on a VM, so a waiting thread spins first and sleeps only after 50 us.
@@ -367,28 +371,87 @@ class StepBarrier {
   std::condition_variable passed_;
 };
 
+// The bands' schedule: the step at which each band's work on row y runs, 2y + an offset, and
+// when a thread finishes a row.
+struct BandSchedule {
+  int width, bands;
+  bool right_to_left;  // the 180-degree path
+  int match_lag;       // LR2: the match side's offsets are the base side's + match_lag
+  // The match side reads base costs up to dmax columns to the right: 2T steps later (even, so
+  // that each thread's bands keep their parity), or in the same step on one thread.
+  static int lag_for(int bands) { return bands == 1 ? 0 : bands; }
+  int edge(int band) const { return int(int64_t(band) * width / bands); }
+  int band_of(int x) const {  // the band holding column x
+    int b = 0;
+    while (b + 1 < bands && edge(b + 1) <= x) ++b;
+    return b;
+  }
+  int raster(int band) const { return band; }
+  int reverse(int band) const { return 2 * bands - 2 - band; }  // the 180-degree path
+  // The offset of the last work on a row of the base side's sums (lag 0) or the match side's.
+  int sums_done(int band, int lag) const { return lag + (right_to_left ? reverse(band) : raster(band)); }
+  // The odd offset f at which thread t finishes row y: after each band whose sums it reads has
+  // run; its own thread's work may come earlier in the same step.
+  int finish_offset(const StereoConfig& cfg, int t) const {
+    int f = 0;
+    auto after = [&](int band, int lag) {
+      const int offset = sums_done(band, lag);
+      f = std::max(f, band / 2 == t ? offset : offset + 1);
+    };
+    for (int b = 2 * t; b < std::min(2 * t + 2, bands); ++b) after(b, 0);
+    const int m = cfg.min_disp;
+    const auto [match_begin, match_end] = match_columns(cfg, width, edge(2 * t), edge(2 * t + 2));
+    if (cfg.lr == LrCheck::Lr1 && match_begin < match_end)  // the sums S(x' + m + d, d)
+      for (int b = band_of(std::max(0, match_begin + m)); b <= band_of(std::min(width - 1, match_end - 1 + m + cfg.dmax - 1)); ++b)
+        after(b, 0);
+    if (cfg.lr == LrCheck::Lr2 && match_begin < match_end)  // the match side's sums
+      for (int b = band_of(match_begin); b <= band_of(match_end - 1); ++b) after(b, match_lag);
+    return f | 1;
+  }
+  // The last offset at which a row's base costs are read.
+  int last_cost_read() const {
+    if (match_lag != 0) return match_lag + (right_to_left ? reverse(0) : raster(bands - 1));
+    return right_to_left ? reverse(0) : raster(bands - 1);
+  }
+};
+
+// Sections 1-5 of the frame on `threads` threads (1 included). False, with nothing done, if the
+// threads could not be created.
 template <class T>
-void run_column_bands(const StereoConfig& cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
+bool run_column_bands(const StereoConfig& cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
                       const SideViews& side, int threads, T sentinel, DisparityImage& out) {
-  const int width = left.width, height = left.height, bands = 2 * threads, ring = threads + 1;
+  const int width = left.width, height = left.height, bands = column_bands(threads);
+  const bool lr2 = cfg.lr == LrCheck::Lr2, right_to_left = (cfg.paths & kPath180) != 0;
+  const BandSchedule schedule{width, bands, right_to_left, lr2 ? BandSchedule::lag_for(bands) : 0};
+  auto edge = [&](int band) { return schedule.edge(band); };
+  std::vector<int> finish_offset(static_cast<size_t>(threads));
+  for (int t = 0; t < threads; ++t) finish_offset[size_t(t)] = schedule.finish_offset(cfg, t);
+  const int last_finish = *std::max_element(finish_offset.begin(), finish_offset.end());
+  // Row y + ring reuses row y's slots from step 2y + 2 ring: after the last read of row y.
+  const bool keep_costs = lr2 || right_to_left;  // read after their band's step
+  const int ring = std::max(last_finish, keep_costs ? schedule.last_cost_read() : 0) / 2 + 1;
   const size_t row_size = size_t(width) * size_t(cfg.dmax);
-  auto edge = [&](int band) { return int(int64_t(band) * width / bands); };
+  auto ring_rows = [&](bool used) { return std::unique_ptr<T[]>(used ? new T[size_t(ring) * row_size] : nullptr); };
+  // Each band writes its columns of a row before any reads them.
+  const std::unique_ptr<T[]> sums = ring_rows(true), match_sums = ring_rows(lr2), costs_kept = ring_rows(keep_costs);
+  auto slot = [&](const std::unique_ptr<T[]>& rows, int y) { return rows.get() + size_t(y % ring) * row_size; };
   PathAggregator<T> paths(cfg, width, sentinel, cfg.p2_adapt);
-  const std::unique_ptr<T[]> sums(new T[size_t(ring) * row_size]);  // each band writes its columns first
-  auto sum_row = [&](int y) { return sums.get() + size_t(y % ring) * row_size; };
-  const int last_step = 2 * (height - 1) + bands + 1;  // thread T - 1 finishes the last row
+  std::optional<PathAggregator<T>> match_paths;  // LR2: constant P2 on the match side (section 3)
+  if (lr2) match_paths.emplace(cfg, width, sentinel, 0);
+  const int last_step = 2 * (height - 1) + last_finish;
   StepBarrier barrier(threads);
 
   // A thread that fails passes every later step all the same, so that none waits for ever.
   std::vector<char> setup_failed(static_cast<size_t>(threads), 0);
-  run_on_threads(threads, [&](int t) {
+  return run_on_threads(threads, [&](int t) {
     std::optional<CostRows<T>> costs;
-    std::unique_ptr<T[]> cost_row;
+    std::unique_ptr<T[]> cost_row, match_cost_row;
     std::optional<RowFinisher<T>> finisher;
     try {
       costs.emplace(cfg, widths, left, right);
       cost_row.reset(new T[row_size]);
-      finisher.emplace(cfg, widths, right, side, out, sentinel);
+      if (lr2) match_cost_row.reset(new T[row_size]);
+      finisher.emplace(cfg, widths, side, out);
     } catch (...) {
       setup_failed[size_t(t)] = 1;
       barrier.arrive_and_wait();
@@ -396,27 +459,36 @@ void run_column_bands(const StereoConfig& cfg, const Widths& widths, const GrayI
     }
     barrier.arrive_and_wait();
     if (std::any_of(setup_failed.begin(), setup_failed.end(), [](char f) { return f != 0; })) return;
-    // Row y is finished at step 2y + finish_offset (odd), once the last band it reads has it: the
-    // thread's own second band, or with LR1 the band of the last sum the match disparities read,
-    // S(x' + m + d) for x' below max(end, end - m) (done a step before).
-    int last_band = 2 * t + 1;
-    if (cfg.lr == LrCheck::Lr1) {
-      const int end = edge(2 * t + 2), m = cfg.min_disp;
-      const int last_read = std::min(width - 1, std::max(end, end - m) - 1 + m + cfg.dmax - 1);
-      while (last_band + 1 < bands && edge(last_band + 1) <= last_read) ++last_band;
-    }
-    const int finish_offset = last_band == 2 * t + 1 ? last_band : last_band + 1 + (last_band & 1);
     std::exception_ptr error;
+    const int band = 2 * t, f = finish_offset[size_t(t)];
     for (int step = 0; step <= last_step; ++step) {
       try {
-        const int band = 2 * t + (step & 1), y = (step - band) / 2;
-        if (!error && step >= band && y < height) {
-          costs->compute(y, cost_row.get(), edge(band), edge(band + 1));
-          paths.push_band(y, cost_row.get(), sum_row(y), left, edge(band), edge(band + 1));
+        const int b = band + (step & 1), begin = edge(b), end = edge(b + 1);
+        // The row that the work at offset `offset` does at this step, or -1.
+        auto row_at = [&](int offset) {
+          return step >= offset && (step - offset) % 2 == 0 && (step - offset) / 2 < height ? (step - offset) / 2 : -1;
+        };
+        auto match_costs = [&](int y) {
+          match_side_costs(slot(costs_kept, y), width, cfg.dmax, cfg.min_disp, T(widths.cost_max), begin, end,
+                           match_cost_row.get());
+          return match_cost_row.get();
+        };
+        if (!error && b < bands) {
+          if (const int y = row_at(schedule.raster(b)); y >= 0) {
+            T* cost = keep_costs ? slot(costs_kept, y) : cost_row.get();
+            costs->compute(y, cost, begin, end);
+            paths.push_band(y, cost, slot(sums, y), left, begin, end);
+          }
+          if (const int y = row_at(schedule.reverse(b)); right_to_left && y >= 0)
+            paths.push_band_right_to_left(y, slot(costs_kept, y), slot(sums, y), left, begin, end);
+          if (const int y = row_at(schedule.match_lag + schedule.raster(b)); lr2 && y >= 0)
+            match_paths->push_band(y, match_costs(y), slot(match_sums, y), right, begin, end);
+          if (const int y = row_at(schedule.match_lag + schedule.reverse(b)); lr2 && right_to_left && y >= 0)
+            match_paths->push_band_right_to_left(y, match_costs(y), slot(match_sums, y), right, begin, end);
         }
-        const int done = (step - finish_offset) / 2;
-        if (!error && (step & 1) && step >= finish_offset && done < height)
-          finisher->finish(done, sum_row(done), nullptr, edge(2 * t), edge(2 * t + 2));
+        if (const int y = row_at(f); !error && y >= 0)
+          finisher->finish(y, slot(sums, y), lr2 ? slot(match_sums, y) : nullptr, edge(band),
+                           edge(std::min(band + 2, bands)));
       } catch (...) {
         error = std::current_exception();
       }
@@ -427,155 +499,16 @@ void run_column_bands(const StereoConfig& cfg, const Widths& widths, const GrayI
 }
 
 // ---------------------------------------------------------------------------------------------
-// Path groups, where the bands do not apply (the 180-degree path, LR2): the paths are
-// independent of each other, so a helper thread can aggregate a share of them. It computes the
-// cost rows itself and hands them, with its partial sums, to the main thread through a ring of
-// rows; the main thread then aggregates its own paths on the same cost rows and finishes the
-// rows. Integer sums do not depend on the order in which the paths are added, so the output is
-// the same for any number of threads.
-
-// The configured paths split into `groups` masks: the first path to the main thread (group 0),
-// which also finishes the rows, the others dealt round-robin to the helpers.
-std::vector<unsigned> path_groups(unsigned paths, int groups) {
-  std::vector<unsigned> masks(size_t(groups), 0);
-  int n = 0;
-  for (const auto& dir : path_directions())
-    if (paths & dir.mask) {
-      masks[n == 0 || groups == 1 ? 0 : size_t(1 + (n - 1) % (groups - 1))] |= dir.mask;
-      ++n;
-    }
-  return masks;
-}
-
-template <class T>
-class PathGroupThread {
- public:
-  PathGroupThread(const StereoConfig& group_cfg, const Widths& widths, const GrayImage& left, const GrayImage& right,
-                  T sentinel)
-      : cfg_(group_cfg), widths_(widths), left_(left), right_(right), sentinel_(sentinel),
-        row_size_(size_t(left.width) * size_t(cfg_.dmax)), thread_([this] { run(); }) {}
-  ~PathGroupThread() {
-    {
-      std::lock_guard<std::mutex> guard(mutex_);
-      cancelled_ = true;
-    }
-    changed_.notify_all();
-    thread_.join();
-  }
-
-  // The cost row y, once this thread has aggregated it (rows in order 0, 1, ...); valid until
-  // release(y).
-  const T* cost_row(int y) {
-    std::unique_lock<std::mutex> guard(mutex_);
-    changed_.wait(guard, [&] { return produced_ > y || error_; });
-    if (error_) std::rethrow_exception(error_);
-    return slot(cost_ring_, y);
-  }
-
-  // Adds this group's sums of row y to sum; after cost_row(y).
-  void add_sums(int y, T* sum) {
-    const T* __restrict partial = slot(sum_ring_, y);
-    T* __restrict out = sum;
-    for (size_t i = 0; i < row_size_; ++i) out[i] = T(out[i] + partial[i]);
-  }
-
-  // Row y's slots may be reused.
-  void release(int y) {
-    {
-      std::lock_guard<std::mutex> guard(mutex_);
-      consumed_ = y + 1;
-    }
-    changed_.notify_all();
-  }
-
- private:
-  static constexpr int kRingRows = 4;
-  T* slot(std::vector<T>& ring, int y) { return ring.data() + size_t(y % kRingRows) * row_size_; }
-
-  // The thread's state is built on the thread, so that its memory is touched (page faults,
-  // initialisation) there rather than on the main thread.
-  void run() {
-    try {
-      CostRows<T> costs(cfg_, widths_, left_, right_);
-      PathAggregator<T> paths(cfg_, left_.width, sentinel_, cfg_.p2_adapt);
-      cost_ring_.resize(kRingRows * row_size_);
-      sum_ring_.resize(kRingRows * row_size_);
-      for (int y = 0; y < left_.height; ++y) {
-        {
-          std::unique_lock<std::mutex> guard(mutex_);
-          changed_.wait(guard, [&] { return cancelled_ || y - consumed_ < kRingRows; });
-          if (cancelled_) return;
-        }
-        costs.compute(y, slot(cost_ring_, y));
-        paths.push_row(y, slot(cost_ring_, y), slot(sum_ring_, y), left_);
-        {
-          std::lock_guard<std::mutex> guard(mutex_);
-          produced_ = y + 1;
-        }
-        changed_.notify_all();
-      }
-    } catch (...) {
-      {
-        std::lock_guard<std::mutex> guard(mutex_);
-        error_ = std::current_exception();
-      }
-      changed_.notify_all();
-    }
-  }
-
-  const StereoConfig cfg_;
-  const Widths widths_;
-  const GrayImage &left_, &right_;
-  const T sentinel_;
-  const size_t row_size_;
-  std::vector<T> cost_ring_, sum_ring_;
-  std::exception_ptr error_;
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  int produced_ = 0, consumed_ = 0;
-  bool cancelled_ = false;
-  std::thread thread_;  // last: starts once everything above is built
-};
-
-// ---------------------------------------------------------------------------------------------
 // The pipeline, with T the storage type of costs and sums.
 template <class T>
 DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const GrayImage& left,
                             const GrayImage& right, const SideViews& side, int threads) {
-  const int width = left.width, height = left.height;
-  const size_t row_size = size_t(width) * size_t(cfg.dmax);
   // Larger than any path cost plus P2, and sentinel + P1 still fits in T.
   const T sentinel = T(std::numeric_limits<T>::max() - 256);
-  DisparityImage out(width, height);
-
-  if (const int band_threads = column_band_threads(cfg, width, threads); band_threads > 1) {
-    run_column_bands<T>(cfg, widths, left, right, side, band_threads, sentinel, out);
-  } else {
-    // The main thread aggregates the first group of paths, one helper thread each other group.
-    const std::vector<unsigned> groups =
-        path_groups(cfg.paths, std::clamp(threads, 1, __builtin_popcount(cfg.paths)));
-    std::vector<StereoConfig> group_cfgs(groups.size(), cfg);
-    for (size_t g = 0; g < groups.size(); ++g) group_cfgs[g].paths = groups[g];
-    std::vector<std::unique_ptr<PathGroupThread<T>>> helpers;
-    for (size_t g = 1; g < groups.size(); ++g)
-      helpers.push_back(std::make_unique<PathGroupThread<T>>(group_cfgs[g], widths, left, right, sentinel));
-    // Cost rows from the first helper, or computed here if there is none.
-    std::optional<CostRows<T>> base_costs;
-    if (helpers.empty()) base_costs.emplace(cfg, widths, left, right);
-    // P2 adapts to the base image's steps (section 3).
-    PathAggregator<T> base_paths(group_cfgs[0], width, sentinel, cfg.p2_adapt);
-    RowFinisher<T> finisher(cfg, widths, right, side, out, sentinel);
-    std::vector<T> own_cost(helpers.empty() ? row_size : 0), sum(row_size);
-    for (int y = 0; y < height; ++y) {
-      const T* cost = own_cost.data();
-      if (base_costs) base_costs->compute(y, own_cost.data());
-      for (auto& helper : helpers) cost = helper->cost_row(y);  // the same row from every helper
-      base_paths.push_row(y, cost, sum.data(), left);
-      for (auto& helper : helpers) helper->add_sums(y, sum.data());
-      finisher.finish(y, sum.data(), cost, 0, width);
-      for (auto& helper : helpers) helper->release(y);
-    }
-  }
+  DisparityImage out(left.width, left.height);
+  // Sections 1-5, on one thread where no other was to be had (one thread needs no other).
+  if (!run_column_bands<T>(cfg, widths, left, right, side, column_band_threads(left.width, threads), sentinel, out))
+    (void)run_column_bands<T>(cfg, widths, left, right, side, 1, sentinel, out);
 
   if (cfg.speckle_size != 0)
     golden::speckle_filter(out, cfg.speckle_size, cfg.speckle_range << cfg.subpixel_bits, widths.invalid_word);

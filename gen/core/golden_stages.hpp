@@ -318,8 +318,9 @@ class CostRows {
 // predecessor from the row being written. The 180-degree path runs over the row once its costs
 // are all known, from the last pixel to the first, in a second pass that adds to the sums.
 // A row may be pushed in column bands, from several threads, in an order that respects the
-// recursion's dependencies (golden_model.cpp, "Column bands"); without the 180-degree path, a
-// pixel reads only its left neighbour in its row and three neighbours in the row above.
+// recursion's dependencies (golden_model.cpp, "Column bands"): a pixel of a raster-order path
+// reads its left neighbour in its row and three neighbours in the row above; of the 180-degree
+// path, its right neighbour.
 // With mgm on, each path also reads a second predecessor, a right angle from the first
 // (section 3, "MGM"): the 0-degree path's is (x, y-1), the 90-degree path's (x-1, y).
 template <class T>
@@ -340,10 +341,11 @@ class PathAggregator {
   void push_row(int y, const T* cost, T* sum, const GrayImage& guide) {
     last_row_ = y;
     push_band(y, cost, sum, guide, 0, width_);
+    if (right_to_left_) push_band_right_to_left(y, cost, sum, guide, 0, width_);
   }
 
-  // The same for columns begin .. end - 1 of row y (cost and sum: the whole row's layout); the
-  // 180-degree path needs the whole row.
+  // The raster-order paths alone on columns begin .. end - 1 of row y (cost and sum: the whole
+  // row's layout); they write the sums.
   void push_band(int y, const T* cost, T* sum, const GrayImage& guide, int begin, int end) {
     if (paths_.empty()) {
       std::fill(sum + size_t(begin) * size_t(cfg_.dmax), sum + size_t(end) * size_t(cfg_.dmax), T(0));
@@ -363,7 +365,28 @@ class PathAggregator {
           path.rows[y & 1].minimum[size_t(x)] = push_mgm_pixel(path, x, y, cost + size_t(x) * dmax, S, guide);
       }
     }
-    if (right_to_left_) push_row_right_to_left(y, cost, sum, guide);
+  }
+
+  bool has_right_to_left() const { return right_to_left_.has_value(); }
+
+  // The 180-degree path on columns end - 1 down to begin of row y, each pixel against its right
+  // neighbour (x + 1, y), the row's last pixel a path start; adds its costs to the sums the
+  // raster-order paths wrote. Column end, if any, is of the same row (pushed before).
+  void push_band_right_to_left(int y, const T* cost, T* sum, const GrayImage& guide, int begin, int end) {
+    const size_t dmax = size_t(cfg_.dmax);
+    RowBuffer& row = *right_to_left_;
+    // The predecessor that pixel x - 1 reads.
+    auto at = [&](int x) {
+      const T minimum = row.minimum[size_t(x)];
+      return Predecessor{row.costs(x), minimum, T(minimum + penalty2(guide.at(x - 1, y), guide.at(x, y)))};
+    };
+    std::array<T, 1> minimum;
+    Predecessor pred = end < width_ ? at(end) : Predecessor{zeros_.data() + 1, 0, 0};
+    for (int x = end - 1; x >= begin; --x) {
+      step_paths<1>(cost + size_t(x) * dmax, sum + size_t(x) * dmax, {pred}, {row.costs(x)}, minimum);
+      row.minimum[size_t(x)] = minimum[0];
+      if (x > 0) pred = at(x);
+    }
   }
 
   // The path costs of the last row pushed, for tests that check widths.
@@ -444,19 +467,6 @@ class PathAggregator {
       }
       step_paths<N>(cost + size_t(x) * dmax, S, pred, L, minimum);
       for (int p = 0; p < N; ++p) paths_[size_t(p)].rows[y & 1].minimum[size_t(x)] = minimum[size_t(p)];
-    }
-  }
-
-  // The 180-degree path over row y, from the last pixel (a path start) to the first, each pixel
-  // against its right neighbour (x + 1, y); adds its costs to the sums the other paths wrote.
-  void push_row_right_to_left(int y, const T* cost, T* sum, const GrayImage& guide) {
-    const size_t dmax = size_t(cfg_.dmax);
-    RowBuffer& row = *right_to_left_;
-    std::array<T, 1> minimum;
-    Predecessor pred{zeros_.data() + 1, 0, 0};
-    for (int x = width_ - 1; x >= 0; --x) {
-      step_paths<1>(cost + size_t(x) * dmax, sum + size_t(x) * dmax, {pred}, {row.costs(x)}, minimum);
-      if (x > 0) pred = {row.costs(x), minimum[0], T(minimum[0] + penalty2(guide.at(x - 1, y), guide.at(x, y)))};
     }
   }
 

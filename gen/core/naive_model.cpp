@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <exception>
 #include <limits>
 #include <stdexcept>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -244,12 +247,38 @@ Volume path_costs(const StereoConfig& cfg, const Volume& c, const GrayImage* gui
 }
 
 // S = sum of L_r over the enabled paths; guide (or none) is the image adaptive P2 follows.
-Volume aggregate(const StereoConfig& cfg, const Volume& c, const GrayImage* guide) {
+// Up to `threads` paths at a time, each on its own thread.
+Volume aggregate(const StereoConfig& cfg, const Volume& c, const GrayImage* guide, int threads) {
+  std::vector<PathDirection> paths;
+  for (const PathDirection& p : path_directions())
+    if (cfg.paths & p.mask) paths.push_back(p);
   Volume s(c.width, c.height, c.depth);
-  for (const PathDirection& p : path_directions()) {
-    if ((cfg.paths & p.mask) == 0) continue;
-    const Volume l = path_costs(cfg, c, guide, p.dx, p.dy);
-    for (size_t i = 0; i < s.v.size(); ++i) s.v[i] += l.v[i];
+  const size_t group = size_t(std::max(1, threads));
+  for (size_t first = 0; first < paths.size(); first += group) {
+    const size_t n = std::min(group, paths.size() - first);
+    std::vector<Volume> l(n, Volume(0, 0, 0));
+    std::vector<std::exception_ptr> errors(n);
+    auto run = [&](size_t i) {
+      try {
+        l[i] = path_costs(cfg, c, guide, paths[first + i].dx, paths[first + i].dy);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> helpers;
+    for (size_t i = 1; i < n; ++i) {
+      try {
+        helpers.emplace_back(run, i);
+      } catch (const std::system_error&) {  // no thread to be had: this one does it
+        run(i);
+      }
+    }
+    run(0);
+    for (auto& helper : helpers) helper.join();
+    for (size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      for (size_t k = 0; k < s.v.size(); ++k) s.v[k] += l[i].v[k];
+    }
   }
   return s;
 }
@@ -323,8 +352,9 @@ DispMap lr1_match_disparities(const Volume& sum, int m) {
 }
 
 // LR2: match-side cost with the roles swapped, its own aggregation with constant P2, plain WTA.
-DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax) {
-  const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax), nullptr);
+DispMap lr2_match_disparities(const StereoConfig& cfg, const Side& base, const Side& match, int64_t cmax,
+                              int threads) {
+  const Volume msum = aggregate(cfg, match_costs(cfg, base, match, cmax), nullptr, threads);
   DispMap dm(msum.width, msum.height);
   for (int y = 0; y < msum.height; ++y)
     for (int xm = 0; xm < msum.width; ++xm) dm.at(xm, y) = wta(msum, xm, y);
@@ -460,7 +490,7 @@ void remove_speckles(DisparityImage& words, int size, int range, uint16_t invali
 }
 
 Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage& right,
-                 const std::vector<Plane>& planes) {
+                 const std::vector<Plane>& planes, int threads) {
   for (const Plane plane : planes)
     if (const std::string why = plane_unavailable(cfg, plane); !why.empty())
       throw std::invalid_argument("run_naive: " + why);
@@ -475,7 +505,7 @@ Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage
   const Side match = make_side(right, cfg.window);
 
   // Cost, aggregation, winner-take-all.
-  const Volume sum = aggregate(cfg, base_costs(cfg, base, match, cmax), &left);
+  const Volume sum = aggregate(cfg, base_costs(cfg, base, match, cmax), &left, threads);
   DispMap disp(W, H);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) disp.at(x, y) = wta(sum, x, y);
@@ -485,7 +515,7 @@ Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage
 
   if (cfg.lr != LrCheck::None) {
     const DispMap dm = cfg.lr == LrCheck::Lr1 ? lr1_match_disparities(sum, cfg.min_disp)
-                                              : lr2_match_disparities(cfg, base, match, cmax);
+                                              : lr2_match_disparities(cfg, base, match, cmax, threads);
     apply_lr_check(cfg, dm, disp);
     if (wanted(Plane::Right)) {
       DisparityImage& view = out[Plane::Right] = DisparityImage(W, H);

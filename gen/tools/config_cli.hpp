@@ -43,6 +43,8 @@ void check_clock_mhz(double clock_mhz);
 // Prints "fpstereo: <message>" to stderr as one line (control characters escaped); the exit
 // status for bad input.
 constexpr int kExitBadInput = 2;
+// --jobs (golden-model threads): more than this only contend for the cores (and may not start).
+constexpr int kMaxJobs = 256;
 int report_error(const std::string& tool, const std::string& message);
 // A command-line parse error: --help prints and exits 0; anything else is one line,
 // "<tool>: <message> (see --help)", and kExitBadInput.

@@ -24,8 +24,6 @@ namespace fpstereo {
 namespace {
 
 constexpr const char* kTool = "fpstereo";
-// More golden-model threads than this only contend for the cores (and may not start at all).
-constexpr int kMaxJobs = 256;
 
 // The parameters the default axes set (their flags replace the parameters' own); every other one
 // is a fixed flag of the base configuration, or an axis with --axis.

@@ -36,6 +36,7 @@ struct EvalOptions {
   SgbmOptions sgbm;
   std::string json_path, csv_path;
   std::vector<std::string> pair_names;
+  int jobs = 1;  // golden-model threads per frame
 };
 
 struct MethodResult {
@@ -102,7 +103,7 @@ PairResult run_pair(const PairInputs& in, const EvalOptions& o, const std::strin
   PairResult result{in.pair.name, in.left.width, in.left.height, {}};
   std::cerr << progress << ": fpstereo" << std::flush;
   double seconds = 0;
-  const cv::Mat1f disparity = timed([&] { return golden_disparity(in); }, seconds);
+  const cv::Mat1f disparity = timed([&] { return golden_disparity(in, o.jobs); }, seconds);
   std::cerr << fmt::format(" {:.2f} s", seconds) << std::flush;
   result.methods.push_back(evaluate(label, seconds, disparity, in));
   if (!o.baseline.empty()) {
@@ -352,6 +353,9 @@ void register_eval_command(CLI::App& app, int& exit_code) {
   sub->add_option("--pairs", o->pair_names, "evaluate only these pairs (comma-separated names)")
       ->delimiter(',')
       ->type_name("NAME");
+  sub->add_option("--jobs", o->jobs, "golden-model threads per frame (the disparities do not depend on it)")
+      ->check(CLI::Range(1, kMaxJobs))
+      ->capture_default_str();
   sub->footer(
       "Each pair runs at its own image size: --width/--height are the hardware's maximum and do not change "
       "accuracy, so they are not applied here. A table goes to stdout (to stderr if --json or --csv is '-'), "

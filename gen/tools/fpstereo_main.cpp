@@ -25,6 +25,7 @@ struct RunOptions {
   std::string left, right, colour, pfm;
   std::map<Plane, std::string> plane_files;  // the file each plane is written to, if asked
   std::vector<std::string> gray_pgm;         // left, right
+  int jobs = 1;                              // golden-model threads for the frame
   ConfigFlags config;
 };
 
@@ -76,7 +77,7 @@ int run_pair(const RunOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   Planes result;
   try {
-    result = run_golden(cfg, left, right, planes);
+    result = run_golden(cfg, left, right, planes, opt.jobs);
   } catch (const std::bad_alloc&) {
     throw InputError(fmt::format("{} and {} ({}x{}): out of memory computing the disparities", quoted(opt.left),
                                  quoted(opt.right), left.width, left.height));
@@ -145,6 +146,11 @@ int run_command_line(int argc, char** argv) {
       ->expected(2)
       ->type_name("LEFT RIGHT")
       ->check(output_file_name());
+  run_cmd
+      ->add_option("--jobs", run.jobs,
+                   "golden-model threads for the frame (the output is the same for any number)")
+      ->check(CLI::Range(1, kMaxJobs))
+      ->capture_default_str();
   run.config.add_to(*run_cmd);
   run_cmd->callback([&] { exit_code = run_pair(run); });
 
