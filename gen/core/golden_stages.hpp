@@ -153,8 +153,8 @@ class CostRows {
   }
 
   // Index d is the disparity min_disp + d: base pixel x against match pixel x - min_disp - d.
-  // Writes the costs of columns begin .. end - 1 (a band of the row, section "Threads" of
-  // docs/golden-model-speed.md) at their places in the row.
+  // Writes the costs of columns begin .. end - 1 (a band of the row, docs/golden-model-speed.md,
+  // "Threads within a frame") at their places in the row.
   void compute(int y, T* out) { compute(y, out, 0, base_.width); }
   void compute(int y, T* out, int begin, int end) {
     const int width = base_.width, dmax = cfg_.dmax, m = cfg_.min_disp;
