@@ -268,17 +268,12 @@ double subpixel_registers(const rtl::RtlDesign& d) {
          (k + 2) * (2 * (sum + k) + disp);
 }
 
-// The fused cost's features: 9 bits for the gradient, 8 for intensities; 0 without the fused cost.
-int fused_feature_bits(const StereoConfig& c) {
-  return c.fused_weight == 0 ? 0 : c.fused_term == FusedTerm::Gradient ? 9 : 8;
-}
-
 // fpstereo_fused_term per lane: the difference, its truncation, the weighted term (each as wide
 // as its largest value: Yosys drops the bits that stay 0), the sum, and the plain cost's wait for
 // the term's 3 steps; fpstereo_fused_features' two features.
 double fused_term_registers(const rtl::RtlDesign& d) {
   const StereoConfig& c = d.cfg;
-  const int f = fused_feature_bits(c);
+  const int f = d.widths.fused_feature;  // 0 without the fused cost
   if (f == 0) return 0;
   const int largest = f == 9 ? 510 : 255, truncated = std::min(c.fused_trunc, largest);
   const double cost = d.widths.cost;
@@ -347,7 +342,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
       break;
   }
   // The fused cost's features ride beside the codes in the ring.
-  const double ring_features = c.fused_weight == 0 ? 0.0 : ring / w.code * fused_feature_bits(c);
+  const double ring_features = c.fused_weight == 0 ? 0.0 : ring / w.code * w.fused_feature;
   // The tag beside the winner-take-all's tree (fpstereo_wta, fpstereo_wta_unique).
   const double word_tag = 1 + d.x_bits + d.out_row_bits;
   // The word tag beside the confidence's division (fpstereo_confidence's data).
