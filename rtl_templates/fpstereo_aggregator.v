@@ -38,7 +38,13 @@ module fpstereo_aggregator #(
   parameter COST_ROWS = 2,
   parameter COST_ROW_W = 1,
   // the match side's disparity offset
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  // 1: the RAM holds a pixel's entries, not its cost words (fpstereo_code_reorder): a word per
+  // pixel, which fpstereo_chain_cost turns into the cost words
+  parameter CODES = 0,
+  // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
+  // chain cost stage's)
+  parameter COST_LEAD = 1
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -57,6 +63,8 @@ module fpstereo_aggregator #(
   input  wire                 overlap,
   input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
+  // the schedule where cost_raddr is read: {the slot opens a row-time, the pixel's x, the group}
+  output wire [X_W+G_W:0]     cost_schedule,
   input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
@@ -75,10 +83,13 @@ module fpstereo_aggregator #(
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fpstereo_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
+    if (COST_LEAD < 1 || (CODES != 0 && (MATCH_SIDE != 0 || PENALTIES != 0))) begin : invalid_CODES
+      fpstereo_invalid_parameters_aggregator_CODES_only_on_the_base_side_without_PENALTIES failed ();
+    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fpstereo_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * (CODES != 0 ? 1 : G))) begin : invalid_widths
       fpstereo_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -153,13 +164,23 @@ module fpstereo_aggregator #(
   wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x0 : (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
-  // -> S5 (sums).
+  // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
+  wire [TAG_W-1:0] tag_led;
+  generate
+    if (COST_LEAD > 1) begin : lead
+      fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+    end else begin : no_lead
+      assign tag_led = tag0;
+    end
+  endgenerate
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
@@ -168,7 +189,7 @@ module fpstereo_aggregator #(
       tag4 <= {TAG_W{1'b0}};
       tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
-      tag1 <= tag0;
+      tag1 <= tag_led;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
@@ -181,6 +202,9 @@ module fpstereo_aggregator #(
   `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
   `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
+  // The row RAMs are read in the step before S1 (S0 without a cost lead).
+  wire [X_W-1:0]   x_read = `FPS_TAG_X(tag_led);
+  wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
@@ -201,7 +225,7 @@ module fpstereo_aggregator #(
   wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
+  // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
   reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
   wire [UF*COST_W-1:0] cost2;
@@ -286,8 +310,8 @@ module fpstereo_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
-      wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
-      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
+      wire [ROW_AW-1:0] row_raddr = x_read * G + g_read;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read;
       fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
@@ -332,8 +356,8 @@ module fpstereo_aggregator #(
         wire [PATH_W-1:0]  above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
-        wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
-        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
+        wire [ROW_AW-1:0]  row_raddr = (x_read + DX) * G + g_read;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read + DX;
         fpstereo_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_q));

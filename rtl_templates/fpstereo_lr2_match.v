@@ -95,6 +95,7 @@ module fpstereo_lr2_match #(
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [OUT_ROW_W-1:0]  slot;
+  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
   fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -102,8 +103,10 @@ module fpstereo_lr2_match #(
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
-    .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
+    .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
+    .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
+    .sums_slot(slot));
+  /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
   wire [X_W-1:0]    x_w;
   wire [OUT_ROW_W-1:0] slot_w;

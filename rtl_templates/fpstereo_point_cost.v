@@ -5,7 +5,7 @@
 // (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
 // costs the lanes compute in this slot; fpstereo_cost_history holds them, with the disparity
 // offset's delays. With the fused cost (WEIGHT above 0) each code travels with its pixel's feature
-// (fpstereo_fused_features) through the history, and fpstereo_fused_term adds the pixel-wise term.
+// (fpstereo_fused_features) through the history; fpstereo_point_lanes computes the costs.
 module fpstereo_point_cost #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
@@ -71,33 +71,10 @@ module fpstereo_point_cost #(
     .position({transform_x, transform_y, transform_slot}), .column(match_entry), .base_held(base_entry_h),
     .position_held(history), .view(match_view));
   assign {history_x, history_y, history_slot} = history;
-  // Lane l reads view entry l.
-  reg [UF*CODE_W-1:0] match_lanes;
-  integer l;
-  always @*
-    for (l = 0; l < UF; l = l + 1) match_lanes[l*CODE_W +: CODE_W] = match_view[l*ENTRY_W +: CODE_W];
-  wire [UF*COST_W-1:0] lane_costs;
-  fpstereo_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
-    .clk(clk), .en(adv), .base_code(base_entry_h[CODE_W-1:0]), .match_codes(match_lanes), .group(group),
-    .x(history_x), .width(frame_width), .costs(lane_costs));
-  generate
-    if (FUSED) begin : fused
-      reg [UF*FEATURE_W-1:0] match_features;
-      integer f;
-      always @*
-        for (f = 0; f < UF; f = f + 1)
-          match_features[f*FEATURE_W +: FEATURE_W] = match_view[f*ENTRY_W + CODE_W +: FEATURE_W];
-      fpstereo_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
-                            .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
-        .clk(clk), .en(adv), .base_feature(base_entry_h[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
-        .plain_costs(lane_costs), .costs(costs));
-    end else begin : plain
-      if (LAT != LANES_LAT) begin : invalid_LAT
-        fpstereo_invalid_parameters_point_cost_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
-      end
-      assign costs = lane_costs;
-    end
-  endgenerate
+  fpstereo_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),
+                         .G_W(G_W), .MIN_DISP(MIN_DISP), .WEIGHT(WEIGHT), .TRUNC(TRUNC), .FEATURE_W(FEATURE_W),
+                         .GRADIENT(GRADIENT), .LANES_LAT(LANES_LAT), .LAT(LAT), .ENTRY_W(ENTRY_W)) lanes (
+    .clk(clk), .en(adv), .group(group), .x(history_x), .frame_width(frame_width), .base_entry(base_entry_h),
+    .match_entries(match_view), .costs(costs));
 endmodule
 `resetall

@@ -111,6 +111,12 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
   g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
   g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
+  g.reorders_codes = options.code_reorder && point_cost && cfg.lr != LrCheck::Lr2 && cfg.p2_adapt == 0 &&
+                     cfg.min_disp >= 0;
+  if (g.reorders_codes) {
+    g.code_entry_bits = std::max(1, g.widths.code) + (cfg.fused_weight != 0 ? g.widths.fused_feature : 0);
+    g.cost_lead = 2 + g.cost_latency;
+  }
   g.output_bits = g.widths.output_lane + (cfg.confidence ? kConfidenceBits : 0);
   const int64_t R = g.row_slots, G = g.groups;
   g.x_bits = bits_for(uint64_t(R));
@@ -124,6 +130,8 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.end_addr_bits = clog2(int64_t(g.out_rows) * G);
   return g;
 }
+
+int64_t Geometry::cost_ram_bits() const { return reorders_codes ? 2 * code_entry_bits : cost_word_bits; }
 
 std::vector<OutputStream> output_streams(const Geometry& g) {
   const StereoConfig& c = g.cfg;

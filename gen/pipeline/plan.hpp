@@ -19,6 +19,9 @@ namespace fpstereo::rtl {
 // Choices of the generated design that are not part of the stereo configuration.
 struct RtlOptions {
   bool control = true;  // AXI4-Lite control and status (otherwise the settings are fixed)
+  // The reorder RAM holds the pixels' codes where the configuration allows it (Geometry::
+  // reorders_codes); false keeps the cost words everywhere (the larger arrangement, to compare).
+  bool code_reorder = true;
 };
 
 // Bits of the confidence (0..255) that rides above each word from the winner-take-all on.
@@ -53,7 +56,16 @@ struct Geometry {
   // rows of the cost reorder RAM (K, one more with LR2, whose match side reads a row longer) and
   // of the disparity RAMs (K, one more for the output's lag, and lr_rows more)
   int cost_rows = 0, out_rows = 0;
-  int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * groups; }
+  // Whether the reorder RAM holds each pixel's base and match entries (a code, with the fused
+  // cost its feature above it) instead of its G cost words, the costs computed after it in chain
+  // order (docs/architecture.md, "Code reorder"): for census and rank without LR2, adaptive P2 or
+  // a negative min-disp. Then its words are code_entry_bits * 2 wide, one per pixel, and the
+  // aggregator's cost words arrive cost_lead steps after their address (2 + cost_latency; 1 from
+  // the cost RAM).
+  bool reorders_codes = false;
+  int code_entry_bits = 0, cost_lead = 1;
+  int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * (reorders_codes ? 1 : groups); }
+  int64_t cost_ram_bits() const;
   int64_t disp_depth() const { return int64_t(out_rows) * row_slots; }
   int levels_per_stage = 3;
   int path_tree_latency = 0;
@@ -78,7 +90,7 @@ struct Geometry {
   bool carries_whole = false;
   int reorder_word_bits = 0, reorder_ram_bits = 0;
   // With adaptive P2 the cost words carry, above the uf costs, each enabled path's P2.
-  int penalty_bits = 0, cost_word_bits = 0;
+  int penalty_bits = 0, cost_word_bits = 0;  // cost_word_bits: the cost words'
   // The output streams' tdata: the word's byte lane (8 or 16 bits), and with confidence 8 above.
   int output_bits = 0;
   // the range of the run-time image size (the configured size is the largest)

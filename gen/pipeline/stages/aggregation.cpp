@@ -14,7 +14,9 @@ class AggregationStage : public Stage {
   std::string title() const override { return "aggregation"; }
   std::vector<std::string> knobs() const override { return {"paths", "p1", "p2", "mgm", "dmax", "uf"}; }
   std::string start_parameter() const override { return "AGG_START"; }
-  Latency latency(const Geometry& g) const override { return {g.chains - 1, 0, 5}; }
+  // The sums leave S5; where the costs are computed in chain order they reach S1 cost_lead steps
+  // after S0 instead of one.
+  Latency latency(const Geometry& g) const override { return {g.chains - 1, 0, 4 + g.cost_lead}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     return aggregator_memories(g, "core.aggregation");
   }
@@ -30,6 +32,11 @@ class AggregationStage : public Stage {
     core.wire("agg_chain", d.chain_bits);  // LR1 follows the chains
     Connections side = {{"MATCH_SIDE", "0"}};
     if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.cfg.path_count())});
+    core.wire("cost_schedule", d.x_bits + d.group_bits + 1);
+    if (d.reorders_codes) {
+      side = side + Connections{{"CODES", "1"}, {"COST_LEAD", num(d.cost_lead)}};
+      chain_cost(d, core);
+    }
     core.instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + side,
                   {{"sums", "agg_sums"},
                    {"sums_active", "agg_active"},
@@ -37,6 +44,39 @@ class AggregationStage : public Stage {
                    {"sums_group", "agg_group"},
                    {"sums_chain", "agg_chain"},
                    {"sums_slot", "agg_slot"}});
+  }
+
+  // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
+  static void chain_cost(const RtlDesign& d, CoreBuilder& core) {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
+    Connections parameters = {{"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
+                              {"CODE_W", num(std::max(1, w.code))},
+                              {"DMAX", num(c.dmax)},
+                              {"UF", num(c.uf)},
+                              {"K", num(d.chains)},
+                              {"COST_W", num(w.cost)},
+                              {"COST_MAX", num(int64_t(w.cost_max))},
+                              {"X_W", num(d.x_bits)},
+                              {"G_W", num(d.group_bits)},
+                              {"MIN_DISP", num(c.min_disp)},
+                              {"LANES_LAT", num(d.cost_lanes_latency)},
+                              {"LAT", num(d.cost_latency)},
+                              {"ENTRY_W", num(d.code_entry_bits)}};
+    if (c.fused_weight != 0)
+      parameters = parameters + Connections{{"WEIGHT", num(c.fused_weight)},
+                                            {"TRUNC", num(c.fused_trunc)},
+                                            {"FEATURE_W", num(w.fused_feature)},
+                                            {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"}};
+    const int x_lsb = d.group_bits, first = d.group_bits + d.x_bits;
+    core.text("  // The costs of the code entries, computed in chain order.\n");
+    core.wire("cost_q", d.cost_word_bits);
+    core.instance("fpstereo_chain_cost", "chain_cost", parameters,
+                  {{"group", fmt::format("cost_schedule[{}:0]", d.group_bits - 1)},
+                   {"x", fmt::format("cost_schedule[{}:{}]", first - 1, x_lsb)},
+                   {"row_time_first", fmt::format("cost_schedule[{}]", first)},
+                   {"entry", "code_q"},
+                   {"costs", "cost_q"}});
   }
 
   // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which

@@ -74,7 +74,9 @@ class CostStage : public Stage {
                       {"COST_ROWS", num(d.cost_rows)}, {"Y_W", num(d.y_bits)}};
         break;
     }
-    core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    core.text(d.reorders_codes
+                  ? "\n  // Cost stage: the costs are computed after the code reorder RAM, in chain order.\n"
+                  : "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
     // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
     // defaults (off), so its unused settings change no text.
@@ -96,6 +98,7 @@ class CostStage : public Stage {
                     {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
       features = {};
     }
+    if (d.reorders_codes) return;
     core.wire("history_x", d.x_bits);
     core.wire("history_y", d.signed_y_bits, true);
     core.wire("history_slot", d.cost_row_bits);

@@ -1,4 +1,6 @@
-// Cost reorder RAM: the cost words in raster order in, in chain order out.
+// Cost reorder RAM: the cost words in raster order in, in chain order out; or, where the geometry
+// reorders codes, the pixels' code entries (fpstereo_code_reorder), whose costs fpstereo_chain_cost
+// computes in chain order (the aggregation stage places it).
 #include "stage_list.hpp"
 #include "stage_support.hpp"
 
@@ -11,10 +13,12 @@ class CostReorderStage : public Stage {
   std::vector<std::string> knobs() const override { return {"uf"}; }
   Latency latency(const Geometry&) const override { return {0, 0, 1}; }  // written, then read
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
+    return {{g.reorders_codes ? "core.cost_reorder.code_ram.mem" : "core.cost_reorder.cost_ram.mem", g.cost_depth(),
+             g.cost_ram_bits()}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    if (d.reorders_codes) return code_reorder(d, core);
     Connections parameters = {{"ROW_SLOTS", num(d.row_slots)},
                               {"G", num(d.groups)},
                               {"UF", num(d.cfg.uf)},
@@ -41,6 +45,29 @@ class CostReorderStage : public Stage {
     core.wire("cost_raddr", d.cost_addr_bits);
     core.wire("cost_q", d.cost_word_bits);
     core.instance("fpstereo_cost_reorder", "cost_reorder", parameters, ports);
+  }
+
+  // Each pixel's base and match entries (code_entry: the code, with the fused cost its feature
+  // above), in the RAM's one word per pixel.
+  static void code_reorder(const RtlDesign& d, CoreBuilder& core) {
+    const bool fused = d.cfg.fused_weight != 0;
+    core.text("\n  // Code reorder RAM: each pixel's base and match entries, in chain order out.\n");
+    core.wire("cost_raddr", d.cost_addr_bits);
+    core.wire("code_q", d.cost_ram_bits());
+    core.instance("fpstereo_code_reorder", "cost_reorder",
+                  {{"ROW_SLOTS", num(d.row_slots)},
+                   {"ENTRY_W", num(d.code_entry_bits)},
+                   {"ROWS", num(d.cost_rows)},
+                   {"ROW_W", num(d.cost_row_bits)},
+                   {"AW", num(d.cost_addr_bits)},
+                   {"X_W", num(d.x_bits)},
+                   {"Y_W", num(d.y_bits)},
+                   {"SIGNED_Y_W", num(d.signed_y_bits)},
+                   {"MIN_DISP", num(d.cfg.min_disp)}},
+                  {{"base_entry", fused ? "{feature_base, code_base}" : "code_base"},
+                   {"match_entry", fused ? "{feature_match, code_match}" : "code_match"},
+                   {"raddr", "cost_raddr"},
+                   {"q", "code_q"}});
   }
 
   // ---- HLS: aggregate's to_chain_order.

@@ -1,0 +1,59 @@
+`resetall
+`default_nettype none
+// Code reorder RAM (docs/architecture.md, "Code reorder"): instead of the cost words, each
+// pixel's entries, written in raster order as the transform delivers them and read in the
+// aggregation's chain order, where fpstereo_chain_cost computes the costs. The entry at (row, x)
+// is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
+// a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
+// image are never written, so only valid rows' slots (row mod ROWS) matter.
+module fpstereo_code_reorder #(
+  parameter ROW_SLOTS = 64,
+  parameter ENTRY_W = 24,
+  parameter ROWS = 2,
+  parameter ROW_W = 1,
+  parameter AW = 7,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter SIGNED_Y_W = 8,
+  parameter MIN_DISP = 0
+) (
+  input  wire                   clk,
+  input  wire                   adv,
+  input  wire                   shift,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  input  wire [ENTRY_W-1:0]     base_entry,
+  input  wire [ENTRY_W-1:0]     match_entry,
+  input  wire [X_W-1:0]         transform_x,
+  input  wire signed [SIGNED_Y_W-1:0] transform_y,
+  input  wire [ROW_W-1:0]       transform_slot,
+  input  wire [AW-1:0]          raddr,
+  output wire [2*ENTRY_W-1:0]   q
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2 || MIN_DISP < 0) begin : invalid
+      fpstereo_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
+    end
+  endgenerate
+  wire [ENTRY_W-1:0] match_now;
+  generate
+    if (MIN_DISP > 0) begin : match_late
+      fpstereo_delay #(.WIDTH(ENTRY_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match_entry), .out(match_now));
+    end else begin : match_in_time
+      assign match_now = match_entry;
+    end
+  endgenerate
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire in_image = {1'b0, transform_x} < width_x && transform_y >= 0 && transform_y < height_y;
+  // The address is a product of narrow counters and constants, cut to the RAM's address width.
+  /* verilator lint_off WIDTH */
+  wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
+  /* verilator lint_on WIDTH */
+  fpstereo_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
+    .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
+    .re(adv), .raddr(raddr), .rdata(q));
+endmodule
+`resetall
