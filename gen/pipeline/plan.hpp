@@ -19,9 +19,6 @@ namespace fpstereo::rtl {
 // Choices of the generated design that are not part of the stereo configuration.
 struct RtlOptions {
   bool control = true;  // AXI4-Lite control and status (otherwise the settings are fixed)
-  // The reorder RAM holds the pixels' codes where the configuration allows it (Geometry::
-  // reorders_codes); false keeps the cost words everywhere (the larger arrangement, to compare).
-  bool code_reorder = true;
 };
 
 // Bits of the confidence (0..255) that rides above each word from the winner-take-all on.

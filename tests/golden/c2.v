@@ -32,14 +32,14 @@
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
 // Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892881; frames follow on from 9 rows
-// Latency without stalls from the first input handshake to the first output handshake: 29886 cycles
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892884; frames follow on from 9 rows
+// Latency without stalls from the first input handshake to the first output handshake: 29889 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
 //   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
-//   aggregation                          1     0    5   paths, p1, p2, mgm, dmax, uf
+//   aggregation                          1     0    8   paths, p1, p2, mgm, dmax, uf
 //   winner-take-all                      0     0    3   uniqueness
 //   disparity reorder                    0     1    0   lr
 //   median filter                        2     2   26   median
@@ -271,8 +271,10 @@ module fps_census7_d128u32_6c9a83_sgm_core (
 
   // Window stage: line buffers, windows, their bounds and centres.
   wire shift;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire slot_end;
   wire [1:0] group;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [391:0] window_left;
   wire [391:0] window_right;
   wire [6:0] row_valid;
@@ -301,37 +303,16 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .clk(clk), .shift(shift), .window_left(window_left), .window_right(window_right), .row_valid(row_valid),
     .col_valid(col_valid), .code_base(code_base), .code_match(code_match));
 
-  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.
-  wire [10:0] history_x;
-  wire signed [10:0] history_y;
-  wire history_slot;
-  wire [191:0] costs;
-  fps_census7_d128u32_6c9a83_point_cost #(
-    .HAMMING(1), .CODE_W(48), .LANES_LAT(2), .DMAX(128), .UF(32), .COST_W(6), .COST_MAX(48), .COST_ROW_W(1),
-    .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(2)
-  ) cost (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .group(group), .frame_width(frame_width),
-    .code_base(code_base), .code_match(code_match), .feature_base(8'd0), .feature_match(8'd0),
-    .transform_x(transform_x), .transform_y(transform_y), .transform_slot(transform_slot),
-    .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs));
-
-  // Cost reorder RAM.
-  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
-  wire cost_valid;
-  wire [10:0] cost_x;
-  wire cost_row_slot;
-  wire [1:0] cost_group;
-  /* verilator lint_on UNUSEDSIGNAL */
-  wire [13:0] cost_raddr;
-  wire [191:0] cost_q;
-  fps_census7_d128u32_6c9a83_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(6), .LAT(2), .COST_ROWS(2), .COST_ROW_W(1), .COST_AW(14),
-    .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
+  // Code reorder RAM: each pixel's base and match entries, in chain order out.
+  wire [11:0] cost_raddr;
+  wire [95:0] code_q;
+  fps_census7_d128u32_6c9a83_code_reorder #(
+    .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(2), .ROW_W(1), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
+    .MIN_DISP(0)
   ) cost_reorder (
-    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
-    .cost_valid(cost_valid), .cost_x(cost_x), .cost_row_slot(cost_row_slot), .cost_group(cost_group),
-    .cost_raddr(cost_raddr), .cost_q(cost_q));
+    .clk(clk), .adv(adv), .shift(shift), .frame_width(frame_width), .frame_height(frame_height),
+    .base_entry(code_base), .match_entry(code_match), .transform_x(transform_x), .transform_y(transform_y),
+    .transform_slot(transform_slot), .raddr(cost_raddr), .q(code_q));
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 14931;
@@ -347,15 +328,27 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read the bits they need
+  wire [13:0] cost_schedule;
+  /* verilator lint_on UNUSEDSIGNAL */
+  // The costs of the code entries, computed in chain order.
+  wire [191:0] cost_q;
+  fps_census7_d128u32_6c9a83_chain_cost #(
+    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(2), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
+    .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
+  ) chain_cost (
+    .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
+    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .costs(cost_q));
   fps_census7_d128u32_6c9a83_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(3), .OUT_ROW_W(2),
-    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0)
+    .COST_AW(12), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0),
+    .CODES(1), .COST_LEAD(4)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
-    .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
-    .sums_slot(agg_slot));
+    .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
+    .cost_schedule(cost_schedule), .cost_q(cost_q), .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x),
+    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -371,7 +364,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .tag_out({winner_active, winner_x, winner_slot}), .word(winner_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 19907;
+  localparam OUT_START = 19910;
   reg out_on;
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
@@ -1284,171 +1277,167 @@ endmodule
 
 `resetall
 `default_nettype none
-// Cost stage for census and rank (one code per pixel): the base code waits a slot next to the
-// match ring, which holds the last DMAX match codes; the lanes give UF costs per step
-// (docs/architecture.md, "Front end"). history_x / history_y / history_slot are the centre whose
-// costs the lanes compute in this slot; fps_census7_d128u32_6c9a83_cost_history holds them, with the disparity
-// offset's delays. With the fused cost (WEIGHT above 0) each code travels with its pixel's feature
-// (fps_census7_d128u32_6c9a83_fused_features) through the history, and fps_census7_d128u32_6c9a83_fused_term adds the pixel-wise term.
-module fps_census7_d128u32_6c9a83_point_cost #(
-  // 1: census codes (Hamming distance); 0: ranks (absolute difference)
-  parameter HAMMING = 1,
-  parameter CODE_W = 24,
-  parameter DMAX = 32,
-  parameter UF = 8,
-  parameter COST_W = 5,
-  parameter COST_MAX = 24,
-  parameter COST_ROW_W = 1,
+// Code reorder RAM (docs/architecture.md, "Code reorder"): instead of the cost words, each
+// pixel's entries, written in raster order as the transform delivers them and read in the
+// aggregation's chain order, where fps_census7_d128u32_6c9a83_chain_cost computes the costs. The entry at (row, x)
+// is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
+// a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
+// image are never written, so only valid rows' slots (row mod ROWS) matter.
+module fps_census7_d128u32_6c9a83_code_reorder #(
+  parameter ROW_SLOTS = 64,
+  parameter ENTRY_W = 24,
+  parameter ROWS = 2,
+  parameter ROW_W = 1,
+  parameter AW = 7,
   parameter X_W = 7,
+  parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
-  parameter G_W = 2,
-  parameter MIN_DISP = 0,
-  // the fused cost: WEIGHT in eighths (0: off), TRUNC, the features' width and signedness
-  parameter WEIGHT = 0,
-  parameter TRUNC = 20,
-  parameter FEATURE_W = 8,
-  parameter GRADIENT = 0,
-  // the cost lanes' latency, and the stage's (the lanes' plus the fused term's step, or the same);
-  // fps_census7_d128u32_6c9a83_cost_lanes and fps_census7_d128u32_6c9a83_fused_term check them
-  parameter LANES_LAT = 2,
-  parameter LAT = 2
+  parameter MIN_DISP = 0
 ) (
   input  wire                   clk,
   input  wire                   adv,
-  input  wire                   slot_end,
   input  wire                   shift,
-  input  wire [G_W-1:0]         group,
   input  wire [X_W-1:0]         frame_width,
-  input  wire [CODE_W-1:0]      code_base,
-  input  wire [CODE_W-1:0]      code_match,
-  /* verilator lint_off UNUSEDSIGNAL */  // the fused cost's only
-  input  wire [FEATURE_W-1:0]   feature_base,
-  input  wire [FEATURE_W-1:0]   feature_match,
-  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [Y_W-1:0]         frame_height,
+  input  wire [ENTRY_W-1:0]     base_entry,
+  input  wire [ENTRY_W-1:0]     match_entry,
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
-  input  wire [COST_ROW_W-1:0]    transform_slot,
-  output wire [X_W-1:0]         history_x,
-  output wire signed [SIGNED_Y_W-1:0] history_y,
-  output wire [COST_ROW_W-1:0]    history_slot,
-  output wire [UF*COST_W-1:0]   costs
+  input  wire [ROW_W-1:0]       transform_slot,
+  input  wire [AW-1:0]          raddr,
+  output wire [2*ENTRY_W-1:0]   q
 );
-  localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
-  // A history entry: the code, with the fused cost its pixel's feature above it.
-  localparam FUSED = WEIGHT != 0;
-  localparam ENTRY_W = CODE_W + (FUSED ? FEATURE_W : 0);
-  wire [ENTRY_W-1:0]    base_entry, match_entry, base_entry_h;
-  wire [POSITION_W-1:0] history;
-  wire [UF*ENTRY_W-1:0] match_view;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (FUSED) begin : with_features
-      assign base_entry = {feature_base, code_base};
-      assign match_entry = {feature_match, code_match};
-    end else begin : codes_only
-      assign base_entry = code_base;
-      assign match_entry = code_match;
+    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2 || MIN_DISP < 0) begin : invalid
+      fps_census7_d128u32_6c9a83_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
     end
   endgenerate
-  fps_census7_d128u32_6c9a83_cost_history #(.BASE_W(ENTRY_W), .POSITION_W(POSITION_W), .COLUMN_W(ENTRY_W), .SPAN(1), .DMAX(DMAX),
-                          .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
-    .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_entry),
-    .position({transform_x, transform_y, transform_slot}), .column(match_entry), .base_held(base_entry_h),
-    .position_held(history), .view(match_view));
-  assign {history_x, history_y, history_slot} = history;
-  // Lane l reads view entry l.
-  reg [UF*CODE_W-1:0] match_lanes;
-  integer l;
-  always @*
-    for (l = 0; l < UF; l = l + 1) match_lanes[l*CODE_W +: CODE_W] = match_view[l*ENTRY_W +: CODE_W];
-  wire [UF*COST_W-1:0] lane_costs;
-  fps_census7_d128u32_6c9a83_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
-                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
-    .clk(clk), .en(adv), .base_code(base_entry_h[CODE_W-1:0]), .match_codes(match_lanes), .group(group),
-    .x(history_x), .width(frame_width), .costs(lane_costs));
+  wire [ENTRY_W-1:0] match_now;
   generate
-    if (FUSED) begin : fused
-      reg [UF*FEATURE_W-1:0] match_features;
-      integer f;
-      always @*
-        for (f = 0; f < UF; f = f + 1)
-          match_features[f*FEATURE_W +: FEATURE_W] = match_view[f*ENTRY_W + CODE_W +: FEATURE_W];
-      fps_census7_d128u32_6c9a83_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
-                            .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
-        .clk(clk), .en(adv), .base_feature(base_entry_h[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
-        .plain_costs(lane_costs), .costs(costs));
-    end else begin : plain
-      if (LAT != LANES_LAT) begin : invalid_LAT
-        fps_census7_d128u32_6c9a83_invalid_parameters_point_cost_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
-      end
-      assign costs = lane_costs;
+    if (MIN_DISP > 0) begin : match_late
+      fps_census7_d128u32_6c9a83_delay #(.WIDTH(ENTRY_W), .DEPTH(MIN_DISP)) match_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in(match_entry), .out(match_now));
+    end else begin : match_in_time
+      assign match_now = match_entry;
     end
   endgenerate
+  wire [X_W:0] width_x = {1'b0, frame_width};
+  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
+  wire in_image = {1'b0, transform_x} < width_x && transform_y >= 0 && transform_y < height_y;
+  // The address is a product of narrow counters and constants, cut to the RAM's address width.
+  /* verilator lint_off WIDTH */
+  wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
+  /* verilator lint_on WIDTH */
+  fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
+    .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
+    .re(adv), .raddr(raddr), .rdata(q));
 endmodule
 `resetall
 
 `resetall
 `default_nettype none
-// Cost reorder RAM (docs/architecture.md): the cost words, written in raster order as the cost
-// lanes deliver them (LAT steps after the centre's position), read in the aggregation's chain
-// order. Rows outside the image are never written, so only valid rows' slots (row mod
-// COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
-// A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
-module fps_census7_d128u32_6c9a83_cost_reorder #(
-  parameter ROW_SLOTS = 64,
-  parameter G = 4,
+// Cost stage in the aggregation's chain order (docs/architecture.md, "Code reorder"): the code
+// reorder RAM gives one entry per slot, the pixel's base entry and the match entry that enters
+// its row's match history; the costs are computed here, after the reorder, as the aggregator
+// reads them. Each row in flight keeps its own match history: the last DMAX match entries of its
+// row, a ring that turns by UF each step as fps_census7_d128u32_6c9a83_match_ring does. The K rings take turns at
+// the head, whose UF entries the lanes read: chain k continues in row-time t + 1 the row chain
+// k - 1 left in row-time t, so the rings serve the chains in a fixed cycle, and the head keeps its
+// ring only into a row-time's first slot, where the ring of the row just finished begins a new
+// row (its old entries lie left of the row and are never read: the lanes mask x - MIN_DISP - d <
+// 0). Timing: the aggregator's schedule names a pixel's group in step S0, where it reads the
+// pixel's entry; the entry is in the RAM's register in S1, where the head takes it in the first
+// group, so the lanes take group g in step S2 + g and the costs leave LAT steps later.
+module fps_census7_d128u32_6c9a83_chain_cost #(
+  parameter HAMMING = 1,
+  parameter CODE_W = 24,
+  parameter DMAX = 32,
   parameter UF = 8,
+  parameter K = 2,
   parameter COST_W = 5,
-  parameter EXTRA_W = 0,
-  // register stages of the cost lanes
-  parameter LAT = 1,
-  parameter COST_ROWS = 2,
-  parameter COST_ROW_W = 1,
-  parameter COST_AW = 10,
+  parameter COST_MAX = 24,
   parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter SIGNED_Y_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  parameter MIN_DISP = 0,
+  parameter WEIGHT = 0,
+  parameter TRUNC = 20,
+  parameter FEATURE_W = 8,
+  parameter GRADIENT = 0,
+  parameter LANES_LAT = 2,
+  parameter LAT = 2,
+  parameter ENTRY_W = CODE_W
 ) (
-  input  wire                   clk,
-  input  wire                   restart,
-  input  wire                   adv,
-  input  wire [X_W-1:0]         frame_width,
-  input  wire [Y_W-1:0]         frame_height,
-  input  wire [G_W-1:0]         group,
-  input  wire [X_W-1:0]         history_x,
-  input  wire signed [SIGNED_Y_W-1:0] history_y,
-  input  wire [COST_ROW_W-1:0]    history_slot,
-  input  wire [UF*COST_W+EXTRA_W-1:0] costs,
-  output wire                   cost_valid,
-  output wire [X_W-1:0]         cost_x,
-  output wire [COST_ROW_W-1:0]    cost_row_slot,
-  output wire [G_W-1:0]         cost_group,
-  input  wire [COST_AW-1:0]     cost_raddr,
-  output wire [UF*COST_W+EXTRA_W-1:0] cost_q
+  input  wire                  clk,
+  input  wire                  adv,
+  // the schedule in S0: the group, the pixel's x, and whether the slot opens a row-time
+  input  wire [G_W-1:0]        group,
+  input  wire [X_W-1:0]        x,
+  input  wire                  row_time_first,
+  input  wire [X_W-1:0]        frame_width,
+  // the pixel's entry, in S1
+  input  wire [2*ENTRY_W-1:0]  entry,
+  output wire [UF*COST_W-1:0]  costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (LAT < 1) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_reorder_LAT_below_1 failed ();
-    end
-    if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
+    if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
+      fps_census7_d128u32_6c9a83_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
     end
   endgenerate
-  localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
-  wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
-  wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_census7_d128u32_6c9a83_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
-    .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
-    .out({cost_valid, cost_x, cost_row_slot, cost_group}));
-  // The address is a product of narrow counters and constants, cut to the RAM's address width.
-  /* verilator lint_off WIDTH */
-  wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
-  /* verilator lint_on WIDTH */
-  fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
-    .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
-    .re(adv), .raddr(cost_raddr), .rdata(cost_q));
+  // Turns as in fps_census7_d128u32_6c9a83_match_ring (SPAN 1): by UF in a slot's steps; at the load, the turn that
+  // completes the slot plus the shift by one entry.
+  localparam TURN = UF % DMAX;
+  localparam SHIFT = (UF - 1) % DMAX;
+  localparam RING_W = DMAX * ENTRY_W;
+  reg [RING_W-1:0] head;
+  // the rings waiting for their chain, the next one at index 0, each with its turn completed
+  reg [(K-1)*RING_W-1:0] waiting;
+  reg [ENTRY_W-1:0] base_held;
+  // The schedule in S1 (the head takes the entry in a first group) and S2 (the lanes).
+  reg [G_W-1:0] group1, group2;
+  reg [X_W-1:0] x1, x2;
+  reg first1;
+  always @(posedge clk)
+    if (adv) begin
+      {group1, x1, first1} <= {group, x, row_time_first};
+      {group2, x2} <= {group1, x1};
+    end
+  wire load = group1 == 0;
+  wire [ENTRY_W-1:0] base_in = entry[ENTRY_W-1:0];
+  wire [ENTRY_W-1:0] match_in = entry[2*ENTRY_W-1 -: ENTRY_W];
+  wire [RING_W-1:0] next_ring = waiting[RING_W-1:0];
+  reg [RING_W-1:0] head_turned;
+  integer p;
+  always @*
+    for (p = 0; p < DMAX; p = p + 1) head_turned[p*ENTRY_W +: ENTRY_W] = head[((p + TURN) % DMAX)*ENTRY_W +: ENTRY_W];
+  always @(posedge clk)
+    if (adv) begin
+      if (!load) head <= head_turned;
+      else begin
+        head[0 +: ENTRY_W] <= match_in;
+        for (p = 1; p < DMAX; p = p + 1)
+          head[p*ENTRY_W +: ENTRY_W] <= first1 ? head[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
+                                                       : next_ring[(p-1)*ENTRY_W +: ENTRY_W];
+        base_held <= base_in;
+      end
+    end
+  // The head's ring joins the end of the queue as the next one leaves it.
+  wire rotate = adv && load && !first1;
+  generate
+    if (K > 2) begin : queue
+      always @(posedge clk)
+        if (rotate) waiting <= {head_turned, waiting[(K-1)*RING_W-1:RING_W]};
+    end else begin : one
+      always @(posedge clk)
+        if (rotate) waiting <= head_turned;
+    end
+  endgenerate
+  fps_census7_d128u32_6c9a83_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),
+                         .G_W(G_W), .MIN_DISP(MIN_DISP), .WEIGHT(WEIGHT), .TRUNC(TRUNC), .FEATURE_W(FEATURE_W),
+                         .GRADIENT(GRADIENT), .LANES_LAT(LANES_LAT), .LAT(LAT), .ENTRY_W(ENTRY_W)) lanes (
+    .clk(clk), .en(adv), .group(group2), .x(x2), .frame_width(frame_width), .base_entry(base_held),
+    .match_entries(head[UF*ENTRY_W-1:0]), .costs(costs));
 endmodule
 `resetall
 
@@ -1492,7 +1481,13 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   parameter COST_ROWS = 2,
   parameter COST_ROW_W = 1,
   // the match side's disparity offset
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  // 1: the RAM holds a pixel's entries, not its cost words (fps_census7_d128u32_6c9a83_code_reorder): a word per
+  // pixel, which fps_census7_d128u32_6c9a83_chain_cost turns into the cost words
+  parameter CODES = 0,
+  // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
+  // chain cost stage's)
+  parameter COST_LEAD = 1
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1511,6 +1506,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   input  wire                 overlap,
   input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
+  // the schedule where cost_raddr is read: {the slot opens a row-time, the pixel's x, the group}
+  output wire [X_W+G_W:0]     cost_schedule,
   input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
@@ -1529,10 +1526,13 @@ module fps_census7_d128u32_6c9a83_aggregator #(
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
+    if (COST_LEAD < 1 || (CODES != 0 && (MATCH_SIDE != 0 || PENALTIES != 0))) begin : invalid_CODES
+      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_CODES_only_on_the_base_side_without_PENALTIES failed ();
+    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * (CODES != 0 ? 1 : G))) begin : invalid_widths
       fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -1607,13 +1607,23 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x0 : (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
-  // -> S5 (sums).
+  // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
+  wire [TAG_W-1:0] tag_led;
+  generate
+    if (COST_LEAD > 1) begin : lead
+      fps_census7_d128u32_6c9a83_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+    end else begin : no_lead
+      assign tag_led = tag0;
+    end
+  endgenerate
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
@@ -1622,7 +1632,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       tag4 <= {TAG_W{1'b0}};
       tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
-      tag1 <= tag0;
+      tag1 <= tag_led;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
@@ -1635,6 +1645,9 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
   `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
+  // The row RAMs are read in the step before S1 (S0 without a cost lead).
+  wire [X_W-1:0]   x_read = `FPS_TAG_X(tag_led);
+  wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
@@ -1655,7 +1668,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
+  // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
   reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
   wire [UF*COST_W-1:0] cost2;
@@ -1740,8 +1753,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
-      wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
-      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
+      wire [ROW_AW-1:0] row_raddr = x_read * G + g_read;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read;
       fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
@@ -1786,8 +1799,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
         wire [PATH_W-1:0]  above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
-        wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
-        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
+        wire [ROW_AW-1:0]  row_raddr = (x_read + DX) * G + g_read;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read + DX;
         fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_q));
@@ -2377,306 +2390,6 @@ endmodule
 
 `resetall
 `default_nettype none
-// What the cost lanes read, common to every cost stage: the base (its data and its centre's
-// position) held one slot, and the match image's last columns in the match ring. A disparity
-// offset MIN_DISP (docs/semantics.md, section 2: base pixel x against match pixel x - MIN_DISP - d)
-// delays one side first: the ring serves d = 0 .. DMAX - 1 from its newest column back, so with
-// MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with MIN_DISP < 0 the base waits
-// -MIN_DISP slots instead, so that the ring already holds the match columns right of it.
-module fps_census7_d128u32_6c9a83_cost_history #(
-  // bits of the base's data (a code or a window) and of its centre's position
-  parameter BASE_W = 8,
-  parameter POSITION_W = 8,
-  // bits of one match column, and the window side the lanes need (1: one code per disparity)
-  parameter COLUMN_W = 8,
-  parameter SPAN = 1,
-  parameter DMAX = 32,
-  parameter UF = 8,
-  // bits of the lanes' group index (checked to hold DMAX / UF groups)
-  parameter G_W = 2,
-  parameter MIN_DISP = 0
-) (
-  input  wire                            clk,
-  input  wire                            adv,
-  input  wire                            slot_end,
-  input  wire                            shift,
-  input  wire [BASE_W-1:0]               base,
-  input  wire [POSITION_W-1:0]           position,
-  input  wire [COLUMN_W-1:0]             column,
-  output reg  [BASE_W-1:0]               base_held,
-  output reg  [POSITION_W-1:0]           position_held,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
-    end
-  endgenerate
-  // The offset's delays: shift registers advanced once per slot, none at MIN_DISP = 0.
-  wire [BASE_W+POSITION_W-1:0] base_now;
-  wire [COLUMN_W-1:0]          column_now;
-  generate
-    if (MIN_DISP > 0) begin : match_late
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in(column), .out(column_now));
-    end else begin : match_in_time
-      assign column_now = column;
-    end
-    if (MIN_DISP < 0) begin : base_late
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
-        .clk(clk), .rst(1'b0), .en(shift), .in({base, position}), .out(base_now));
-    end else begin : base_in_time
-      assign base_now = {base, position};
-    end
-  endgenerate
-  always @(posedge clk)
-    if (shift) {base_held, position_held} <= base_now;
-  fps_census7_d128u32_6c9a83_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
-    .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_now), .view(view));
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
-// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
-// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
-// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
-// then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
-// 7x7) take a step more: sums of up to 8 counts, then their total.
-module fps_census7_d128u32_6c9a83_cost_lanes #(
-  // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
-  parameter HAMMING = 1,
-  parameter CODE_W = 48,
-  parameter UF = 32,
-  parameter COST_W = 6,
-  parameter COST_MAX = 48,
-  // bits of the group index and of the x coordinate
-  parameter GROUP_W = 2,
-  parameter X_W = 11,
-  // the smallest disparity (docs/semantics.md, section 2)
-  parameter MIN_DISP = 0,
-  // the latency the instantiating stage plans with (checked: 2, 3 for census codes of more than
-  // 48 bits)
-  parameter LAT = 2
-) (
-  input  wire                 clk,
-  input  wire                 en,
-  input  wire [CODE_W-1:0]    base_code,
-  input  wire [UF*CODE_W-1:0] match_codes,
-  input  wire [GROUP_W-1:0]   group,
-  input  wire [X_W-1:0]       x,
-  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
-  input  wire [X_W-1:0]       width,
-  /* verilator lint_on UNUSEDSIGNAL */
-  output reg  [UF*COST_W-1:0] costs
-);
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
-    end
-    if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
-    end
-    if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
-    end
-  endgenerate
-  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
-  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
-  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
-  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
-  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
-  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
-  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
-  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
-  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
-
-  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
-  localparam CHUNKS = (CODE_W + 5) / 6;
-  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : CODE_W;
-  // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
-  localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
-  localparam SETS = (CHUNKS + 7) / 8;
-
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
-      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
-      // Step 1: the partial counts (or the difference) and whether the match pixel lies
-      // outside the row (right of it only when MIN_DISP < 0).
-      reg  [PART_W-1:0] part;
-      reg               beyond;
-      wire [COST_W-1:0] cost;
-      if (HAMMING) begin : hamming
-        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
-        reg  [PART_W-1:0]   counts;
-        reg  [SETS*COST_W-1:0] set_sums;
-        reg  [COST_W-1:0]   total;
-        integer k, b;
-        always @* begin
-          for (k = 0; k < CHUNKS; k = k + 1) begin
-            counts[k*3 +: 3] = 3'd0;
-            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
-          end
-          set_sums = {SETS*COST_W{1'b0}};
-          for (k = 0; k < CHUNKS; k = k + 1)
-            set_sums[(k/8)*COST_W +: COST_W] = set_sums[(k/8)*COST_W +: COST_W] + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
-        end
-        always @(posedge clk)
-          if (en) part <= counts;
-        if (SPLIT) begin : in_sets
-          // Step 2: the sets' sums; step 3 (below): their total.
-          reg [SETS*COST_W-1:0] set_sums_q;
-          always @(posedge clk)
-            if (en) set_sums_q <= set_sums;
-          integer j;
-          always @* begin
-            total = {COST_W{1'b0}};
-            for (j = 0; j < SETS; j = j + 1) total = total + set_sums_q[j*COST_W +: COST_W];
-          end
-        end else begin : at_once
-          always @* total = set_sums[COST_W-1:0];
-        end
-        assign cost = total;
-      end else begin : absolute_difference
-        always @(posedge clk)
-          if (en) part <= base_code > m ? base_code - m : m - base_code;
-        // the costs are wider than the rank values where they hold the fused cost's term too
-        if (COST_W > CODE_W) begin : widened
-          assign cost = {{(COST_W-CODE_W){1'b0}}, part};
-        end else begin : same_width
-          assign cost = part;
-        end
-      end
-      always @(posedge clk)
-        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
-      // The border flag waits for the sets' step; then (step 2, or 3) the cost.
-      wire beyond_d;
-      if (SPLIT) begin : beyond_wait
-        reg beyond_q;
-        always @(posedge clk)
-          if (en) beyond_q <= beyond;
-        assign beyond_d = beyond_q;
-      end else begin : beyond_now
-        assign beyond_d = beyond;
-      end
-      always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
-// The fused cost (docs/semantics.md, section 2, "Fused cost"): each lane's cost plus
-// floor(WEIGHT * min(|F_B - F_M|, TRUNC) / 8), F the pixels' features (fps_census7_d128u32_6c9a83_fused_features).
-// The features enter with the lanes' inputs and the plain costs leave the lanes LANES_LAT steps
-// later. The term takes three register steps (the absolute difference, its truncation, the
-// weighting as shifts and adds: no multiplier), the shorter of the two waits for the other, and a
-// last step adds them. A plain cost of COST_MAX marks a match pixel outside the row (in the row
-// it stays at most COST_MAX - floor(WEIGHT * TRUNC / 8)): that cost stays COST_MAX.
-module fps_census7_d128u32_6c9a83_fused_term #(
-  parameter UF = 8,
-  parameter COST_W = 6,
-  // the largest cost, the term's bound included (gen/core/widths.cpp)
-  parameter COST_MAX = 40,
-  // 1: signed features (the gradient, 9 bits); 0: intensities (8 bits)
-  parameter GRADIENT = 0,
-  parameter FEATURE_W = 8,
-  // the weight in eighths (1 .. 32) and the truncation (1 .. 255)
-  parameter WEIGHT = 4,
-  parameter TRUNC = 32,
-  // the lanes' latency, and the latency the instantiating stage plans with (checked:
-  // max(LANES_LAT, 3) + 1)
-  parameter LANES_LAT = 2,
-  parameter LAT = 4
-) (
-  input  wire                    clk,
-  input  wire                    en,
-  input  wire [FEATURE_W-1:0]    base_feature,
-  input  wire [UF*FEATURE_W-1:0] match_features,
-  input  wire [UF*COST_W-1:0]    plain_costs,
-  output reg  [UF*COST_W-1:0]    costs
-);
-  localparam TERM_STEPS = 3;
-  localparam ALIGNED = LANES_LAT > TERM_STEPS ? LANES_LAT : TERM_STEPS;
-  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
-  generate
-    if (WEIGHT < 1 || WEIGHT > 32 || TRUNC < 1 || TRUNC > 255 || FEATURE_W != (GRADIENT != 0 ? 9 : 8) ||
-        COST_MAX >= (1 << COST_W) || WEIGHT * TRUNC / 8 > COST_MAX) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_needs_WEIGHT_1_to_32_TRUNC_1_to_255_and_COST_MAX_holding_the_term failed ();
-    end
-    if (LANES_LAT < 1 || LAT != ALIGNED + 1) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_LAT_is_not_the_latency failed ();
-    end
-  endgenerate
-  // WEIGHT * TRUNC < 8 * (COST_MAX + 1): the weighted difference fits in COST_W + 3 bits, and so
-  // does the truncated difference; the truncation compares in a width that holds both.
-  localparam PRODUCT_W = COST_W + 3;
-  localparam COMPARE_W = PRODUCT_W + FEATURE_W + 1;
-  localparam [COMPARE_W-1:0] TRUNC_WIDE = TRUNC[COMPARE_W-1:0];
-
-  wire [UF*COST_W-1:0] plain_aligned, terms_aligned;
-  reg  [UF*COST_W-1:0] terms;
-  genvar l;
-  generate
-    for (l = 0; l < UF; l = l + 1) begin : lane
-      // Both features widened by one bit, signed: the gradient sign-extended, intensities as they are.
-      wire signed [FEATURE_W:0] b = {GRADIENT != 0 ? base_feature[FEATURE_W-1] : 1'b0, base_feature};
-      wire [FEATURE_W-1:0] mf = match_features[l*FEATURE_W +: FEATURE_W];
-      wire signed [FEATURE_W:0] m = {GRADIENT != 0 ? mf[FEATURE_W-1] : 1'b0, mf};
-      wire signed [FEATURE_W:0] b_minus_m = b - m, m_minus_b = m - b;
-      // Step 1: the absolute difference (0 .. 510 fits FEATURE_W + 1 bits as a non-negative value).
-      reg [FEATURE_W:0] difference;
-      always @(posedge clk)
-        if (en) difference <= b > m ? b_minus_m : m_minus_b;
-      // Step 2: truncated at TRUNC.
-      wire [COMPARE_W-1:0] difference_wide = {{PRODUCT_W{1'b0}}, difference};
-      reg [PRODUCT_W-1:0] truncated;
-      always @(posedge clk)
-        if (en) truncated <= difference_wide > TRUNC_WIDE ? TRUNC_WIDE[PRODUCT_W-1:0] : difference_wide[PRODUCT_W-1:0];
-      // Step 3: floor(WEIGHT * truncated / 8), the product as a sum of shifted copies.
-      reg [PRODUCT_W-1:0] product;
-      integer bit_i;
-      always @* begin
-        product = {PRODUCT_W{1'b0}};
-        for (bit_i = 0; bit_i < 6; bit_i = bit_i + 1)
-          if (((WEIGHT >> bit_i) & 1) != 0) product = product + (truncated << bit_i);
-      end
-      always @(posedge clk)
-        if (en) terms[l*COST_W +: COST_W] <= product[PRODUCT_W-1:3];
-    end
-    // The shorter of the two paths waits for the longer.
-    if (LANES_LAT < TERM_STEPS) begin : plain_waits
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(TERM_STEPS - LANES_LAT)) plain_wait (
-        .clk(clk), .rst(1'b0), .en(en), .in(plain_costs), .out(plain_aligned));
-    end else begin : plain_in_time
-      assign plain_aligned = plain_costs;
-    end
-    if (LANES_LAT > TERM_STEPS) begin : terms_wait
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(LANES_LAT - TERM_STEPS)) term_wait (
-        .clk(clk), .rst(1'b0), .en(en), .in(terms), .out(terms_aligned));
-    end else begin : terms_in_time
-      assign terms_aligned = terms;
-    end
-    // The last step: the sum, or COST_MAX outside the row.
-    for (l = 0; l < UF; l = l + 1) begin : sum
-      wire [COST_W-1:0] plain = plain_aligned[l*COST_W +: COST_W];
-      always @(posedge clk)
-        if (en) costs[l*COST_W +: COST_W] <= plain == COST_MAX[COST_W-1:0] ? COST_MAX[COST_W-1:0]
-                                                                          : plain + terms_aligned[l*COST_W +: COST_W];
-    end
-  endgenerate
-endmodule
-`resetall
-
-`resetall
-`default_nettype none
 // DEPTH registers in a row (DEPTH >= 1), advancing when en is high. With RESET, rst clears them,
 // so that a valid flag travelling in it never starts out set; without, rst is unused: data that a
 // valid flag qualifies needs no reset, and registers without one need no reset routing and can
@@ -2754,6 +2467,81 @@ module fps_census7_d128u32_6c9a83_ram_sdp #(
     if (we) mem[waddr] <= wdata;
     if (re) rdata <= mem[raddr];
   end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The lanes of a point cost (census or rank: one code per pixel): UF costs per step from the
+// base entry and UF match entries, each a code with, for the fused cost (WEIGHT above 0), its
+// pixel's feature above it (fps_census7_d128u32_6c9a83_fused_features); fps_census7_d128u32_6c9a83_fused_term adds the pixel-wise
+// term. The raster cost stage (fps_census7_d128u32_6c9a83_point_cost) and the chain-order one (fps_census7_d128u32_6c9a83_chain_cost)
+// feed it.
+module fps_census7_d128u32_6c9a83_point_lanes #(
+  // 1: census codes (Hamming distance); 0: ranks (absolute difference)
+  parameter HAMMING = 1,
+  parameter CODE_W = 24,
+  parameter UF = 8,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter X_W = 7,
+  parameter G_W = 2,
+  parameter MIN_DISP = 0,
+  // the fused cost: WEIGHT in eighths (0: off), TRUNC, the features' width and signedness
+  parameter WEIGHT = 0,
+  parameter TRUNC = 20,
+  parameter FEATURE_W = 8,
+  parameter GRADIENT = 0,
+  // the cost lanes' latency, and the whole latency (the lanes' plus the fused term's step, or the
+  // same); fps_census7_d128u32_6c9a83_cost_lanes and fps_census7_d128u32_6c9a83_fused_term check them
+  parameter LANES_LAT = 2,
+  parameter LAT = 2,
+  // an entry: the code, with the fused cost the feature above it
+  parameter ENTRY_W = CODE_W
+) (
+  input  wire                  clk,
+  input  wire                  en,
+  input  wire [G_W-1:0]        group,
+  input  wire [X_W-1:0]        x,
+  input  wire [X_W-1:0]        frame_width,
+  input  wire [ENTRY_W-1:0]    base_entry,
+  input  wire [UF*ENTRY_W-1:0] match_entries,
+  output wire [UF*COST_W-1:0]  costs
+);
+  localparam FUSED = WEIGHT != 0;
+  generate
+    if (ENTRY_W != CODE_W + (FUSED ? FEATURE_W : 0)) begin : invalid_ENTRY_W
+      fps_census7_d128u32_6c9a83_invalid_parameters_point_lanes_ENTRY_W_is_not_the_code_and_feature failed ();
+    end
+  endgenerate
+  // Lane l reads entry l.
+  reg [UF*CODE_W-1:0] match_codes;
+  integer l;
+  always @*
+    for (l = 0; l < UF; l = l + 1) match_codes[l*CODE_W +: CODE_W] = match_entries[l*ENTRY_W +: CODE_W];
+  wire [UF*COST_W-1:0] lane_costs;
+  fps_census7_d128u32_6c9a83_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+                        .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
+    .clk(clk), .en(en), .base_code(base_entry[CODE_W-1:0]), .match_codes(match_codes), .group(group),
+    .x(x), .width(frame_width), .costs(lane_costs));
+  generate
+    if (FUSED) begin : fused
+      reg [UF*FEATURE_W-1:0] match_features;
+      integer f;
+      always @*
+        for (f = 0; f < UF; f = f + 1)
+          match_features[f*FEATURE_W +: FEATURE_W] = match_entries[f*ENTRY_W + CODE_W +: FEATURE_W];
+      fps_census7_d128u32_6c9a83_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
+                            .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
+        .clk(clk), .en(en), .base_feature(base_entry[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
+        .plain_costs(lane_costs), .costs(costs));
+    end else begin : plain
+      if (LAT != LANES_LAT) begin : invalid_LAT
+        fps_census7_d128u32_6c9a83_invalid_parameters_point_lanes_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
+      end
+      assign costs = lane_costs;
+    end
+  endgenerate
 endmodule
 `resetall
 
@@ -3217,49 +3005,239 @@ endmodule
 
 `resetall
 `default_nettype none
-// The match image's last DMAX + SPAN - 1 columns (a column: what one slot contributes, e.g. a
-// code, or SPAN pixels of a window column), in a ring that rotates by UF each step: in step g of
-// a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
-// group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
-// slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_census7_d128u32_6c9a83_match_ring #(
-  // bits of one column
-  parameter COLUMN_W = 48,
-  // window side the lanes need (1: one code per disparity)
-  parameter SPAN = 1,
-  // disparity range
-  parameter DMAX = 128,
-  // disparities per step
-  parameter UF = 32
+// UF matching costs per step: lane l is index d = group*UF + l, disparity MIN_DISP + d. Census:
+// Hamming distance of the codes; rank: absolute difference. Where the match pixel x - MIN_DISP - d
+// lies outside the row the cost is COST_MAX (docs/semantics.md, section 2). Two register steps: the
+// Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
+// then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
+// 7x7) take a step more: sums of up to 8 counts, then their total.
+module fps_census7_d128u32_6c9a83_cost_lanes #(
+  // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
+  parameter HAMMING = 1,
+  parameter CODE_W = 48,
+  parameter UF = 32,
+  parameter COST_W = 6,
+  parameter COST_MAX = 48,
+  // bits of the group index and of the x coordinate
+  parameter GROUP_W = 2,
+  parameter X_W = 11,
+  // the smallest disparity (docs/semantics.md, section 2)
+  parameter MIN_DISP = 0,
+  // the latency the instantiating stage plans with (checked: 2, 3 for census codes of more than
+  // 48 bits)
+  parameter LAT = 2
 ) (
-  input  wire                            clk,
-  input  wire                            en,
-  input  wire                            slot_end,
-  input  wire [COLUMN_W-1:0]             column_in,
-  output wire [(UF+SPAN-1)*COLUMN_W-1:0] view
+  input  wire                 clk,
+  input  wire                 en,
+  input  wire [CODE_W-1:0]    base_code,
+  input  wire [UF*CODE_W-1:0] match_codes,
+  input  wire [GROUP_W-1:0]   group,
+  input  wire [X_W-1:0]       x,
+  /* verilator lint_off UNUSEDSIGNAL */  // the right border matters only below MIN_DISP 0
+  input  wire [X_W-1:0]       width,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output reg  [UF*COST_W-1:0] costs
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+    if (UF < 1 || UF > 512) begin : invalid_UF
+      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
+    end
+    if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
+      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+    end
+    if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
+      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
-  localparam LENGTH = DMAX + SPAN - 1;
-  // Where each register takes its column from: a turn by UF, or (in a slot's last step) the
-  // turn that completes the slot plus the shift by one slot.
-  localparam TURN = UF % LENGTH;
-  localparam SHIFT = (UF + SPAN - 2) % LENGTH;
+  // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
+  localparam D_W = (X_W > GROUP_W + 9 ? X_W : GROUP_W + 9) + 2;
+  wire [D_W-1:0] x_wide = {{(D_W-X_W){1'b0}}, x};
+  wire [D_W-1:0] width_wide = {{(D_W-X_W){1'b0}}, width};
+  wire [D_W-1:0] group_base = {{(D_W-GROUP_W){1'b0}}, group} * UF[D_W-1:0];
+  // x - MIN_DISP - d, compared as x + AHEAD against d + BEHIND, both non-negative.
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  wire [D_W-1:0] x_ahead = x_wide + AHEAD[D_W-1:0];
 
-  reg [LENGTH*COLUMN_W-1:0] ring;
-  assign view = ring[(UF+SPAN-1)*COLUMN_W-1:0];
+  // Census: the XOR of the codes is counted in chunks of 6 bits, one LUT level each.
+  localparam CHUNKS = (CODE_W + 5) / 6;
+  localparam PART_W = HAMMING != 0 ? CHUNKS * 3 : CODE_W;
+  // More than 8 chunks: the counts are summed in sets of 8 first (one more step).
+  localparam SPLIT = HAMMING != 0 && CHUNKS > 8;
+  localparam SETS = (CHUNKS + 7) / 8;
 
-  integer p;
-  always @(posedge clk)
-    if (en)
-      for (p = 0; p < LENGTH; p = p + 1)
-        if (!slot_end) ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + TURN) % LENGTH)*COLUMN_W +: COLUMN_W];
-        else if (p == 0) ring[0 +: COLUMN_W] <= column_in;
-        else ring[p*COLUMN_W +: COLUMN_W] <= ring[((p + SHIFT) % LENGTH)*COLUMN_W +: COLUMN_W];
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      wire [CODE_W-1:0] m = match_codes[l*CODE_W +: CODE_W];
+      wire [D_W-1:0]    d = group_base + l[D_W-1:0] + BEHIND[D_W-1:0];
+      // Step 1: the partial counts (or the difference) and whether the match pixel lies
+      // outside the row (right of it only when MIN_DISP < 0).
+      reg  [PART_W-1:0] part;
+      reg               beyond;
+      wire [COST_W-1:0] cost;
+      if (HAMMING) begin : hamming
+        wire [CHUNKS*6-1:0] diff = {{(CHUNKS*6-CODE_W){1'b0}}, base_code ^ m};
+        reg  [PART_W-1:0]   counts;
+        reg  [SETS*COST_W-1:0] set_sums;
+        reg  [COST_W-1:0]   total;
+        integer k, b;
+        always @* begin
+          for (k = 0; k < CHUNKS; k = k + 1) begin
+            counts[k*3 +: 3] = 3'd0;
+            for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, diff[k*6 + b]};
+          end
+          set_sums = {SETS*COST_W{1'b0}};
+          for (k = 0; k < CHUNKS; k = k + 1)
+            set_sums[(k/8)*COST_W +: COST_W] = set_sums[(k/8)*COST_W +: COST_W] + {{(COST_W-3){1'b0}}, part[k*3 +: 3]};
+        end
+        always @(posedge clk)
+          if (en) part <= counts;
+        if (SPLIT) begin : in_sets
+          // Step 2: the sets' sums; step 3 (below): their total.
+          reg [SETS*COST_W-1:0] set_sums_q;
+          always @(posedge clk)
+            if (en) set_sums_q <= set_sums;
+          integer j;
+          always @* begin
+            total = {COST_W{1'b0}};
+            for (j = 0; j < SETS; j = j + 1) total = total + set_sums_q[j*COST_W +: COST_W];
+          end
+        end else begin : at_once
+          always @* total = set_sums[COST_W-1:0];
+        end
+        assign cost = total;
+      end else begin : absolute_difference
+        always @(posedge clk)
+          if (en) part <= base_code > m ? base_code - m : m - base_code;
+        // the costs are wider than the rank values where they hold the fused cost's term too
+        if (COST_W > CODE_W) begin : widened
+          assign cost = {{(COST_W-CODE_W){1'b0}}, part};
+        end else begin : same_width
+          assign cost = part;
+        end
+      end
+      always @(posedge clk)
+        if (en) beyond <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
+      // The border flag waits for the sets' step; then (step 2, or 3) the cost.
+      wire beyond_d;
+      if (SPLIT) begin : beyond_wait
+        reg beyond_q;
+        always @(posedge clk)
+          if (en) beyond_q <= beyond;
+        assign beyond_d = beyond_q;
+      end else begin : beyond_now
+        assign beyond_d = beyond;
+      end
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= beyond_d ? COST_MAX[COST_W-1:0] : cost;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The fused cost (docs/semantics.md, section 2, "Fused cost"): each lane's cost plus
+// floor(WEIGHT * min(|F_B - F_M|, TRUNC) / 8), F the pixels' features (fps_census7_d128u32_6c9a83_fused_features).
+// The features enter with the lanes' inputs and the plain costs leave the lanes LANES_LAT steps
+// later. The term takes three register steps (the absolute difference, its truncation, the
+// weighting as shifts and adds: no multiplier), the shorter of the two waits for the other, and a
+// last step adds them. A plain cost of COST_MAX marks a match pixel outside the row (in the row
+// it stays at most COST_MAX - floor(WEIGHT * TRUNC / 8)): that cost stays COST_MAX.
+module fps_census7_d128u32_6c9a83_fused_term #(
+  parameter UF = 8,
+  parameter COST_W = 6,
+  // the largest cost, the term's bound included (gen/core/widths.cpp)
+  parameter COST_MAX = 40,
+  // 1: signed features (the gradient, 9 bits); 0: intensities (8 bits)
+  parameter GRADIENT = 0,
+  parameter FEATURE_W = 8,
+  // the weight in eighths (1 .. 32) and the truncation (1 .. 255)
+  parameter WEIGHT = 4,
+  parameter TRUNC = 32,
+  // the lanes' latency, and the latency the instantiating stage plans with (checked:
+  // max(LANES_LAT, 3) + 1)
+  parameter LANES_LAT = 2,
+  parameter LAT = 4
+) (
+  input  wire                    clk,
+  input  wire                    en,
+  input  wire [FEATURE_W-1:0]    base_feature,
+  input  wire [UF*FEATURE_W-1:0] match_features,
+  input  wire [UF*COST_W-1:0]    plain_costs,
+  output reg  [UF*COST_W-1:0]    costs
+);
+  localparam TERM_STEPS = 3;
+  localparam ALIGNED = LANES_LAT > TERM_STEPS ? LANES_LAT : TERM_STEPS;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (WEIGHT < 1 || WEIGHT > 32 || TRUNC < 1 || TRUNC > 255 || FEATURE_W != (GRADIENT != 0 ? 9 : 8) ||
+        COST_MAX >= (1 << COST_W) || WEIGHT * TRUNC / 8 > COST_MAX) begin : invalid
+      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_needs_WEIGHT_1_to_32_TRUNC_1_to_255_and_COST_MAX_holding_the_term failed ();
+    end
+    if (LANES_LAT < 1 || LAT != ALIGNED + 1) begin : invalid_LAT
+      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_LAT_is_not_the_latency failed ();
+    end
+  endgenerate
+  // WEIGHT * TRUNC < 8 * (COST_MAX + 1): the weighted difference fits in COST_W + 3 bits, and so
+  // does the truncated difference; the truncation compares in a width that holds both.
+  localparam PRODUCT_W = COST_W + 3;
+  localparam COMPARE_W = PRODUCT_W + FEATURE_W + 1;
+  localparam [COMPARE_W-1:0] TRUNC_WIDE = TRUNC[COMPARE_W-1:0];
+
+  wire [UF*COST_W-1:0] plain_aligned, terms_aligned;
+  reg  [UF*COST_W-1:0] terms;
+  genvar l;
+  generate
+    for (l = 0; l < UF; l = l + 1) begin : lane
+      // Both features widened by one bit, signed: the gradient sign-extended, intensities as they are.
+      wire signed [FEATURE_W:0] b = {GRADIENT != 0 ? base_feature[FEATURE_W-1] : 1'b0, base_feature};
+      wire [FEATURE_W-1:0] mf = match_features[l*FEATURE_W +: FEATURE_W];
+      wire signed [FEATURE_W:0] m = {GRADIENT != 0 ? mf[FEATURE_W-1] : 1'b0, mf};
+      wire signed [FEATURE_W:0] b_minus_m = b - m, m_minus_b = m - b;
+      // Step 1: the absolute difference (0 .. 510 fits FEATURE_W + 1 bits as a non-negative value).
+      reg [FEATURE_W:0] difference;
+      always @(posedge clk)
+        if (en) difference <= b > m ? b_minus_m : m_minus_b;
+      // Step 2: truncated at TRUNC.
+      wire [COMPARE_W-1:0] difference_wide = {{PRODUCT_W{1'b0}}, difference};
+      reg [PRODUCT_W-1:0] truncated;
+      always @(posedge clk)
+        if (en) truncated <= difference_wide > TRUNC_WIDE ? TRUNC_WIDE[PRODUCT_W-1:0] : difference_wide[PRODUCT_W-1:0];
+      // Step 3: floor(WEIGHT * truncated / 8), the product as a sum of shifted copies.
+      reg [PRODUCT_W-1:0] product;
+      integer bit_i;
+      always @* begin
+        product = {PRODUCT_W{1'b0}};
+        for (bit_i = 0; bit_i < 6; bit_i = bit_i + 1)
+          if (((WEIGHT >> bit_i) & 1) != 0) product = product + (truncated << bit_i);
+      end
+      always @(posedge clk)
+        if (en) terms[l*COST_W +: COST_W] <= product[PRODUCT_W-1:3];
+    end
+    // The shorter of the two paths waits for the longer.
+    if (LANES_LAT < TERM_STEPS) begin : plain_waits
+      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(TERM_STEPS - LANES_LAT)) plain_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(plain_costs), .out(plain_aligned));
+    end else begin : plain_in_time
+      assign plain_aligned = plain_costs;
+    end
+    if (LANES_LAT > TERM_STEPS) begin : terms_wait
+      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(LANES_LAT - TERM_STEPS)) term_wait (
+        .clk(clk), .rst(1'b0), .en(en), .in(terms), .out(terms_aligned));
+    end else begin : terms_in_time
+      assign terms_aligned = terms;
+    end
+    // The last step: the sum, or COST_MAX outside the row.
+    for (l = 0; l < UF; l = l + 1) begin : sum
+      wire [COST_W-1:0] plain = plain_aligned[l*COST_W +: COST_W];
+      always @(posedge clk)
+        if (en) costs[l*COST_W +: COST_W] <= plain == COST_MAX[COST_W-1:0] ? COST_MAX[COST_W-1:0]
+                                                                          : plain + terms_aligned[l*COST_W +: COST_W];
+    end
+  endgenerate
 endmodule
 `resetall
 

@@ -356,6 +356,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [2:0] agg_slot;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire agg_chain;
+  wire [13:0] cost_schedule;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fc707c_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
@@ -363,9 +364,9 @@ module fps_sad5_d128u32_fc707c_sgm_core (
     .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_ROW_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr), .cost_q(cost_q),
-    .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain),
-    .sums_slot(agg_slot));
+    .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
+    .cost_schedule(cost_schedule), .cost_q(cost_q), .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x),
+    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -1561,6 +1562,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [OUT_ROW_W-1:0]  slot;
+  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
   fps_sad5_d128u32_fc707c_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -1568,8 +1570,10 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
-    .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_q(match_costs), .sums(sums),
-    .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain), .sums_slot(slot));
+    .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
+    .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
+    .sums_slot(slot));
+  /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
   wire [X_W-1:0]    x_w;
   wire [OUT_ROW_W-1:0] slot_w;
@@ -1628,7 +1632,13 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   parameter COST_ROWS = 2,
   parameter COST_ROW_W = 1,
   // the match side's disparity offset
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  // 1: the RAM holds a pixel's entries, not its cost words (fps_sad5_d128u32_fc707c_code_reorder): a word per
+  // pixel, which fps_sad5_d128u32_fc707c_chain_cost turns into the cost words
+  parameter CODES = 0,
+  // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
+  // chain cost stage's)
+  parameter COST_LEAD = 1
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1647,6 +1657,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   input  wire                 overlap,
   input  wire                 wrapped,
   output wire [COST_AW-1:0]   cost_raddr,
+  // the schedule where cost_raddr is read: {the slot opens a row-time, the pixel's x, the group}
+  output wire [X_W+G_W:0]     cost_schedule,
   input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
@@ -1665,10 +1677,13 @@ module fps_sad5_d128u32_fc707c_aggregator #(
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
+    if (COST_LEAD < 1 || (CODES != 0 && (MATCH_SIDE != 0 || PENALTIES != 0))) begin : invalid_CODES
+      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_CODES_only_on_the_base_side_without_PENALTIES failed ();
+    end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
-    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G)) begin : invalid_widths
+    if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * (CODES != 0 ? 1 : G))) begin : invalid_widths
       fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
@@ -1743,13 +1758,23 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x0 : (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
-  // -> S5 (sums).
+  // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
   wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
+  wire [TAG_W-1:0] tag_led;
+  generate
+    if (COST_LEAD > 1) begin : lead
+      fps_sad5_d128u32_fc707c_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+    end else begin : no_lead
+      assign tag_led = tag0;
+    end
+  endgenerate
   always @(posedge clk)
     if (restart) begin
       tag1 <= {TAG_W{1'b0}};
@@ -1758,7 +1783,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       tag4 <= {TAG_W{1'b0}};
       tag5 <= {TAG_W{1'b0}};
     end else if (adv) begin
-      tag1 <= tag0;
+      tag1 <= tag_led;
       tag2 <= tag1;
       tag3 <= tag2;
       tag4 <= tag3;
@@ -1771,6 +1796,9 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   `define FPS_TAG_CHAIN(t)  t[K_W+OUT_ROW_W-1 -: K_W]
   `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
+  // The row RAMs are read in the step before S1 (S0 without a cost lead).
+  wire [X_W-1:0]   x_read = `FPS_TAG_X(tag_led);
+  wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
@@ -1791,7 +1819,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // The cost word of the pixel in S2 (read in S0, one step in the RAM register, one here). On the
+  // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
   reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
   wire [UF*COST_W-1:0] cost2;
@@ -1876,8 +1904,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
-      wire [ROW_AW-1:0] row_raddr = x0 * G + ga;
-      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0;
+      wire [ROW_AW-1:0] row_raddr = x_read * G + g_read;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read;
       fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
@@ -1922,8 +1950,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
         wire [PATH_W-1:0]  above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
-        wire [ROW_AW-1:0]  row_raddr = (x0 + DX) * G + ga;
-        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x0 + DX;
+        wire [ROW_AW-1:0]  row_raddr = (x_read + DX) * G + g_read;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read + DX;
         fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_q));

@@ -74,8 +74,11 @@ class CostStage : public Stage {
                       {"COST_ROWS", num(d.cost_rows)}, {"Y_W", num(d.y_bits)}};
         break;
     }
+    // Where the reorder RAM holds codes, the costs are computed after it (the aggregation stage's
+    // fpstereo_chain_cost); this stage adds only the fused cost's features.
+    if (d.reorders_codes && c.fused_weight == 0) return;
     core.text(d.reorders_codes
-                  ? "\n  // Cost stage: the costs are computed after the code reorder RAM, in chain order.\n"
+                  ? "\n  // Cost stage: the fused cost's features beside the codes; the costs follow the code reorder RAM.\n"
                   : "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
     // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
