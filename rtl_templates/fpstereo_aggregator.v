@@ -83,8 +83,8 @@ module fpstereo_aggregator #(
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fpstereo_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (COST_LEAD < 1 || (CODES != 0 && (MATCH_SIDE != 0 || PENALTIES != 0))) begin : invalid_CODES
-      fpstereo_invalid_parameters_aggregator_CODES_only_on_the_base_side_without_PENALTIES failed ();
+    if (COST_LEAD < 1 || (CODES != 0 && MATCH_SIDE != 0)) begin : invalid_CODES
+      fpstereo_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
     end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fpstereo_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
@@ -203,8 +203,10 @@ module fpstereo_aggregator #(
   `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   // The row RAMs are read in the step before S1 (S0 without a cost lead).
+  /* verilator lint_off UNUSEDSIGNAL */  // the 45, 90 and 135 degree paths' row RAMs read them
   wire [X_W-1:0]   x_read = `FPS_TAG_X(tag_led);
   wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);

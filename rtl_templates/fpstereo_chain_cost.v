@@ -29,7 +29,9 @@ module fpstereo_chain_cost #(
   parameter GRADIENT = 0,
   parameter LANES_LAT = 2,
   parameter LAT = 2,
-  parameter ENTRY_W = CODE_W
+  parameter ENTRY_W = CODE_W,
+  // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
+  parameter EXTRA_W = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -40,7 +42,11 @@ module fpstereo_chain_cost #(
   input  wire [X_W-1:0]        frame_width,
   // the pixel's entry, in S1
   input  wire [2*ENTRY_W-1:0]  entry,
-  output wire [UF*COST_W-1:0]  costs
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [UF*COST_W-1:0]  costs,
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -94,6 +100,14 @@ module fpstereo_chain_cost #(
     end else begin : one
       always @(posedge clk)
         if (rotate) waiting <= head_turned;
+    end
+  endgenerate
+  generate
+    if (EXTRA_W > 0) begin : extras
+      fpstereo_delay #(.WIDTH(EXTRA_W), .DEPTH(LAT + 1)) extra_wait (
+        .clk(clk), .rst(1'b0), .en(adv), .in(extra), .out(extra_out));
+    end else begin : no_extras
+      assign extra_out = 1'b0;
     end
   endgenerate
   fpstereo_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),

@@ -5,7 +5,10 @@
 // aggregation's chain order, where fpstereo_chain_cost computes the costs. The entry at (row, x)
 // is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
 // a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
-// image are never written, so only valid rows' slots (row mod ROWS) matter.
+// image are never written, so only valid rows' slots (row mod ROWS) matter. With EXTRA_W above 0
+// (adaptive P2's penalties, which leave fpstereo_adaptive_p2 with the costs the raster stage
+// would compute: a slot and EXTRA_LAT steps after the codes) a second RAM holds them per pixel,
+// written at their position then, read at the same address.
 module fpstereo_code_reorder #(
   parameter ROW_SLOTS = 64,
   parameter ENTRY_W = 24,
@@ -15,7 +18,9 @@ module fpstereo_code_reorder #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter EXTRA_W = 0,
+  parameter EXTRA_LAT = 2
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -27,8 +32,12 @@ module fpstereo_code_reorder #(
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [ROW_W-1:0]       transform_slot,
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [AW-1:0]          raddr,
-  output wire [2*ENTRY_W-1:0]   q
+  output wire [2*ENTRY_W-1:0]   q,
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_q
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -55,5 +64,25 @@ module fpstereo_code_reorder #(
   fpstereo_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
     .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
     .re(adv), .raddr(raddr), .rdata(q));
+  generate
+    if (EXTRA_W > 0) begin : extras
+      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps.
+      localparam POSITION_W = 1 + ROW_W + X_W;
+      reg [POSITION_W-1:0] held;
+      wire [POSITION_W-1:0] at;
+      always @(posedge clk)
+        if (shift) held <= {in_image, transform_slot, transform_x};
+      fpstereo_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
+        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
+      /* verilator lint_off WIDTH */
+      wire [AW-1:0] extra_waddr = at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + at[X_W-1:0];
+      /* verilator lint_on WIDTH */
+      fpstereo_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
+        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra),
+        .re(adv), .raddr(raddr), .rdata(extra_q));
+    end else begin : no_extras
+      assign extra_q = 1'b0;
+    end
+  endgenerate
 endmodule
 `resetall

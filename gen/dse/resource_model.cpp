@@ -225,7 +225,9 @@ double memory_read_mux_bits(const rtl::RtlDesign& d) {
 // fpstereo_point_cost (census, rank): the match ring, each lane's Hamming chunk counts (census)
 // or difference (rank), its border flag and cost; the window-cost lanes of SAD, ZSAD and SHD
 // are a term of their own. Then the transform's two codes, the front end's two pixel windows
-// and the cost reorder's tag beside the cost latency.
+// and the cost reorder's tag beside the cost latency; or, where the reorder RAM holds codes
+// (fpstereo_chain_cost), the K - 1 rings waiting for their chains, the held base entry, the
+// schedule's two steps and the aggregator's tag beside the cost lead.
 double cost_registers(const rtl::RtlDesign& d, double ring) {
   const StereoConfig& c = d.cfg;
   const Widths& w = d.widths;
@@ -238,6 +240,12 @@ double cost_registers(const rtl::RtlDesign& d, double ring) {
   }
   const double codes = c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2.0 * w.code;
   const double windows = 2.0 * c.window * c.window * w.pixel;
+  if (d.reorders_codes) {
+    const double waiting = (d.chains - 1.0) * c.dmax * d.code_entry_bits;
+    const double schedule = 2.0 * (d.x_bits + d.group_bits) + 1;
+    const double tag = 1.0 + d.x_bits + d.y_bits + 1 + d.group_bits + d.chain_bits + d.out_row_bits;
+    return ring + waiting + d.code_entry_bits + schedule + (d.cost_lead - 1) * tag + lanes + codes + windows;
+  }
   const double reorder_tag = d.cost_latency * (1.0 + d.x_bits + d.cost_row_bits + d.group_bits);
   return ring + lanes + codes + windows + reorder_tag;
 }

@@ -55,8 +55,8 @@ struct Geometry {
   int cost_rows = 0, out_rows = 0;
   // Whether the reorder RAM holds each pixel's base and match entries (a code, with the fused
   // cost its feature above it) instead of its G cost words, the costs computed after it in chain
-  // order (docs/architecture.md, "Code reorder"): for census and rank without LR2, adaptive P2 or
-  // a negative min-disp. Then its words are code_entry_bits * 2 wide, one per pixel, and the
+  // order (docs/architecture.md, "Code reorder"): for census and rank without LR2 or a negative
+  // min-disp. Then its words are code_entry_bits * 2 wide, one per pixel, and the
   // aggregator's cost words arrive cost_lead steps after their address (2 + cost_latency; 1 from
   // the cost RAM).
   bool reorders_codes = false;

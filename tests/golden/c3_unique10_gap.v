@@ -308,13 +308,16 @@ module fps_census7_d128u32_6e208d_sgm_core (
   // Code reorder RAM: each pixel's base and match entries, in chain order out.
   wire [11:0] cost_raddr;
   wire [95:0] code_q;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+  wire code_penalties;
+  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e208d_code_reorder #(
     .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(2), .ROW_W(1), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
     .MIN_DISP(0)
   ) cost_reorder (
     .clk(clk), .adv(adv), .shift(shift), .frame_width(frame_width), .frame_height(frame_height),
     .base_entry(code_base), .match_entry(code_match), .transform_x(transform_x), .transform_y(transform_y),
-    .transform_slot(transform_slot), .raddr(cost_raddr), .q(code_q));
+    .transform_slot(transform_slot), .extra(1'b0), .raddr(cost_raddr), .q(code_q), .extra_q(code_penalties));
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 14931;
@@ -332,13 +335,17 @@ module fps_census7_d128u32_6e208d_sgm_core (
   wire [13:0] cost_schedule;
   /* verilator lint_on UNUSEDSIGNAL */
   // The costs of the code entries, computed in chain order.
-  wire [191:0] cost_q;
+  wire [191:0] chain_costs;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+  wire chain_penalties;
+  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e208d_chain_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(2), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
     .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
-    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .costs(cost_q));
+    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .extra(1'b0),
+    .costs(chain_costs), .extra_out(chain_penalties));
   fps_census7_d128u32_6e208d_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(4), .OUT_ROW_W(2),
@@ -347,8 +354,8 @@ module fps_census7_d128u32_6e208d_sgm_core (
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
-    .cost_schedule(cost_schedule), .cost_q(cost_q), .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x),
-    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
+    .cost_schedule(cost_schedule), .cost_q(chain_costs), .sums(agg_sums), .sums_active(agg_active),
+    .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
 
   // LR1 match side: Dm(x') from the base side's sums.
   wire completed_we;
@@ -1334,7 +1341,10 @@ endmodule
 // aggregation's chain order, where fps_census7_d128u32_6e208d_chain_cost computes the costs. The entry at (row, x)
 // is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
 // a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
-// image are never written, so only valid rows' slots (row mod ROWS) matter.
+// image are never written, so only valid rows' slots (row mod ROWS) matter. With EXTRA_W above 0
+// (adaptive P2's penalties, which leave fps_census7_d128u32_6e208d_adaptive_p2 with the costs the raster stage
+// would compute: a slot and EXTRA_LAT steps after the codes) a second RAM holds them per pixel,
+// written at their position then, read at the same address.
 module fps_census7_d128u32_6e208d_code_reorder #(
   parameter ROW_SLOTS = 64,
   parameter ENTRY_W = 24,
@@ -1344,7 +1354,9 @@ module fps_census7_d128u32_6e208d_code_reorder #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter EXTRA_W = 0,
+  parameter EXTRA_LAT = 2
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -1356,8 +1368,12 @@ module fps_census7_d128u32_6e208d_code_reorder #(
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [ROW_W-1:0]       transform_slot,
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [AW-1:0]          raddr,
-  output wire [2*ENTRY_W-1:0]   q
+  output wire [2*ENTRY_W-1:0]   q,
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_q
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1384,6 +1400,26 @@ module fps_census7_d128u32_6e208d_code_reorder #(
   fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
     .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
     .re(adv), .raddr(raddr), .rdata(q));
+  generate
+    if (EXTRA_W > 0) begin : extras
+      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps.
+      localparam POSITION_W = 1 + ROW_W + X_W;
+      reg [POSITION_W-1:0] held;
+      wire [POSITION_W-1:0] at;
+      always @(posedge clk)
+        if (shift) held <= {in_image, transform_slot, transform_x};
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
+        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
+      /* verilator lint_off WIDTH */
+      wire [AW-1:0] extra_waddr = at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + at[X_W-1:0];
+      /* verilator lint_on WIDTH */
+      fps_census7_d128u32_6e208d_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
+        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra),
+        .re(adv), .raddr(raddr), .rdata(extra_q));
+    end else begin : no_extras
+      assign extra_q = 1'b0;
+    end
+  endgenerate
 endmodule
 `resetall
 
@@ -1418,7 +1454,9 @@ module fps_census7_d128u32_6e208d_chain_cost #(
   parameter GRADIENT = 0,
   parameter LANES_LAT = 2,
   parameter LAT = 2,
-  parameter ENTRY_W = CODE_W
+  parameter ENTRY_W = CODE_W,
+  // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
+  parameter EXTRA_W = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -1429,7 +1467,11 @@ module fps_census7_d128u32_6e208d_chain_cost #(
   input  wire [X_W-1:0]        frame_width,
   // the pixel's entry, in S1
   input  wire [2*ENTRY_W-1:0]  entry,
-  output wire [UF*COST_W-1:0]  costs
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [UF*COST_W-1:0]  costs,
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1483,6 +1525,14 @@ module fps_census7_d128u32_6e208d_chain_cost #(
     end else begin : one
       always @(posedge clk)
         if (rotate) waiting <= head_turned;
+    end
+  endgenerate
+  generate
+    if (EXTRA_W > 0) begin : extras
+      fps_census7_d128u32_6e208d_delay #(.WIDTH(EXTRA_W), .DEPTH(LAT + 1)) extra_wait (
+        .clk(clk), .rst(1'b0), .en(adv), .in(extra), .out(extra_out));
+    end else begin : no_extras
+      assign extra_out = 1'b0;
     end
   endgenerate
   fps_census7_d128u32_6e208d_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),
@@ -1578,8 +1628,8 @@ module fps_census7_d128u32_6e208d_aggregator #(
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
       fps_census7_d128u32_6e208d_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
-    if (COST_LEAD < 1 || (CODES != 0 && (MATCH_SIDE != 0 || PENALTIES != 0))) begin : invalid_CODES
-      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_CODES_only_on_the_base_side_without_PENALTIES failed ();
+    if (COST_LEAD < 1 || (CODES != 0 && MATCH_SIDE != 0)) begin : invalid_CODES
+      fps_census7_d128u32_6e208d_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
     end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
       fps_census7_d128u32_6e208d_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
@@ -1698,8 +1748,10 @@ module fps_census7_d128u32_6e208d_aggregator #(
   `define FPS_TAG_SLOT(t)   t[OUT_ROW_W-1:0]
 
   // The row RAMs are read in the step before S1 (S0 without a cost lead).
+  /* verilator lint_off UNUSEDSIGNAL */  // the 45, 90 and 135 degree paths' row RAMs read them
   wire [X_W-1:0]   x_read = `FPS_TAG_X(tag_led);
   wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
   wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);

@@ -33,12 +33,14 @@ class AggregationStage : public Stage {
     Connections side = {{"MATCH_SIDE", "0"}};
     if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.cfg.path_count())});
     core.wire("cost_schedule", d.x_bits + d.group_bits + 1);
+    std::string cost_words = "cost_q";
     if (d.reorders_codes) {
       side = side + Connections{{"CODES", "1"}, {"COST_LEAD", num(d.cost_lead)}};
-      chain_cost(d, core);
+      cost_words = chain_cost(d, core);
     }
     core.instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + side,
-                  {{"sums", "agg_sums"},
+                  {{"cost_q", cost_words},
+                   {"sums", "agg_sums"},
                    {"sums_active", "agg_active"},
                    {"sums_x", "agg_x"},
                    {"sums_group", "agg_group"},
@@ -47,7 +49,8 @@ class AggregationStage : public Stage {
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
-  static void chain_cost(const RtlDesign& d, CoreBuilder& core) {
+  // Returns the aggregator's cost words.
+  static std::string chain_cost(const RtlDesign& d, CoreBuilder& core) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
     Connections parameters = {{"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
@@ -70,13 +73,20 @@ class AggregationStage : public Stage {
                                             {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"}};
     const int x_lsb = d.group_bits, first = d.group_bits + d.x_bits;
     core.text("  // The costs of the code entries, computed in chain order.\n");
-    core.wire("cost_q", d.cost_word_bits);
+    // With adaptive P2 the pixel's penalties leave beside its costs, above them in the word.
+    const bool penalties = d.penalty_bits != 0;
+    if (penalties) parameters.push_back({"EXTRA_W", num(d.penalty_bits)});
+    core.wire("chain_costs", c.uf * w.cost);
+    core.wire("chain_penalties", std::max(1, d.penalty_bits));
     core.instance("fpstereo_chain_cost", "chain_cost", parameters,
                   {{"group", fmt::format("cost_schedule[{}:0]", d.group_bits - 1)},
                    {"x", fmt::format("cost_schedule[{}:{}]", first - 1, x_lsb)},
                    {"row_time_first", fmt::format("cost_schedule[{}]", first)},
                    {"entry", "code_q"},
-                   {"costs", "cost_q"}});
+                   {"extra", penalties ? "code_penalties" : "1'b0"},
+                   {"costs", "chain_costs"},
+                   {"extra_out", "chain_penalties"}});
+    return penalties ? "{chain_penalties, chain_costs}" : "chain_costs";
   }
 
   // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which

@@ -75,11 +75,13 @@ class CostStage : public Stage {
         break;
     }
     // Where the reorder RAM holds codes, the costs are computed after it (the aggregation stage's
-    // fpstereo_chain_cost); this stage adds only the fused cost's features.
-    if (d.reorders_codes && c.fused_weight == 0) return;
-    core.text(d.reorders_codes
-                  ? "\n  // Cost stage: the fused cost's features beside the codes; the costs follow the code reorder RAM.\n"
-                  : "\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    // fpstereo_chain_cost); this stage adds only the fused cost's features and adaptive P2.
+    if (d.reorders_codes) {
+      if (c.fused_weight != 0)
+        core.text("\n  // Cost stage: the fused cost's features beside the codes; the costs follow the code reorder RAM.\n");
+    } else {
+      core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    }
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
     // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
     // defaults (off), so its unused settings change no text.
@@ -101,7 +103,28 @@ class CostStage : public Stage {
                     {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
       features = {};
     }
-    if (d.reorders_codes) return;
+    if (!d.reorders_codes) place_lanes(d, core, module, parameters, features);
+    if (c.p2_adapt == 0) return;
+    core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
+    core.wire("cost_penalties", d.penalty_bits);
+    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
+                  {{"N", num(c.window)},
+                   {"PATHS", num(c.paths)},
+                   {"NP", num(c.path_count())},
+                   {"GAIN", num(c.p2_adapt)},
+                   {"PATH_W", num(w.path_cost)},
+                   {"WAIT_SLOTS", num(base_wait(c).slots)},
+                   {"WAIT_ROWS", num(base_wait(c).rows)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"LAT", num(d.cost_latency)}},
+                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
+  }
+
+  // The raster cost stage: the centre it holds and its lanes' costs.
+  void place_lanes(const RtlDesign& d, CoreBuilder& core, const std::string& module, const Connections& parameters,
+                   const Connections& features) const {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
     core.wire("history_x", d.x_bits);
     core.wire("history_y", d.signed_y_bits, true);
     core.wire("history_slot", d.cost_row_bits);
@@ -118,20 +141,6 @@ class CostStage : public Stage {
                                            {"MIN_DISP", num(c.min_disp)},
                                            {"LAT", num(d.cost_latency)}},
                   features);
-    if (c.p2_adapt == 0) return;
-    core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
-    core.wire("cost_penalties", d.penalty_bits);
-    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
-                  {{"N", num(c.window)},
-                   {"PATHS", num(c.paths)},
-                   {"NP", num(c.path_count())},
-                   {"GAIN", num(c.p2_adapt)},
-                   {"PATH_W", num(w.path_cost)},
-                   {"WAIT_SLOTS", num(base_wait(c).slots)},
-                   {"WAIT_ROWS", num(base_wait(c).rows)},
-                   {"ROW_SLOTS", num(d.row_slots)},
-                   {"LAT", num(d.cost_latency)}},
-                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
   }
 
   // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.

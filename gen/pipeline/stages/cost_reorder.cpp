@@ -13,8 +13,10 @@ class CostReorderStage : public Stage {
   std::vector<std::string> knobs() const override { return {"uf"}; }
   Latency latency(const Geometry&) const override { return {0, 0, 1}; }  // written, then read
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    return {{g.reorders_codes ? "core.cost_reorder.code_ram.mem" : "core.cost_reorder.cost_ram.mem", g.cost_depth(),
-             g.cost_ram_bits()}};
+    if (!g.reorders_codes) return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
+    std::vector<StageMemory> m = {{"core.cost_reorder.code_ram.mem", g.cost_depth(), 2 * g.code_entry_bits}};
+    if (g.penalty_bits != 0) m.push_back({"core.cost_reorder.extras.extra_ram.mem", g.cost_depth(), g.penalty_bits});
+    return m;
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
@@ -54,20 +56,27 @@ class CostReorderStage : public Stage {
     core.text("\n  // Code reorder RAM: each pixel's base and match entries, in chain order out.\n");
     core.wire("cost_raddr", d.cost_addr_bits);
     core.wire("code_q", d.cost_ram_bits());
+    // Adaptive P2's penalties, in a RAM of their own, written as they leave with the raster costs.
+    Connections penalties;
+    if (d.penalty_bits != 0) penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}};
+    core.wire("code_penalties", std::max(1, d.penalty_bits));
     core.instance("fpstereo_code_reorder", "cost_reorder",
-                  {{"ROW_SLOTS", num(d.row_slots)},
-                   {"ENTRY_W", num(d.code_entry_bits)},
-                   {"ROWS", num(d.cost_rows)},
-                   {"ROW_W", num(d.cost_row_bits)},
-                   {"AW", num(d.cost_addr_bits)},
-                   {"X_W", num(d.x_bits)},
-                   {"Y_W", num(d.y_bits)},
-                   {"SIGNED_Y_W", num(d.signed_y_bits)},
-                   {"MIN_DISP", num(d.cfg.min_disp)}},
+                  Connections{{"ROW_SLOTS", num(d.row_slots)},
+                              {"ENTRY_W", num(d.code_entry_bits)},
+                              {"ROWS", num(d.cost_rows)},
+                              {"ROW_W", num(d.cost_row_bits)},
+                              {"AW", num(d.cost_addr_bits)},
+                              {"X_W", num(d.x_bits)},
+                              {"Y_W", num(d.y_bits)},
+                              {"SIGNED_Y_W", num(d.signed_y_bits)},
+                              {"MIN_DISP", num(d.cfg.min_disp)}} +
+                      penalties,
                   {{"base_entry", fused ? "{feature_base, code_base}" : "code_base"},
                    {"match_entry", fused ? "{feature_match, code_match}" : "code_match"},
+                   {"extra", d.penalty_bits != 0 ? "cost_penalties" : "1'b0"},
                    {"raddr", "cost_raddr"},
-                   {"q", "code_q"}});
+                   {"q", "code_q"},
+                   {"extra_q", "code_penalties"}});
   }
 
   // ---- HLS: aggregate's to_chain_order.
