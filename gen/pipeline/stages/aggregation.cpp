@@ -66,11 +66,7 @@ class AggregationStage : public Stage {
                               {"LANES_LAT", num(d.cost_lanes_latency)},
                               {"LAT", num(d.cost_latency)},
                               {"ENTRY_W", num(d.code_entry_bits)}};
-    if (c.fused_weight != 0)
-      parameters = parameters + Connections{{"WEIGHT", num(c.fused_weight)},
-                                            {"TRUNC", num(c.fused_trunc)},
-                                            {"FEATURE_W", num(w.fused_feature)},
-                                            {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"}};
+    parameters = parameters + fused_cost_parameters(d);
     const int x_lsb = d.group_bits, first = d.group_bits + d.x_bits;
     core.text("  // The costs of the code entries, computed in chain order.\n");
     // With adaptive P2 the pixel's penalties leave beside its costs, above them in the word.

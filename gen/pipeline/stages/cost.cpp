@@ -93,10 +93,7 @@ class CostStage : public Stage {
     if (c.fused_weight != 0) {
       const std::string gradient = c.fused_term == FusedTerm::Gradient ? "1" : "0";
       const std::string feature_bits = num(w.fused_feature);
-      parameters = parameters + Connections{{"WEIGHT", num(c.fused_weight)},
-                                            {"TRUNC", num(c.fused_trunc)},
-                                            {"FEATURE_W", feature_bits},
-                                            {"GRADIENT", gradient}};
+      parameters = parameters + fused_cost_parameters(d);
       core.wire("feature_base", w.fused_feature);
       core.wire("feature_match", w.fused_feature);
       core.instance("fpstereo_fused_features", "fused_features",

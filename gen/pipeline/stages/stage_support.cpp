@@ -92,6 +92,15 @@ Connections aggregator_parameters(const RtlDesign& g) {
           {"COST_ROW_W", num(g.cost_row_bits)}};
 }
 
+Connections fused_cost_parameters(const Geometry& g) {
+  const StereoConfig& c = g.cfg;
+  if (c.fused_weight == 0) return {};
+  return {{"WEIGHT", num(c.fused_weight)},
+          {"TRUNC", num(c.fused_trunc)},
+          {"FEATURE_W", num(g.widths.fused_feature)},
+          {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"}};
+}
+
 void output_register(CoreBuilder& core, const std::string& prefix, const PixelStream& stream, const std::string& event,
                      const std::string& word, int word_bits) {
   core.logic(fmt::format("  reg {0}_event_q, {0}_first_q, {0}_last_q;\n"

@@ -33,6 +33,10 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
 std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope);
 Connections aggregator_parameters(const RtlDesign& d);
 
+// The fused cost's parameters of the cost lanes (fpstereo_point_lanes and the stages around it):
+// WEIGHT, TRUNC, FEATURE_W and GRADIENT; none without the fused cost (the templates' defaults).
+Connections fused_cost_parameters(const Geometry& g);
+
 // An output register: the stream's word with its first and last flags, pushed in the step after
 // `event` (the sequencer stalls while the output register slice is full). `prefix`_due is the
 // sequencer's input; the core's ports are `prefix`_push, _word, _first and _last.
