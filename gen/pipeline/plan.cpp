@@ -130,8 +130,6 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   return g;
 }
 
-int64_t Geometry::cost_ram_bits() const { return reorders_codes ? 2 * code_entry_bits : cost_word_bits; }
-
 std::vector<OutputStream> output_streams(const Geometry& g) {
   const StereoConfig& c = g.cfg;
   const Widths& w = g.widths;

@@ -62,7 +62,6 @@ struct Geometry {
   bool reorders_codes = false;
   int code_entry_bits = 0, cost_lead = 1;
   int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * (reorders_codes ? 1 : groups); }
-  int64_t cost_ram_bits() const;
   int64_t disp_depth() const { return int64_t(out_rows) * row_slots; }
   int levels_per_stage = 3;
   int path_tree_latency = 0;
@@ -87,7 +86,7 @@ struct Geometry {
   bool carries_whole = false;
   int reorder_word_bits = 0, reorder_ram_bits = 0;
   // With adaptive P2 the cost words carry, above the uf costs, each enabled path's P2.
-  int penalty_bits = 0, cost_word_bits = 0;  // cost_word_bits: the cost words'
+  int penalty_bits = 0, cost_word_bits = 0;
   // The output streams' tdata: the word's byte lane (8 or 16 bits), and with confidence 8 above.
   int output_bits = 0;
   // the range of the run-time image size (the configured size is the largest)

@@ -100,7 +100,7 @@ class CostStage : public Stage {
                     {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
       features = {};
     }
-    if (!d.reorders_codes) place_lanes(d, core, module, parameters, features);
+    if (!d.reorders_codes) raster_cost(d, core, module, parameters, features);
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
     core.wire("cost_penalties", d.penalty_bits);
@@ -118,7 +118,7 @@ class CostStage : public Stage {
   }
 
   // The raster cost stage: the centre it holds and its lanes' costs.
-  void place_lanes(const RtlDesign& d, CoreBuilder& core, const std::string& module, const Connections& parameters,
+  void raster_cost(const RtlDesign& d, CoreBuilder& core, const std::string& module, const Connections& parameters,
                    const Connections& features) const {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;

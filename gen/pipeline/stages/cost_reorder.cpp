@@ -55,7 +55,7 @@ class CostReorderStage : public Stage {
     const bool fused = d.cfg.fused_weight != 0;
     core.text("\n  // Code reorder RAM: each pixel's base and match entries, in chain order out.\n");
     core.wire("cost_raddr", d.cost_addr_bits);
-    core.wire("code_q", d.cost_ram_bits());
+    core.wire("code_q", 2 * d.code_entry_bits);
     // Adaptive P2's penalties, in a RAM of their own, written as they leave with the raster costs.
     Connections penalties;
     if (d.penalty_bits != 0) penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}};
