@@ -4,7 +4,9 @@
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(cache ${WORK}/cache)
-set(config --width 32 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0)
+# 256 pixels wide, so that the code reorder RAM (five rows of two 8-bit codes a pixel) is the
+# memory above 4096 bits that check_memories() needs.
+set(config --width 256 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0)
 
 function(synth out_var err_var)
   execute_process(COMMAND ${FPSTEREO} synth ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
