@@ -49,6 +49,45 @@ class CostStage : public Stage {
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
+    // Where the reorder RAM holds codes, the costs are computed after it (the aggregation stage's
+    // fpstereo_chain_cost); this stage adds only the fused cost's features and adaptive P2.
+    if (d.reorders_codes) {
+      if (c.fused_weight != 0)
+        core.text("\n  // Cost stage: the fused cost's features beside the codes; the costs follow the code reorder RAM.\n");
+    } else {
+      core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
+    }
+    // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
+    // costs validate() lets have it).
+    if (c.fused_weight != 0) {
+      core.wire("feature_base", w.fused_feature);
+      core.wire("feature_match", w.fused_feature);
+      core.instance("fpstereo_fused_features", "fused_features",
+                    {{"N", num(c.window)},
+                     {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"},
+                     {"FEATURE_W", num(w.fused_feature)}});
+    }
+    if (!d.reorders_codes) raster_cost(d, core);
+    if (c.p2_adapt == 0) return;
+    core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
+    core.wire("cost_penalties", d.penalty_bits);
+    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
+                  {{"N", num(c.window)},
+                   {"PATHS", num(c.paths)},
+                   {"NP", num(c.path_count())},
+                   {"GAIN", num(c.p2_adapt)},
+                   {"PATH_W", num(w.path_cost)},
+                   {"WAIT_SLOTS", num(base_wait(c).slots)},
+                   {"WAIT_ROWS", num(base_wait(c).rows)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"LAT", num(d.cost_latency)}},
+                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
+  }
+
+  // The raster cost stage of the cost function: the centre it holds and its lanes' costs.
+  void raster_cost(const RtlDesign& d, CoreBuilder& core) const {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
     const int code_bits = std::max(1, w.code);
     std::string module;
     Connections parameters;
@@ -74,54 +113,14 @@ class CostStage : public Stage {
                       {"COST_ROWS", num(d.cost_rows)}, {"Y_W", num(d.y_bits)}};
         break;
     }
-    // Where the reorder RAM holds codes, the costs are computed after it (the aggregation stage's
-    // fpstereo_chain_cost); this stage adds only the fused cost's features and adaptive P2.
-    if (d.reorders_codes) {
-      if (c.fused_weight != 0)
-        core.text("\n  // Cost stage: the fused cost's features beside the codes; the costs follow the code reorder RAM.\n");
-    } else {
-      core.text("\n  // Cost stage: the centre whose costs the lanes compute, and UF costs per step.\n");
-    }
-    // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
-    // costs validate() lets have it). Without it the ports read 0 and its parameters keep their
-    // defaults (off), so its unused settings change no text.
+    // The code costs take the features; without the fused cost their ports read 0 and its
+    // parameters keep their defaults (off), so its unused settings change no text.
     Connections features;
     if (cost_ != CostFunction::Sad && cost_ != CostFunction::Zsad) {
       parameters = parameters + Connections{{"LANES_LAT", num(d.cost_lanes_latency)}};
-      features = {{"feature_base", "8'd0"}, {"feature_match", "8'd0"}};
+      if (c.fused_weight == 0) features = {{"feature_base", "8'd0"}, {"feature_match", "8'd0"}};
     }
-    if (c.fused_weight != 0) {
-      const std::string gradient = c.fused_term == FusedTerm::Gradient ? "1" : "0";
-      const std::string feature_bits = num(w.fused_feature);
-      parameters = parameters + fused_cost_parameters(d);
-      core.wire("feature_base", w.fused_feature);
-      core.wire("feature_match", w.fused_feature);
-      core.instance("fpstereo_fused_features", "fused_features",
-                    {{"N", num(c.window)}, {"GRADIENT", gradient}, {"FEATURE_W", feature_bits}});
-      features = {};
-    }
-    if (!d.reorders_codes) raster_cost(d, core, module, parameters, features);
-    if (c.p2_adapt == 0) return;
-    core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
-    core.wire("cost_penalties", d.penalty_bits);
-    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
-                  {{"N", num(c.window)},
-                   {"PATHS", num(c.paths)},
-                   {"NP", num(c.path_count())},
-                   {"GAIN", num(c.p2_adapt)},
-                   {"PATH_W", num(w.path_cost)},
-                   {"WAIT_SLOTS", num(base_wait(c).slots)},
-                   {"WAIT_ROWS", num(base_wait(c).rows)},
-                   {"ROW_SLOTS", num(d.row_slots)},
-                   {"LAT", num(d.cost_latency)}},
-                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
-  }
-
-  // The raster cost stage: the centre it holds and its lanes' costs.
-  void raster_cost(const RtlDesign& d, CoreBuilder& core, const std::string& module, const Connections& parameters,
-                   const Connections& features) const {
-    const StereoConfig& c = d.cfg;
-    const Widths& w = d.widths;
+    parameters = parameters + fused_cost_parameters(d);
     core.wire("history_x", d.x_bits);
     core.wire("history_y", d.signed_y_bits, true);
     core.wire("history_slot", d.cost_row_bits);
