@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Synthesises Verilog with Yosys (synth_xilinx -abc9) and reports resources as a share of one part,
 # the abc9 logic delay and LUT levels, and which memories did not become block RAM.
-# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--top MODULE] [--log FILE]
+# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--uram] [--top MODULE] [--log FILE]
 #                               [--netlist FILE.json] [--kv] FILE.v|FILE.sv|filelist.f ...
 # A filelist holds one path per line (relative to the filelist; '#' and '//' start comments).
 # --netlist writes the mapped netlist (Yosys JSON), which `fpstereo synth` reads for the paths.
+# --uram lets Yosys map large memories to UltraRAM (synth_xilinx -uram; parts that have it).
 # Exit status: 0 done, 2 bad usage, missing input or Yosys failure (one line on stderr).
 set -euo pipefail
 
 die() { echo "synth-yosys: $*" >&2; exit 2; }
 
-family="" part="" top="" log="" netlist="" kv=0
+family="" part="" top="" log="" netlist="" kv=0 uram=0
 files=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -21,7 +22,8 @@ while [ $# -gt 0 ]; do
       esac
       shift 2 ;;
     --kv) kv=1; shift ;;
-    -h|--help) sed -n '2,8s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    --uram) uram=1; shift ;;
+    -h|--help) sed -n '2,9s/^# \{0,1\}//p' "$0"; exit 0 ;;
     -*) die "unknown option $1" ;;
     *) files+=("$1"); shift ;;
   esac
@@ -42,11 +44,14 @@ families=$(column_values 2)
 if [ -z "$part" ]; then
   part=$(part_rows | awk -v f="$family" 'f == "" || $2 == f { print $1; exit }')
 fi
-row=$(part_rows | awk -v p="$part" '$1 == p { print $2, $3, $4, $5, $6, $7 }')
+row=$(part_rows | awk -v p="$part" '$1 == p { print $2, $3, $4, $5, $6, $7, $8 }')
 [ -n "$row" ] || die "unknown part '$part' ($(column_values 1))"
-read -r part_family p_lut p_ff p_bram36 p_dsp p_lutram <<<"$row"
+read -r part_family p_lut p_ff p_bram36 p_dsp p_lutram p_uram <<<"$row"
 [ -z "$family" ] || [ "$family" = "$part_family" ] || die "part $part is $part_family, not $family"
 family=$part_family
+if [ $uram = 1 ] && [ "$p_uram" = 0 ]; then
+  die "--uram: part $part has no UltraRAM (parts with it: $(part_rows | awk '$8 > 0 { printf "%s%s", s, $1; s = " " }'))"
+fi
 
 [ ${#files[@]} -gt 0 ] || die "no input files (try --help)"
 
@@ -96,6 +101,7 @@ fi
 # depth) while they are still memory objects. Any command between the halves may move ABC's
 # LUT count by a few tenths of a percent (Yosys' internal ordering shifts); nothing else changes.
 synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
+[ $uram = 0 ] || synth="$synth -uram"
 # -defer: modules are elaborated only with the parameters they are instantiated with; elaborating
 # a generic module with its defaults would reach generate branches whose submodules a
 # configuration does not emit (e.g. the census lanes of a SAD design).
@@ -118,7 +124,7 @@ fi
 
 # One awk pass over the three files emits key=value lines; the table is formatted from them.
 report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_ff" \
-    -v p_bram36="$p_bram36" -v p_dsp="$p_dsp" -v p_lutram="$p_lutram" '
+    -v p_bram36="$p_bram36" -v p_dsp="$p_dsp" -v p_lutram="$p_lutram" -v p_uram="$p_uram" '
   function pct(n, d) { return sprintf("%.1f", d ? 100 * n / d : 0) }
   # LUTs each distributed-RAM or SRL primitive occupies (UG474, UG574).
   function lutram_luts(c) {
@@ -171,6 +177,7 @@ report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_f
       else if (c ~ /^RAMB18E[12]$/) bram18 += n
       else if (c ~ /^RAMB36E[12]$/) bram36 += n
       else if (c ~ /^DSP48E[12]$/) dsp += n
+      else if (c == "URAM288") uram += n
       else if (c == "CARRY4") carry4 += n
       else if (c == "CARRY8") carry8 += n
       else if (lutram_luts(c)) { lutram += n * lutram_luts(c); lutram_cells = lutram_cells " " c "x" n }
@@ -191,19 +198,20 @@ report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_f
     print "bram18=" bram18+0; print "bram18_pct=" pct(bram18, 2 * p_bram36)
     print "bram36=" bram36+0; print "bram36_pct=" pct(bram36, p_bram36)
     print "bram36_equiv=" eq; print "bram36_equiv_pct=" pct(eq, p_bram36)
+    print "uram=" uram+0; print "uram_pct=" pct(uram, p_uram)
     print "dsp=" dsp+0; print "dsp_pct=" pct(dsp, p_dsp)
     print "carry4=" carry4+0; print "carry8=" carry8+0
     print "carry4_equiv=" carry4 + 2 * carry8; print "carry_pct=" pct(carry4 + 2 * carry8, p_lut / 4)
     print "delay_ps=" (runs ? delay + 0 : "na"); print "levels=" (runs ? lev + 0 : "na")
     print "levels_with_carry=" (runs ? (levb ? levb : lev + 0) : "na"); print "abc9_runs=" runs+0
     print "part_lut=" p_lut; print "part_ff=" p_ff; print "part_bram36=" p_bram36
-    print "part_dsp=" p_dsp; print "part_lutram=" p_lutram
+    print "part_dsp=" p_dsp; print "part_lutram=" p_lutram; print "part_uram=" p_uram
     for (k = 1; k <= nmem; k++) {
       m = order[k]; bits = width[m] * depth[m]
       dims = (m in width) ? depth[m] "x" width[m] : "?"
       to = (m in map) ? map[m] : "removed"
       print "mem." m "=" dims ":" to
-      if (to != "bram" && to != "removed" && bits > 4096)
+      if (to != "bram" && to != "uram" && to != "removed" && bits > 4096)
         print "warning=memory " m " (" depth[m] " x " width[m] " = " bits " bits) became " \
           (to == "ff" ? "flip-flops" : toupper(to)) ", not block RAM" \
           (to == "lutram" ? " (Yosys uses BRAM only for a registered read)" : "")
@@ -235,6 +243,7 @@ awk -F= '
     row("BRAM18", v["bram18"], 2 * v["part_bram36"], v["bram18_pct"], "RAMB18E1/E2")
     row("BRAM36", v["bram36"], v["part_bram36"], v["bram36_pct"], "RAMB36E1/E2")
     row("BRAM36 equiv", v["bram36_equiv"], v["part_bram36"], v["bram36_equiv_pct"], "BRAM36 + BRAM18/2")
+    row("URAM", v["uram"], v["part_uram"], v["uram_pct"], "URAM288")
     row("DSP", v["dsp"], v["part_dsp"], v["dsp_pct"], "DSP48E1/E2")
     row("CARRY4 equiv", v["carry4_equiv"], v["part_lut"] / 4, v["carry_pct"], \
         "CARRY4 " v["carry4"] " + 2 x CARRY8 " v["carry8"] " (4 carry bits per 4 LUTs)")

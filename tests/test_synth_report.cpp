@@ -10,51 +10,56 @@
 namespace fpstereo {
 namespace {
 
-// Verbatim output of `scripts/synth-yosys.sh --kv` (Yosys 0.23) on the Verilog of
-// `--width 32 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0`, part xczu9eg.
-const std::string kScriptKv = R"(top=fps_census3_d16u16_f57891_top
+// Verbatim output of `scripts/synth-yosys.sh --kv --part xczu7ev --uram` (Yosys 0.23) on the
+// Verilog of `--width 2048 --height 8 --dmax 16 --uf 16 --window 3 --median 0 --paths 0,90`.
+const std::string kScriptKv = R"(top=fps_census3_d16u16_0a920b_top
 family=xcup
-part=xczu9eg
-lut=1665
-lut_pct=0.6
-lut_by_inputs=62/209/529/228/436/201
-lut_min=933
-lut_min_pct=0.3
-lutram=130
-lutram_pct=0.1
-lutram_cells=RAM64M8x3 RAM32M16x13 SRL16Ex2
-lut_total=1795
-lut_total_pct=0.7
-ff=955
-ff_pct=0.2
+part=xczu7ev
+lut=3672
+lut_pct=1.6
+lut_by_inputs=68/666/925/612/914/487
+lut_min=2080
+lut_min_pct=0.9
+lutram=196
+lutram_pct=0.2
+lutram_cells=RAM32M16x9 SRL16Ex124
+lut_total=3868
+lut_total_pct=1.7
+ff=2659
+ff_pct=0.6
 latches=0
-bram18=0
-bram18_pct=0.0
+bram18=11
+bram18_pct=1.8
 bram36=1
-bram36_pct=0.1
-bram36_equiv=1
-bram36_equiv_pct=0.1
-dsp=0
-dsp_pct=0.0
-carry4=210
+bram36_pct=0.3
+bram36_equiv=6.5
+bram36_equiv_pct=2.1
+uram=3
+uram_pct=3.1
+dsp=5
+dsp_pct=0.3
+carry4=536
 carry8=0
-carry4_equiv=210
-carry_pct=0.3
-delay_ps=5950
-levels=7
-levels_with_carry=12
+carry4_equiv=536
+carry_pct=0.9
+delay_ps=4146
+levels=6
+levels_with_carry=9
 abc9_runs=1
-part_lut=274080
-part_ff=548160
-part_bram36=912
-part_dsp=2520
-part_lutram=144000
-mem.core.aggregation.path0.minimum=4x7:lutram
-mem.core.aggregation.path0.state.mem=4x112:lutram
-mem.core.cost_ram.mem=128x64:bram
-mem.core.disp_ram.mem=160x5:lutram
-mem.core.left_window.line_buffer.mem=32x16:lutram
-mem.core.right_window.line_buffer.mem=32x16:lutram
+part_lut=230400
+part_ff=460800
+part_bram36=312
+part_dsp=1728
+part_lutram=101760
+part_uram=96
+mem.core.aggregation.path0.minimum=5x7:lutram
+mem.core.aggregation.path0.state.mem=5x112:lutram
+mem.core.aggregation.vertical[0].path.row.mem=2049x112:uram
+mem.core.aggregation.vertical[0].path.row_min.mem=2049x7:bram
+mem.core.cost_reorder.code_ram.mem=10250x16:uram
+mem.core.disparity_reorder.disp_ram.mem=12300x5:bram
+mem.core.front_end.left_window.line_buffer.mem=2050x16:bram
+mem.core.front_end.right_window.line_buffer.mem=2050x16:bram
 )";
 
 // Replaces the line "key=..." of a kv text (the key at a line start: "part_lut=" is not "lut=").
@@ -79,59 +84,63 @@ StereoConfig tiny_config() {
 
 TEST_CASE("parse_kv reads every figure of a real synth-yosys.sh report", "[synth]") {
   const SynthReport r = parse_kv(kScriptKv);
-  CHECK(r.top == "fps_census3_d16u16_f57891_top");
+  CHECK(r.top == "fps_census3_d16u16_0a920b_top");
   CHECK(r.family == "xcup");
-  CHECK(r.part == "xczu9eg");
+  CHECK(r.part == "xczu7ev");
   CHECK(r.config.empty());
-  CHECK(r.lut == 1665);
-  CHECK(r.lut_min == 933);
-  CHECK(r.lut_by_inputs == "62/209/529/228/436/201");
-  CHECK(r.lutram == 130);
-  CHECK(r.lutram_cells == "RAM64M8x3 RAM32M16x13 SRL16Ex2");
-  CHECK(r.lut_total == 1795);
-  CHECK(r.ff == 955);
+  CHECK(r.lut == 3672);
+  CHECK(r.lut_min == 2080);
+  CHECK(r.lut_by_inputs == "68/666/925/612/914/487");
+  CHECK(r.lutram == 196);
+  CHECK(r.lutram_cells == "RAM32M16x9 SRL16Ex124");
+  CHECK(r.lut_total == 3868);
+  CHECK(r.ff == 2659);
   CHECK(r.latches == 0);
-  CHECK(r.bram18 == 0);
+  CHECK(r.bram18 == 11);
   CHECK(r.bram36 == 1);
-  CHECK(r.bram36_equiv == 1.0);
-  CHECK(r.dsp == 0);
-  CHECK(r.carry4 == 210);
+  CHECK(r.bram36_equiv == 6.5);
+  CHECK(r.uram == 3);
+  CHECK(r.dsp == 5);
+  CHECK(r.carry4 == 536);
   CHECK(r.carry8 == 0);
-  CHECK(r.carry4_equiv == 210);
-  CHECK(r.delay_ps == 5950);
-  CHECK(r.levels == 7);
-  CHECK(r.levels_with_carry == 12);
-  CHECK(r.part_lut == 274080);
-  CHECK(r.part_ff == 548160);
-  CHECK(r.part_bram36 == 912);
-  CHECK(r.part_dsp == 2520);
-  CHECK(r.part_lutram == 144000);
-  CHECK(r.lut_pct == Approx(0.6));
-  CHECK(r.lut_min_pct == Approx(0.3));
-  CHECK(r.lutram_pct == Approx(0.1));
-  CHECK(r.lut_total_pct == Approx(0.7));
-  CHECK(r.ff_pct == Approx(0.2));
-  CHECK(r.bram36_pct == Approx(0.1));
-  CHECK(r.bram36_equiv_pct == Approx(0.1));
-  CHECK(r.carry_pct == Approx(0.3));
+  CHECK(r.carry4_equiv == 536);
+  CHECK(r.delay_ps == 4146);
+  CHECK(r.levels == 6);
+  CHECK(r.levels_with_carry == 9);
+  CHECK(r.part_lut == 230400);
+  CHECK(r.part_ff == 460800);
+  CHECK(r.part_bram36 == 312);
+  CHECK(r.part_dsp == 1728);
+  CHECK(r.part_lutram == 101760);
+  CHECK(r.part_uram == 96);
+  CHECK(r.lut_pct == Approx(1.6));
+  CHECK(r.lut_min_pct == Approx(0.9));
+  CHECK(r.lutram_pct == Approx(0.2));
+  CHECK(r.lut_total_pct == Approx(1.7));
+  CHECK(r.ff_pct == Approx(0.6));
+  CHECK(r.bram36_pct == Approx(0.3));
+  CHECK(r.bram36_equiv_pct == Approx(2.1));
+  CHECK(r.uram_pct == Approx(3.1));
+  CHECK(r.carry_pct == Approx(0.9));
   CHECK_FALSE(r.synth_seconds.has_value());
   CHECK(r.warnings.empty());
 
   // In the script's order: memories before mapping, with the target each became.
-  REQUIRE(r.memories.size() == 6);
+  REQUIRE(r.memories.size() == 8);
   CHECK(r.memories[0].name == "core.aggregation.path0.minimum");
-  CHECK(r.memories[0].words == 4);
+  CHECK(r.memories[0].words == 5);
   CHECK(r.memories[0].bits == 7);
   CHECK(r.memories[0].target == "lutram");
-  CHECK(r.memories[2].name == "core.cost_ram.mem");
-  CHECK(r.memories[2].words == 128);
-  CHECK(r.memories[2].bits == 64);
-  CHECK(r.memories[2].target == "bram");
-  CHECK(r.memories[5].name == "core.right_window.line_buffer.mem");
+  CHECK(r.memories[2].name == "core.aggregation.vertical[0].path.row.mem");
+  CHECK(r.memories[2].words == 2049);
+  CHECK(r.memories[2].bits == 112);
+  CHECK(r.memories[2].target == "uram");
+  CHECK(r.memories[3].target == "bram");
+  CHECK(r.memories[7].name == "core.front_end.right_window.line_buffer.mem");
 }
 
 TEST_CASE("parse_kv reads a cache record's own lines and the script's special values", "[synth]") {
-  std::string record = "config=fps_census3_d16u16_f57891\n" + kScriptKv +
+  std::string record = "config=fps_census3_d16u16_0a920b\n" + kScriptKv +
                        "mem.core.extra=?:removed\n"
                        "synth_seconds=16.8\n"
                        "warning=memory core.big (512 x 16 = 8192 bits) became LUTRAM, not block RAM\n"
@@ -142,7 +151,7 @@ TEST_CASE("parse_kv reads a cache record's own lines and the script's special va
   record = with_line(record, "levels", "na");
   record = with_line(record, "levels_with_carry", "na");
   const SynthReport r = parse_kv(record);
-  CHECK(r.config == "fps_census3_d16u16_f57891");
+  CHECK(r.config == "fps_census3_d16u16_0a920b");
   CHECK(r.bram18 == 3);
   CHECK(r.bram36_equiv == 2.5);
   CHECK_FALSE(r.delay_ps.has_value());
@@ -150,10 +159,10 @@ TEST_CASE("parse_kv reads a cache record's own lines and the script's special va
   CHECK_FALSE(r.levels_with_carry.has_value());
   REQUIRE(r.synth_seconds.has_value());
   CHECK(*r.synth_seconds == Approx(16.8));
-  REQUIRE(r.memories.size() == 7);
-  CHECK(r.memories[6].name == "core.extra");
-  CHECK(r.memories[6].words == 0);
-  CHECK(r.memories[6].target == "removed");
+  REQUIRE(r.memories.size() == 9);
+  CHECK(r.memories[8].name == "core.extra");
+  CHECK(r.memories[8].words == 0);
+  CHECK(r.memories[8].target == "removed");
   REQUIRE(r.warnings.size() == 1);
   CHECK(r.warnings[0] == "memory core.big (512 x 16 = 8192 bits) became LUTRAM, not block RAM");
 }
@@ -167,7 +176,7 @@ TEST_CASE("parse_kv names what is missing or malformed", "[synth]") {
   CHECK_THROWS_WITH(parse_kv(kScriptKv + "no equals sign\n"), Catch::Contains("malformed line"));
   CHECK_THROWS_WITH(parse_kv("yosys: command not found\n"), Catch::Contains("malformed"));
   std::string without_delay = kScriptKv;
-  without_delay.erase(without_delay.find("\ndelay_ps="), std::string("\ndelay_ps=5950").size());
+  without_delay.erase(without_delay.find("\ndelay_ps="), std::string("\ndelay_ps=4146").size());
   CHECK_THROWS_AS(parse_kv(without_delay), SynthError);
   CHECK_THROWS_WITH(parse_kv(without_delay), Catch::Contains("lacks 'delay_ps'"));
 }
@@ -176,20 +185,21 @@ TEST_CASE("format_report shows every figure with its share of the part", "[synth
   const SynthReport r = parse_kv(kScriptKv);
   const std::string table = format_report(r, false);
   INFO(table);
-  CHECK_THAT(table, Catch::StartsWith("fps_census3_d16u16_f57891_top on xczu9eg (xcup)"));
-  CHECK_THAT(table, Catch::Contains("LUT                1665   274080   0.6 %"));
-  CHECK_THAT(table, Catch::Contains("LUT min             933   274080   0.3 %"));
-  CHECK_THAT(table, Catch::Contains("LUTRAM              130   144000   0.1 %"));
-  CHECK_THAT(table, Catch::Contains("RAM64M8x3 RAM32M16x13 SRL16Ex2"));
-  CHECK_THAT(table, Catch::Contains("FF                  955   548160   0.2 %"));
-  CHECK_THAT(table, Catch::Contains("BRAM18                0     1824   0.0 %"));
-  CHECK_THAT(table, Catch::Contains("BRAM36                1      912   0.1 %"));
-  CHECK_THAT(table, Catch::Contains("BRAM36 equiv          1      912   0.1 %"));
-  CHECK_THAT(table, Catch::Contains("DSP                   0     2520   0.0 %"));
-  CHECK_THAT(table, Catch::Contains("CARRY4 equiv        210    68520   0.3 %"));
-  CHECK_THAT(table, Catch::Contains("5950 ps   7 LUT levels, 12 with carry chains"));
+  CHECK_THAT(table, Catch::StartsWith("fps_census3_d16u16_0a920b_top on xczu7ev (xcup)"));
+  CHECK_THAT(table, Catch::Contains("LUT                3672   230400   1.6 %"));
+  CHECK_THAT(table, Catch::Contains("LUT min            2080   230400   0.9 %"));
+  CHECK_THAT(table, Catch::Contains("LUTRAM              196   101760   0.2 %"));
+  CHECK_THAT(table, Catch::Contains("RAM32M16x9 SRL16Ex124"));
+  CHECK_THAT(table, Catch::Contains("FF                 2659   460800   0.6 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM18               11      624   1.8 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM36                1      312   0.3 %"));
+  CHECK_THAT(table, Catch::Contains("BRAM36 equiv        6.5      312   2.1 %"));
+  CHECK_THAT(table, Catch::Contains("URAM                  3       96   3.1 %   URAM288"));
+  CHECK_THAT(table, Catch::Contains("DSP                   5     1728   0.3 %"));
+  CHECK_THAT(table, Catch::Contains("CARRY4 equiv        536    57600   0.9 %"));
+  CHECK_THAT(table, Catch::Contains("4146 ps   6 LUT levels, 9 with carry chains"));
   CHECK_THAT(table, Catch::Contains("abc9 7-series model"));
-  CHECK_THAT(table, Catch::Contains("core.cost_ram.mem") && Catch::Contains("128x64 -> bram"));
+  CHECK_THAT(table, Catch::Contains("core.cost_reorder.code_ram.mem") && Catch::Contains("10250x16 -> uram"));
   CHECK_THAT(table, !Catch::Contains("(cached)"));
   CHECK_THAT(format_report(r, true), Catch::Contains("-abc9 -flatten (cached)\n"));
 
@@ -232,20 +242,22 @@ TEST_CASE("parse_kv and format_report carry the netlist's logic depth and deepes
 TEST_CASE("cache_key changes with everything that decides the result", "[synth]") {
   const StereoConfig cfg = tiny_config();
   const std::string verilog = "module top; endmodule\n", script = "#!/usr/bin/env bash\n";
-  const std::string key = cache_key(cfg, "", "", verilog, script);
-  CHECK(key == cache_key(cfg, "", "", verilog, script));
+  const std::string key = cache_key(cfg, "", "", false, verilog, script);
+  CHECK(key == cache_key(cfg, "", "", false, verilog, script));
   CHECK_THAT(key, Catch::StartsWith(config_tag(cfg) + "-default-default-"));
-  CHECK(cache_key(cfg, "xc7", "", verilog, script) != key);
-  CHECK(cache_key(cfg, "", "xck26", verilog, script) != key);
-  CHECK(cache_key(cfg, "xc7", "xc7z020", verilog, script) !=
-        cache_key(cfg, "xc7", "xc7a100t", verilog, script));
+  CHECK(cache_key(cfg, "xc7", "", false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "xck26", false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "xczu7ev", true, verilog, script) != cache_key(cfg, "", "xczu7ev", false, verilog, script));
+  CHECK_THAT(cache_key(cfg, "", "xczu7ev", true, verilog, script), Catch::Contains("-xczu7ev-uram-"));
+  CHECK(cache_key(cfg, "xc7", "xc7z020", false, verilog, script) !=
+        cache_key(cfg, "xc7", "xc7a100t", false, verilog, script));
   StereoConfig other = cfg;
   other.p2 = 87;  // same tag prefix (cost, window, dmax, uf); only the full configuration tells them apart
-  CHECK(cache_key(other, "", "", verilog, script) != key);
-  CHECK(cache_key(cfg, "", "", verilog + " ", script) != key);
-  CHECK(cache_key(cfg, "", "", verilog, script + "# changed\n") != key);
+  CHECK(cache_key(other, "", "", false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "", false, verilog + " ", script) != key);
+  CHECK(cache_key(cfg, "", "", false, verilog, script + "# changed\n") != key);
   // Keys are file names: a part name cannot reach outside the cache directory.
-  CHECK(cache_key(cfg, "", "../x/y", verilog, script).find('/') == std::string::npos);
+  CHECK(cache_key(cfg, "", "../x/y", false, verilog, script).find('/') == std::string::npos);
 }
 
 TEST_CASE("verilog_hash follows the gates, not the module names or the comments", "[synth]") {
@@ -272,6 +284,8 @@ TEST_CASE("the parts, their defaults and the --part help come from the embedded 
   CHECK(table.back().name == "xc7a100t");
   CHECK(find_part("xck26").family == "xcup");
   CHECK(find_part("xc7z020").lutram == 17400);
+  CHECK(find_part("xczu7ev").uram == 96);
+  CHECK(find_part("xczu9eg").uram == 0);
   CHECK(default_part() == "xczu9eg");
   CHECK(default_part("xc7") == "xc7z020");
   CHECK_THROWS_AS(default_part("xc9"), ConfigError);
@@ -300,6 +314,9 @@ TEST_CASE("synth-yosys.sh names the parts and families of the table", "[synth]")
   CHECK(script_error("--part xc9zz") == "synth-yosys: unknown part 'xc9zz' (" + names + ")\n");
   CHECK(script_error("--family xc9") == "synth-yosys: unknown family 'xc9' (xcup xc7)\n");
   CHECK(script_error("--family xc7 --part xczu9eg") == "synth-yosys: part xczu9eg is xcup, not xc7\n");
+  CHECK(script_error("--uram") == "synth-yosys: --uram: part xczu9eg has no UltraRAM (parts with it: xczu7ev xck26)\n");
+  CHECK(script_error("--uram --family xc7") ==
+        "synth-yosys: --uram: part xc7z020 has no UltraRAM (parts with it: xczu7ev xck26)\n");
 }
 
 }  // namespace fpstereo

@@ -19,8 +19,8 @@ const std::string& part_table_text() { return constraints_files().at(kPartTable)
 const std::vector<Part>& parts() {
   static const std::vector<Part> table = [] {
     const std::string where = std::string("constraints/") + kPartTable;
-    // part family LUT FF BRAM36 DSP LUTRAM [boards]; '#' starts a comment line.
-    const std::regex row(R"(^\s*(\S+)\s+(\S+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)(\s.*)?$)");
+    // part family LUT FF BRAM36 DSP LUTRAM URAM [boards]; '#' starts a comment line.
+    const std::regex row(R"(^\s*(\S+)\s+(\S+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)\s+(\d+)(\s.*)?$)");
     std::vector<Part> out;
     std::istringstream in(part_table_text());
     for (std::string line; std::getline(in, line);) {
@@ -30,7 +30,7 @@ const std::vector<Part>& parts() {
       if (!std::regex_match(line, m, row))
         throw ConfigError(where + ": malformed part row " + quoted(line));
       out.push_back({m[1], m[2], std::stoll(m[3]), std::stoll(m[4]), std::stoll(m[5]), std::stoll(m[6]),
-                     std::stoll(m[7])});
+                     std::stoll(m[7]), std::stoll(m[8])});
     }
     if (out.empty()) throw ConfigError("no parts in " + where);
     return out;

@@ -10,7 +10,7 @@ namespace fpstereo {
 
 struct Part {
   std::string name, family;
-  int64_t lut = 0, ff = 0, bram36 = 0, dsp = 0, lutram = 0;
+  int64_t lut = 0, ff = 0, bram36 = 0, dsp = 0, lutram = 0, uram = 0;
 };
 // The table's text as embedded (what the synthesis script reads, so part of its cache key).
 const std::string& part_table_text();

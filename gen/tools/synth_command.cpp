@@ -60,6 +60,7 @@ struct SynthOptions {
   std::string family, part, cache_dir, log, netlist;
   bool no_cache = false;
   bool kv = false;
+  bool uram = false;  // synth_xilinx -uram
 };
 
 // ---- parsing ---------------------------------------------------------------------------------
@@ -136,6 +137,7 @@ void fill_counts(const KvMap& kv, SynthReport& r) {
   r.bram18 = integer(kv, "bram18");
   r.bram36 = integer(kv, "bram36");
   r.bram36_equiv = number(kv, "bram36_equiv");
+  r.uram = integer(kv, "uram");
   r.dsp = integer(kv, "dsp");
   r.carry4 = integer(kv, "carry4");
   r.carry8 = integer(kv, "carry8");
@@ -153,6 +155,7 @@ void fill_percentages(const KvMap& kv, SynthReport& r) {
   r.bram18_pct = number(kv, "bram18_pct");
   r.bram36_pct = number(kv, "bram36_pct");
   r.bram36_equiv_pct = number(kv, "bram36_equiv_pct");
+  r.uram_pct = number(kv, "uram_pct");
   r.dsp_pct = number(kv, "dsp_pct");
   r.carry_pct = number(kv, "carry_pct");
 }
@@ -166,6 +169,7 @@ void fill_part(const KvMap& kv, SynthReport& r) {
   r.part_bram36 = integer(kv, "part_bram36");
   r.part_dsp = integer(kv, "part_dsp");
   r.part_lutram = integer(kv, "part_lutram");
+  r.part_uram = integer(kv, "part_uram");
 }
 
 // ---- formatting ------------------------------------------------------------------------------
@@ -405,6 +409,7 @@ std::vector<std::string> script_args(const SynthOptions& o, const fs::path& scri
   std::vector<std::string> args = {"bash", script.string(), "--kv", "--netlist", (work / "netlist.json").string()};
   if (!o.family.empty()) args.insert(args.end(), {"--family", o.family});
   if (!o.part.empty()) args.insert(args.end(), {"--part", o.part});
+  if (o.uram) args.push_back("--uram");
   if (!o.log.empty()) args.insert(args.end(), {"--log", (work / "yosys.log").string()});
   args.push_back(filelist.string());
   return args;
@@ -466,7 +471,7 @@ void run(const SynthOptions& o) {
   const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
   if (!script_text) throw SynthError(fmt::format("cannot read {}", quoted(script.string())));
-  const std::string key = cache_key(cfg, o.family, o.part, verilog_text(files), *script_text);
+  const std::string key = cache_key(cfg, o.family, o.part, o.uram, verilog_text(files), *script_text);
   const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
   create_cache_directory(cache);
   const fs::path record_path = cache / (key + ".kv");
@@ -572,6 +577,7 @@ std::string format_report(const SynthReport& r, bool cached) {
   out += resource_row("BRAM36", std::to_string(r.bram36), r.part_bram36, r.bram36_pct, "");
   out += resource_row("BRAM36 equiv", fmt::format("{}", r.bram36_equiv), r.part_bram36, r.bram36_equiv_pct,
                       "BRAM36 + BRAM18/2");
+  out += resource_row("URAM", std::to_string(r.uram), r.part_uram, r.uram_pct, "URAM288");
   out += resource_row("DSP", std::to_string(r.dsp), r.part_dsp, r.dsp_pct, "");
   out += resource_row("CARRY4 equiv", std::to_string(r.carry4_equiv), r.part_lut / 4, r.carry_pct,
                       fmt::format("CARRY4 {} + 2 x CARRY8 {}", r.carry4, r.carry8));
@@ -582,13 +588,14 @@ std::filesystem::path synth_script_path() {
   return std::filesystem::path(FPSTEREO_SOURCE_DIR) / "scripts" / "synth-yosys.sh";
 }
 
-std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
+std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part, bool uram,
                       const std::string& verilog_text, const std::string& script_text) {
   // The configuration is hashed in full too: config_tag's own hash is only 24 bits.
-  const std::string decisive = describe(cfg) + '\0' + family + '\0' + part + '\0' + verilog_text + '\0' +
-                               script_text + '\0' + part_table_text() + '\0' + kLogicDepthModel;
-  return fmt::format("{}-{}-{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
-                     fnv1a64(decisive));
+  const std::string decisive = describe(cfg) + '\0' + family + '\0' + part + '\0' + (uram ? "uram" : "") + '\0' +
+                               verilog_text + '\0' + script_text + '\0' + part_table_text() + '\0' +
+                               kLogicDepthModel;
+  return fmt::format("{}-{}-{}{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
+                     uram ? "-uram" : "", fnv1a64(decisive));
 }
 
 void register_synth_command(CLI::App& app, int& exit_code) {
@@ -602,6 +609,9 @@ void register_synth_command(CLI::App& app, int& exit_code) {
   sub->add_option("--family", o->family, "xcup (UltraScale+, the default) or xc7 (7 series)")
       ->type_name("NAME");
   sub->add_option("--part", o->part, "part for the percentages: " + part_list())->type_name("NAME");
+  sub->add_flag("--uram", o->uram,
+                "let Yosys map large memories to UltraRAM (synth_xilinx -uram): UltraScale+ parts that have it, "
+                "e.g. --part xczu7ev");
   sub->add_option("--cache", o->cache_dir, "cache directory [" + cache_dir_rule("synth") + "]")
       ->type_name("DIR");
   sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");

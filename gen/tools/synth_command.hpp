@@ -35,13 +35,13 @@ struct SynthReport {
   std::string config;  // configuration tag; empty when the text came straight from the script
   std::string top, family, part;
   int64_t lut = 0, lut_min = 0, lutram = 0, lut_total = 0, ff = 0, latches = 0;
-  int64_t bram18 = 0, bram36 = 0, dsp = 0, carry4 = 0, carry8 = 0, carry4_equiv = 0;
+  int64_t bram18 = 0, bram36 = 0, uram = 0, dsp = 0, carry4 = 0, carry8 = 0, carry4_equiv = 0;
   double bram36_equiv = 0;    // BRAM36 + BRAM18 / 2
   std::string lut_by_inputs;  // LUT1/.../LUT6 cell counts
   std::string lutram_cells;   // e.g. "RAM64M8x3 SRL16Ex2"
   // Percent of the part, as the script rounds them (one decimal).
   double lut_pct = 0, lut_min_pct = 0, lutram_pct = 0, lut_total_pct = 0, ff_pct = 0;
-  double bram18_pct = 0, bram36_pct = 0, bram36_equiv_pct = 0, dsp_pct = 0, carry_pct = 0;
+  double bram18_pct = 0, bram36_pct = 0, bram36_equiv_pct = 0, uram_pct = 0, dsp_pct = 0, carry_pct = 0;
   // abc9's logic delay and depth of the worst path; empty when abc9 did not run ("na").
   std::optional<int64_t> delay_ps, levels, levels_with_carry;
   // Register-to-register depth of the mapped netlist (logic_depth.hpp; depth_levels,
@@ -49,7 +49,7 @@ struct SynthReport {
   std::optional<int64_t> depth_levels, depth_levels_with_carry;
   std::vector<LogicPath> worst_paths;  // deepest first, one per end register
   std::optional<LogicPath> worst_carry_path;
-  int64_t part_lut = 0, part_ff = 0, part_bram36 = 0, part_dsp = 0, part_lutram = 0;
+  int64_t part_lut = 0, part_ff = 0, part_bram36 = 0, part_dsp = 0, part_lutram = 0, part_uram = 0;
   std::vector<SynthMemory> memories;
   std::vector<std::string> warnings;    // the script's warnings, without its "synth-yosys: " prefix
   std::optional<double> synth_seconds;  // wall time of the Yosys run, when recorded
@@ -69,10 +69,10 @@ std::string verilog_hash(const StereoConfig& cfg);
 // mapped to.
 std::string format_report(const SynthReport& report, bool cached);
 
-// The cache file's stem: readable (tag, family, part) plus a hash of everything that decides the
-// result, so a changed generator, script or part table never serves a stale report. Empty family
-// or part means the script's default.
-std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part,
+// The cache file's stem: readable (tag, family, part, "-uram" with UltraRAM) plus a hash of
+// everything that decides the result, so a changed generator, script or part table never serves a
+// stale report. Empty family or part means the script's default.
+std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part, bool uram,
                       const std::string& verilog_text, const std::string& script_text);
 
 // scripts/synth-yosys.sh in the source tree, which synth runs.
