@@ -63,7 +63,7 @@ struct Geometry {
   int code_entry_bits = 0, cost_lead = 1;
   int64_t cost_depth() const { return int64_t(cost_rows) * row_slots * (reorders_codes ? 1 : groups); }
   int64_t disp_depth() const { return int64_t(out_rows) * row_slots; }
-  int levels_per_stage = 3;
+  int levels_per_stage = 2;
   int path_tree_latency = 0;
   int wta_tree_latency = 0;
   // The uniqueness tree's joins are deeper than the minimum trees' compare-selects: it is

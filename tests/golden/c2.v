@@ -31,16 +31,16 @@
 //   confidence = off
 //
 // Derived widths (bits): code 48, cost 6 (max 48), path cost 8 (max 134), sum 10 (max 536), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
-// Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892884; frames follow on from 9 rows
-// Latency without stalls from the first input handshake to the first output handshake: 29889 cycles
+// Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 3 interleaved chains of 414 pixels, 1242 slots per row-time
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1897853; frames follow on from 10 rows
+// Latency without stalls from the first input handshake to the first output handshake: 34858 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window and transform                 3     5    0   window, cost
 //   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
-//   aggregation                          1     0    8   paths, p1, p2, mgm, dmax, uf
-//   winner-take-all                      0     0    3   uniqueness
+//   aggregation                          2     0    8   paths, p1, p2, mgm, dmax, uf
+//   winner-take-all                      0     0    4   uniqueness
 //   disparity reorder                    0     1    0   lr
 //   median filter                        2     2   26   median
 //   output                               0     0    4
@@ -258,9 +258,17 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire wrapped;
   // Frames follow on (docs/architecture.md, "Back-to-back frames") when they are taller
   // than the pipeline's drain.
-  localparam OVERLAP_HEIGHT = 9;
+  localparam OVERLAP_HEIGHT = 10;
   reg overlap;
   always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
+  // The frame's last column and row, registered (the settings hold while a frame runs), so
+  // that the stages' end-of-row and end-of-frame compares take no subtraction.
+  reg [10:0] frame_last_x;
+  reg [8:0] frame_last_y;
+  always @(posedge clk) begin
+    frame_last_x <= frame_width - 1'b1;
+    frame_last_y <= frame_height - 1'b1;
+  end
   fps_census7_d128u32_6c9a83_sequencer #(
     .STEP_W(21)
   ) sequencer (
@@ -281,12 +289,12 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [6:0] col_valid;
   wire [10:0] transform_x;
   wire signed [10:0] transform_y;
-  wire transform_slot;
+  wire [1:0] transform_slot;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_front_end #(
-    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(2), .COST_ROW_W(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
+    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -310,7 +318,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire code_penalties;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_code_reorder #(
-    .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(2), .ROW_W(1), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
+    .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(3), .ROW_W(2), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
     .MIN_DISP(0)
   ) cost_reorder (
     .clk(clk), .adv(adv), .shift(shift), .frame_width(frame_width), .frame_height(frame_height),
@@ -329,7 +337,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [1:0] agg_group;
   wire [1:0] agg_slot;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
-  wire agg_chain;
+  wire [1:0] agg_chain;
   /* verilator lint_on UNUSEDSIGNAL */
   /* verilator lint_off UNUSEDSIGNAL */  // the stages after it read the bits they need
   wire [13:0] cost_schedule;
@@ -340,16 +348,16 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire chain_penalties;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_chain_cost #(
-    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(2), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
+    .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(3), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
     .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
     .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .extra(1'b0),
     .costs(chain_costs), .extra_out(chain_penalties));
   fps_census7_d128u32_6c9a83_aggregator #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
-    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(3), .OUT_ROW_W(2),
-    .COST_AW(12), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(2), .COST_ROW_W(1), .MATCH_SIDE(0),
+    .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
+    .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(4), .OUT_ROW_W(2),
+    .COST_AW(12), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(3), .COST_ROW_W(2), .MATCH_SIDE(0),
     .CODES(1), .COST_LEAD(4)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
@@ -364,14 +372,14 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [1:0] winner_slot;
   wire [7:0] winner_word;
   fps_census7_d128u32_6c9a83_wta #(
-    .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
+    .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(2), .TREE_LAT(3)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
     .tag({agg_active, agg_x, agg_slot}), .group_out(winner_group),
     .tag_out({winner_active, winner_x, winner_slot}), .word(winner_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 19910;
+  localparam OUT_START = 24879;
   reg out_on;
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
@@ -387,7 +395,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [1:0] read_slot_row;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_disparity_reorder #(
-    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(3), .OUT_ROW_W(2), .DISP_AW(12), .EXTRA_ROWS(0), .X_W(11),
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(4), .OUT_ROW_W(2), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
@@ -417,7 +425,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     if (adv) begin
       out_word_q <= median_word;
       out_first_q <= median_x == 0 && median_y == 0;
-      out_last_q <= median_x == frame_width - 1'b1;
+      out_last_q <= median_x == frame_last_x;
     end
   assign out_due    = out_event_q;
   assign out_push   = adv && out_event_q;
@@ -427,7 +435,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   reg frame_done_q;
   always @(posedge clk)
     if (restart) frame_done_q <= 1'b0;
-    else if (adv) frame_done_q <= median_event && median_x == frame_width - 1'b1 && median_y == frame_height - 1'b1;
+    else if (adv) frame_done_q <= median_event && median_x == frame_last_x && median_y == frame_last_y;
   assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
 endmodule

@@ -31,17 +31,17 @@
 //   confidence = off
 //
 // Derived widths (bits): code 8, cost 13 (max 6375), path cost 13 (max 6461), sum 15 (max 25844), disparity 7, output word 8 (invalid = 128), m_axis_disp_tdata 8
-// Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 2 interleaved chains of 621 pixels, 1242 slots per row-time
-// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1887880; frames follow on from 8 rows
-// Latency without stalls from the first input handshake to the first output handshake: 24885 cycles
+// Architecture (docs/architecture.md): 4 steps per pixel (dmax / uf), 3 interleaved chains of 414 pixels, 1242 slots per row-time
+// Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892849; frames follow on from 9 rows
+// Latency without stalls from the first input handshake to the first output handshake: 29854 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
 //   framing                              0     0    0   width, height
 //   window                               2     4    0   window, cost
 //   cost                                 0     1    4   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
 //   LR2 match side                       0     0    0   lr, paths, p1, p2, min-disp
-//   aggregation                          1     0    5   paths, p1, p2, mgm, dmax, uf
-//   winner-take-all                      0     0    3   uniqueness
+//   aggregation                          2     0    5   paths, p1, p2, mgm, dmax, uf
+//   winner-take-all                      0     0    4   uniqueness
 //   disparity reorder                    2     1    0   lr
 //   left-right check                     0     0    3   lr, lr-threshold, min-disp
 //   output                               0     0    4
@@ -258,9 +258,17 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire wrapped;
   // Frames follow on (docs/architecture.md, "Back-to-back frames") when they are taller
   // than the pipeline's drain.
-  localparam OVERLAP_HEIGHT = 8;
+  localparam OVERLAP_HEIGHT = 9;
   reg overlap;
   always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
+  // The frame's last column and row, registered (the settings hold while a frame runs), so
+  // that the stages' end-of-row and end-of-frame compares take no subtraction.
+  reg [10:0] frame_last_x;
+  reg [8:0] frame_last_y;
+  always @(posedge clk) begin
+    frame_last_x <= frame_width - 1'b1;
+    frame_last_y <= frame_height - 1'b1;
+  end
   fps_sad5_d128u32_fc707c_sequencer #(
     .STEP_W(21)
   ) sequencer (
@@ -282,7 +290,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [1:0] transform_slot;
   wire [4:0] newest_row_valid;
   fps_sad5_d128u32_fc707c_front_end #(
-    .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
+    .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(4), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -312,10 +320,10 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [10:0] cost_x;
   wire [1:0] cost_row_slot;
   wire [1:0] cost_group;
-  wire [13:0] cost_raddr;
+  wire [14:0] cost_raddr;
   wire [415:0] cost_q;
   fps_sad5_d128u32_fc707c_cost_reorder #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(3), .COST_ROW_W(2), .COST_AW(14),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(4), .COST_ROW_W(2), .COST_AW(15),
     .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -333,10 +341,10 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [12:0] completed_waddr;
   wire [6:0] completed_wdata;
   fps_sad5_d128u32_fc707c_lr2_match #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
-    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_ROW_W(3),
-    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
-    .WTA_TREE_LAT(2), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
+    .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
+    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
+    .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
+    .WTA_TREE_LAT(3), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .match_on(match_on), .overlap(overlap), .wrapped(wrapped),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid),
@@ -355,13 +363,13 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [1:0] agg_group;
   wire [2:0] agg_slot;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
-  wire agg_chain;
+  wire [1:0] agg_chain;
   wire [13:0] cost_schedule;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fc707c_aggregator #(
-    .W(1242), .ROW_SLOTS(1242), .K(2), .SEGMENT(621), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
-    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(3), .PATH_TREE_LAT(2), .OUT_ROWS(5), .OUT_ROW_W(3),
-    .COST_AW(14), .X_W(11), .Y_W(9), .G_W(2), .K_W(1), .COST_ROWS(3), .COST_ROW_W(2), .MATCH_SIDE(0)
+    .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
+    .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
+    .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .MATCH_SIDE(0)
   ) aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
@@ -375,14 +383,14 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [2:0] winner_slot;
   wire [7:0] winner_word;
   fps_sad5_d128u32_fc707c_wta #(
-    .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(3), .TREE_LAT(2)
+    .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(2), .TREE_LAT(3)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
     .tag({agg_active, agg_x, agg_slot}), .group_out(winner_group),
     .tag_out({winner_active, winner_x, winner_slot}), .word(winner_word));
 
   // Disparity reorder RAM, read in raster order from step OUT_START.
-  localparam OUT_START = 24873;
+  localparam OUT_START = 29842;
   reg out_on;
   always @(posedge clk)
     if (restart) out_on <= 1'b0;
@@ -394,7 +402,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [7:0] read_word;
   wire [2:0] read_slot_row;
   fps_sad5_d128u32_fc707c_disparity_reorder #(
-    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(5), .OUT_ROW_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
+    .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(6), .OUT_ROW_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
     .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
@@ -414,7 +422,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fc707c_lr_check #(
-    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(5), .OUT_ROW_W(3),
+    .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(6), .OUT_ROW_W(3),
     .DISP_AW(13), .ROW_END(0), .END_AW(5), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
@@ -434,7 +442,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
     if (adv) begin
       out_word_q <= checked_word;
       out_first_q <= checked_x == 0 && checked_y == 0;
-      out_last_q <= checked_x == frame_width - 1'b1;
+      out_last_q <= checked_x == frame_last_x;
     end
   assign out_due    = out_event_q;
   assign out_push   = adv && out_event_q;
@@ -444,7 +452,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   reg frame_done_q;
   always @(posedge clk)
     if (restart) frame_done_q <= 1'b0;
-    else if (adv) frame_done_q <= checked_event && checked_x == frame_width - 1'b1 && checked_y == frame_height - 1'b1;
+    else if (adv) frame_done_q <= checked_event && checked_x == frame_last_x && checked_y == frame_last_y;
   assign frame_done = frame_done_q;
   assign frame_end  = adv && frame_done;
 endmodule

@@ -28,7 +28,7 @@ class OutputStage : public Stage {
     core.logic(fmt::format("  reg frame_done_q;\n"
                            "  always @(posedge clk)\n"
                            "    if (restart) frame_done_q <= 1'b0;\n"
-                           "    else if (adv) frame_done_q <= {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1;\n"
+                           "    else if (adv) frame_done_q <= {0} && {1} == frame_last_x && {2} == frame_last_y;\n"
                            "  assign frame_done = frame_done_q;\n"
                            "  assign frame_end  = adv && frame_done;\n",
                            s.event, s.x, s.y),

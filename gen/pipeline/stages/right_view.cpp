@@ -29,7 +29,7 @@ class RightViewStage : public Stage {
     core.logic(fmt::format("  reg view_beyond;  // past the frame's last pixel, and no frame follows\n"
                            "  always @(posedge clk)\n"
                            "    if (restart) view_beyond <= 1'b0;\n"
-                           "    else if (adv && {0} && {1} == frame_width - 1'b1 && {2} == frame_height - 1'b1)\n"
+                           "    else if (adv && {0} && {1} == frame_last_x && {2} == frame_last_y)\n"
                            "      view_beyond <= !continuing;\n",
                            s.event, s.x, s.y),
                {}, {{"view_beyond", 1}});

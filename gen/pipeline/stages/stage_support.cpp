@@ -112,7 +112,7 @@ void output_register(CoreBuilder& core, const std::string& prefix, const PixelSt
                          "    if (adv) begin\n"
                          "      {0}_word_q <= {4};\n"
                          "      {0}_first_q <= {2} == 0 && {3} == 0;\n"
-                         "      {0}_last_q <= {2} == frame_width - 1'b1;\n"
+                         "      {0}_last_q <= {2} == frame_last_x;\n"
                          "    end\n"
                          "  assign {0}_due    = {0}_event_q;\n"
                          "  assign {0}_push   = adv && {0}_event_q;\n"
