@@ -227,7 +227,9 @@ double memory_read_mux_bits(const rtl::RtlDesign& d) {
 // are a term of their own. Then the transform's two codes, the front end's two pixel windows
 // and the cost reorder's tag beside the cost latency; or, where the reorder RAM holds codes
 // (fpstereo_chain_cost), the K - 1 rings waiting for their chains, the held base entry, the
-// schedule's two steps and the aggregator's tag beside the cost lead.
+// schedule's two steps and the aggregator's tag beside the cost lead. A queue of three or more
+// waiting rings is a shift register that synth_xilinx maps to SRLs (shregmap -minlen 3): LUTRAM,
+// no flip-flops.
 double cost_registers(const rtl::RtlDesign& d, double ring) {
   const StereoConfig& c = d.cfg;
   const Widths& w = d.widths;
@@ -241,7 +243,8 @@ double cost_registers(const rtl::RtlDesign& d, double ring) {
   const double codes = c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2.0 * w.code;
   const double windows = 2.0 * c.window * c.window * w.pixel;
   if (d.reorders_codes) {
-    const double waiting = (d.chains - 1.0) * c.dmax * d.code_entry_bits;
+    constexpr int kShiftRegisterMinLength = 3;
+    const double waiting = d.chains - 1 < kShiftRegisterMinLength ? (d.chains - 1.0) * c.dmax * d.code_entry_bits : 0.0;
     const double schedule = 2.0 * (d.x_bits + d.group_bits) + 1;
     const double tag = 1.0 + d.x_bits + d.y_bits + 1 + d.group_bits + d.chain_bits + d.out_row_bits;
     return ring + waiting + d.code_entry_bits + schedule + (d.cost_lead - 1) * tag + lanes + codes + windows;
