@@ -12,6 +12,10 @@
 // 0). Timing: the aggregator's schedule names a pixel's group in step S0, where it reads the
 // pixel's entry; the entry is in the RAM's register in S1, where the head takes it in the first
 // group, so the lanes take group g in step S2 + g and the costs leave LAT steps later.
+// In a strip of several (FROM_LEFT, docs/ppc-hardware.md; uf = dmax), a row-time's first slot
+// continues the row the strip to the left has just finished: the head takes that strip's ring
+// (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
+// captured at the same slot, which comes K steps earlier there).
 module fpstereo_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -31,7 +35,9 @@ module fpstereo_chain_cost #(
   parameter LAT = 2,
   parameter ENTRY_W = CODE_W,
   // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
-  parameter EXTRA_W = 0
+  parameter EXTRA_W = 0,
+  // 1: a strip with one to its left, whose ring continues its rows
+  parameter FROM_LEFT = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -46,12 +52,20 @@ module fpstereo_chain_cost #(
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [UF*COST_W-1:0]  costs,
-  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out,
+  // strips: the ring of the row the strip to the left has finished, and this strip's
+  /* verilator lint_off UNUSEDSIGNAL */  // unused in the first strip and without strips
+  input  wire [DMAX*ENTRY_W-1:0] ring_in,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output reg  [DMAX*ENTRY_W-1:0] ring_out
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
       fpstereo_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
+    end
+    if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip
+      fpstereo_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
     end
   endgenerate
   // Turns as in fpstereo_match_ring (SPAN 1): by UF in a slot's steps; at the load, the turn that
@@ -76,6 +90,8 @@ module fpstereo_chain_cost #(
   wire [ENTRY_W-1:0] base_in = entry[ENTRY_W-1:0];
   wire [ENTRY_W-1:0] match_in = entry[2*ENTRY_W-1 -: ENTRY_W];
   wire [RING_W-1:0] next_ring = waiting[RING_W-1:0];
+  // the ring a row-time's first slot continues: the head's own, or in a strip the left one's
+  wire [RING_W-1:0] kept = FROM_LEFT != 0 ? ring_in : head;
   reg [RING_W-1:0] head_turned;
   integer p;
   always @*
@@ -86,11 +102,13 @@ module fpstereo_chain_cost #(
       else begin
         head[0 +: ENTRY_W] <= match_in;
         for (p = 1; p < DMAX; p = p + 1)
-          head[p*ENTRY_W +: ENTRY_W] <= first1 ? head[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
+          head[p*ENTRY_W +: ENTRY_W] <= first1 ? kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
                                                        : next_ring[(p-1)*ENTRY_W +: ENTRY_W];
         base_held <= base_in;
       end
     end
+  always @(posedge clk)
+    if (adv && load && first1) ring_out <= head;
   // The head's ring joins the end of the queue as the next one leaves it.
   wire rotate = adv && load && !first1;
   generate

@@ -58,3 +58,33 @@ modtb_set(speckle speckle_w17_s13_r0 TOP fpstereo_speckle SOURCES fpstereo_speck
           PARAMS W=17 S=13 R=0 WORD_W=12)
 modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckle.v fpstereo_ram_sdp.v fpstereo_ram_tdp.v
           PARAMS W=24 S=1 R=1 WORD_W=6)
+# Strips of aggregation (docs/ppc-hardware.md): two strips of one chain's latency; four, the last
+# one narrower than the others; two at uf 32 (K = 6) with the 0 and 135-degree paths only.
+set(MODTB_STRIP_SOURCES fpstereo_strip_aggregation.v fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v
+    fpstereo_ram_sdp.v fpstereo_ram_async.v fpstereo_path_lanes.v fpstereo_path_minimum.v fpstereo_min_tree.v
+    fpstereo_reduction_tree.v fpstereo_unique_join.v)
+# The RAMs' rows (16) hold a whole frame, so that addresses and slots name the rows.
+set(MODTB_STRIP_COMMON COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10 LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=4
+    COST_ROWS=16 COST_ROW_W=4 Y_W=6 K_W=3 COST_AW=9)
+modtb_set(strip_aggregation strip_aggregation_p2 TOP fpstereo_strip_aggregation SOURCES ${MODTB_STRIP_SOURCES}
+          PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 COST_LEAD=1
+          ${MODTB_STRIP_COMMON})
+modtb_set(strip_aggregation strip_aggregation_p4 TOP fpstereo_strip_aggregation SOURCES ${MODTB_STRIP_SOURCES}
+          PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 COST_LEAD=1
+          ${MODTB_STRIP_COMMON})
+modtb_set(strip_aggregation strip_aggregation_p2_uf32_paths9 TOP fpstereo_strip_aggregation
+          SOURCES ${MODTB_STRIP_SOURCES}
+          PARAMS P=2 W=48 ROW_SLOTS=24 K=6 SEGMENT=4 UF=32 PATH_TREE_LAT=3 PATHS=9 X_W=6 COST_LEAD=1
+          ${MODTB_STRIP_COMMON})
+# With code entries: 12-bit census codes, the costs from each strip's chain cost stage (2 + the
+# lanes' 2 steps after the address).
+set(MODTB_STRIP_CODES_SOURCES ${MODTB_STRIP_SOURCES} fpstereo_chain_cost.v fpstereo_point_lanes.v
+    fpstereo_cost_lanes.v fpstereo_fused_term.v)
+modtb_set(strip_aggregation strip_aggregation_codes_p2 TOP fpstereo_strip_aggregation
+          SOURCES ${MODTB_STRIP_CODES_SOURCES}
+          PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 CODES=1 CODE_W=12
+          COST_LEAD=4 ${MODTB_STRIP_COMMON})
+modtb_set(strip_aggregation strip_aggregation_codes_p4 TOP fpstereo_strip_aggregation
+          SOURCES ${MODTB_STRIP_CODES_SOURCES}
+          PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 CODES=1 CODE_W=12
+          COST_LEAD=4 ${MODTB_STRIP_COMMON})

@@ -38,6 +38,10 @@ class AggregationStage : public Stage {
       side = side + Connections{{"CODES", "1"}, {"COST_LEAD", num(d.cost_lead)}};
       cost_words = chain_cost(d, core);
     }
+    // One strip: no strips beside it to exchange edges with.
+    const int64_t edge_bits = int64_t(d.cfg.uf + 1) * d.widths.path_cost;
+    core.wire("agg_edge", 2 * edge_bits);
+    core.wire("agg_edge135", edge_bits);
     core.instance("fpstereo_aggregator", "aggregation", aggregator_parameters(d) + side,
                   {{"cost_q", cost_words},
                    {"sums", "agg_sums"},
@@ -45,7 +49,11 @@ class AggregationStage : public Stage {
                    {"sums_x", "agg_x"},
                    {"sums_group", "agg_group"},
                    {"sums_chain", "agg_chain"},
-                   {"sums_slot", "agg_slot"}});
+                   {"sums_slot", "agg_slot"},
+                   {"edge_in", fmt::format("{{{}{{1'b0}}}}", 2 * edge_bits)},
+                   {"edge135_in", fmt::format("{{{}{{1'b0}}}}", edge_bits)},
+                   {"edge_out", "agg_edge"},
+                   {"edge135_out", "agg_edge135"}});
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
@@ -74,6 +82,9 @@ class AggregationStage : public Stage {
     if (penalties) parameters.push_back({"EXTRA_W", num(d.penalty_bits)});
     core.wire("chain_costs", c.uf * w.cost);
     core.wire("chain_penalties", std::max(1, d.penalty_bits));
+    // One strip: no ring comes from a strip to the left, none goes to one to the right.
+    const int64_t ring_bits = int64_t(c.dmax) * d.code_entry_bits;
+    core.wire("chain_ring", ring_bits);
     core.instance("fpstereo_chain_cost", "chain_cost", parameters,
                   {{"group", fmt::format("cost_schedule[{}:0]", d.group_bits - 1)},
                    {"x", fmt::format("cost_schedule[{}:{}]", first - 1, x_lsb)},
@@ -81,7 +92,9 @@ class AggregationStage : public Stage {
                    {"entry", "code_q"},
                    {"extra", penalties ? "code_penalties" : "1'b0"},
                    {"costs", "chain_costs"},
-                   {"extra_out", "chain_penalties"}});
+                   {"extra_out", "chain_penalties"},
+                   {"ring_in", fmt::format("{{{}{{1'b0}}}}", ring_bits)},
+                   {"ring_out", "chain_ring"}});
     return penalties ? "{chain_penalties, chain_costs}" : "chain_costs";
   }
 

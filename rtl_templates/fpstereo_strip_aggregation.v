@@ -1,0 +1,133 @@
+`resetall
+`default_nettype none
+// Cost aggregation over P strips of a row (docs/ppc-hardware.md): P aggregators side by side, each
+// with K chains over its strip of ROW_SLOTS = K * SEGMENT pixels, strip p starting at pixel
+// p * ROW_SLOTS. Strip p runs p * K steps behind strip 0 (its start and wrap flags wait that long)
+// and its chain k works on row t - p * K - k of its row-time t, so the chain that continues a row
+// in the next strip starts its first pixel K + 1 steps after the previous strip's last, as the
+// chains of one aggregator do. The edges carry the 0 and 45-degree predecessors of a strip's
+// first pixel from the strip to its left and the 135-degree one of its last pixel from the strip
+// to its right. uf = dmax (G = 1). Each strip has its own cost read port and sums; the ports are
+// the aggregator's, strip p's in bits p * width. With CODES each strip reads code entries
+// ({match, base}, HAMMING: census codes, else ranks) and its own fpstereo_chain_cost computes
+// the costs, the strips handing their match rings on as their rows move right.
+module fpstereo_strip_aggregation #(
+  parameter P = 2,
+  parameter W = 64,
+  parameter ROW_SLOTS = 32,
+  parameter K = 2,
+  parameter SEGMENT = 16,
+  parameter UF = 8,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter PATH_W = 7,
+  parameter SUM_W = 9,
+  parameter PATHS = 15,
+  parameter LEVELS_PER_STAGE = 2,
+  parameter PATH_TREE_LAT = 2,
+  parameter OUT_ROWS = 3,
+  parameter OUT_ROW_W = 2,
+  parameter COST_AW = 10,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter K_W = 1,
+  parameter COST_ROWS = 2,
+  parameter COST_ROW_W = 1,
+  parameter CODES = 0,
+  /* verilator lint_off UNUSEDPARAM */  // with CODES
+  parameter HAMMING = 1,
+  parameter CODE_W = 8,
+  // the cost lanes' latency with CODES (2, or 3 for census codes above 48 bits)
+  parameter LANES_LAT = 2,
+  /* verilator lint_on UNUSEDPARAM */
+  // steps from cost_raddr to the aggregator's cost word: 1 (the RAM), or with CODES 2 + LANES_LAT
+  parameter COST_LEAD = 1
+) (
+  input  wire                  clk,
+  input  wire                  restart,
+  input  wire                  adv,
+  input  wire [X_W-1:0]        frame_width,
+  input  wire [Y_W-1:0]        frame_height,
+  input  wire [PATH_W-1:0]     p1,
+  input  wire [PATH_W-1:0]     p2,
+  input  wire                  agg_on,
+  input  wire                  overlap,
+  input  wire                  wrapped,
+  output wire [P*COST_AW-1:0]  cost_raddr,
+  // each strip's cost word, or with CODES its entry, a step after its address
+  input  wire [P*(CODES != 0 ? 2*CODE_W : UF*COST_W)-1:0] cost_q,
+  output wire [P*UF*SUM_W-1:0] sums,
+  output wire [P-1:0]          sums_active,
+  output wire [P*X_W-1:0]      sums_x,
+  output wire [P*K_W-1:0]      sums_chain,
+  output wire [P*OUT_ROW_W-1:0] sums_slot
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (P < 2 || (P - 1) * ROW_SLOTS >= W || P * ROW_SLOTS < W) begin : invalid_P
+      fpstereo_invalid_parameters_strip_aggregation_P_strips_of_ROW_SLOTS_do_not_cover_W failed ();
+    end
+  endgenerate
+  localparam EDGE_W = (UF + 1) * PATH_W;
+  localparam Q_W = CODES != 0 ? 2 * CODE_W : UF * COST_W;
+  localparam RING_W = UF * CODE_W;
+  /* verilator lint_off UNUSEDSIGNAL */  // with CODES
+  wire [(P+1)*RING_W-1:0] rings;  // rings[p]: from strip p - 1's chain costs to strip p's
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign rings[0 +: RING_W] = 0;
+  wire [(P+1)*2*EDGE_W-1:0] edge_right;  // edge_right[p]: from strip p - 1 to strip p
+  wire [(P+1)*EDGE_W-1:0]   edge_left;   // edge_left[p]: from strip p + 1 to strip p
+  assign edge_right[0 +: 2*EDGE_W] = 0;
+  assign edge_left[P*EDGE_W +: EDGE_W] = 0;
+  genvar p;
+  generate
+    for (p = 0; p < P; p = p + 1) begin : strip
+      wire on, wrapped_p;
+      if (p == 0) begin : first
+        assign on = agg_on;
+        assign wrapped_p = wrapped;
+      end else begin : lagged
+        fpstereo_delay #(.WIDTH(2), .DEPTH(p * K), .RESET(1)) lag (
+          .clk(clk), .rst(restart), .en(adv), .in({agg_on, wrapped}), .out({on, wrapped_p}));
+      end
+      wire [UF*COST_W-1:0] costs;
+      /* verilator lint_off UNUSEDSIGNAL */  // the chain-order costs' schedule
+      wire [X_W+1:0] schedule;
+      /* verilator lint_on UNUSEDSIGNAL */
+      if (CODES != 0) begin : chain_costs
+        /* verilator lint_off PINCONNECTEMPTY */
+        fpstereo_chain_cost #(.HAMMING(HAMMING), .CODE_W(CODE_W), .DMAX(UF), .UF(UF), .K(K), .COST_W(COST_W),
+                              .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(0), .LANES_LAT(LANES_LAT),
+                              .LAT(LANES_LAT), .ENTRY_W(CODE_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
+          .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
+          .frame_width(frame_width), .entry(cost_q[p*Q_W +: Q_W]), .extra(1'b0), .costs(costs), .extra_out(),
+          .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
+        /* verilator lint_on PINCONNECTEMPTY */
+      end else begin : cost_words
+        assign costs = cost_q[p*Q_W +: Q_W];
+        assign rings[(p+1)*RING_W +: RING_W] = 0;
+      end
+      /* verilator lint_off PINCONNECTEMPTY */
+      fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(1), .UF(UF),
+                            .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
+                            .MATCH_SIDE(0), .PENALTIES(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                            .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
+                            .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(1), .K_W(K_W),
+                            .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(0), .CODES(CODES),
+                            .COST_LEAD(COST_LEAD), .STRIPS(1), .X_BASE(p * ROW_SLOTS), .CHAIN_BASE(p * K))
+        aggregation (
+          .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+          .p1(p1), .p2(p2), .agg_on(on), .overlap(overlap), .wrapped(wrapped_p),
+          .cost_raddr(cost_raddr[p*COST_AW +: COST_AW]), .cost_schedule(schedule), .cost_q(costs),
+          .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .sums_active(sums_active[p]), .sums_x(sums_x[p*X_W +: X_W]),
+          .sums_group(), .sums_chain(sums_chain[p*K_W +: K_W]), .sums_slot(sums_slot[p*OUT_ROW_W +: OUT_ROW_W]),
+          .edge_in(edge_right[p*2*EDGE_W +: 2*EDGE_W]), .edge135_in(edge_left[(p+1)*EDGE_W +: EDGE_W]),
+          .edge_out(edge_right[(p+1)*2*EDGE_W +: 2*EDGE_W]), .edge135_out(edge_left[p*EDGE_W +: EDGE_W]));
+      /* verilator lint_on PINCONNECTEMPTY */
+    end
+  endgenerate
+  /* verilator lint_off UNUSEDSIGNAL */  // the last strip's edge to the right, the first's to the left
+  wire unused_edges = ^{edge_right[P*2*EDGE_W +: 2*EDGE_W], edge_left[0 +: EDGE_W], rings[P*RING_W +: RING_W]};
+  /* verilator lint_on UNUSEDSIGNAL */
+endmodule
+`resetall
