@@ -346,6 +346,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [191:0] chain_costs;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire chain_penalties;
+  wire [6143:0] chain_ring;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_chain_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(3), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
@@ -353,7 +354,11 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
     .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .extra(1'b0),
-    .costs(chain_costs), .extra_out(chain_penalties));
+    .costs(chain_costs), .extra_out(chain_penalties), .ring_in({6144{1'b0}}), .ring_out(chain_ring));
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+  wire [527:0] agg_edge;
+  wire [263:0] agg_edge135;
+  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(4), .OUT_ROW_W(2),
@@ -363,7 +368,8 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
     .cost_schedule(cost_schedule), .cost_q(chain_costs), .sums(agg_sums), .sums_active(agg_active),
-    .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
+    .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot),
+    .edge_in({528{1'b0}}), .edge135_in({264{1'b0}}), .edge_out(agg_edge), .edge135_out(agg_edge135));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -1393,6 +1399,10 @@ endmodule
 // 0). Timing: the aggregator's schedule names a pixel's group in step S0, where it reads the
 // pixel's entry; the entry is in the RAM's register in S1, where the head takes it in the first
 // group, so the lanes take group g in step S2 + g and the costs leave LAT steps later.
+// In a strip of several (FROM_LEFT, docs/ppc-hardware.md; uf = dmax), a row-time's first slot
+// continues the row the strip to the left has just finished: the head takes that strip's ring
+// (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
+// captured at the same slot, which comes K steps earlier there).
 module fps_census7_d128u32_6c9a83_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -1412,7 +1422,9 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
   parameter LAT = 2,
   parameter ENTRY_W = CODE_W,
   // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
-  parameter EXTRA_W = 0
+  parameter EXTRA_W = 0,
+  // 1: a strip with one to its left, whose ring continues its rows
+  parameter FROM_LEFT = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -1427,12 +1439,20 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [UF*COST_W-1:0]  costs,
-  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out
+  output wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_out,
+  // strips: the ring of the row the strip to the left has finished, and this strip's
+  /* verilator lint_off UNUSEDSIGNAL */  // unused in the first strip and without strips
+  input  wire [DMAX*ENTRY_W-1:0] ring_in,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output reg  [DMAX*ENTRY_W-1:0] ring_out
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
       fps_census7_d128u32_6c9a83_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
+    end
+    if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip
+      fps_census7_d128u32_6c9a83_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
     end
   endgenerate
   // Turns as in fps_census7_d128u32_6c9a83_match_ring (SPAN 1): by UF in a slot's steps; at the load, the turn that
@@ -1457,6 +1477,8 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
   wire [ENTRY_W-1:0] base_in = entry[ENTRY_W-1:0];
   wire [ENTRY_W-1:0] match_in = entry[2*ENTRY_W-1 -: ENTRY_W];
   wire [RING_W-1:0] next_ring = waiting[RING_W-1:0];
+  // the ring a row-time's first slot continues: the head's own, or in a strip the left one's
+  wire [RING_W-1:0] kept = FROM_LEFT != 0 ? ring_in : head;
   reg [RING_W-1:0] head_turned;
   integer p;
   always @*
@@ -1467,11 +1489,13 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
       else begin
         head[0 +: ENTRY_W] <= match_in;
         for (p = 1; p < DMAX; p = p + 1)
-          head[p*ENTRY_W +: ENTRY_W] <= first1 ? head[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
+          head[p*ENTRY_W +: ENTRY_W] <= first1 ? kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
                                                        : next_ring[(p-1)*ENTRY_W +: ENTRY_W];
         base_held <= base_in;
       end
     end
+  always @(posedge clk)
+    if (adv && load && first1) ring_out <= head;
   // The head's ring joins the end of the queue as the next one leaves it.
   wire rotate = adv && load && !first1;
   generate
@@ -1508,6 +1532,10 @@ endmodule
 // x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_census7_d128u32_6c9a83_adaptive_p2), which replaces the p2 input for that path.
+// With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
+// aggregator each (fps_census7_d128u32_6c9a83_strip_aggregation): this one's pixels are X_BASE + k * SEGMENT + j, its
+// chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
+// pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fps_census7_d128u32_6c9a83_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
@@ -1545,7 +1573,11 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   parameter CODES = 0,
   // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
   // chain cost stage's)
-  parameter COST_LEAD = 1
+  parameter COST_LEAD = 1,
+  // 1: one strip of several; X_BASE its first pixel, CHAIN_BASE the strips' chains to its left
+  parameter STRIPS = 0,
+  parameter X_BASE = 0,
+  parameter CHAIN_BASE = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1573,12 +1605,22 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_ROW_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot,
+  // With STRIPS: from the strip to the left, what its last pixel leaves for this strip's first
+  // {0-degree path costs, their minimum, the 45-degree row above at x - 1, its minimum}, and the
+  // same to the right; from the strip to the right, its first pixel's 135-degree path costs and
+  // minimum in the row above, and this strip's to the left.
+  /* verilator lint_off UNUSEDSIGNAL */  // unused in the first strip and without STRIPS
+  input  wire [2*(UF+1)*PATH_W-1:0] edge_in,
+  input  wire [(UF+1)*PATH_W-1:0]   edge135_in,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [2*(UF+1)*PATH_W-1:0] edge_out,
+  output wire [(UF+1)*PATH_W-1:0]   edge135_out
 );
   localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_6c9a83_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || (STRIPS == 0 && ROW_SLOTS < W)) begin : invalid_segments
       fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
@@ -1602,11 +1644,23 @@ module fps_census7_d128u32_6c9a83_aggregator #(
     if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
       fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
+    if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && (X_BASE != 0 || CHAIN_BASE != 0)) || (STRIPS != 0 && G != 1)) begin : invalid_strip
+      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
+    end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
-  localparam ROW_DEPTH = (W + 1) * G;
+  // the strip's pixels: all W of the row without STRIPS
+  localparam STRIP_W = W - X_BASE < ROW_SLOTS ? W - X_BASE : ROW_SLOTS;
+  localparam integer X_FIRST_I = X_BASE, X_LAST_I = X_BASE + STRIP_W - 1;
+  localparam [X_W-1:0] X_FIRST = X_FIRST_I[X_W-1:0], X_LAST = X_LAST_I[X_W-1:0];
+  // the pixel after the strip's last, which the strip to the right has
+  localparam integer X_AFTER_I = X_BASE + STRIP_W;
+  localparam [X_W-1:0] X_AFTER = X_AFTER_I[X_W-1:0];
+  localparam FROM_LEFT = STRIPS != 0 && X_BASE != 0;
+  localparam FROM_RIGHT = STRIPS != 0 && X_BASE + STRIP_W < W;
+  localparam ROW_DEPTH = (STRIP_W + 1) * G;
   localparam ROW_AW = $clog2(ROW_DEPTH);
-  localparam MIN_AW = $clog2(W + 1);
+  localparam MIN_AW = $clog2(STRIP_W + 1);
   localparam STATE_DEPTH = K * G;
   localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
   localparam LANES_W = UF * PATH_W;
@@ -1614,7 +1668,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
+  localparam integer LAST_SEGMENT_SLOT_I = SEGMENT - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = LAST_SEGMENT_SLOT_I[X_W-1:0];
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -1657,15 +1712,19 @@ module fps_census7_d128u32_6c9a83_aggregator #(
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
+  wire [X_W-1:0] x_local0 = ka * SEGMENT + ja;
+  wire [X_W-1:0] x0 = X_FIRST + x_local0;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
-  wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
+  wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  // (row-time - CHAIN_BASE - ka) modulo the RAMs' rows, kept non-negative
+  localparam integer COST_ROWS_UP = CHAIN_BASE == 0 ? COST_ROWS : ((CHAIN_BASE + K) / COST_ROWS + 1) * COST_ROWS;
+  localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS_UP - CHAIN_BASE - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x0 : (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x_local0 : (row_slot0 * ROW_SLOTS + x_local0) * G + ga;
   assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
@@ -1725,7 +1784,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   wire [G_W-1:0]   g4 = `FPS_TAG_GROUP(tag4);
   wire             active4 = `FPS_TAG_ACTIVE(tag4);
   /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
+  wire [ROW_AW-1:0] row_waddr4 = (x4 - X_FIRST) * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
@@ -1772,6 +1831,20 @@ module fps_census7_d128u32_6c9a83_aggregator #(
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
 
+  // ---- Strip edges (STRIPS; G = 1, so a word is a pixel). The strip's first pixel takes its
+  // 0 and 45-degree predecessors from edge_in, which the strip to the left captured at its last
+  // pixel K + 1 clocks before; the last pixel's 135-degree predecessor comes from edge135_in,
+  // captured by the strip to the right at its first pixel of the row above.
+  localparam EDGE_W = (UF + 1) * PATH_W;
+  wire first2 = FROM_LEFT && x2 == X_FIRST;
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
+  wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
+  /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // the edges' captures read it
+  wire [X_W-1:0]     x_m = `FPS_TAG_X(tag_m);
+  /* verilator lint_on UNUSEDSIGNAL */
+
   // ---- 0 degrees: the predecessor is the chain's previous pixel (state RAM by chain slot).
   generate
     if ((PATHS & 1) != 0) begin : path0
@@ -1789,16 +1862,28 @@ module fps_census7_d128u32_6c9a83_aggregator #(
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
       fps_census7_d128u32_6c9a83_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_0));
+        .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
       fps_census7_d128u32_6c9a83_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
+      if (STRIPS != 0) begin : strip_edge
+        reg [LANES_W-1:0] last_q;
+        reg [PATH_W-1:0]  last_min_q;
+        always @(posedge clk) begin
+          if (adv && active4 && x4 == X_LAST) last_q <= path_0;
+          if (adv && pixel_done_m && x_m == X_LAST) last_min_q <= min_0;
+        end
+        assign edge_out[0 +: EDGE_W] = {last_min_q, last_q};
+      end else begin : no_strip_edge
+        assign edge_out[0 +: EDGE_W] = 0;
+      end
     end else begin : no_path0
       assign path_0 = 0;
+      assign edge_out[0 +: EDGE_W] = 0;
     end
   endgenerate
 
@@ -1813,12 +1898,12 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
-      wire [ROW_AW-1:0] row_raddr = x_read * G + g_read;
-      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read;
+      wire [ROW_AW-1:0] row_raddr = (x_read - X_FIRST) * G + g_read;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read - X_FIRST;
       fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
-      fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+      fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
         .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
@@ -1836,14 +1921,29 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
       fps_census7_d128u32_6c9a83_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
-        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_45));
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0),
+        .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
+        .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
+        .path(path_45));
       fps_census7_d128u32_6c9a83_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
+      // The row above at the strip's last pixel, which the next strip's first pixel follows.
+      if (STRIPS != 0) begin : strip_edge
+        reg [LANES_W-1:0] last_q;
+        reg [PATH_W-1:0]  last_min_q;
+        always @(posedge clk)
+          if (adv && `FPS_TAG_ACTIVE(tag2) && x2 == X_LAST) begin
+            last_q <= above2;
+            last_min_q <= above_min2;
+          end
+        assign edge_out[EDGE_W +: EDGE_W] = {last_min_q, last_q};
+      end else begin : no_strip_edge
+        assign edge_out[EDGE_W +: EDGE_W] = 0;
+      end
     end else begin : no_path45
       assign path_45 = 0;
+      assign edge_out[EDGE_W +: EDGE_W] = 0;
     end
   endgenerate
 
@@ -1855,18 +1955,39 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       localparam ENABLED = p == 0 ? (PATHS & 4) != 0 : (PATHS & 8) != 0;
       localparam DX = p;  // predecessor column offset
       if (ENABLED) begin : path
-        wire [LANES_W-1:0] above_q, path_out;
-        wire [PATH_W-1:0]  above_min_q, min_out;
+        wire [LANES_W-1:0] above_read_q, above_q, path_out;
+        wire [PATH_W-1:0]  above_min_read_q, above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
-        wire [ROW_AW-1:0]  row_raddr = (x_read + DX) * G + g_read;
-        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read + DX;
+        wire [ROW_AW-1:0]  row_raddr = (x_read + DX - X_FIRST) * G + g_read;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read + DX - X_FIRST;
         fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
-          .re(adv), .raddr(row_raddr), .rdata(above_q));
-        fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+          .re(adv), .raddr(row_raddr), .rdata(above_read_q));
+        fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
-          .re(adv), .raddr(min_raddr), .rdata(above_min_q));
+          .re(adv), .raddr(min_raddr), .rdata(above_min_read_q));
+        // 135 degrees in a strip with one to its right: the pixel after the strip's last is that
+        // strip's, from edge135_in; and this strip's first pixel goes to the strip to the left.
+        if (DX == 1 && FROM_RIGHT) begin : after_strip
+          reg after_q;
+          always @(posedge clk)
+            if (adv) after_q <= x_read + DX == X_AFTER;
+          assign above_q = after_q ? edge135_in[0 +: LANES_W] : above_read_q;
+          assign above_min_q = after_q ? edge135_in[LANES_W +: PATH_W] : above_min_read_q;
+        end else begin : within_strip
+          assign above_q = above_read_q;
+          assign above_min_q = above_min_read_q;
+        end
+        if (DX == 1 && FROM_LEFT) begin : strip_edge
+          reg [LANES_W-1:0] first_q;
+          reg [PATH_W-1:0]  first_min_q;
+          always @(posedge clk) begin
+            if (adv && active4 && x4 == X_FIRST) first_q <= path_out;
+            if (adv && pixel_done_m && x_m == X_FIRST) first_min_q <= min_out;
+          end
+          assign edge135_out = {first_min_q, first_q};
+        end
         always @(posedge clk)
           if (adv) begin
             cur <= above_q;
@@ -1891,6 +2012,9 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       assign path_135 = vertical[1].path.path_out;
     end else begin : no_path135
       assign path_135 = 0;
+    end
+    if ((PATHS & 8) == 0 || !FROM_LEFT) begin : no_edge135
+      assign edge135_out = 0;
     end
   endgenerate
 

@@ -365,6 +365,8 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [1:0] agg_chain;
   wire [13:0] cost_schedule;
+  wire [857:0] agg_edge;
+  wire [428:0] agg_edge135;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fc707c_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
@@ -374,7 +376,8 @@ module fps_sad5_d128u32_fc707c_sgm_core (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
     .cost_schedule(cost_schedule), .cost_q(cost_q), .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x),
-    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot));
+    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot), .edge_in({858{1'b0}}),
+    .edge135_in({429{1'b0}}), .edge_out(agg_edge), .edge135_out(agg_edge135));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -1570,7 +1573,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [OUT_ROW_W-1:0]  slot;
-  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
+  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only, the edges strips
   fps_sad5_d128u32_fc707c_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -1580,7 +1583,8 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
     .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
-    .sums_slot(slot));
+    .sums_slot(slot), .edge_in({2*(UF+1)*PATH_W{1'b0}}), .edge135_in({(UF+1)*PATH_W{1'b0}}), .edge_out(),
+    .edge135_out());
   /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
   wire [X_W-1:0]    x_w;
@@ -1609,6 +1613,10 @@ endmodule
 // x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_sad5_d128u32_fc707c_adaptive_p2), which replaces the p2 input for that path.
+// With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
+// aggregator each (fps_sad5_d128u32_fc707c_strip_aggregation): this one's pixels are X_BASE + k * SEGMENT + j, its
+// chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
+// pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fps_sad5_d128u32_fc707c_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
@@ -1646,7 +1654,11 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   parameter CODES = 0,
   // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
   // chain cost stage's)
-  parameter COST_LEAD = 1
+  parameter COST_LEAD = 1,
+  // 1: one strip of several; X_BASE its first pixel, CHAIN_BASE the strips' chains to its left
+  parameter STRIPS = 0,
+  parameter X_BASE = 0,
+  parameter CHAIN_BASE = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1674,12 +1686,22 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   output wire [X_W-1:0]       sums_x,
   output wire [G_W-1:0]       sums_group,
   output wire [K_W-1:0]       sums_chain,
-  output wire [OUT_ROW_W-1:0]   sums_slot
+  output wire [OUT_ROW_W-1:0]   sums_slot,
+  // With STRIPS: from the strip to the left, what its last pixel leaves for this strip's first
+  // {0-degree path costs, their minimum, the 45-degree row above at x - 1, its minimum}, and the
+  // same to the right; from the strip to the right, its first pixel's 135-degree path costs and
+  // minimum in the row above, and this strip's to the left.
+  /* verilator lint_off UNUSEDSIGNAL */  // unused in the first strip and without STRIPS
+  input  wire [2*(UF+1)*PATH_W-1:0] edge_in,
+  input  wire [(UF+1)*PATH_W-1:0]   edge135_in,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [2*(UF+1)*PATH_W-1:0] edge_out,
+  output wire [(UF+1)*PATH_W-1:0]   edge135_out
 );
   localparam LANES_LAT = 2;  // steps of fps_sad5_d128u32_fc707c_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || ROW_SLOTS < W) begin : invalid_segments
+    if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || (STRIPS == 0 && ROW_SLOTS < W)) begin : invalid_segments
       fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
@@ -1703,11 +1725,23 @@ module fps_sad5_d128u32_fc707c_aggregator #(
     if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
       fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
+    if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && (X_BASE != 0 || CHAIN_BASE != 0)) || (STRIPS != 0 && G != 1)) begin : invalid_strip
+      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
+    end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
-  localparam ROW_DEPTH = (W + 1) * G;
+  // the strip's pixels: all W of the row without STRIPS
+  localparam STRIP_W = W - X_BASE < ROW_SLOTS ? W - X_BASE : ROW_SLOTS;
+  localparam integer X_FIRST_I = X_BASE, X_LAST_I = X_BASE + STRIP_W - 1;
+  localparam [X_W-1:0] X_FIRST = X_FIRST_I[X_W-1:0], X_LAST = X_LAST_I[X_W-1:0];
+  // the pixel after the strip's last, which the strip to the right has
+  localparam integer X_AFTER_I = X_BASE + STRIP_W;
+  localparam [X_W-1:0] X_AFTER = X_AFTER_I[X_W-1:0];
+  localparam FROM_LEFT = STRIPS != 0 && X_BASE != 0;
+  localparam FROM_RIGHT = STRIPS != 0 && X_BASE + STRIP_W < W;
+  localparam ROW_DEPTH = (STRIP_W + 1) * G;
   localparam ROW_AW = $clog2(ROW_DEPTH);
-  localparam MIN_AW = $clog2(W + 1);
+  localparam MIN_AW = $clog2(STRIP_W + 1);
   localparam STATE_DEPTH = K * G;
   localparam STATE_AW = STATE_DEPTH > 1 ? $clog2(STATE_DEPTH) : 1;
   localparam LANES_W = UF * PATH_W;
@@ -1715,7 +1749,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_CHAIN = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SEGMENT_SLOT = SEGMENT - 1;
+  localparam integer LAST_SEGMENT_SLOT_I = SEGMENT - 1;
+  localparam [X_W-1:0] LAST_SEGMENT_SLOT = LAST_SEGMENT_SLOT_I[X_W-1:0];
 
   // RAM addresses are products of narrow unsigned counters and constants; they zero-extend and
   // are cut to the address widths (sized from the RAM depths), which Verilator's WIDTH lint
@@ -1758,15 +1793,19 @@ module fps_sad5_d128u32_fc707c_aggregator #(
         end
       end
     end
-  wire [X_W-1:0] x0 = ka * SEGMENT + ja;
+  wire [X_W-1:0] x_local0 = ka * SEGMENT + ja;
+  wire [X_W-1:0] x0 = X_FIRST + x_local0;
   // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
-  wire [Y_W:0]   lagged0 = {1'b0, ta} - {{(Y_W+1-K_W){1'b0}}, ka};
+  wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS - ka) % COST_ROWS;
-  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS - ka) % OUT_ROWS;
+  // (row-time - CHAIN_BASE - ka) modulo the RAMs' rows, kept non-negative
+  localparam integer COST_ROWS_UP = CHAIN_BASE == 0 ? COST_ROWS : ((CHAIN_BASE + K) / COST_ROWS + 1) * COST_ROWS;
+  localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
+  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS_UP - CHAIN_BASE - ka) % COST_ROWS;
+  wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x0 : (row_slot0 * ROW_SLOTS + x0) * G + ga;
+  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x_local0 : (row_slot0 * ROW_SLOTS + x_local0) * G + ga;
   assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
@@ -1826,7 +1865,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   wire [G_W-1:0]   g4 = `FPS_TAG_GROUP(tag4);
   wire             active4 = `FPS_TAG_ACTIVE(tag4);
   /* verilator lint_off UNUSEDSIGNAL */  // the row RAMs of the 45, 90 and 135 degree paths use it
-  wire [ROW_AW-1:0] row_waddr4 = x4 * G + g4;
+  wire [ROW_AW-1:0] row_waddr4 = (x4 - X_FIRST) * G + g4;
   /* verilator lint_on UNUSEDSIGNAL */
 
   // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
@@ -1873,6 +1912,20 @@ module fps_sad5_d128u32_fc707c_aggregator #(
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
 
+  // ---- Strip edges (STRIPS; G = 1, so a word is a pixel). The strip's first pixel takes its
+  // 0 and 45-degree predecessors from edge_in, which the strip to the left captured at its last
+  // pixel K + 1 clocks before; the last pixel's 135-degree predecessor comes from edge135_in,
+  // captured by the strip to the right at its first pixel of the row above.
+  localparam EDGE_W = (UF + 1) * PATH_W;
+  wire first2 = FROM_LEFT && x2 == X_FIRST;
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
+  wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
+  /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // the edges' captures read it
+  wire [X_W-1:0]     x_m = `FPS_TAG_X(tag_m);
+  /* verilator lint_on UNUSEDSIGNAL */
+
   // ---- 0 degrees: the predecessor is the chain's previous pixel (state RAM by chain slot).
   generate
     if ((PATHS & 1) != 0) begin : path0
@@ -1890,16 +1943,28 @@ module fps_sad5_d128u32_fc707c_aggregator #(
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
       fps_sad5_d128u32_fc707c_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(cur),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_0));
+        .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
       fps_sad5_d128u32_fc707c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
+      if (STRIPS != 0) begin : strip_edge
+        reg [LANES_W-1:0] last_q;
+        reg [PATH_W-1:0]  last_min_q;
+        always @(posedge clk) begin
+          if (adv && active4 && x4 == X_LAST) last_q <= path_0;
+          if (adv && pixel_done_m && x_m == X_LAST) last_min_q <= min_0;
+        end
+        assign edge_out[0 +: EDGE_W] = {last_min_q, last_q};
+      end else begin : no_strip_edge
+        assign edge_out[0 +: EDGE_W] = 0;
+      end
     end else begin : no_path0
       assign path_0 = 0;
+      assign edge_out[0 +: EDGE_W] = 0;
     end
   endgenerate
 
@@ -1914,12 +1979,12 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       wire [PATH_W-1:0] above_min_q, min_45;
       reg  [LANES_W-1:0] above2;
       reg  [PATH_W-1:0] above_min2;
-      wire [ROW_AW-1:0] row_raddr = x_read * G + g_read;
-      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read;
+      wire [ROW_AW-1:0] row_raddr = (x_read - X_FIRST) * G + g_read;
+      wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read - X_FIRST;
       fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
-      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
         .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
@@ -1937,14 +2002,29 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
       fps_sad5_d128u32_fc707c_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0), .prev(cur),
-        .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(minimum[chain2]), .path(path_45));
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0),
+        .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
+        .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
+        .path(path_45));
       fps_sad5_d128u32_fc707c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
+      // The row above at the strip's last pixel, which the next strip's first pixel follows.
+      if (STRIPS != 0) begin : strip_edge
+        reg [LANES_W-1:0] last_q;
+        reg [PATH_W-1:0]  last_min_q;
+        always @(posedge clk)
+          if (adv && `FPS_TAG_ACTIVE(tag2) && x2 == X_LAST) begin
+            last_q <= above2;
+            last_min_q <= above_min2;
+          end
+        assign edge_out[EDGE_W +: EDGE_W] = {last_min_q, last_q};
+      end else begin : no_strip_edge
+        assign edge_out[EDGE_W +: EDGE_W] = 0;
+      end
     end else begin : no_path45
       assign path_45 = 0;
+      assign edge_out[EDGE_W +: EDGE_W] = 0;
     end
   endgenerate
 
@@ -1956,18 +2036,39 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       localparam ENABLED = p == 0 ? (PATHS & 4) != 0 : (PATHS & 8) != 0;
       localparam DX = p;  // predecessor column offset
       if (ENABLED) begin : path
-        wire [LANES_W-1:0] above_q, path_out;
-        wire [PATH_W-1:0]  above_min_q, min_out;
+        wire [LANES_W-1:0] above_read_q, above_q, path_out;
+        wire [PATH_W-1:0]  above_min_read_q, above_min_q, min_out;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
-        wire [ROW_AW-1:0]  row_raddr = (x_read + DX) * G + g_read;
-        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m), min_raddr = x_read + DX;
+        wire [ROW_AW-1:0]  row_raddr = (x_read + DX - X_FIRST) * G + g_read;
+        wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read + DX - X_FIRST;
         fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
-          .re(adv), .raddr(row_raddr), .rdata(above_q));
-        fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(W + 1), .ADDR_W(MIN_AW)) row_min (
+          .re(adv), .raddr(row_raddr), .rdata(above_read_q));
+        fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
-          .re(adv), .raddr(min_raddr), .rdata(above_min_q));
+          .re(adv), .raddr(min_raddr), .rdata(above_min_read_q));
+        // 135 degrees in a strip with one to its right: the pixel after the strip's last is that
+        // strip's, from edge135_in; and this strip's first pixel goes to the strip to the left.
+        if (DX == 1 && FROM_RIGHT) begin : after_strip
+          reg after_q;
+          always @(posedge clk)
+            if (adv) after_q <= x_read + DX == X_AFTER;
+          assign above_q = after_q ? edge135_in[0 +: LANES_W] : above_read_q;
+          assign above_min_q = after_q ? edge135_in[LANES_W +: PATH_W] : above_min_read_q;
+        end else begin : within_strip
+          assign above_q = above_read_q;
+          assign above_min_q = above_min_read_q;
+        end
+        if (DX == 1 && FROM_LEFT) begin : strip_edge
+          reg [LANES_W-1:0] first_q;
+          reg [PATH_W-1:0]  first_min_q;
+          always @(posedge clk) begin
+            if (adv && active4 && x4 == X_FIRST) first_q <= path_out;
+            if (adv && pixel_done_m && x_m == X_FIRST) first_min_q <= min_out;
+          end
+          assign edge135_out = {first_min_q, first_q};
+        end
         always @(posedge clk)
           if (adv) begin
             cur <= above_q;
@@ -1992,6 +2093,9 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       assign path_135 = vertical[1].path.path_out;
     end else begin : no_path135
       assign path_135 = 0;
+    end
+    if ((PATHS & 8) == 0 || !FROM_LEFT) begin : no_edge135
+      assign edge135_out = 0;
     end
   endgenerate
 
