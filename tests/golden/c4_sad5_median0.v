@@ -1614,7 +1614,7 @@ endmodule
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_sad5_d128u32_fc707c_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (fps_sad5_d128u32_fc707c_strip_aggregation): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (tests/modules/fps_sad5_d128u32_fc707c_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fps_sad5_d128u32_fc707c_aggregator #(

@@ -1,4 +1,4 @@
-// fpstereo_strip_aggregation: P aggregators over strips of a row, each K steps behind the one to
+// fpstereo_strip_aggregation (fpstereo_strip_aggregation.v): P aggregators over strips of a row, each K steps behind the one to
 // its left, with the strips' edges (docs/ppc-hardware.md). Driven with a random cost volume of
 // uf = dmax costs per pixel, served from each strip's read address one step later as the cost RAM
 // would, and checked against SGM over the whole frame (docs/semantics.md section 3): every pixel's
