@@ -311,8 +311,8 @@ module fpstereo_aggregator #(
   // pixel K + 1 clocks before; the last pixel's 135-degree predecessor comes from edge135_in,
   // captured by the strip to the right at its first pixel of the row above.
   localparam EDGE_W = (UF + 1) * PATH_W;
-  wire first2 = FROM_LEFT && x2 == X_FIRST;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire first2 = FROM_LEFT && x2 == X_FIRST;
   wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
   wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */

@@ -95,7 +95,12 @@ module fpstereo_lr2_match #(
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [OUT_ROW_W-1:0]  slot;
-  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only, the edges strips
+  // One strip: the edge inputs, never read, take the aggregator's own (zero) edge outputs.
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [2*(UF+1)*PATH_W-1:0] edges;
+  wire [(UF+1)*PATH_W-1:0]   edges135;
+  /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
   fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -105,8 +110,7 @@ module fpstereo_lr2_match #(
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
     .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
-    .sums_slot(slot), .edge_in({2*(UF+1)*PATH_W{1'b0}}), .edge135_in({(UF+1)*PATH_W{1'b0}}), .edge_out(),
-    .edge135_out());
+    .sums_slot(slot), .edge_in(edges), .edge135_in(edges135), .edge_out(edges), .edge135_out(edges135));
   /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
   wire [X_W-1:0]    x_w;

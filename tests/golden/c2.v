@@ -346,19 +346,17 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [191:0] chain_costs;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire chain_penalties;
-  wire [6143:0] chain_ring;
   /* verilator lint_on UNUSEDSIGNAL */
+  wire [6143:0] chain_ring;
   fps_census7_d128u32_6c9a83_chain_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(3), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
     .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
     .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .extra(1'b0),
-    .costs(chain_costs), .extra_out(chain_penalties), .ring_in({6144{1'b0}}), .ring_out(chain_ring));
-  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+    .costs(chain_costs), .extra_out(chain_penalties), .ring_in(chain_ring), .ring_out(chain_ring));
   wire [527:0] agg_edge;
   wire [263:0] agg_edge135;
-  /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6c9a83_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(4), .OUT_ROW_W(2),
@@ -368,8 +366,8 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
     .cost_schedule(cost_schedule), .cost_q(chain_costs), .sums(agg_sums), .sums_active(agg_active),
-    .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot),
-    .edge_in({528{1'b0}}), .edge135_in({264{1'b0}}), .edge_out(agg_edge), .edge135_out(agg_edge135));
+    .sums_x(agg_x), .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot), .edge_in(agg_edge),
+    .edge135_in(agg_edge135), .edge_out(agg_edge), .edge135_out(agg_edge135));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -1836,8 +1834,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   // pixel K + 1 clocks before; the last pixel's 135-degree predecessor comes from edge135_in,
   // captured by the strip to the right at its first pixel of the row above.
   localparam EDGE_W = (UF + 1) * PATH_W;
-  wire first2 = FROM_LEFT && x2 == X_FIRST;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire first2 = FROM_LEFT && x2 == X_FIRST;
   wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
   wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */

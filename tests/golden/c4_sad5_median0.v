@@ -365,9 +365,9 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [1:0] agg_chain;
   wire [13:0] cost_schedule;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [857:0] agg_edge;
   wire [428:0] agg_edge135;
-  /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_fc707c_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
     .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
@@ -376,8 +376,8 @@ module fps_sad5_d128u32_fc707c_sgm_core (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(cost_raddr),
     .cost_schedule(cost_schedule), .cost_q(cost_q), .sums(agg_sums), .sums_active(agg_active), .sums_x(agg_x),
-    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot), .edge_in({858{1'b0}}),
-    .edge135_in({429{1'b0}}), .edge_out(agg_edge), .edge135_out(agg_edge135));
+    .sums_group(agg_group), .sums_chain(agg_chain), .sums_slot(agg_slot), .edge_in(agg_edge),
+    .edge135_in(agg_edge135), .edge_out(agg_edge), .edge135_out(agg_edge135));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -1573,7 +1573,12 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   wire [K_W-1:0]      chain;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [OUT_ROW_W-1:0]  slot;
-  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only, the edges strips
+  // One strip: the edge inputs, never read, take the aggregator's own (zero) edge outputs.
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [2*(UF+1)*PATH_W-1:0] edges;
+  wire [(UF+1)*PATH_W-1:0]   edges135;
+  /* verilator lint_on UNUSEDSIGNAL */
+  /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
   fps_sad5_d128u32_fc707c_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -1583,8 +1588,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
     .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
-    .sums_slot(slot), .edge_in({2*(UF+1)*PATH_W{1'b0}}), .edge135_in({(UF+1)*PATH_W{1'b0}}), .edge_out(),
-    .edge135_out());
+    .sums_slot(slot), .edge_in(edges), .edge135_in(edges135), .edge_out(edges), .edge135_out(edges135));
   /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
   wire [X_W-1:0]    x_w;
@@ -1917,8 +1921,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   // pixel K + 1 clocks before; the last pixel's 135-degree predecessor comes from edge135_in,
   // captured by the strip to the right at its first pixel of the row above.
   localparam EDGE_W = (UF + 1) * PATH_W;
-  wire first2 = FROM_LEFT && x2 == X_FIRST;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  wire first2 = FROM_LEFT && x2 == X_FIRST;
   wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
   wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */

@@ -38,7 +38,9 @@ class AggregationStage : public Stage {
       side = side + Connections{{"CODES", "1"}, {"COST_LEAD", num(d.cost_lead)}};
       cost_words = chain_cost(d, core);
     }
-    // One strip: no strips beside it to exchange edges with.
+    // One strip: no strips beside it to exchange edges with. The edge inputs, which one strip
+    // never reads, take its own outputs (constant zeros there) rather than a replication that
+    // can pass Verilator's 8K-bit limit.
     const int64_t edge_bits = int64_t(d.cfg.uf + 1) * d.widths.path_cost;
     core.wire("agg_edge", 2 * edge_bits);
     core.wire("agg_edge135", edge_bits);
@@ -50,8 +52,8 @@ class AggregationStage : public Stage {
                    {"sums_group", "agg_group"},
                    {"sums_chain", "agg_chain"},
                    {"sums_slot", "agg_slot"},
-                   {"edge_in", fmt::format("{{{}{{1'b0}}}}", 2 * edge_bits)},
-                   {"edge135_in", fmt::format("{{{}{{1'b0}}}}", edge_bits)},
+                   {"edge_in", "agg_edge"},
+                   {"edge135_in", "agg_edge135"},
                    {"edge_out", "agg_edge"},
                    {"edge135_out", "agg_edge135"}});
   }
@@ -82,7 +84,9 @@ class AggregationStage : public Stage {
     if (penalties) parameters.push_back({"EXTRA_W", num(d.penalty_bits)});
     core.wire("chain_costs", c.uf * w.cost);
     core.wire("chain_penalties", std::max(1, d.penalty_bits));
-    // One strip: no ring comes from a strip to the left, none goes to one to the right.
+    // One strip: no ring comes from a strip to the left, none goes to one to the right. ring_in,
+    // which one strip never reads, takes the stage's own ring_out rather than a replication of
+    // zeros as wide as a ring (10,240 bits for A3, past Verilator's 8K-bit limit).
     const int64_t ring_bits = int64_t(c.dmax) * d.code_entry_bits;
     core.wire("chain_ring", ring_bits);
     core.instance("fpstereo_chain_cost", "chain_cost", parameters,
@@ -93,7 +97,7 @@ class AggregationStage : public Stage {
                    {"extra", penalties ? "code_penalties" : "1'b0"},
                    {"costs", "chain_costs"},
                    {"extra_out", "chain_penalties"},
-                   {"ring_in", fmt::format("{{{}{{1'b0}}}}", ring_bits)},
+                   {"ring_in", "chain_ring"},
                    {"ring_out", "chain_ring"}});
     return penalties ? "{chain_penalties, chain_costs}" : "chain_costs";
   }
