@@ -248,8 +248,18 @@ module fpstereo_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
-  wire             first_group2 = g2 == 0;
-  wire             last_group2 = g2 == G - 1;
+  // Whether S2's step is its pixel's first or last group: registered from S1's tag, so that the
+  // lanes' neighbour selection starts from a register (logic depth, docs/timing.md).
+  wire [G_W-1:0]   g1 = `FPS_TAG_GROUP(tag1);
+  reg              first_group2, last_group2;
+  always @(posedge clk)
+    if (restart) begin
+      first_group2 <= 1'b0;
+      last_group2 <= 1'b0;
+    end else if (adv) begin
+      first_group2 <= g1 == 0;
+      last_group2 <= g1 == G - 1;
+    end
   /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
   wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;

@@ -12,6 +12,8 @@ module fpstereo_control #(
   // ranges and reset values of the settings
   parameter MIN_WIDTH = 16,
   parameter MAX_WIDTH = 64,
+  // the width is a multiple of this (the pixels per beat: 1, 2 or 4)
+  parameter WIDTH_STEP = 1,
   parameter MIN_HEIGHT = 4,
   parameter MAX_HEIGHT = 16,
   parameter P1_INIT = 7,
@@ -67,8 +69,10 @@ module fpstereo_control #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
-      fpstereo_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W) ||
+        (WIDTH_STEP != 1 && WIDTH_STEP != 2 && WIDTH_STEP != 4) || MIN_WIDTH % WIDTH_STEP != 0 ||
+        MAX_WIDTH % WIDTH_STEP != 0) begin : invalid_width
+      fpstereo_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W_or_off_WIDTH_STEP failed ();
     end
     if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
       fpstereo_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
@@ -86,7 +90,8 @@ module fpstereo_control #(
                    A_FRAMES_DROPPED = 8'h34, A_FRAMES_TRUNCATED = 8'h38, A_PROTOCOL_ERRORS = 8'h3C,
                    A_INFO = 8'h40;
   localparam [31:0] MIN_WIDTH_V = MIN_WIDTH, MAX_WIDTH_V = MAX_WIDTH, MIN_HEIGHT_V = MIN_HEIGHT,
-                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX;
+                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX,
+                    WIDTH_STEP_V = WIDTH_STEP;
 
   reg             enable_q;
   reg [X_W-1:0]   width_q;
@@ -121,7 +126,7 @@ module fpstereo_control #(
       A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
       A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
       A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
-      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V && (w & (WIDTH_STEP_V - 1)) == 0;
       A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase

@@ -12,7 +12,9 @@
 //   from the rows' first words so that it alternates across back-to-back frames too).
 // Once wrapped (back-to-back frames), the next frame's row 0 brings the result of this frame's
 // last row, in place of the dummy row.
-// Latency: the result for (x, y - 1) leaves 3 adv-steps after the event of (x, y).
+// Latency: the result for (x, y - 1) leaves 4 adv-steps after the event of (x, y): the first
+// registers the event with the compares on its position, so that no compare lies on a path into
+// a RAM's write enable (logic depth, docs/timing.md).
 module fpstereo_gap_fill #(
   // the largest image width (the RAMs hold two rows of it)
   parameter W = 64,
@@ -45,7 +47,30 @@ module fpstereo_gap_fill #(
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  wire [X_W-1:0] last_x = frame_width - 1'b1;
+  // The row's last column, registered (the frame's size holds while it runs).
+  reg  [X_W-1:0] last_x;
+  always @(posedge clk) last_x <= frame_width - 1'b1;
+
+  // ---- Stage 0: the event and what its position is.
+  reg              event0, writing0, reading0, first0, last0;
+  reg  [X_W-1:0]   x0;
+  reg  [Y_W-1:0]   y_above0;  // the row read: in_y - 1, or the frame's last row above row 0
+  reg  [WORD_W-1:0] word0;
+  always @(posedge clk)
+    if (restart) begin
+      event0 <= 1'b0;
+      writing0 <= 1'b0;
+      reading0 <= 1'b0;
+    end else if (adv) begin
+      event0 <= in_event;
+      writing0 <= in_event && in_y < frame_height;
+      reading0 <= in_event && (in_y != 0 || wrapped);
+      first0 <= in_x == 0;
+      last0 <= in_x == last_x;
+      x0 <= in_x;
+      y_above0 <= in_y == 0 ? frame_height - 1'b1 : in_y - 1'b1;
+      word0 <= in_word;
+    end
 
   function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
     // verilator lint_off WIDTH
@@ -55,18 +80,18 @@ module fpstereo_gap_fill #(
 
   // The row's half of the RAMs.
   reg  parity_q;
-  wire parity = in_x == 0 ? !parity_q : parity_q;
+  wire parity = first0 ? !parity_q : parity_q;
   always @(posedge clk)
     if (restart) parity_q <= 1'b1;
-    else if (adv && in_event) parity_q <= parity;
+    else if (adv && event0) parity_q <= parity;
 
   // ---- Writing row in_y.
-  wire writing = in_event && in_y < frame_height;
-  wire word_invalid = in_word[WORD_W-1];
+  wire writing = writing0;
+  wire word_invalid = word0[WORD_W-1];
   reg  run_open;  // the previous word of the row was invalid
   reg  [X_W-1:0] run_start;
-  wire continues = run_open && in_x != 0;
-  wire [X_W-1:0] start = continues ? run_start : in_x;
+  wire continues = run_open && !first0;
+  wire [X_W-1:0] start = continues ? run_start : x0;
   always @(posedge clk)
     if (restart) run_open <= 1'b0;
     else if (adv && writing) begin
@@ -74,16 +99,16 @@ module fpstereo_gap_fill #(
       run_start <= start;
     end
   // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
-  wire side_we = adv && writing && (word_invalid ? in_x == last_x : continues);
+  wire side_we = adv && writing && (word_invalid ? last0 : continues);
   wire [ADDR_W-1:0] side_waddr = address(parity, word_invalid ? start : run_start);
 
   // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
-  wire reading = in_event && (in_y != 0 || wrapped);
+  wire reading = reading0;
   wire [WORD_W+X_W-1:0] stored;
   fpstereo_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
-    .clk(clk), .we(adv && writing), .waddr(address(parity, in_x)), .wdata({in_word, start}),
-    .re(adv), .raddr(address(!parity, in_x)), .rdata(stored));
-  reg           event1;
+    .clk(clk), .we(adv && writing), .waddr(address(parity, x0)), .wdata({word0, start}),
+    .re(adv), .raddr(address(!parity, x0)), .rdata(stored));
+  reg           event1, first1;  // first1: x1 is the row's first column
   reg [X_W-1:0] x1;
   reg [Y_W-1:0] y1;
   reg           parity1;
@@ -91,19 +116,20 @@ module fpstereo_gap_fill #(
     if (restart) event1 <= 1'b0;
     else if (adv) begin
       event1 <= reading;
-      x1 <= in_x;
-      y1 <= in_y == 0 ? frame_height - 1'b1 : in_y - 1'b1;
+      first1 <= first0;
+      x1 <= x0;
+      y1 <= y_above0;
       parity1 <= !parity;
     end
   wire [WORD_W-1:0] word1 = stored[WORD_W+X_W-1 -: WORD_W];
   wire [X_W-1:0]    start1 = stored[X_W-1:0];
   wire [WORD_W-1:0] right2;
   fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
-    .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : in_word),
+    .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : word0),
     .re(adv), .raddr(address(parity1, start1)), .rdata(right2));
 
   reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
-  wire [WORD_W-1:0] left_before = x1 == 0 ? INVALID : left;
+  wire [WORD_W-1:0] left_before = first1 ? INVALID : left;
   reg               event2;
   reg  [X_W-1:0]    x2;
   reg  [Y_W-1:0]    y2;

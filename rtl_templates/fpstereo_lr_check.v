@@ -105,8 +105,11 @@ module fpstereo_lr_check #(
   reg [IN_W:0]     word_q;
   reg [OUT_W:0]    checked_word_q;
   reg              outside_q;
-  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
-  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
+  // |D - Dm| > threshold as Dm > D + threshold or Dm < D - threshold, with D's two bounds
+  // registered in the second step: the third compares Dm with registers only (logic depth).
+  wire [DISP_W-1:0] db_c = word_c[DISP_W-1:0];
+  reg  signed [DISP_W+1:0] db_high_q, db_low_q;
+  wire signed [DISP_W+1:0] dm_signed = $signed({2'b00, dm_q});
   always @(posedge clk)
     if (restart) begin
       done_q <= 1'b0;
@@ -121,11 +124,13 @@ module fpstereo_lr_check #(
       word_q <= word_c;
       outside_q <= outside_c;
       dm_q <= dm;
+      db_high_q <= $signed({2'b00, db_c}) + $signed({2'b00, lr_threshold});
+      db_low_q <= $signed({2'b00, db_c}) - $signed({2'b00, lr_threshold});
       checked_done <= done_q;
       checked_event <= event_q;
       checked_x <= x_q;
       checked_y <= y_q;
-      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
+      checked_word_q <= (outside_q || dm_signed > db_high_q || dm_signed < db_low_q) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
     end
   // verilator lint_on WIDTH
   assign checked_word = checked_word_q;

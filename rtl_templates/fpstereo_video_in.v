@@ -5,6 +5,8 @@
 // tlast on each row's last.
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
+// With several pixels per beat (ppc > 1), a "pixel" here is a beat of DATA_W bits and
+// frame_width counts beats.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -18,6 +20,8 @@
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
 module fpstereo_video_in #(
+  // bits of a beat's pixels (8 per pixel)
+  parameter DATA_W = 8,
   parameter X_W = 7,
   parameter Y_W = 6
 ) (
@@ -26,10 +30,10 @@ module fpstereo_video_in #(
   // new frames are taken while high, skipped (and counted as dropped) while low
   input  wire           enable,
   // the streams after their register slices: {tuser, tlast, tdata}
-  input  wire [9:0]     left,
+  input  wire [DATA_W+1:0] left,
   input  wire           left_valid,
   output wire           left_ready,
-  input  wire [9:0]     right,
+  input  wire [DATA_W+1:0] right,
   input  wire           right_valid,
   output wire           right_ready,
   // the core: a frame begins with core_start while the core accepts one (idle, or able to take
@@ -39,8 +43,8 @@ module fpstereo_video_in #(
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
   output wire           in_valid,
-  output wire [7:0]     in_left,
-  output wire [7:0]     in_right,
+  output wire [DATA_W-1:0] in_left,
+  output wire [DATA_W-1:0] in_right,
   input  wire           in_take,
   // events
   output wire           frame_dropped,
@@ -49,8 +53,8 @@ module fpstereo_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 2 || Y_W < 2) begin : invalid
-      fpstereo_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2 || DATA_W < 8) begin : invalid
+      fpstereo_invalid_parameters_video_in_X_W_or_Y_W_below_2_or_DATA_W_below_8 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -59,8 +63,8 @@ module fpstereo_video_in #(
   reg [X_W-1:0] x;
   reg [Y_W-1:0] y;
 
-  wire left_user = left[9], left_last = left[8];
-  wire right_user = right[9], right_last = right[8];
+  wire left_user = left[DATA_W+1], left_last = left[DATA_W];
+  wire right_user = right[DATA_W+1], right_last = right[DATA_W];
   wire both = left_valid && right_valid;
   // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
   // on the path from the streams to the core.
@@ -91,8 +95,8 @@ module fpstereo_video_in #(
   wire fault = state == RUN && !done && both && !flags_match;
   wire passing = state == RUN && !done && both && flags_match;
   assign in_valid = passing || (state == PAD && !done);
-  assign in_left = passing ? left[7:0] : 8'd0;
-  assign in_right = passing ? right[7:0] : 8'd0;
+  assign in_left = passing ? left[DATA_W-1:0] : {DATA_W{1'b0}};
+  assign in_right = passing ? right[DATA_W-1:0] : {DATA_W{1'b0}};
   wire pass_take = passing && in_take;
   assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
   assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;

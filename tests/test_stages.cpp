@@ -38,6 +38,13 @@ std::vector<StereoConfig> covering_configs() {
       c.speckle_size = cost == CostFunction::Census || cost == CostFunction::Rank ? 6 : 0;
       out.push_back(c);
     }
+  // Beats of two pixels (uf = dmax), which the top's beat split and pack serve.
+  StereoConfig beats;
+  beats.width = 64;
+  beats.height = 16;
+  beats.dmax = beats.uf = 32;
+  beats.ppc = 2;
+  out.push_back(beats);
   return out;
 }
 

@@ -123,7 +123,8 @@ void check_files_of(const Generated& g) {
   CHECK(contains(g.package_ip, "ipx::infer_bus_interfaces xilinx.com:interface:axis_rtl:1.0 $core"));
   CHECK(contains(g.package_ip, "ACTIVE_LOW"));
   CHECK(contains(g.package_ip, fmt::format("M_AXIS_DISP_TDATA_WIDTH \"m_axis_disp tdata width\" {} long",
-                                           g.design.output_bits)));
+                                           g.design.output_bits * g.design.cfg.ppc)));
+  CHECK(contains(g.package_ip, fmt::format("SAMPLES_PER_CLOCK \"samples per clock\" {} long", g.design.cfg.ppc)));
   CHECK(contains(g.package_ip, control ? "set control {\n  s_axi_ctrl {s_axi_ctrl_awaddr" : "set control {}\n"));
   CHECK(contains(g.package_ip, "ipx::infer_bus_interfaces xilinx.com:interface:aximm_rtl:1.0 $core"));
   CHECK(contains(g.package_ip, "set_property slave_memory_map_ref $name $busif"));
@@ -133,8 +134,9 @@ void check_files_of(const Generated& g) {
   CHECK(contains(g.block_design, "set default_part xczu9eg-ffvb1156-2-e\n"));
   for (const char* busif : {"stereo/s_axis_left]", "stereo/s_axis_right]", "stereo/m_axis_disp]"})
     CHECK(contains(g.block_design, busif));
-  CHECK(contains(g.block_design, "set pixel_bits 8\n"));
-  CHECK(contains(g.block_design, fmt::format("set disparity_bits {}\n", g.design.output_bits)));
+  CHECK(contains(g.block_design, fmt::format("set ppc {}\n", g.design.cfg.ppc)));
+  CHECK(contains(g.block_design, "set pixel_bits [expr {8 * $ppc}]\n"));
+  CHECK(contains(g.block_design, fmt::format("set disparity_bits [expr {{{} * $ppc}}]\n", g.design.output_bits)));
   CHECK(contains(g.block_design, control ? "set control s_axi_ctrl\n" : "set control {}\n"));
   CHECK(contains(g.block_design, "Slave /stereo/$control"));
   // The VDMA gives the core the tuser and per-row tlast it checks (a plain AXI DMA would not).
@@ -153,6 +155,13 @@ TEST_CASE("Vivado files reference the generated top, its ports, its files, the p
   check_files_of(wide);
   const Generated fixed = generate(preset("C2"), 300, false);
   check_files_of(fixed);
+  StereoConfig four = preset("C2");  // four pixels per beat: 32-bit input and output beats
+  four.uf = four.dmax;
+  four.ppc = 4;
+  four.width = 1240;
+  const Generated beats = generate(four);
+  CHECK(beats.design.output_bits == 8);
+  check_files_of(beats);
   CHECK_FALSE(contains(fixed.xdc, "s_axi_ctrl"));
 }
 

@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
+#include <type_traits>
 #include <chrono>
 #include <functional>
 #include <iostream>
@@ -29,11 +31,13 @@ class AxisSource {
  public:
   explicit AxisSource(const std::vector<Beat>& beats) : beats_(beats) {}
 
-  void drive(CData& tdata, CData& tvalid, CData& tuser, CData& tlast) const {
+  // tdata is CData, SData or IData: 1, 2 or 4 pixels.
+  template <class Data>
+  void drive(Data& tdata, CData& tvalid, CData& tuser, CData& tlast) const {
     tvalid = valid_;
     if (next_ >= beats_.size()) return;
     const Beat& b = beats_[next_];
-    tdata = valid_ ? b.data : uint8_t(~b.data);
+    tdata = Data(valid_ ? b.data : ~b.data);
     tuser = b.user;
     tlast = b.last;
   }
@@ -58,11 +62,36 @@ class AxisSource {
   bool valid_ = false;
 };
 
+// tdata in 32-bit words, the lowest first: up to 4 pixels of 24 bits.
 struct OutputBeat {
-  uint32_t data;
+  std::array<uint32_t, 4> data{};
   bool user, last;
   bool operator==(const OutputBeat& o) const { return data == o.data && user == o.user && last == o.last; }
+  // bits lsb .. lsb + n - 1 of tdata (n <= 32)
+  uint32_t bits(int lsb, int n) const {
+    const uint64_t pair = data[size_t(lsb / 32)] | (lsb / 32 + 1 < 4 ? uint64_t(data[size_t(lsb / 32 + 1)]) << 32 : 0);
+    return uint32_t((pair >> (lsb % 32)) & ((uint64_t(1) << n) - 1));
+  }
+  std::string hex() const {
+    std::string s;
+    for (size_t i = data.size(); i-- > 0;) s += fmt::format("{:08x}", data[i]);
+    return "0x" + s;
+  }
 };
+
+// tdata as Verilator holds it: CData, SData, IData, QData or VlWide.
+template <class Data>
+std::array<uint32_t, 4> tdata_words(const Data& tdata) {
+  std::array<uint32_t, 4> words{};
+  if constexpr (std::is_integral_v<Data>) {
+    words[0] = uint32_t(uint64_t(tdata));
+    words[1] = uint32_t(uint64_t(tdata) >> 32);
+  } else {
+    constexpr size_t held = sizeof(tdata) / sizeof(tdata[0]);
+    for (size_t i = 0; i < words.size() && i < held; ++i) words[i] = tdata[i];
+  }
+  return words;
+}
 
 // An output port of the Verilated design: reads its beat, drives its tready.
 struct OutputPort {
@@ -75,7 +104,7 @@ template <class Data>
 OutputPort port_of(Data& tdata, CData& tvalid, CData& tuser, CData& tlast, CData& tready) {
   return {[&] { return bool(tvalid); },
           [&] {
-            return OutputBeat{uint32_t(tdata), bool(tuser), bool(tlast)};
+            return OutputBeat{tdata_words(tdata), bool(tuser), bool(tlast)};
           },
           [&](bool ready) { tready = ready; }};
 }
@@ -92,10 +121,11 @@ OutputPort output_port(Vdut& dut, const std::string& port) {
   throw InputError("the design has no output port " + port + ", which its output list names");
 }
 
-// Watches an output stream at every rising edge: cuts tdata into the stream's word nets, collects
-// each net's plane into frames of the expected sizes and checks the stream rules (stable while
-// stalled, tuser on each frame's first pixel, tlast at each row end, the bits of tdata outside
-// the words zero, nothing beyond the expected frames).
+// Watches an output stream at every rising edge: cuts tdata into its pixels and each pixel into
+// the stream's word nets, collects each net's plane into frames of the expected sizes and checks
+// the stream rules (stable while stalled, tuser on the beat of each frame's first pixel, tlast on
+// the beat of each row's last, the bits of tdata outside the words zero, nothing beyond the
+// expected frames).
 class OutputMonitor {
  public:
   OutputMonitor(const rtl::OutputStream& stream, const std::vector<std::pair<int, int>>& sizes,
@@ -108,6 +138,7 @@ class OutputMonitor {
         end_cycle_(end_cycle),
         protocol_(protocol) {
     for (const auto& word : stream_.words) outside_words_ &= ~(mask(word.bits) << word.lsb);
+    outside_words_ &= mask(stream_.pixel_bits);
     start_frame();
   }
 
@@ -151,35 +182,39 @@ class OutputMonitor {
     protocol_.add(
         fmt::format("cycle {}: {}: changed while tvalid && !tready: tdata {} -> {}, tuser {} -> {}, "
                     "tlast {} -> {}",
-                    cycle, stream_.port, stalled_->data, beat.data, int(stalled_->user), int(beat.user),
+                    cycle, stream_.port, stalled_->hex(), beat.hex(), int(stalled_->user), int(beat.user),
                     int(stalled_->last), int(beat.last)));
   }
 
   void take(uint64_t cycle, const OutputBeat& beat) {
     if (done()) {
       protocol_.add(fmt::format("cycle {}: {}: output beyond the expected {} frames (tdata {})", cycle,
-                                stream_.port, sizes_.size(), beat.data));
+                                stream_.port, sizes_.size(), beat.hex()));
       return;
     }
     const int width = sizes_[frames_done_].first;
     const int x = int(in_frame_ % size_t(width));
     const int y = int(in_frame_ / size_t(width));
     const bool first = x == 0 && y == 0;
-    const bool row_end = x == width - 1;
+    const bool row_end = x + stream_.pixels == width;
     if (beat.user != first)
       protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tuser {}, expected {}", cycle, stream_.port,
                                 frames_done_, x, y, int(beat.user), int(first)));
     if (beat.last != row_end)
       protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tlast {}, expected {}", cycle, stream_.port,
                                 frames_done_, x, y, int(beat.last), int(row_end)));
-    if ((beat.data & outside_words_) != 0)
-      protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tdata {:#x} has bits set outside its words",
-                                cycle, stream_.port, frames_done_, x, y, beat.data));
-    for (const auto& word : stream_.words)
-      frame_[word.plane].at(x, y) = uint16_t((beat.data >> word.lsb) & mask(word.bits));
+    for (int i = 0; i < stream_.pixels; ++i) {
+      const uint32_t pixel = beat.bits(i * stream_.pixel_bits, stream_.pixel_bits);
+      if ((pixel & outside_words_) != 0)
+        protocol_.add(fmt::format("cycle {}: {}: frame {} ({}, {}): tdata {} has bits set outside its words", cycle,
+                                  stream_.port, frames_done_, x + i, y, beat.hex()));
+      for (const auto& word : stream_.words)
+        frame_[word.plane].at(x + i, y) = uint16_t((pixel >> word.lsb) & mask(word.bits));
+    }
     if (in_frame_ == 0) start_cycle_.push_back(cycle);
-    ++received_;
-    if (++in_frame_ == size_t(width) * size_t(sizes_[frames_done_].second)) {
+    received_ += size_t(stream_.pixels);
+    in_frame_ += size_t(stream_.pixels);
+    if (in_frame_ == size_t(width) * size_t(sizes_[frames_done_].second)) {
       for (const auto& word : stream_.words) frames_[word.plane].push_back(frame_[word.plane]);
       end_cycle_.push_back(cycle);
       ++frames_done_;
@@ -322,12 +357,15 @@ class LiteMaster {
 
 }  // namespace
 
-std::vector<Beat> frame_beats(const GrayImage& image) {
+std::vector<Beat> frame_beats(const GrayImage& image, int ppc) {
   std::vector<Beat> beats;
-  beats.reserve(image.pixels.size());
+  beats.reserve(image.pixels.size() / size_t(ppc));
   for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      beats.push_back({image.at(x, y), x == 0 && y == 0, x == image.width - 1});
+    for (int x = 0; x < image.width; x += ppc) {
+      Beat beat{0, x == 0 && y == 0, x + ppc == image.width};
+      for (int i = 0; i < ppc; ++i) beat.data |= uint32_t(image.at(x + i, y)) << (8 * i);
+      beats.push_back(beat);
+    }
   return beats;
 }
 

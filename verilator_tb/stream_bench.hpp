@@ -27,14 +27,16 @@ struct StreamSettings {
   bool progress = false;    // frames done and simulated cycles per second on stderr, one updated line
 };
 
-// One input beat: tdata, tuser (start of frame), tlast (end of row).
+// One input beat: tdata (ppc pixels, pixel 0 in the low byte), tuser (start of frame), tlast
+// (end of row).
 struct Beat {
-  uint8_t data = 0;
+  uint32_t data = 0;
   bool user = false, last = false;
 };
 
-// The beats of frames in the Xilinx video convention, back to back, one stream of a pair.
-std::vector<Beat> frame_beats(const GrayImage& image);
+// The beats of a frame in the Xilinx video convention (UG934), ppc pixels each, one stream of a
+// pair.
+std::vector<Beat> frame_beats(const GrayImage& image, int ppc);
 
 struct RegisterAccess {
   uint32_t offset = 0;

@@ -255,7 +255,7 @@ struct Run {
 };
 
 void add_frame(Run& run, const StereoPair& pair, const StereoConfig& cfg) {
-  const auto left = frame_beats(pair.left), right = frame_beats(pair.right);
+  const auto left = frame_beats(pair.left, cfg.ppc), right = frame_beats(pair.right, cfg.ppc);
   run.plan.left.insert(run.plan.left.end(), left.begin(), left.end());
   run.plan.right.insert(run.plan.right.end(), right.begin(), right.end());
   run.plan.output_sizes.push_back({cfg.width, cfg.height});
@@ -291,9 +291,11 @@ Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs
   for (int i = 0; i < kThroughputFrames; ++i) add_frame(run, pairs[i % pairs.size()], cfg);
   uint32_t refused = 0;
   if (has_control()) {
-    const std::vector<RegisterAccess> bad = {
+    std::vector<RegisterAccess> bad = {
         {reg("WIDTH"), uint32_t(cfg.width) + 1}, {reg("HEIGHT"), 0}, {reg("P1"), uint32_t(cfg.p2) + 1},
         {reg("P2"), uint32_t(cfg.p2) + 1},       {reg("STATUS"), 1}, {reg("FRAMES_DONE"), 0}};
+    // With several pixels per beat, a width in range that is not a whole number of beats.
+    if (cfg.ppc > 1) bad.push_back({reg("WIDTH"), uint32_t(cfg.width - cfg.ppc - 1)});
     run.plan.actions.push_back({0, bad});
     refused = uint32_t(bad.size());
     expect_register(run, "VERSION", reg("VERSION_VALUE"));
@@ -303,6 +305,7 @@ Run throughput_run(const StereoConfig& cfg, const std::vector<StereoPair>& pairs
     expect_register(run, "DMAX", uint32_t(cfg.dmax));
     expect_register(run, "UF", uint32_t(cfg.uf));
     expect_register(run, "CYCLES_PER_FRAME", reg("CYCLES_PER_FRAME_VALUE"));
+    expect_register(run, "PIXELS_PER_BEAT", uint32_t(cfg.ppc));
     expect_register(run, "WIDTH", uint32_t(cfg.width));
     expect_register(run, "P2", uint32_t(cfg.p2));
   }
@@ -337,7 +340,8 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
       "fault run: {}{}, idle {}, backpressure {}", fault,
       in_beats ? " on " + opt.fault_stream + (opt.fault_stream == "both" ? " streams" : " stream") : "",
       opt.idle, opt.backpressure)};
-  const int w = cfg.width, h = cfg.height;
+  // Faults are placed in beats: a row is w beats of ppc pixels.
+  const int w = cfg.width / cfg.ppc, h = cfg.height;
   const size_t frame = size_t(w) * size_t(h);
   const auto& pa = pairs[0 % pairs.size()];
   const auto& pf = pairs[1 % pairs.size()];
@@ -368,7 +372,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     }
     return beats;
   };
-  auto left_f = frame_beats(pf.left), right_f = frame_beats(pf.right);
+  auto left_f = frame_beats(pf.left, cfg.ppc), right_f = frame_beats(pf.right, cfg.ppc);
   if (opt.fault_stream != "right") left_f = inject(left_f);
   if (opt.fault_stream != "left") right_f = inject(right_f);
   const size_t a_beats = run.plan.left.size();
@@ -380,7 +384,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
   uint32_t done = 4, dropped = 0, truncated = 0, errors = 0;
   auto unchecked = [&](int count) {
     for (int i = 0; i < count; ++i) {
-      run.plan.output_sizes.push_back({w, h});
+      run.plan.output_sizes.push_back({cfg.width, h});
       run.expected.push_back(std::nullopt);
     }
   };
@@ -400,7 +404,7 @@ Run fault_run(const std::string& fault, const Options& opt, const StereoConfig& 
     done = 3;
     errors = 1;
   } else if (fault == "long-frame") {
-    run.plan.output_sizes.push_back({w, h});
+    run.plan.output_sizes.push_back({cfg.width, h});
     run.expected.push_back(golden_f);  // F itself is complete; its extra rows are skipped
     errors = 1;
   } else if (fault == "reset") {
@@ -593,15 +597,17 @@ int run_bench(const Options& opt) {
   const StatedTiming stated = read_stated_timing(design_files().top);
   const Widths widths = derive_widths(cfg);
   fmt::print("{}: {} from {}\n", kTool, config_tag(cfg), design_files().config);
-  fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, control {}\n", cfg.width,
-             cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf,
-             paths_to_string(cfg.paths), widths.output_word, has_control() ? "AXI4-Lite" : "none");
-  // Each output stream's tdata as the list lays it out; Verilator holds 24 bits in 32.
+  fmt::print("{}x{}, {} {}x{}, dmax {}, uf {}, paths {}, output word {} bits, {} pixel(s) per beat, control {}\n",
+             cfg.width, cfg.height, to_string(cfg.cost), cfg.window, cfg.window, cfg.dmax, cfg.uf,
+             paths_to_string(cfg.paths), widths.output_word, cfg.ppc, has_control() ? "AXI4-Lite" : "none");
+  // Each output stream's tdata as the list lays it out; Verilator holds 24 bits in 32, 48 in 64
+  // and more in 32-bit words.
   for (const auto& stream : output_streams(cfg)) {
-    const int held = stream.tdata_bits <= 8 ? 8 : stream.tdata_bits <= 16 ? 16 : 32;
+    const int bits = stream.tdata_bits();
+    const int held = bits <= 8 ? 8 : bits <= 16 ? 16 : bits <= 32 ? 32 : bits <= 64 ? 64 : 32 * ((bits + 31) / 32);
     if (held_tdata_bits(stream.port) != held) {
       fmt::print("FAIL: {}_tdata is held in {} bits, the output list asks for {} ({} bits)\n", stream.port,
-                 held_tdata_bits(stream.port), held, stream.tdata_bits);
+                 held_tdata_bits(stream.port), held, bits);
       return kExitFail;
     }
   }

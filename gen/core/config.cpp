@@ -175,6 +175,9 @@ const std::vector<ParamSpec>& param_specs() {
       {"uf", "unroll factor: disparities per clock, a divisor of dmax",
        [](StereoConfig& c, const std::string& v) { c.uf = parse_int("uf", v); },
        [](const StereoConfig& c) { return std::to_string(c.uf); }},
+      {"ppc", "pixels per beat of the hardware's video streams (UG934 samples per clock): 1, 2 or 4; needs uf = dmax and the width a multiple of ppc",
+       [](StereoConfig& c, const std::string& v) { c.ppc = parse_int("ppc", v); },
+       [](const StereoConfig& c) { return std::to_string(c.ppc); }},
       {"paths", "aggregation paths: comma-separated subset of 0,45,90,135,180 (180: right to left, models only), or all (= 0,45,90,135)",
        [](StereoConfig& c, const std::string& v) { c.paths = parse_paths("paths", v); },
        [](const StereoConfig& c) { return paths_to_string(c.paths); }},
@@ -251,6 +254,11 @@ void validate(const StereoConfig& c) {
   if (c.dmax > c.width)
     reject("dmax", std::to_string(c.dmax),
            "must not exceed the image width (" + std::to_string(c.width) + ")");
+  if (c.ppc != 1 && c.ppc != 2 && c.ppc != 4) reject("ppc", std::to_string(c.ppc), "expected 1, 2 or 4");
+  if (c.ppc != 1 && c.uf != c.dmax)
+    reject("ppc", std::to_string(c.ppc), "needs uf = dmax (uf " + std::to_string(c.uf) + ", dmax " + std::to_string(c.dmax) + ")");
+  if (c.width % c.ppc != 0)
+    reject("width", std::to_string(c.width), "must be a multiple of ppc (" + std::to_string(c.ppc) + ")");
   if ((c.paths & ~unsigned(kEveryPath)) != 0 || c.paths == 0)
     reject("paths", paths_to_string(c.paths), "expected a non-empty subset of 0,45,90,135,180");
   // MGM's second predecessor is defined for the four raster-order paths only (section 3).

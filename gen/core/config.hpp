@@ -59,6 +59,9 @@ struct StereoConfig {
   int dmax = 128;      // disparities min_disp .. min_disp + dmax - 1
   int min_disp = 0;    // the smallest disparity; words count from it (docs/semantics.md section 8)
   int uf = 32;         // disparities computed per clock (hardware unroll factor)
+  // Pixels per beat of the hardware's video streams (AXI4-Stream video, UG934 samples per clock):
+  // 1, 2 or 4, with uf = dmax and the width a multiple of ppc.
+  int ppc = 1;
   // Fused matching cost (docs/semantics.md, section 2, the AD-Census idea): the cost plus
   // floor(fused_weight * min(|pixel-wise difference|, fused_trunc) / 8); fused_weight 0 = off.
   int fused_weight = 0;

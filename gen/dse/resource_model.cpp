@@ -310,12 +310,14 @@ double speckle_registers(const rtl::RtlDesign& d) {
   return filter + stage;
 }
 
-// fpstereo_lr_check's two register steps (position, words, the match side's disparity) and
-// fpstereo_gap_fill's three (position, word, the row's last valid word).
+// fpstereo_lr_check's two register steps (position, words, the match side's disparity and the
+// base disparity's two bounds) and fpstereo_gap_fill's four (position, word, the row's last valid
+// word; the first step's four position flags).
 double check_and_gap_registers(const rtl::RtlDesign& d) {
   const double position = 1.0 + d.x_bits + d.y_bits, word = d.widths.output_word;
-  const double check = d.cfg.lr != LrCheck::None ? 2 * (position + 1) + 3 * word + d.widths.disparity : 0.0;
-  const double gap = d.cfg.gap_interpolation ? 3 * position + 2 * word : 0.0;
+  const double check =
+      d.cfg.lr != LrCheck::None ? 2 * (position + 1) + 3 * word + d.widths.disparity + 2 * (d.widths.disparity + 2) : 0.0;
+  const double gap = d.cfg.gap_interpolation ? 4 * position + 3 * word + 4 : 0.0;
   return check + gap;
 }
 

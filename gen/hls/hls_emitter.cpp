@@ -206,6 +206,10 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
     throw std::invalid_argument("--clock-mhz " + std::to_string(options.clock_mhz) + ": expected 10 .. 1000");
 
   const rtl::RtlDesign design = rtl::plan(cfg);  // validates the configuration
+  // The HLS kernels' loops take a pixel an iteration; their streams carry one pixel a beat.
+  if (cfg.ppc != 1)
+    throw ConfigError("ppc = " + std::to_string(cfg.ppc) +
+                      ": the HLS path takes one pixel per beat (ppc 1); the Verilog generator has ppc 2 and 4");
   const std::string top = top_name(cfg), config = config_tag(cfg) + "_config", header = config + ".hpp";
   std::ostringstream period;
   period.precision(6);

@@ -17,7 +17,7 @@ using rtl::OutputWord;
 
 // The AXI4-Stream beat of an output: its tdata width from the list (the kernels' VideoOut<C> is
 // the same type for the disparity words).
-std::string beat_type(const OutputStream& o) { return fmt::format("ap_axiu<{}, 1, 1, 1>", o.tdata_bits); }
+std::string beat_type(const OutputStream& o) { return fmt::format("ap_axiu<{}, 1, 1, 1>", o.tdata_bits()); }
 
 // The element of a word's frame in memory.
 std::string element_type(const OutputWord& word) {
@@ -79,7 +79,7 @@ std::string store_function(const OutputStream& o, const std::string& top, const 
       "{6}"
       "  }}\n"
       "}}\n\n",
-      o.port, top, beat_type(o), frames, config, o.tdata_bits, stores);
+      o.port, top, beat_type(o), frames, config, o.tdata_bits(), stores);
 }
 
 }  // namespace
@@ -97,7 +97,7 @@ std::map<std::string, std::string> output_text(const rtl::Geometry& g, const std
   vars["OUTPUT_COMMENT"] = join_streams(streams, "", [](const OutputStream& o) {
     std::string fields;
     for (const auto& f : o.fields) fields += fmt::format(", {} [{}:{}]", f.name, f.lsb + f.bits - 1, f.lsb);
-    return fmt::format("//   {}: {}, tdata {} bits{}\n", o.port, o.what, o.tdata_bits, fields);
+    return fmt::format("//   {}: {}, tdata {} bits{}\n", o.port, o.what, o.tdata_bits(), fields);
   });
   vars["OUTPUT_ARGUMENTS"] = join_streams(streams, ", ", [](const OutputStream& o) { return o.port; });
   vars["OUTPUT_PRAGMAS"] = join_streams(streams, "", [](const OutputStream& o) {

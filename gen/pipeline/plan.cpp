@@ -61,6 +61,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate),
   // and a row that holds the whole search range (above).
   g.min_width = std::max(8, cfg.dmax + std::abs(cfg.min_disp));
+  g.min_width += (cfg.ppc - g.min_width % cfg.ppc) % cfg.ppc;  // rows are whole beats
   g.min_height = 4;
   g.widths = derive_widths(cfg);
   g.prefix = config_tag(cfg);
@@ -133,7 +134,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
 std::vector<OutputStream> output_streams(const Geometry& g) {
   const StereoConfig& c = g.cfg;
   const Widths& w = g.widths;
-  OutputStream disparity{"m_axis_disp", "out", "the disparity words", g.output_bits,
+  OutputStream disparity{"m_axis_disp", "out", "the disparity words", g.output_bits, c.ppc,
                          {{{"out_word", 0, w.output_word}, "disparity", 16}}, {}};
   if (c.subpixel_bits != 0) disparity.fields.push_back({"fraction", 0, c.subpixel_bits});
   disparity.fields.push_back({"disparity", c.subpixel_bits, w.output_disparity - c.subpixel_bits});
@@ -145,7 +146,7 @@ std::vector<OutputStream> output_streams(const Geometry& g) {
   std::vector<OutputStream> streams = {disparity};
   // The right view: the match side's whole disparities, in raster order of the right image.
   if (c.right_view)
-    streams.push_back({"m_axis_disp_right", "view", "the right view's whole disparities", 8,
+    streams.push_back({"m_axis_disp_right", "view", "the right view's whole disparities", 8, c.ppc,
                        {{{"view_word", 0, w.disparity, Plane::Right}, "right_disparity", 16}},
                        {{"disparity", 0, w.disparity, Plane::Right}}});
   return streams;
@@ -177,7 +178,9 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   d.cycles_per_frame = cfg.height >= d.overlap_height ? int64_t(cfg.height) * R * G : d.lone_frame_cycles;
   // At the ports: the input register slice, the cycle in which the framing stage starts the core
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
-  d.first_output_latency = push_first + 4;
+  // With several pixels per beat, the beat's register (fpstereo_beat_split), and the output beat
+  // leaves with its last pixel, (ppc - 1) slots after its first.
+  d.first_output_latency = push_first + 4 + (cfg.ppc > 1 ? 1 + (cfg.ppc - 1) * G : 0);
   d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
   d.signed_y_bits = d.y_bits + 2;

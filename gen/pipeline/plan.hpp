@@ -98,11 +98,12 @@ struct Geometry {
 
 // An output stream of the design (docs/contributing.md, "Adding an output"): the top's AXI4-Stream
 // master <port>, fed by the core's handshake nets <core>_ready, _push, _first and _last and by its
-// word nets, each at its bit in tdata (the bits between are zero); and the fields that tdata
-// carries, which the register map, the test bench and the docs name. Each net and field belongs to
-// a plane of the models (outputs.hpp), which the test bench compares it with. Each word is also a
-// frame of its own in memory (the HLS kernel's memory-mapped wrapper): <frame>, of frame_bits per
-// pixel.
+// word nets, each at its bit in a pixel's pixel_bits (the bits between are zero); and the fields
+// that a pixel carries, which the register map, the test bench and the docs name. A beat of tdata
+// holds `pixels` pixels (ppc), pixel i at bit i * pixel_bits (UG934). Each net and field belongs
+// to a plane of the models (outputs.hpp), which the test bench compares it with. Each word is also
+// a frame of its own in memory (the HLS kernel's memory-mapped wrapper): <frame>, of frame_bits
+// per pixel.
 struct OutputNet {
   std::string name;
   int lsb = 0, bits = 0;
@@ -114,7 +115,9 @@ struct OutputWord : OutputNet {
 };
 struct OutputStream {
   std::string port, core, what;
-  int tdata_bits = 0;
+  int pixel_bits = 0;
+  int pixels = 1;
+  int tdata_bits() const { return pixel_bits * pixels; }
   std::vector<OutputWord> words;  // the core's nets, in tdata
   std::vector<OutputNet> fields;  // "disparity", "fraction", "invalid", "confidence"
 };

@@ -56,7 +56,9 @@ std::vector<Register> register_map(const RtlDesign& d) {
       {0x1C, "LR_THRESHOLD", lr,
        lr ? fmt::format("left-right threshold, 0 .. 15 (reset: {})", c.lr_threshold)
           : std::string("0: generated without a left-right check")},
-      {0x20, "WIDTH", true, fmt::format("image width, {} .. {} (reset: {})", d.min_width, c.width, c.width)},
+      {0x20, "WIDTH", true,
+       fmt::format("image width, {} .. {}{} (reset: {})", d.min_width, c.width,
+                   c.ppc > 1 ? fmt::format(", a multiple of {}", c.ppc) : "", c.width)},
       {0x24, "HEIGHT", true,
        fmt::format("image height, {} .. {} (reset: {})", d.min_height, c.height, c.height)},
       {0x28, "REJECTED_WRITES", false, "writes refused (SLVERR): out of range, read-only or partial"},
@@ -88,6 +90,7 @@ std::vector<std::pair<std::string, uint32_t>> info_words(const RtlDesign& d) {
       {"MIN_WIDTH", uint32_t(d.min_width)},
       {"MIN_HEIGHT", uint32_t(d.min_height)},
       {"CYCLES_PER_FRAME", uint32_t(d.cycles_per_frame)},
+      {"PIXELS_PER_BEAT", uint32_t(c.ppc)},
   };
 }
 
@@ -112,11 +115,12 @@ std::string emit_register_header(const RtlDesign& d) {
   for (const auto& [name, value] : words)
     os << fmt::format("#define {}_{:<17} {}u\n", upper, name + "_VALUE", value);
   // From the plan's output list, so software unpacks tdata without re-deriving the layout.
-  os << "\n// The output streams: tdata's width, and each field's lowest bit and width in it (the bits\n"
-     << "// outside the fields are zero).\n";
+  os << "\n// The output streams: tdata's width, a pixel's bits in it (pixel i from bit i * PIXEL_BITS),\n"
+     << "// and each field's lowest bit and width in a pixel (the bits outside the fields are zero).\n";
   for (const auto& o : output_streams(d)) {
     const std::string port = upper_case(o.port);
-    os << fmt::format("#define {}_{}_TDATA_BITS {}u\n", upper, port, o.tdata_bits);
+    os << fmt::format("#define {}_{}_TDATA_BITS {}u\n", upper, port, o.tdata_bits())
+       << fmt::format("#define {}_{}_PIXEL_BITS {}u\n", upper, port, o.pixel_bits);
     for (const auto& f : o.fields) {
       const std::string field = upper_case(f.name);
       os << fmt::format("#define {}_{}_{}_LSB {}u\n", upper, port, field, f.lsb)

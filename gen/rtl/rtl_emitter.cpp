@@ -91,15 +91,16 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
       if (port.input) top.input("s_axi_ctrl_" + port.name, port.bits);
       else top.output("s_axi_ctrl_" + port.name, port.bits);
     }
+  const int P = c.ppc;
   for (const std::string side : {"left", "right"}) {
-    top.input("s_axis_" + side + "_tdata", 8);
+    top.input("s_axis_" + side + "_tdata", 8 * P);
     top.input("s_axis_" + side + "_tvalid", 1);
     top.output("s_axis_" + side + "_tready", 1);
     top.input("s_axis_" + side + "_tuser", 1);
     top.input("s_axis_" + side + "_tlast", 1);
   }
   for (const auto& o : outputs) {
-    top.output(o.port + "_tdata", o.tdata_bits);
+    top.output(o.port + "_tdata", o.tdata_bits());
     top.output(o.port + "_tvalid", 1);
     top.input(o.port + "_tready", 1);
     top.output(o.port + "_tuser", 1);
@@ -108,11 +109,11 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
   top.logic("  wire rst = !aresetn;\n\n  // Input register slices: {tuser, tlast, tdata}.\n", {}, {{"rst", 1}});
   const Connections clock = {{"clk", "aclk"}};
   for (const std::string side : {"left", "right"}) {
-    top.wire(side + "_beat", 10);
+    top.wire(side + "_beat", 8 * P + 2);
     top.wire(side + "_valid", 1);
     top.wire(side + "_ready", 1);
     const std::string s = "s_axis_" + side;
-    top.instance("fpstereo_axis_skid", side + "_slice", {{"DATA_W", "10"}},
+    top.instance("fpstereo_axis_skid", side + "_slice", {{"DATA_W", num(8 * P + 2)}},
                  clock + Connections{{"s_data", "{" + s + "_tuser, " + s + "_tlast, " + s + "_tdata}"},
                                      {"s_valid", s + "_tvalid"},
                                      {"s_ready", s + "_tready"},
@@ -144,6 +145,7 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
                   {"PATH_W", num(w.path_cost)},
                   {"MIN_WIDTH", num(d.min_width)},
                   {"MAX_WIDTH", num(c.width)},
+                  {"WIDTH_STEP", num(P)},
                   {"MIN_HEIGHT", num(d.min_height)},
                   {"MAX_HEIGHT", num(c.height)},
                   {"P1_INIT", num(c.p1)},
@@ -173,15 +175,44 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
   top.text("\n  // Framing: pairs left and right pixels, checks tuser and tlast, resynchronises.\n");
   top.wire("framed_valid", 1);
   top.wire("framed_ready", 1);
-  top.wire("framed_left", 8);
-  top.wire("framed_right", 8);
-  top.instance("fpstereo_video_in", "framing", {{"X_W", num(d.x_bits)}, {"Y_W", num(d.y_bits)}},
-               clock + Connections{{"left", "left_beat"},
-                                   {"right", "right_beat"},
-                                   {"in_valid", "framed_valid"},
-                                   {"in_left", "framed_left"},
-                                   {"in_right", "framed_right"},
-                                   {"in_take", "framed_valid && framed_ready"}});
+  top.wire("framed_left", 8 * P);
+  top.wire("framed_right", 8 * P);
+  Connections framing = clock + Connections{{"left", "left_beat"},
+                                            {"right", "right_beat"},
+                                            {"in_valid", "framed_valid"},
+                                            {"in_left", "framed_left"},
+                                            {"in_right", "framed_right"},
+                                            {"in_take", "framed_valid && framed_ready"}};
+  if (P > 1) {
+    // The framing checks count beats.
+    const int shift = clog2(P);
+    top.wire("frame_beats", d.x_bits);
+    top.logic(fmt::format("  assign frame_beats = {{{}'d0, frame_width[{}:{}]}};\n", shift, d.x_bits - 1, shift),
+              {"frame_beats"});
+    framing.push_back({"frame_width", "frame_beats"});
+  }
+  top.instance("fpstereo_video_in", "framing",
+               {{"DATA_W", num(8 * P)}, {"X_W", num(d.x_bits)}, {"Y_W", num(d.y_bits)}}, framing);
+  std::string pair = "{framed_left, framed_right}", pair_valid = "framed_valid", pair_ready = "framed_ready";
+  if (P > 1) {
+    top.text(fmt::format("\n  // The core takes a pixel pair a step: the beat's {} pairs one after another.\n", P));
+    std::string pairs;
+    for (int i = P; i-- > 0;)
+      pairs += fmt::format("{}framed_left[{}:{}], framed_right[{}:{}]", i + 1 < P ? ", " : "", 8 * i + 7, 8 * i,
+                           8 * i + 7, 8 * i);
+    top.wire("split_pair", 16);
+    top.wire("split_valid", 1);
+    top.wire("split_ready", 1);
+    top.instance("fpstereo_beat_split", "pixels_of_beat",
+                 {{"P", num(P)}, {"PIXEL_W", "16"}, {"COUNT_W", num(bits_for(uint64_t(P)))}},
+                 clock + Connections{{"s_data", "{" + pairs + "}"},
+                                     {"s_valid", "framed_valid"},
+                                     {"s_ready", "framed_ready"},
+                                     {"m_data", "split_pair"},
+                                     {"m_valid", "split_valid"},
+                                     {"m_ready", "split_ready"}});
+    pair = "split_pair", pair_valid = "split_valid", pair_ready = "split_ready";
+  }
   top.text("\n  // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the\n"
            "  // framing checks through the core's enable.\n");
   top.wire("core_valid", 1);
@@ -189,9 +220,9 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
   top.wire("core_left", 8);
   top.wire("core_right", 8);
   top.instance("fpstereo_axis_skid", "pixel_slice", {{"DATA_W", "16"}},
-               clock + Connections{{"s_data", "{framed_left, framed_right}"},
-                                   {"s_valid", "framed_valid"},
-                                   {"s_ready", "framed_ready"},
+               clock + Connections{{"s_data", pair},
+                                   {"s_valid", pair_valid},
+                                   {"s_ready", pair_ready},
                                    {"m_data", "{core_left, core_right}"},
                                    {"m_valid", "core_valid"},
                                    {"m_ready", "take"}});
@@ -209,22 +240,43 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
     for (const auto& word : o.words) top.wire(word.name, word.bits);
   }
   top.instance(core_signature, "core", {}, core_ports);
-  // Output register slices: {tuser, tlast, tdata}, the core's words at their bits, zeros between.
+  // Output register slices: {tuser, tlast, tdata}, the core's words at their bits in a pixel,
+  // zeros between; with several pixels per beat, P pixels gathered into a beat before the slice.
   top.text("\n  // Output register slices.\n");
   for (const auto& o : outputs) {
-    std::string tdata;
+    std::string pixel;
     int at = 0;
     for (const auto& word : o.words) {
-      if (word.lsb > at) tdata = fmt::format("{}'d0, ", word.lsb - at) + tdata;
-      tdata = word.name + (tdata.empty() ? "" : ", ") + tdata;
+      if (word.lsb > at) pixel = fmt::format("{}'d0, ", word.lsb - at) + pixel;
+      pixel = word.name + (pixel.empty() ? "" : ", ") + pixel;
       at = word.lsb + word.bits;
     }
-    if (o.tdata_bits > at) tdata = fmt::format("{}'d0, ", o.tdata_bits - at) + tdata;
-    top.instance("fpstereo_axis_skid", o.port.substr(std::string("m_axis_").size()) + "_slice",
-                 {{"DATA_W", num(o.tdata_bits + 2)}},
-                 clock + Connections{{"s_data", fmt::format("{{{0}_first, {0}_last, {1}}}", o.core, tdata)},
-                                     {"s_valid", o.core + "_push"},
-                                     {"s_ready", o.core + "_ready"},
+    if (o.pixel_bits > at) pixel = fmt::format("{}'d0, ", o.pixel_bits - at) + pixel;
+    const std::string name = o.port.substr(std::string("m_axis_").size());
+    std::string beat = fmt::format("{{{0}_first, {0}_last, {1}}}", o.core, pixel), valid = o.core + "_push",
+                ready = o.core + "_ready";
+    if (P > 1) {
+      for (const char* net : {"_first", "_last", "_valid", "_ready"}) top.wire(name + "_beat" + net, 1);
+      top.wire(name + "_beat", o.tdata_bits());
+      top.instance("fpstereo_beat_pack", name + "_beats",
+                   {{"P", num(P)}, {"PIXEL_W", num(o.pixel_bits)}, {"COUNT_W", num(bits_for(uint64_t(P)))}},
+                   clock + Connections{{"s_data", "{" + pixel + "}"},
+                                       {"s_first", o.core + "_first"},
+                                       {"s_last", o.core + "_last"},
+                                       {"s_valid", o.core + "_push"},
+                                       {"s_ready", o.core + "_ready"},
+                                       {"m_data", name + "_beat"},
+                                       {"m_first", name + "_beat_first"},
+                                       {"m_last", name + "_beat_last"},
+                                       {"m_valid", name + "_beat_valid"},
+                                       {"m_ready", name + "_beat_ready"}});
+      beat = fmt::format("{{{0}_beat_first, {0}_beat_last, {0}_beat}}", name);
+      valid = name + "_beat_valid", ready = name + "_beat_ready";
+    }
+    top.instance("fpstereo_axis_skid", name + "_slice", {{"DATA_W", num(o.tdata_bits() + 2)}},
+                 clock + Connections{{"s_data", beat},
+                                     {"s_valid", valid},
+                                     {"s_ready", ready},
                                      {"m_data", fmt::format("{{{0}_tuser, {0}_tlast, {0}_tdata}}", o.port)},
                                      {"m_valid", o.port + "_tvalid"},
                                      {"m_ready", o.port + "_tready"}});
@@ -236,12 +288,17 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
     for (const auto& f : o.fields)
       fields += (fields.empty() ? "" : ", ") + f.name + " [" +
                 (f.bits == 1 ? num(f.lsb) : num(f.lsb + f.bits - 1) + ":" + num(f.lsb)) + "]";
-    layout += "// " + o.port + ": " + o.what + "; tdata " + num(o.tdata_bits) + " bits: " + fields + ".\n";
+    layout += "// " + o.port + ": " + o.what + "; tdata " + num(o.tdata_bits()) + " bits" +
+              (o.pixels > 1 ? ", " + num(o.pixels) + " pixels of " + num(o.pixel_bits) + " (pixel 0 lowest), each" : "") +
+              ": " + fields + ".\n";
   }
   std::string head =
       "`resetall\n`default_nettype none\n"
       "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
       "// tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).\n" +
+      (P > 1 ? "// " + num(P) + " pixels per beat (UG934 samples per clock), pixel 0 in the lowest bits; the core takes\n"
+               "// a pixel a step, so a beat every " + num(P) + " cycles at most.\n"
+             : std::string()) +
       layout + "// Frames are at most " + num(c.width) + " x " + num(c.height) +
       " pixels; fpstereo_video_in checks the input's\n"
       "// framing and resynchronises on the next start of frame after an error.\n" +

@@ -159,8 +159,11 @@ std::vector<GuiParameter> gui_parameters(const RtlDesign& d) {
   for (const auto& spec : param_specs())
     parameters.push_back({parameter_name(spec.name), spec.name, spec.get(d.cfg), spec.help});
   parameters.push_back(
-      {"M_AXIS_DISP_TDATA_WIDTH", "m_axis_disp tdata width", std::to_string(d.output_bits),
-       "bits of an output word: the disparity with the invalid flag above it, zero-extended"});
+      {"M_AXIS_DISP_TDATA_WIDTH", "m_axis_disp tdata width", std::to_string(d.output_bits * d.cfg.ppc),
+       "bits of an output beat: ppc words, pixel 0 lowest, each the disparity with the invalid flag above it, "
+       "zero-extended"});
+  parameters.push_back({"SAMPLES_PER_CLOCK", "samples per clock", std::to_string(d.cfg.ppc),
+                        "pixels per beat on every AXI4-Stream video interface (UG934), pixel 0 in the lowest bits"});
   parameters.push_back({"CYCLES_PER_FRAME", "cycles per frame", std::to_string(d.cycles_per_frame),
                         "clock cycles from a frame's first input to its last output without stalls"});
   return parameters;
@@ -196,10 +199,11 @@ std::string control_entry(const RtlDesign& d) {
 // ---- block_design.tcl -------------------------------------------------------------------------
 
 int disparity_bytes(const RtlDesign& d) { return d.output_bits / 8; }
-// The VDMA line buffers (in stream words): the smallest power of two the IP offers that holds a row.
+// The VDMA line buffers (in stream words, ppc pixels each): the smallest power of two the IP
+// offers that holds a row.
 int line_buffer_depth(const RtlDesign& d) {
   int depth = 128;
-  while (depth < d.cfg.width && depth < 32768) depth *= 2;
+  while (depth < d.cfg.width / d.cfg.ppc && depth < 32768) depth *= 2;
   return depth;
 }
 
@@ -231,9 +235,9 @@ std::string emit_package_ip_tcl(const RtlDesign& d, const std::vector<std::strin
   for (const auto& parameter : gui_parameters(d)) parameter_entries.push_back(gui_parameter_entry(parameter));
   const std::string description = fmt::format(
       "Semi-global matching stereo pipeline, bit-exact with the fpstereo golden model. AXI4-Stream: left and "
-      "right 8-bit pixels in, {}-bit disparity words out; one pixel every {} cycles. Configuration: {}. "
+      "right 8-bit pixels in, {}-bit disparity words out, {} per beat; one pixel every {} cycles. Configuration: {}. "
       "Out-of-context constraint: {} MHz.",
-      d.output_bits, d.groups, configuration_line(d.cfg), clock_mhz);
+      d.output_bits, d.cfg.ppc, d.groups, configuration_line(d.cfg), clock_mhz);
   auto values = common_values(d);
   values.insert({{"CLOCK_MHZ", fmt::format("{}", clock_mhz)},
                  {"PERIOD", clock_period_ns(clock_mhz)},
@@ -263,6 +267,7 @@ std::string emit_block_design_tcl(const RtlDesign& d) {
        {"FRAME_SIZE", control ? "write the core's WIDTH and HEIGHT registers to match."
                               : "without the control interface the size is fixed."},
        {"DISPARITY_BITS", std::to_string(d.output_bits)},
+       {"PPC", std::to_string(d.cfg.ppc)},
        {"LINE_BUFFER", std::to_string(line_buffer_depth(d))},
        {"CONTROL", control ? kControlInterface : "{}"},
        {"RIGHT_VIEW", d.cfg.right_view ? "1" : "0"}});

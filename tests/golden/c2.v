@@ -13,6 +13,7 @@
 //   dmax = 128
 //   min-disp = 0
 //   uf = 32
+//   ppc = 1
 //   paths = 0,45,90,135
 //   p1 = 7
 //   p2 = 86
@@ -51,10 +52,10 @@
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
 // tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).
 // m_axis_disp: the disparity words; tdata 8 bits: disparity [6:0], invalid [7].
-// Frames are at most 1242 x 375 pixels; fps_census7_d128u32_6c9a83_video_in checks the input's
+// Frames are at most 1242 x 375 pixels; fps_census7_d128u32_6e9658_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
-// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_6c9a83_regs.h).
-module fps_census7_d128u32_6c9a83_top (
+// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_census7_d128u32_6e9658_regs.h).
+module fps_census7_d128u32_6e9658_top (
   (* X_INTERFACE_INFO = "xilinx.com:signal:clock:1.0 aclk CLK" *)
   (* X_INTERFACE_PARAMETER = "ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp:s_axi_ctrl, ASSOCIATED_RESET aresetn" *)
   input  wire aclk,
@@ -100,7 +101,7 @@ module fps_census7_d128u32_6c9a83_top (
   wire [9:0] left_beat;
   wire left_valid;
   wire left_ready;
-  fps_census7_d128u32_6c9a83_axis_skid #(
+  fps_census7_d128u32_6e9658_axis_skid #(
     .DATA_W(10)
   ) left_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_left_tuser, s_axis_left_tlast, s_axis_left_tdata}),
@@ -109,7 +110,7 @@ module fps_census7_d128u32_6c9a83_top (
   wire [9:0] right_beat;
   wire right_valid;
   wire right_ready;
-  fps_census7_d128u32_6c9a83_axis_skid #(
+  fps_census7_d128u32_6e9658_axis_skid #(
     .DATA_W(10)
   ) right_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_right_tuser, s_axis_right_tlast, s_axis_right_tdata}),
@@ -132,11 +133,11 @@ module fps_census7_d128u32_6c9a83_top (
   wire [7:0] p2;
   wire [6:0] uniqueness;
   wire [3:0] lr_threshold;
-  fps_census7_d128u32_6c9a83_control #(
-    .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
-    .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0), .LR_SETTABLE(0),
-    .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h006c9a83),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd80, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
+  fps_census7_d128u32_6e9658_control #(
+    .X_W(11), .Y_W(9), .PATH_W(8), .MIN_WIDTH(128), .MAX_WIDTH(1242), .WIDTH_STEP(1), .MIN_HEIGHT(4),
+    .MAX_HEIGHT(375), .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
+    .LR_SETTABLE(0), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h006e9658),
+    .INFO({32'd0, 32'd0, 32'd0, 32'd1, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd80, 32'd86, 32'd15, 32'd329472, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst), .s_axi_awaddr(s_axi_ctrl_awaddr), .s_axi_awvalid(s_axi_ctrl_awvalid),
     .s_axi_awready(s_axi_ctrl_awready), .s_axi_wdata(s_axi_ctrl_wdata), .s_axi_wstrb(s_axi_ctrl_wstrb),
@@ -154,8 +155,8 @@ module fps_census7_d128u32_6c9a83_top (
   wire framed_ready;
   wire [7:0] framed_left;
   wire [7:0] framed_right;
-  fps_census7_d128u32_6c9a83_video_in #(
-    .X_W(11), .Y_W(9)
+  fps_census7_d128u32_6e9658_video_in #(
+    .DATA_W(8), .X_W(11), .Y_W(9)
   ) framing (
     .clk(aclk), .rst(rst), .enable(enable), .left(left_beat), .left_valid(left_valid),
     .left_ready(left_ready), .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
@@ -170,7 +171,7 @@ module fps_census7_d128u32_6c9a83_top (
   wire take;
   wire [7:0] core_left;
   wire [7:0] core_right;
-  fps_census7_d128u32_6c9a83_axis_skid #(
+  fps_census7_d128u32_6e9658_axis_skid #(
     .DATA_W(16)
   ) pixel_slice (
     .clk(aclk), .rst(rst), .s_data({framed_left, framed_right}), .s_valid(framed_valid),
@@ -181,7 +182,7 @@ module fps_census7_d128u32_6c9a83_top (
   wire out_first;
   wire out_last;
   wire [7:0] out_word;
-  fps_census7_d128u32_6c9a83_sgm_core core (
+  fps_census7_d128u32_6e9658_sgm_core core (
     .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
     .accepting(core_accepting), .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2),
     .uniqueness(uniqueness), .lr_threshold(lr_threshold), .in_valid(core_valid), .in_left(core_left),
@@ -189,7 +190,7 @@ module fps_census7_d128u32_6c9a83_top (
     .out_first(out_first), .out_last(out_last), .frame_end(frame_done));
 
   // Output register slices.
-  fps_census7_d128u32_6c9a83_axis_skid #(
+  fps_census7_d128u32_6e9658_axis_skid #(
     .DATA_W(10)
   ) disp_slice (
     .clk(aclk), .rst(rst), .s_data({out_first, out_last, out_word}), .s_valid(out_push), .s_ready(out_ready),
@@ -210,7 +211,7 @@ endmodule
 //   disparity reorder
 //   median filter
 //   output
-module fps_census7_d128u32_6c9a83_sgm_core (
+module fps_census7_d128u32_6e9658_sgm_core (
   input  wire clk,
   input  wire rst,
   // Frames: while accepting (a register), start begins one: in an idle core, or following on
@@ -269,7 +270,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     frame_last_x <= frame_width - 1'b1;
     frame_last_y <= frame_height - 1'b1;
   end
-  fps_census7_d128u32_6c9a83_sequencer #(
+  fps_census7_d128u32_6e9658_sequencer #(
     .STEP_W(21)
   ) sequencer (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
@@ -293,7 +294,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6c9a83_front_end #(
+  fps_census7_d128u32_6e9658_front_end #(
     .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -305,7 +306,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .transform_slot(transform_slot));
   wire [47:0] code_base;
   wire [47:0] code_match;
-  fps_census7_d128u32_6c9a83_transform #(
+  fps_census7_d128u32_6e9658_transform #(
     .N(7), .RANK(0), .CODE_W(48)
   ) transform (
     .clk(clk), .shift(shift), .window_left(window_left), .window_right(window_right), .row_valid(row_valid),
@@ -317,7 +318,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire code_penalties;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6c9a83_code_reorder #(
+  fps_census7_d128u32_6e9658_code_reorder #(
     .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(3), .ROW_W(2), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
     .MIN_DISP(0)
   ) cost_reorder (
@@ -348,7 +349,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire chain_penalties;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [6143:0] chain_ring;
-  fps_census7_d128u32_6c9a83_chain_cost #(
+  fps_census7_d128u32_6e9658_chain_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(3), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
     .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
@@ -357,7 +358,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
     .costs(chain_costs), .extra_out(chain_penalties), .ring_in(chain_ring), .ring_out(chain_ring));
   wire [527:0] agg_edge;
   wire [263:0] agg_edge135;
-  fps_census7_d128u32_6c9a83_aggregator #(
+  fps_census7_d128u32_6e9658_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(6), .COST_MAX(48), .PATH_W(8),
     .SUM_W(10), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(4), .OUT_ROW_W(2),
     .COST_AW(12), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(3), .COST_ROW_W(2), .MATCH_SIDE(0),
@@ -375,7 +376,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [10:0] winner_x;
   wire [1:0] winner_slot;
   wire [7:0] winner_word;
-  fps_census7_d128u32_6c9a83_wta #(
+  fps_census7_d128u32_6e9658_wta #(
     .UF(32), .SUM_W(10), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(14), .LEVELS_PER_STAGE(2), .TREE_LAT(3)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
@@ -398,7 +399,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [1:0] read_slot_row;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6c9a83_disparity_reorder #(
+  fps_census7_d128u32_6e9658_disparity_reorder #(
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(4), .OUT_ROW_W(2), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
@@ -412,7 +413,7 @@ module fps_census7_d128u32_6c9a83_sgm_core (
   wire [10:0] median_x;
   wire [8:0] median_y;
   wire [7:0] median_word;
-  fps_census7_d128u32_6c9a83_median #(
+  fps_census7_d128u32_6e9658_median #(
     .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(0), .X_W(11), .Y_W(9), .SIGNED_Y_W(11)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -449,7 +450,7 @@ endmodule
 `default_nettype none
 // Two-entry AXI4-Stream register slice: every output is registered, so no combinational path
 // runs from m_ready to s_ready, and a word is accepted every cycle while the sink keeps up.
-module fps_census7_d128u32_6c9a83_axis_skid #(
+module fps_census7_d128u32_6e9658_axis_skid #(
   // data bits carried (tdata and any sideband packed together)
   parameter DATA_W = 8
 ) (
@@ -465,7 +466,7 @@ module fps_census7_d128u32_6c9a83_axis_skid #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DATA_W < 1) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
     end
   endgenerate
   reg [DATA_W-1:0] data_q, skid_q;
@@ -504,13 +505,15 @@ endmodule
 // them to the frame_* outputs, which hold for the whole frame. A write of a value out of range, of
 // a read-only register or with partial byte strobes changes nothing, answers SLVERR and is
 // counted. One transaction of each kind at a time; unmapped addresses read 0.
-module fps_census7_d128u32_6c9a83_control #(
+module fps_census7_d128u32_6e9658_control #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter PATH_W = 8,
   // ranges and reset values of the settings
   parameter MIN_WIDTH = 16,
   parameter MAX_WIDTH = 64,
+  // the width is a multiple of this (the pixels per beat: 1, 2 or 4)
+  parameter WIDTH_STEP = 1,
   parameter MIN_HEIGHT = 4,
   parameter MAX_HEIGHT = 16,
   parameter P1_INIT = 7,
@@ -566,17 +569,19 @@ module fps_census7_d128u32_6c9a83_control #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
-      fps_census7_d128u32_6c9a83_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W) ||
+        (WIDTH_STEP != 1 && WIDTH_STEP != 2 && WIDTH_STEP != 4) || MIN_WIDTH % WIDTH_STEP != 0 ||
+        MAX_WIDTH % WIDTH_STEP != 0) begin : invalid_width
+      fps_census7_d128u32_6e9658_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W_or_off_WIDTH_STEP failed ();
     end
     if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
-      fps_census7_d128u32_6c9a83_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
     end
     if (P1_INIT < 0 || P1_INIT > P2_INIT || P2_INIT > P2_MAX || P2_MAX >= (1 << PATH_W)) begin : invalid_penalties
-      fps_census7_d128u32_6c9a83_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
     end
     if (UNIQUENESS_INIT < 0 || UNIQUENESS_INIT > 99 || LR_THRESHOLD_INIT < 0 || LR_THRESHOLD_INIT > 15) begin : invalid_settings
-      fps_census7_d128u32_6c9a83_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
     end
   endgenerate
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
@@ -585,7 +590,8 @@ module fps_census7_d128u32_6c9a83_control #(
                    A_FRAMES_DROPPED = 8'h34, A_FRAMES_TRUNCATED = 8'h38, A_PROTOCOL_ERRORS = 8'h3C,
                    A_INFO = 8'h40;
   localparam [31:0] MIN_WIDTH_V = MIN_WIDTH, MAX_WIDTH_V = MAX_WIDTH, MIN_HEIGHT_V = MIN_HEIGHT,
-                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX;
+                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX,
+                    WIDTH_STEP_V = WIDTH_STEP;
 
   reg             enable_q;
   reg [X_W-1:0]   width_q;
@@ -620,7 +626,7 @@ module fps_census7_d128u32_6c9a83_control #(
       A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
       A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
       A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
-      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V && (w & (WIDTH_STEP_V - 1)) == 0;
       A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase
@@ -759,6 +765,8 @@ endmodule
 // tlast on each row's last.
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
+// With several pixels per beat (ppc > 1), a "pixel" here is a beat of DATA_W bits and
+// frame_width counts beats.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -771,7 +779,9 @@ endmodule
 //   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
-module fps_census7_d128u32_6c9a83_video_in #(
+module fps_census7_d128u32_6e9658_video_in #(
+  // bits of a beat's pixels (8 per pixel)
+  parameter DATA_W = 8,
   parameter X_W = 7,
   parameter Y_W = 6
 ) (
@@ -780,10 +790,10 @@ module fps_census7_d128u32_6c9a83_video_in #(
   // new frames are taken while high, skipped (and counted as dropped) while low
   input  wire           enable,
   // the streams after their register slices: {tuser, tlast, tdata}
-  input  wire [9:0]     left,
+  input  wire [DATA_W+1:0] left,
   input  wire           left_valid,
   output wire           left_ready,
-  input  wire [9:0]     right,
+  input  wire [DATA_W+1:0] right,
   input  wire           right_valid,
   output wire           right_ready,
   // the core: a frame begins with core_start while the core accepts one (idle, or able to take
@@ -793,8 +803,8 @@ module fps_census7_d128u32_6c9a83_video_in #(
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
   output wire           in_valid,
-  output wire [7:0]     in_left,
-  output wire [7:0]     in_right,
+  output wire [DATA_W-1:0] in_left,
+  output wire [DATA_W-1:0] in_right,
   input  wire           in_take,
   // events
   output wire           frame_dropped,
@@ -803,8 +813,8 @@ module fps_census7_d128u32_6c9a83_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 2 || Y_W < 2) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2 || DATA_W < 8) begin : invalid
+      fps_census7_d128u32_6e9658_invalid_parameters_video_in_X_W_or_Y_W_below_2_or_DATA_W_below_8 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -813,8 +823,8 @@ module fps_census7_d128u32_6c9a83_video_in #(
   reg [X_W-1:0] x;
   reg [Y_W-1:0] y;
 
-  wire left_user = left[9], left_last = left[8];
-  wire right_user = right[9], right_last = right[8];
+  wire left_user = left[DATA_W+1], left_last = left[DATA_W];
+  wire right_user = right[DATA_W+1], right_last = right[DATA_W];
   wire both = left_valid && right_valid;
   // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
   // on the path from the streams to the core.
@@ -845,8 +855,8 @@ module fps_census7_d128u32_6c9a83_video_in #(
   wire fault = state == RUN && !done && both && !flags_match;
   wire passing = state == RUN && !done && both && flags_match;
   assign in_valid = passing || (state == PAD && !done);
-  assign in_left = passing ? left[7:0] : 8'd0;
-  assign in_right = passing ? right[7:0] : 8'd0;
+  assign in_left = passing ? left[DATA_W-1:0] : {DATA_W{1'b0}};
+  assign in_right = passing ? right[DATA_W-1:0] : {DATA_W{1'b0}};
   wire pass_take = passing && in_take;
   assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
   assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
@@ -945,14 +955,14 @@ endmodule
 // any other and begins when the frame ends; the settings cannot have changed (settings_held
 // falls in the cycle after a write is taken, and the write is applied a cycle later). So no
 // start taken while accepting is lost (tests/formal/sequencer_props.v).
-module fps_census7_d128u32_6c9a83_sequencer #(
+module fps_census7_d128u32_6e9658_sequencer #(
   parameter STEP_W = 20
 ) (
   input  wire              clk,
   input  wire              rst,
   input  wire              start,
   output wire              idle,
-  // the written settings equal the running frame's (a register, fps_census7_d128u32_6c9a83_control)
+  // the written settings equal the running frame's (a register, fps_census7_d128u32_6e9658_control)
   input  wire              settings_held,
   output reg               accepting,
   input  wire              follow_open,
@@ -973,7 +983,7 @@ module fps_census7_d128u32_6c9a83_sequencer #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (STEP_W < 1) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
   reg starting, in_frame, pending;
@@ -1020,7 +1030,7 @@ endmodule
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
 // rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
 // rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
-module fps_census7_d128u32_6c9a83_front_end #(
+module fps_census7_d128u32_6e9658_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -1066,10 +1076,10 @@ module fps_census7_d128u32_6c9a83_front_end #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_6c9a83_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -1080,7 +1090,7 @@ module fps_census7_d128u32_6c9a83_front_end #(
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
   /* verilator lint_off PINCONNECTEMPTY */  // the centre's RAM slot has a counter of its own
-  fps_census7_d128u32_6c9a83_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
+  fps_census7_d128u32_6e9658_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
     input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
                     .slot(si), .row(ti), .row_slot(), .slot_end(slot_end));
   /* verilator lint_on PINCONNECTEMPTY */
@@ -1091,7 +1101,7 @@ module fps_census7_d128u32_6c9a83_front_end #(
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
   // Whether the slot is the row-time's last, the frame's last column and last row, as registers
   // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
-  // before step 0 (fps_census7_d128u32_6c9a83_sequencer) to the frame's end.
+  // before step 0 (fps_census7_d128u32_6e9658_sequencer) to the frame's end.
   localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
   localparam [X_W-1:0] TWO_X = 2;
   localparam [Y_W-1:0] TWO_Y = 2;
@@ -1149,10 +1159,10 @@ module fps_census7_d128u32_6c9a83_front_end #(
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
 
-  fps_census7_d128u32_6c9a83_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+  fps_census7_d128u32_6e9658_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_left : 8'd0), .window(window_left));
-  fps_census7_d128u32_6c9a83_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+  fps_census7_d128u32_6e9658_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
@@ -1182,7 +1192,7 @@ module fps_census7_d128u32_6c9a83_front_end #(
   reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
   reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_6c9a83_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
+  fps_census7_d128u32_6e9658_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1223,10 +1233,10 @@ module fps_census7_d128u32_6c9a83_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6c9a83_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
+  fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_census7_d128u32_6c9a83_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
+  fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1247,7 +1257,7 @@ endmodule
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
 // centres, registered once per slot (docs/semantics.md, section 2).
-module fps_census7_d128u32_6c9a83_transform #(
+module fps_census7_d128u32_6e9658_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
   parameter RANK = 0,
@@ -1266,23 +1276,23 @@ module fps_census7_d128u32_6c9a83_transform #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_6c9a83_invalid_parameters_transform_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_transform_N_is_not_odd_and_at_least_3 failed ();
     end
     if ((RANK == 0 && CODE_W != N * N - 1) || (RANK != 0 && N * N - 1 >= (1 << CODE_W))) begin : invalid_CODE_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
     end
   endgenerate
   wire [CODE_W-1:0] code_left, code_right;
   generate
     if (RANK) begin : rank
-      fps_census7_d128u32_6c9a83_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
+      fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
                                                      .col_valid(col_valid), .rank(code_left));
-      fps_census7_d128u32_6c9a83_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
+      fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
                                                       .col_valid(col_valid), .rank(code_right));
     end else begin : census
-      fps_census7_d128u32_6c9a83_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
+      fps_census7_d128u32_6e9658_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
                                      .code(code_left));
-      fps_census7_d128u32_6c9a83_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
+      fps_census7_d128u32_6e9658_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
                                       .code(code_right));
     end
   endgenerate
@@ -1298,14 +1308,14 @@ endmodule
 `default_nettype none
 // Code reorder RAM (docs/architecture.md, "Code reorder"): instead of the cost words, each
 // pixel's entries, written in raster order as the transform delivers them and read in the
-// aggregation's chain order, where fps_census7_d128u32_6c9a83_chain_cost computes the costs. The entry at (row, x)
+// aggregation's chain order, where fps_census7_d128u32_6e9658_chain_cost computes the costs. The entry at (row, x)
 // is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
 // a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
 // image are never written, so only valid rows' slots (row mod ROWS) matter. With EXTRA_W above 0
-// (adaptive P2's penalties, which leave fps_census7_d128u32_6c9a83_adaptive_p2 with the costs the raster stage
+// (adaptive P2's penalties, which leave fps_census7_d128u32_6e9658_adaptive_p2 with the costs the raster stage
 // would compute: a slot and EXTRA_LAT steps after the codes) a second RAM holds them per pixel,
 // written at their position then, read at the same address.
-module fps_census7_d128u32_6c9a83_code_reorder #(
+module fps_census7_d128u32_6e9658_code_reorder #(
   parameter ROW_SLOTS = 64,
   parameter ENTRY_W = 24,
   parameter ROWS = 2,
@@ -1338,13 +1348,13 @@ module fps_census7_d128u32_6c9a83_code_reorder #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2 || MIN_DISP < 0) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
     end
   endgenerate
   wire [ENTRY_W-1:0] match_now;
   generate
     if (MIN_DISP > 0) begin : match_late
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(ENTRY_W), .DEPTH(MIN_DISP)) match_wait (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(ENTRY_W), .DEPTH(MIN_DISP)) match_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in(match_entry), .out(match_now));
     end else begin : match_in_time
       assign match_now = match_entry;
@@ -1357,7 +1367,7 @@ module fps_census7_d128u32_6c9a83_code_reorder #(
   /* verilator lint_off WIDTH */
   wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
   /* verilator lint_on WIDTH */
-  fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
+  fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
     .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
     .re(adv), .raddr(raddr), .rdata(q));
   generate
@@ -1368,12 +1378,12 @@ module fps_census7_d128u32_6c9a83_code_reorder #(
       wire [POSITION_W-1:0] at;
       always @(posedge clk)
         if (shift) held <= {in_image, transform_slot, transform_x};
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
         .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
       /* verilator lint_off WIDTH */
       wire [AW-1:0] extra_waddr = at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + at[X_W-1:0];
       /* verilator lint_on WIDTH */
-      fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
+      fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
         .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra),
         .re(adv), .raddr(raddr), .rdata(extra_q));
     end else begin : no_extras
@@ -1389,7 +1399,7 @@ endmodule
 // reorder RAM gives one entry per slot, the pixel's base entry and the match entry that enters
 // its row's match history; the costs are computed here, after the reorder, as the aggregator
 // reads them. Each row in flight keeps its own match history: the last DMAX match entries of its
-// row, a ring that turns by UF each step as fps_census7_d128u32_6c9a83_match_ring does. The K rings take turns at
+// row, a ring that turns by UF each step as fps_census7_d128u32_6e9658_match_ring does. The K rings take turns at
 // the head, whose UF entries the lanes read: chain k continues in row-time t + 1 the row chain
 // k - 1 left in row-time t, so the rings serve the chains in a fixed cycle, and the head keeps its
 // ring only into a row-time's first slot, where the ring of the row just finished begins a new
@@ -1401,7 +1411,7 @@ endmodule
 // continues the row the strip to the left has just finished: the head takes that strip's ring
 // (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
 // captured at the same slot, which comes K steps earlier there).
-module fps_census7_d128u32_6c9a83_chain_cost #(
+module fps_census7_d128u32_6e9658_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,
   parameter DMAX = 32,
@@ -1447,13 +1457,13 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
     end
     if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip
-      fps_census7_d128u32_6c9a83_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
     end
   endgenerate
-  // Turns as in fps_census7_d128u32_6c9a83_match_ring (SPAN 1): by UF in a slot's steps; at the load, the turn that
+  // Turns as in fps_census7_d128u32_6e9658_match_ring (SPAN 1): by UF in a slot's steps; at the load, the turn that
   // completes the slot plus the shift by one entry.
   localparam TURN = UF % DMAX;
   localparam SHIFT = (UF - 1) % DMAX;
@@ -1507,13 +1517,13 @@ module fps_census7_d128u32_6c9a83_chain_cost #(
   endgenerate
   generate
     if (EXTRA_W > 0) begin : extras
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(EXTRA_W), .DEPTH(LAT + 1)) extra_wait (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(EXTRA_W), .DEPTH(LAT + 1)) extra_wait (
         .clk(clk), .rst(1'b0), .en(adv), .in(extra), .out(extra_out));
     end else begin : no_extras
       assign extra_out = 1'b0;
     end
   endgenerate
-  fps_census7_d128u32_6c9a83_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),
+  fps_census7_d128u32_6e9658_point_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .X_W(X_W),
                          .G_W(G_W), .MIN_DISP(MIN_DISP), .WEIGHT(WEIGHT), .TRUNC(TRUNC), .FEATURE_W(FEATURE_W),
                          .GRADIENT(GRADIENT), .LANES_LAT(LANES_LAT), .LAT(LAT), .ENTRY_W(ENTRY_W)) lanes (
     .clk(clk), .en(adv), .group(group2), .x(x2), .frame_width(frame_width), .base_entry(base_held),
@@ -1529,12 +1539,12 @@ endmodule
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
 // x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
-// enabled path (fps_census7_d128u32_6c9a83_adaptive_p2), which replaces the p2 input for that path.
+// enabled path (fps_census7_d128u32_6e9658_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (tests/modules/fps_census7_d128u32_6c9a83_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (tests/modules/fps_census7_d128u32_6e9658_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
-module fps_census7_d128u32_6c9a83_aggregator #(
+module fps_census7_d128u32_6e9658_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -1566,8 +1576,8 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0,
-  // 1: the RAM holds a pixel's entries, not its cost words (fps_census7_d128u32_6c9a83_code_reorder): a word per
-  // pixel, which fps_census7_d128u32_6c9a83_chain_cost turns into the cost words
+  // 1: the RAM holds a pixel's entries, not its cost words (fps_census7_d128u32_6e9658_code_reorder): a word per
+  // pixel, which fps_census7_d128u32_6e9658_chain_cost turns into the cost words
   parameter CODES = 0,
   // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
   // chain cost stage's)
@@ -1589,7 +1599,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
-  // back-to-back frames (fps_census7_d128u32_6c9a83_front_end): the row-times wrap after the frame's last row, and
+  // back-to-back frames (fps_census7_d128u32_6e9658_front_end): the row-times wrap after the frame's last row, and
   // once wrapped, the rows above row 0 are the previous frame's
   input  wire                 overlap,
   input  wire                 wrapped,
@@ -1615,35 +1625,35 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   output wire [2*(UF+1)*PATH_W-1:0] edge_out,
   output wire [(UF+1)*PATH_W-1:0]   edge135_out
 );
-  localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_6c9a83_path_lanes
+  localparam LANES_LAT = 2;  // steps of fps_census7_d128u32_6e9658_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || (STRIPS == 0 && ROW_SLOTS < W)) begin : invalid_segments
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (COST_LEAD < 1 || (CODES != 0 && MATCH_SIDE != 0)) begin : invalid_CODES
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
     end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
     if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * (CODES != 0 ? 1 : G))) begin : invalid_widths
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
     end
     if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
     end
     if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
     if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && (X_BASE != 0 || CHAIN_BASE != 0)) || (STRIPS != 0 && G != 1)) begin : invalid_strip
-      fps_census7_d128u32_6c9a83_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -1685,7 +1695,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_6c9a83_frame_row #(.Y_W(Y_W)) row_time (
+  fps_census7_d128u32_6e9658_frame_row #(.Y_W(Y_W)) row_time (
     .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1733,7 +1743,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   wire [TAG_W-1:0] tag_led;
   generate
     if (COST_LEAD > 1) begin : lead
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
         .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
     end else begin : no_lead
       assign tag_led = tag0;
@@ -1771,8 +1781,18 @@ module fps_census7_d128u32_6c9a83_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
-  wire             first_group2 = g2 == 0;
-  wire             last_group2 = g2 == G - 1;
+  // Whether S2's step is its pixel's first or last group: registered from S1's tag, so that the
+  // lanes' neighbour selection starts from a register (logic depth, docs/timing.md).
+  wire [G_W-1:0]   g1 = `FPS_TAG_GROUP(tag1);
+  reg              first_group2, last_group2;
+  always @(posedge clk)
+    if (restart) begin
+      first_group2 <= 1'b0;
+      last_group2 <= 1'b0;
+    end else if (adv) begin
+      first_group2 <= g1 == 0;
+      last_group2 <= g1 == G - 1;
+    end
   /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
   wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
@@ -1824,7 +1844,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_census7_d128u32_6c9a83_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
+  fps_census7_d128u32_6e9658_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1852,18 +1872,18 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       wire [STATE_AW-1:0] state_waddr = `FPS_TAG_CHAIN(tag4) * G + g4;
-      fps_census7_d128u32_6c9a83_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_census7_d128u32_6e9658_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv && active4), .waddr(state_waddr), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
-      fps_census7_d128u32_6c9a83_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
-      fps_census7_d128u32_6c9a83_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
@@ -1898,10 +1918,10 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       reg  [PATH_W-1:0] above_min2;
       wire [ROW_AW-1:0] row_raddr = (x_read - X_FIRST) * G + g_read;
       wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read - X_FIRST;
-      fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+      fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
-      fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
+      fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
         .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
@@ -1909,7 +1929,7 @@ module fps_census7_d128u32_6c9a83_aggregator #(
           above2 <= above_q;
           above_min2 <= above_min_q;
         end
-      fps_census7_d128u32_6c9a83_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_census7_d128u32_6e9658_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv), .waddr(state_addr2), .wdata(above2),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
@@ -1918,12 +1938,12 @@ module fps_census7_d128u32_6c9a83_aggregator #(
       reg [PATH_W-1:0] minimum [0:K-1];
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
-      fps_census7_d128u32_6c9a83_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0),
         .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
         .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
         .path(path_45));
-      fps_census7_d128u32_6c9a83_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
       // The row above at the strip's last pixel, which the next strip's first pixel follows.
@@ -1959,10 +1979,10 @@ module fps_census7_d128u32_6c9a83_aggregator #(
         reg  [PATH_W-1:0]  below_q, above_min2;
         wire [ROW_AW-1:0]  row_raddr = (x_read + DX - X_FIRST) * G + g_read;
         wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read + DX - X_FIRST;
-        fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+        fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_read_q));
-        fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
+        fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
           .re(adv), .raddr(min_raddr), .rdata(above_min_read_q));
         // 135 degrees in a strip with one to its right: the pixel after the strip's last is that
@@ -1992,11 +2012,11 @@ module fps_census7_d128u32_6c9a83_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
-        fps_census7_d128u32_6c9a83_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+        fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_census7_d128u32_6c9a83_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+        fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
@@ -2048,11 +2068,11 @@ endmodule
 `resetall
 `default_nettype none
 // Winner-take-all (docs/semantics.md, section 4): per step the minimum over the UF lanes of one
-// group (fps_census7_d128u32_6c9a83_min_tree), then a running minimum over the groups of the pixel, the earlier
+// group (fps_census7_d128u32_6e9658_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
 // the group in group_out; it is the pixel's result in its last group's step. The tag (the
 // pixel's position) travels along, TREE_LAT steps (the tree's latency, which it checks).
-module fps_census7_d128u32_6c9a83_wta #(
+module fps_census7_d128u32_6e9658_wta #(
   parameter UF = 8,
   parameter SUM_W = 9,
   parameter DISP_W = 5,
@@ -2072,12 +2092,12 @@ module fps_census7_d128u32_6c9a83_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
-  // fps_census7_d128u32_6c9a83_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
-  fps_census7_d128u32_6c9a83_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
+  // fps_census7_d128u32_6e9658_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
+  fps_census7_d128u32_6e9658_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
-  fps_census7_d128u32_6c9a83_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_census7_d128u32_6e9658_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                      .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
@@ -2103,7 +2123,7 @@ endmodule
 // EXTRA_ROWS more for gap interpolation, one row behind) and bubble slots read as invalid words.
 // The read stream: read_done in the step after each slot's read, read_event where that slot is a
 // pixel of the frame's output rows, its position and word.
-module fps_census7_d128u32_6c9a83_disparity_reorder #(
+module fps_census7_d128u32_6e9658_disparity_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter DISP_W = 5,
@@ -2121,7 +2141,7 @@ module fps_census7_d128u32_6c9a83_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
-  // back-to-back frames (fps_census7_d128u32_6c9a83_front_end): the read rows wrap after the frame's last, and the
+  // back-to-back frames (fps_census7_d128u32_6e9658_front_end): the read rows wrap after the frame's last, and the
   // next frame's rows stand in for the rows below the image
   input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
@@ -2145,7 +2165,7 @@ module fps_census7_d128u32_6c9a83_disparity_reorder #(
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
     if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_reorder_addresses_too_narrow failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
   // Addresses are products of narrow counters and constants, cut to the RAM's address width.
@@ -2160,7 +2180,7 @@ module fps_census7_d128u32_6c9a83_disparity_reorder #(
   wire [Y_W-1:0] to;
   wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
-  fps_census7_d128u32_6c9a83_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+  fps_census7_d128u32_6e9658_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
@@ -2170,7 +2190,7 @@ module fps_census7_d128u32_6c9a83_disparity_reorder #(
   wire read_valid = read_now && to < frame_height;
   wire [DISP_W:0] disparity_q;
   wire [DISP_AW-1:0] raddr = to_slot * ROW_SLOTS + so;
-  fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+  fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(write), .waddr(waddr), .wdata(word),
     .re(adv && read_valid), .raddr(raddr), .rdata(disparity_q));
   // verilator lint_on WIDTH
@@ -2196,10 +2216,10 @@ endmodule
 `default_nettype none
 // Median filter stage (docs/semantics.md, section 6): the stream's word of each slot (the invalid
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
-// the median of the window's valid words (fps_census7_d128u32_6c9a83_median_select, 3 * WORD_W steps), and leaves with
+// the median of the window's valid words (fps_census7_d128u32_6e9658_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
 // interpolation), with its word.
-module fps_census7_d128u32_6c9a83_median #(
+module fps_census7_d128u32_6e9658_median #(
   parameter M = 5,
   parameter ROW_SLOTS = 64,
   parameter DISP_W = 5,
@@ -2227,10 +2247,10 @@ module fps_census7_d128u32_6c9a83_median #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (M < 3 || M % 2 == 0) begin : invalid_M
-      fps_census7_d128u32_6c9a83_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_median_M_is_not_odd_and_at_least_3 failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam RM = M / 2;
@@ -2240,7 +2260,7 @@ module fps_census7_d128u32_6c9a83_median #(
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
   wire [M*M*(DISP_W+1)-1:0] window;
-  fps_census7_d128u32_6c9a83_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+  fps_census7_d128u32_6e9658_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
   wire signed [SIGNED_Y_W-1:0] centre_y;
@@ -2248,7 +2268,7 @@ module fps_census7_d128u32_6c9a83_median #(
   wire centre_slot;
   wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6c9a83_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
+  fps_census7_d128u32_6e9658_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
@@ -2263,10 +2283,10 @@ module fps_census7_d128u32_6c9a83_median #(
       median_y <= centre_y;
     end
   wire [M-1:0] row_valid, col_valid;
-  fps_census7_d128u32_6c9a83_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
+  fps_census7_d128u32_6e9658_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
     .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
   wire [DISP_W:0] selected;
-  fps_census7_d128u32_6c9a83_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
+  fps_census7_d128u32_6e9658_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
     .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
   // The centre's coordinates travel as long as the selection takes.
   wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
@@ -2277,7 +2297,7 @@ module fps_census7_d128u32_6c9a83_median #(
   wire           done_m;
   wire [X_W-1:0] x_m;
   wire [Y_W-1:0] y_m;
-  fps_census7_d128u32_6c9a83_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1)), .RESET(1)) median_delay (
+  fps_census7_d128u32_6e9658_delay #(.WIDTH(1 + X_W + Y_W), .DEPTH(3 * (DISP_W + 1)), .RESET(1)) median_delay (
     .clk(clk), .rst(restart), .en(adv), .in({fresh && in_image, median_x, median_row[Y_W-1:0]}),
     .out({done_m, x_m, y_m}));
   always @(posedge clk)
@@ -2297,9 +2317,9 @@ endmodule
 `default_nettype none
 // Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
 // row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
-// row-time returns to 0 after the frame's last (fps_census7_d128u32_6c9a83_frame_row); the RAM row counts on modulo
+// row-time returns to 0 after the frame's last (fps_census7_d128u32_6e9658_frame_row); the RAM row counts on modulo
 // K regardless, so that the next frame's rows take the RAM rows that follow.
-module fps_census7_d128u32_6c9a83_raster_counter #(
+module fps_census7_d128u32_6e9658_raster_counter #(
   parameter G = 4,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
@@ -2322,10 +2342,10 @@ module fps_census7_d128u32_6c9a83_raster_counter #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
-      fps_census7_d128u32_6c9a83_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
     end
     if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
-      fps_census7_d128u32_6c9a83_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
     end
   endgenerate
   localparam integer LAST_GROUP_I = G - 1;
@@ -2349,7 +2369,7 @@ module fps_census7_d128u32_6c9a83_raster_counter #(
       end
     end
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_census7_d128u32_6c9a83_frame_row #(.Y_W(Y_W)) frame_row (
+  fps_census7_d128u32_6e9658_frame_row #(.Y_W(Y_W)) frame_row (
     .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
     .row(row), .last());
   /* verilator lint_on PINCONNECTEMPTY */
@@ -2362,7 +2382,7 @@ endmodule
 // codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
 // one slot ahead); the window is a register array that shifts in one column per slot.
 // window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
-module fps_census7_d128u32_6c9a83_window #(
+module fps_census7_d128u32_6e9658_window #(
   // window side
   parameter N = 7,
   // bits per word
@@ -2386,10 +2406,10 @@ module fps_census7_d128u32_6c9a83_window #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3) begin : invalid_N
-      fps_census7_d128u32_6c9a83_invalid_parameters_window_N_below_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_window_N_below_3 failed ();
     end
     if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
     end
   endgenerate
   localparam STORED_W = (N - 1) * WORD_W;
@@ -2400,7 +2420,7 @@ module fps_census7_d128u32_6c9a83_window #(
   // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
   wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
 
-  fps_census7_d128u32_6c9a83_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+  fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
     .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
     .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
 
@@ -2425,7 +2445,7 @@ endmodule
 // past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
 // as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
 // starts at START < 0 (two's complement: rows above the first frame).
-module fps_census7_d128u32_6c9a83_frame_row #(
+module fps_census7_d128u32_6e9658_frame_row #(
   parameter Y_W = 6,
   parameter START = 0
 ) (
@@ -2458,7 +2478,7 @@ endmodule
 `default_nettype none
 // Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
 // image (docs/semantics.md, section 1: outside, a window reads zeros).
-module fps_census7_d128u32_6c9a83_window_bounds #(
+module fps_census7_d128u32_6e9658_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
@@ -2474,7 +2494,7 @@ module fps_census7_d128u32_6c9a83_window_bounds #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
     end
   endgenerate
   localparam LAG = SIDE / 2;
@@ -2500,7 +2520,7 @@ endmodule
 `default_nettype none
 // Rank of an N x N window's centre: the number of neighbours darker than it. Pixels outside
 // the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
-module fps_census7_d128u32_6c9a83_rank #(
+module fps_census7_d128u32_6e9658_rank #(
   // window side
   parameter N = 7,
   // result width: clog2(N*N)
@@ -2514,10 +2534,10 @@ module fps_census7_d128u32_6c9a83_rank #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_census7_d128u32_6c9a83_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_rank_N_is_not_odd_and_at_least_3 failed ();
     end
     if (N * N - 1 >= (1 << RANK_W)) begin : invalid_RANK_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_rank_RANK_W_does_not_hold_N_times_N_minus_1 failed ();
     end
   endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
@@ -2540,7 +2560,7 @@ endmodule
 // Census code of an N x N window: one bit per neighbour in raster order (the centre skipped,
 // the first position in the most significant bit), 1 where the centre is brighter. Pixels
 // outside the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
-module fps_census7_d128u32_6c9a83_census #(
+module fps_census7_d128u32_6e9658_census #(
   // window side
   parameter N = 7
 ) (
@@ -2552,7 +2572,7 @@ module fps_census7_d128u32_6c9a83_census #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_census_N_is_not_odd_and_at_least_3 failed ();
     end
   endgenerate
   localparam CENTRE = (N / 2) * N + N / 2;
@@ -2576,7 +2596,7 @@ endmodule
 // so that a valid flag travelling in it never starts out set; without, rst is unused: data that a
 // valid flag qualifies needs no reset, and registers without one need no reset routing and can
 // become shift-register LUTs.
-module fps_census7_d128u32_6c9a83_delay #(
+module fps_census7_d128u32_6e9658_delay #(
   parameter WIDTH = 8,
   parameter DEPTH = 1,
   // 1: rst clears every register (flags, tags); 0: no reset (data)
@@ -2593,7 +2613,7 @@ module fps_census7_d128u32_6c9a83_delay #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
     end
   endgenerate
   reg [WIDTH*DEPTH-1:0] line;
@@ -2621,7 +2641,7 @@ endmodule
 `default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_census7_d128u32_6c9a83_ram_sdp #(
+module fps_census7_d128u32_6e9658_ram_sdp #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -2640,7 +2660,7 @@ module fps_census7_d128u32_6c9a83_ram_sdp #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -2656,10 +2676,10 @@ endmodule
 `default_nettype none
 // The lanes of a point cost (census or rank: one code per pixel): UF costs per step from the
 // base entry and UF match entries, each a code with, for the fused cost (WEIGHT above 0), its
-// pixel's feature above it (fps_census7_d128u32_6c9a83_fused_features); fps_census7_d128u32_6c9a83_fused_term adds the pixel-wise
-// term. The raster cost stage (fps_census7_d128u32_6c9a83_point_cost) and the chain-order one (fps_census7_d128u32_6c9a83_chain_cost)
+// pixel's feature above it (fps_census7_d128u32_6e9658_fused_features); fps_census7_d128u32_6e9658_fused_term adds the pixel-wise
+// term. The raster cost stage (fps_census7_d128u32_6e9658_point_cost) and the chain-order one (fps_census7_d128u32_6e9658_chain_cost)
 // feed it.
-module fps_census7_d128u32_6c9a83_point_lanes #(
+module fps_census7_d128u32_6e9658_point_lanes #(
   // 1: census codes (Hamming distance); 0: ranks (absolute difference)
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -2675,7 +2695,7 @@ module fps_census7_d128u32_6c9a83_point_lanes #(
   parameter FEATURE_W = 8,
   parameter GRADIENT = 0,
   // the cost lanes' latency, and the whole latency (the lanes' plus the fused term's step, or the
-  // same); fps_census7_d128u32_6c9a83_cost_lanes and fps_census7_d128u32_6c9a83_fused_term check them
+  // same); fps_census7_d128u32_6e9658_cost_lanes and fps_census7_d128u32_6e9658_fused_term check them
   parameter LANES_LAT = 2,
   parameter LAT = 2,
   // an entry: the code, with the fused cost the feature above it
@@ -2693,7 +2713,7 @@ module fps_census7_d128u32_6c9a83_point_lanes #(
   localparam FUSED = WEIGHT != 0;
   generate
     if (ENTRY_W != CODE_W + (FUSED ? FEATURE_W : 0)) begin : invalid_ENTRY_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_point_lanes_ENTRY_W_is_not_the_code_and_feature failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_point_lanes_ENTRY_W_is_not_the_code_and_feature failed ();
     end
   endgenerate
   // Lane l reads entry l.
@@ -2702,7 +2722,7 @@ module fps_census7_d128u32_6c9a83_point_lanes #(
   always @*
     for (l = 0; l < UF; l = l + 1) match_codes[l*CODE_W +: CODE_W] = match_entries[l*ENTRY_W +: CODE_W];
   wire [UF*COST_W-1:0] lane_costs;
-  fps_census7_d128u32_6c9a83_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
+  fps_census7_d128u32_6e9658_cost_lanes #(.HAMMING(HAMMING), .CODE_W(CODE_W), .UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX),
                         .GROUP_W(G_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LAT(LANES_LAT)) lanes (
     .clk(clk), .en(en), .base_code(base_entry[CODE_W-1:0]), .match_codes(match_codes), .group(group),
     .x(x), .width(frame_width), .costs(lane_costs));
@@ -2713,13 +2733,13 @@ module fps_census7_d128u32_6c9a83_point_lanes #(
       always @*
         for (f = 0; f < UF; f = f + 1)
           match_features[f*FEATURE_W +: FEATURE_W] = match_entries[f*ENTRY_W + CODE_W +: FEATURE_W];
-      fps_census7_d128u32_6c9a83_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
+      fps_census7_d128u32_6e9658_fused_term #(.UF(UF), .COST_W(COST_W), .COST_MAX(COST_MAX), .GRADIENT(GRADIENT), .FEATURE_W(FEATURE_W),
                             .WEIGHT(WEIGHT), .TRUNC(TRUNC), .LANES_LAT(LANES_LAT), .LAT(LAT)) term (
         .clk(clk), .en(en), .base_feature(base_entry[ENTRY_W-1 -: FEATURE_W]), .match_features(match_features),
         .plain_costs(lane_costs), .costs(costs));
     end else begin : plain
       if (LAT != LANES_LAT) begin : invalid_LAT
-        fps_census7_d128u32_6c9a83_invalid_parameters_point_lanes_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
+        fps_census7_d128u32_6e9658_invalid_parameters_point_lanes_LAT_is_not_LANES_LAT_without_the_fused_cost failed ();
       end
       assign costs = lane_costs;
     end
@@ -2732,7 +2752,7 @@ endmodule
 // Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
 // read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
 // cycle see the old word.
-module fps_census7_d128u32_6c9a83_ram_async #(
+module fps_census7_d128u32_6e9658_ram_async #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -2752,7 +2772,7 @@ module fps_census7_d128u32_6c9a83_ram_async #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -2773,7 +2793,7 @@ endmodule
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
 // the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
 // (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
-module fps_census7_d128u32_6c9a83_path_lanes #(
+module fps_census7_d128u32_6e9658_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
   parameter PATH_W = 8
@@ -2794,7 +2814,7 @@ module fps_census7_d128u32_6c9a83_path_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
     end
   endgenerate
   // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
@@ -2845,12 +2865,12 @@ endmodule
 // Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
 // the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
 // result in the step where the tree delivers its last group (group == G - 1).
-module fps_census7_d128u32_6c9a83_path_minimum #(
+module fps_census7_d128u32_6e9658_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
   parameter LEVELS_PER_STAGE = 3,
-  // the tree's latency the caller plans with (fps_census7_d128u32_6c9a83_reduction_tree checks it)
+  // the tree's latency the caller plans with (fps_census7_d128u32_6e9658_reduction_tree checks it)
   parameter TREE_LAT = 2
 ) (
   input  wire               clk,
@@ -2860,11 +2880,11 @@ module fps_census7_d128u32_6c9a83_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // fps_census7_d128u32_6c9a83_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
+  // fps_census7_d128u32_6e9658_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_census7_d128u32_6c9a83_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_census7_d128u32_6e9658_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                      .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
@@ -2877,9 +2897,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values: fps_census7_d128u32_6c9a83_reduction_tree over {value, index}
+// Pipelined minimum (and its index) over N values: fps_census7_d128u32_6e9658_reduction_tree over {value, index}
 // summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_census7_d128u32_6c9a83_min_tree #(
+module fps_census7_d128u32_6e9658_min_tree #(
   // number of values
   parameter N = 8,
   // value width
@@ -2888,7 +2908,7 @@ module fps_census7_d128u32_6c9a83_min_tree #(
   parameter IDX_W = 3,
   // compare-select levels between registers
   parameter LEVELS_PER_STAGE = 3,
-  // the latency the caller plans with (fps_census7_d128u32_6c9a83_reduction_tree checks it)
+  // the latency the caller plans with (fps_census7_d128u32_6e9658_reduction_tree checks it)
   parameter LAT = 1
 ) (
   input  wire             clk,
@@ -2906,7 +2926,7 @@ module fps_census7_d128u32_6c9a83_min_tree #(
       assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
     end
   endgenerate
-  fps_census7_d128u32_6c9a83_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+  fps_census7_d128u32_6e9658_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
                             .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
     .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
 endmodule
@@ -2921,7 +2941,7 @@ endmodule
 // above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
 // in a ROWS-row RAM) follows from the entering row's slot with small numbers only (a wide modulo
 // would be slow logic). row_y is the centre row of the entering column (no borrow).
-module fps_census7_d128u32_6c9a83_window_centre #(
+module fps_census7_d128u32_6e9658_window_centre #(
   parameter LAG = 2,
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
@@ -2944,10 +2964,10 @@ module fps_census7_d128u32_6c9a83_window_centre #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (LAG < 0 || LAG >= ROW_SLOTS) begin : invalid_LAG
-      fps_census7_d128u32_6c9a83_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_window_centre_LAG_is_not_within_a_row_time failed ();
     end
     if (ROWS < 1 || ROWS > (1 << SLOT_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid_widths
-      fps_census7_d128u32_6c9a83_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_window_centre_SLOT_W_or_X_W_too_narrow failed ();
     end
   endgenerate
   localparam integer LAG_I = LAG;
@@ -3000,7 +3020,7 @@ endmodule
 //
 // Latency (en-high steps from window to median): LATENCY = 3 * WORD_W (three steps for the count
 // stage and for each disparity bit, the last one holding the output), whatever M.
-module fps_census7_d128u32_6c9a83_median_select #(
+module fps_census7_d128u32_6e9658_median_select #(
   // window side (3, 5 or 7)
   parameter M = 5,
   // word width: disparity bits plus the invalid flag on top (at least 2)
@@ -3018,10 +3038,10 @@ module fps_census7_d128u32_6c9a83_median_select #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (M != 3 && M != 5 && M != 7) begin : invalid_M
-      fps_census7_d128u32_6c9a83_invalid_parameters_median_select_M_is_not_3_5_or_7 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_median_select_M_is_not_3_5_or_7 failed ();
     end
     if (WORD_W < 2) begin : invalid_WORD_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_median_select_WORD_W_below_2 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_median_select_WORD_W_below_2 failed ();
     end
   endgenerate
   localparam N = M * M;
@@ -3193,7 +3213,7 @@ endmodule
 // Hamming distance's counts of 6-bit chunks (or the absolute difference) and the border flag,
 // then their sum and the border's COST_MAX. Codes of more than 8 chunks (census windows above
 // 7x7) take a step more: sums of up to 8 counts, then their total.
-module fps_census7_d128u32_6c9a83_cost_lanes #(
+module fps_census7_d128u32_6e9658_cost_lanes #(
   // 1: census codes, cost = Hamming distance; 0: ranks, cost = absolute difference
   parameter HAMMING = 1,
   parameter CODE_W = 48,
@@ -3223,13 +3243,13 @@ module fps_census7_d128u32_6c9a83_cost_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_cost_lanes_UF_is_not_1_to_512 failed ();
     end
     if (COST_MAX >= (1 << COST_W) || (HAMMING != 0 && CODE_W >= (1 << COST_W)) || (HAMMING == 0 && COST_W < CODE_W)) begin : invalid_COST_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_cost_lanes_COST_W_does_not_hold_the_costs failed ();
     end
     if (LAT != ((HAMMING != 0 && CODE_W > 48) ? 3 : 2)) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   // wide enough for x + 256, any index + 256 and the width, plus one bit so all zero-extend
@@ -3322,13 +3342,13 @@ endmodule
 `resetall
 `default_nettype none
 // The fused cost (docs/semantics.md, section 2, "Fused cost"): each lane's cost plus
-// floor(WEIGHT * min(|F_B - F_M|, TRUNC) / 8), F the pixels' features (fps_census7_d128u32_6c9a83_fused_features).
+// floor(WEIGHT * min(|F_B - F_M|, TRUNC) / 8), F the pixels' features (fps_census7_d128u32_6e9658_fused_features).
 // The features enter with the lanes' inputs and the plain costs leave the lanes LANES_LAT steps
 // later. The term takes three register steps (the absolute difference, its truncation, the
 // weighting as shifts and adds: no multiplier), the shorter of the two waits for the other, and a
 // last step adds them. A plain cost of COST_MAX marks a match pixel outside the row (in the row
 // it stays at most COST_MAX - floor(WEIGHT * TRUNC / 8)): that cost stays COST_MAX.
-module fps_census7_d128u32_6c9a83_fused_term #(
+module fps_census7_d128u32_6e9658_fused_term #(
   parameter UF = 8,
   parameter COST_W = 6,
   // the largest cost, the term's bound included (gen/core/widths.cpp)
@@ -3357,10 +3377,10 @@ module fps_census7_d128u32_6c9a83_fused_term #(
   generate
     if (WEIGHT < 1 || WEIGHT > 32 || TRUNC < 1 || TRUNC > 255 || FEATURE_W != (GRADIENT != 0 ? 9 : 8) ||
         COST_MAX >= (1 << COST_W) || WEIGHT * TRUNC / 8 > COST_MAX) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_needs_WEIGHT_1_to_32_TRUNC_1_to_255_and_COST_MAX_holding_the_term failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_fused_term_needs_WEIGHT_1_to_32_TRUNC_1_to_255_and_COST_MAX_holding_the_term failed ();
     end
     if (LANES_LAT < 1 || LAT != ALIGNED + 1) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_fused_term_LAT_is_not_the_latency failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_fused_term_LAT_is_not_the_latency failed ();
     end
   endgenerate
   // WEIGHT * TRUNC < 8 * (COST_MAX + 1): the weighted difference fits in COST_W + 3 bits, and so
@@ -3401,13 +3421,13 @@ module fps_census7_d128u32_6c9a83_fused_term #(
     end
     // The shorter of the two paths waits for the longer.
     if (LANES_LAT < TERM_STEPS) begin : plain_waits
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(TERM_STEPS - LANES_LAT)) plain_wait (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(UF*COST_W), .DEPTH(TERM_STEPS - LANES_LAT)) plain_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(plain_costs), .out(plain_aligned));
     end else begin : plain_in_time
       assign plain_aligned = plain_costs;
     end
     if (LANES_LAT > TERM_STEPS) begin : terms_wait
-      fps_census7_d128u32_6c9a83_delay #(.WIDTH(UF*COST_W), .DEPTH(LANES_LAT - TERM_STEPS)) term_wait (
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(UF*COST_W), .DEPTH(LANES_LAT - TERM_STEPS)) term_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(terms), .out(terms_aligned));
     end else begin : terms_in_time
       assign terms_aligned = terms;
@@ -3425,15 +3445,15 @@ endmodule
 
 `resetall
 `default_nettype none
-// The skeleton of the pipelined selection trees (fps_census7_d128u32_6c9a83_min_tree, fps_census7_d128u32_6c9a83_unique_tree): N
+// The skeleton of the pipelined selection trees (fps_census7_d128u32_6e9658_min_tree, fps_census7_d128u32_6e9658_unique_tree): N
 // summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
 // LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
 // last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
 // the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
-// summary that fps_census7_d128u32_6c9a83_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// summary that fps_census7_d128u32_6e9658_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
 // LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
 // formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
-module fps_census7_d128u32_6c9a83_reduction_tree #(
+module fps_census7_d128u32_6e9658_reduction_tree #(
   parameter N = 8,
   parameter W = 8,
   parameter IDX_W = 3,
@@ -3452,16 +3472,16 @@ module fps_census7_d128u32_6c9a83_reduction_tree #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || W < 1) begin : invalid_N
-      fps_census7_d128u32_6c9a83_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
     end
     if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_census7_d128u32_6c9a83_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
     end
     if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_census7_d128u32_6c9a83_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
     end
     if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
-      fps_census7_d128u32_6c9a83_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
     end
   endgenerate
 
@@ -3481,7 +3501,7 @@ module fps_census7_d128u32_6c9a83_reduction_tree #(
           wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
           wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
           if (UNIQUE != 0) begin : unique_join
-            fps_census7_d128u32_6c9a83_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+            fps_census7_d128u32_6e9658_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
           end else begin : min_join
             wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
             assign s_d[i*S_W +: S_W] = take_b ? b : a;
@@ -3508,9 +3528,9 @@ endmodule
 `resetall
 `default_nettype none
 // Joins the winner-take-all summaries of two adjacent index ranges, A (lower) and B (higher), as
-// fps_census7_d128u32_6c9a83_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
+// fps_census7_d128u32_6e9658_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
 // first, last} with W-bit values and an IDX_W-bit index.
-module fps_census7_d128u32_6c9a83_unique_join #(
+module fps_census7_d128u32_6e9658_unique_join #(
   parameter W = 10,
   parameter IDX_W = 3
 ) (
@@ -3521,7 +3541,7 @@ module fps_census7_d128u32_6c9a83_unique_join #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (W < 1 || IDX_W < 1) begin : invalid
-      fps_census7_d128u32_6c9a83_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+      fps_census7_d128u32_6e9658_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
     end
   endgenerate
   localparam S_W = 5 * W + IDX_W + 2;

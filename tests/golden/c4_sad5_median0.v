@@ -13,6 +13,7 @@
 //   dmax = 128
 //   min-disp = 0
 //   uf = 32
+//   ppc = 1
 //   paths = 0,45,90,135
 //   p1 = 7
 //   p2 = 86
@@ -52,10 +53,10 @@
 // AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:
 // tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).
 // m_axis_disp: the disparity words; tdata 8 bits: disparity [6:0], invalid [7].
-// Frames are at most 1242 x 375 pixels; fps_sad5_d128u32_fc707c_video_in checks the input's
+// Frames are at most 1242 x 375 pixels; fps_sad5_d128u32_baf239_video_in checks the input's
 // framing and resynchronises on the next start of frame after an error.
-// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_sad5_d128u32_fc707c_regs.h).
-module fps_sad5_d128u32_fc707c_top (
+// Settings and status: AXI4-Lite s_axi_ctrl (register map in fps_sad5_d128u32_baf239_regs.h).
+module fps_sad5_d128u32_baf239_top (
   (* X_INTERFACE_INFO = "xilinx.com:signal:clock:1.0 aclk CLK" *)
   (* X_INTERFACE_PARAMETER = "ASSOCIATED_BUSIF s_axis_left:s_axis_right:m_axis_disp:s_axi_ctrl, ASSOCIATED_RESET aresetn" *)
   input  wire aclk,
@@ -101,7 +102,7 @@ module fps_sad5_d128u32_fc707c_top (
   wire [9:0] left_beat;
   wire left_valid;
   wire left_ready;
-  fps_sad5_d128u32_fc707c_axis_skid #(
+  fps_sad5_d128u32_baf239_axis_skid #(
     .DATA_W(10)
   ) left_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_left_tuser, s_axis_left_tlast, s_axis_left_tdata}),
@@ -110,7 +111,7 @@ module fps_sad5_d128u32_fc707c_top (
   wire [9:0] right_beat;
   wire right_valid;
   wire right_ready;
-  fps_sad5_d128u32_fc707c_axis_skid #(
+  fps_sad5_d128u32_baf239_axis_skid #(
     .DATA_W(10)
   ) right_slice (
     .clk(aclk), .rst(rst), .s_data({s_axis_right_tuser, s_axis_right_tlast, s_axis_right_tdata}),
@@ -133,11 +134,11 @@ module fps_sad5_d128u32_fc707c_top (
   wire [12:0] p2;
   wire [6:0] uniqueness;
   wire [3:0] lr_threshold;
-  fps_sad5_d128u32_fc707c_control #(
-    .X_W(11), .Y_W(9), .PATH_W(13), .MIN_WIDTH(128), .MAX_WIDTH(1242), .MIN_HEIGHT(4), .MAX_HEIGHT(375),
-    .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0), .LR_SETTABLE(1),
-    .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00fc707c),
-    .INFO({32'd0, 32'd0, 32'd0, 32'd0, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
+  fps_sad5_d128u32_baf239_control #(
+    .X_W(11), .Y_W(9), .PATH_W(13), .MIN_WIDTH(128), .MAX_WIDTH(1242), .WIDTH_STEP(1), .MIN_HEIGHT(4),
+    .MAX_HEIGHT(375), .P1_INIT(7), .P2_INIT(86), .P2_MAX(86), .UNIQUENESS_SETTABLE(0), .UNIQUENESS_INIT(0),
+    .LR_SETTABLE(1), .LR_THRESHOLD_INIT(1), .VERSION(32'h<version>), .CONFIG_ID(32'h00baf239),
+    .INFO({32'd0, 32'd0, 32'd0, 32'd1, 32'd1863000, 32'd4, 32'd128, 32'd526343, 32'd2, 32'd86, 32'd15, 32'd328962, 32'd32, 32'd128, 32'd375, 32'd1242})
   ) control (
     .clk(aclk), .rst(rst), .s_axi_awaddr(s_axi_ctrl_awaddr), .s_axi_awvalid(s_axi_ctrl_awvalid),
     .s_axi_awready(s_axi_ctrl_awready), .s_axi_wdata(s_axi_ctrl_wdata), .s_axi_wstrb(s_axi_ctrl_wstrb),
@@ -155,8 +156,8 @@ module fps_sad5_d128u32_fc707c_top (
   wire framed_ready;
   wire [7:0] framed_left;
   wire [7:0] framed_right;
-  fps_sad5_d128u32_fc707c_video_in #(
-    .X_W(11), .Y_W(9)
+  fps_sad5_d128u32_baf239_video_in #(
+    .DATA_W(8), .X_W(11), .Y_W(9)
   ) framing (
     .clk(aclk), .rst(rst), .enable(enable), .left(left_beat), .left_valid(left_valid),
     .left_ready(left_ready), .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
@@ -171,7 +172,7 @@ module fps_sad5_d128u32_fc707c_top (
   wire take;
   wire [7:0] core_left;
   wire [7:0] core_right;
-  fps_sad5_d128u32_fc707c_axis_skid #(
+  fps_sad5_d128u32_baf239_axis_skid #(
     .DATA_W(16)
   ) pixel_slice (
     .clk(aclk), .rst(rst), .s_data({framed_left, framed_right}), .s_valid(framed_valid),
@@ -182,7 +183,7 @@ module fps_sad5_d128u32_fc707c_top (
   wire out_first;
   wire out_last;
   wire [7:0] out_word;
-  fps_sad5_d128u32_fc707c_sgm_core core (
+  fps_sad5_d128u32_baf239_sgm_core core (
     .clk(aclk), .rst(rst), .start(core_start), .idle(core_idle), .settings_held(settings_held),
     .accepting(core_accepting), .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2),
     .uniqueness(uniqueness), .lr_threshold(lr_threshold), .in_valid(core_valid), .in_left(core_left),
@@ -190,7 +191,7 @@ module fps_sad5_d128u32_fc707c_top (
     .out_first(out_first), .out_last(out_last), .frame_end(frame_done));
 
   // Output register slices.
-  fps_sad5_d128u32_fc707c_axis_skid #(
+  fps_sad5_d128u32_baf239_axis_skid #(
     .DATA_W(10)
   ) disp_slice (
     .clk(aclk), .rst(rst), .s_data({out_first, out_last, out_word}), .s_valid(out_push), .s_ready(out_ready),
@@ -212,7 +213,7 @@ endmodule
 //   disparity reorder
 //   left-right check
 //   output
-module fps_sad5_d128u32_fc707c_sgm_core (
+module fps_sad5_d128u32_baf239_sgm_core (
   input  wire clk,
   input  wire rst,
   // Frames: while accepting (a register), start begins one: in an idle core, or following on
@@ -269,7 +270,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
     frame_last_x <= frame_width - 1'b1;
     frame_last_y <= frame_height - 1'b1;
   end
-  fps_sad5_d128u32_fc707c_sequencer #(
+  fps_sad5_d128u32_baf239_sequencer #(
     .STEP_W(21)
   ) sequencer (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
@@ -289,7 +290,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire signed [10:0] transform_y;
   wire [1:0] transform_slot;
   wire [4:0] newest_row_valid;
-  fps_sad5_d128u32_fc707c_front_end #(
+  fps_sad5_d128u32_baf239_front_end #(
     .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(4), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
@@ -305,7 +306,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire signed [10:0] history_y;
   wire [1:0] history_slot;
   wire [415:0] costs;
-  fps_sad5_d128u32_fc707c_pixel_window_cost #(
+  fps_sad5_d128u32_baf239_pixel_window_cost #(
     .N(5), .ZERO_MEAN(0), .COLUMN_SUM_W(11), .MEAN_MUL(1), .MEAN_SHIFT(0), .DMAX(128), .UF(32), .COST_W(13),
     .COST_MAX(6375), .COST_ROW_W(2), .X_W(11), .SIGNED_Y_W(11), .G_W(2), .MIN_DISP(0), .LAT(4)
   ) cost (
@@ -322,7 +323,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [1:0] cost_group;
   wire [14:0] cost_raddr;
   wire [415:0] cost_q;
-  fps_sad5_d128u32_fc707c_cost_reorder #(
+  fps_sad5_d128u32_baf239_cost_reorder #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(4), .COST_ROW_W(2), .COST_AW(15),
     .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
   ) cost_reorder (
@@ -340,7 +341,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire completed_we;
   wire [12:0] completed_waddr;
   wire [6:0] completed_wdata;
-  fps_sad5_d128u32_fc707c_lr2_match #(
+  fps_sad5_d128u32_baf239_lr2_match #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
     .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
     .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
@@ -368,7 +369,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   wire [857:0] agg_edge;
   wire [428:0] agg_edge135;
-  fps_sad5_d128u32_fc707c_aggregator #(
+  fps_sad5_d128u32_baf239_aggregator #(
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
     .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
     .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .MATCH_SIDE(0)
@@ -385,7 +386,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [10:0] winner_x;
   wire [2:0] winner_slot;
   wire [7:0] winner_word;
-  fps_sad5_d128u32_fc707c_wta #(
+  fps_sad5_d128u32_baf239_wta #(
     .UF(32), .SUM_W(15), .DISP_W(7), .LANE_W(5), .G_W(2), .TAG_W(15), .LEVELS_PER_STAGE(2), .TREE_LAT(3)
   ) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(agg_sums), .group(agg_group),
@@ -404,7 +405,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   wire [8:0] read_y;
   wire [7:0] read_word;
   wire [2:0] read_slot_row;
-  fps_sad5_d128u32_fc707c_disparity_reorder #(
+  fps_sad5_d128u32_baf239_disparity_reorder #(
     .ROW_SLOTS(1242), .G(4), .DISP_W(7), .OUT_ROWS(6), .OUT_ROW_W(3), .DISP_AW(13), .EXTRA_ROWS(0), .X_W(11),
     .Y_W(9), .G_W(2)
   ) disparity_reorder (
@@ -424,7 +425,7 @@ module fps_sad5_d128u32_fc707c_sgm_core (
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] right_dm;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_fc707c_lr_check #(
+  fps_sad5_d128u32_baf239_lr_check #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .DMAX(128), .DISP_W(7), .REFINED_W(0), .OUT_ROWS(6), .OUT_ROW_W(3),
     .DISP_AW(13), .ROW_END(0), .END_AW(5), .RIGHT_VIEW(0), .X_W(11), .Y_W(9), .LANE_W(5), .MIN_DISP(0)
   ) lr_check (
@@ -465,7 +466,7 @@ endmodule
 `default_nettype none
 // Two-entry AXI4-Stream register slice: every output is registered, so no combinational path
 // runs from m_ready to s_ready, and a word is accepted every cycle while the sink keeps up.
-module fps_sad5_d128u32_fc707c_axis_skid #(
+module fps_sad5_d128u32_baf239_axis_skid #(
   // data bits carried (tdata and any sideband packed together)
   parameter DATA_W = 8
 ) (
@@ -481,7 +482,7 @@ module fps_sad5_d128u32_fc707c_axis_skid #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DATA_W < 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_axis_skid_DATA_W_below_1 failed ();
     end
   endgenerate
   reg [DATA_W-1:0] data_q, skid_q;
@@ -520,13 +521,15 @@ endmodule
 // them to the frame_* outputs, which hold for the whole frame. A write of a value out of range, of
 // a read-only register or with partial byte strobes changes nothing, answers SLVERR and is
 // counted. One transaction of each kind at a time; unmapped addresses read 0.
-module fps_sad5_d128u32_fc707c_control #(
+module fps_sad5_d128u32_baf239_control #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter PATH_W = 8,
   // ranges and reset values of the settings
   parameter MIN_WIDTH = 16,
   parameter MAX_WIDTH = 64,
+  // the width is a multiple of this (the pixels per beat: 1, 2 or 4)
+  parameter WIDTH_STEP = 1,
   parameter MIN_HEIGHT = 4,
   parameter MAX_HEIGHT = 16,
   parameter P1_INIT = 7,
@@ -582,17 +585,19 @@ module fps_sad5_d128u32_fc707c_control #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W)) begin : invalid_width
-      fps_sad5_d128u32_fc707c_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W failed ();
+    if (MIN_WIDTH < 1 || MIN_WIDTH > MAX_WIDTH || MAX_WIDTH >= (1 << X_W) ||
+        (WIDTH_STEP != 1 && WIDTH_STEP != 2 && WIDTH_STEP != 4) || MIN_WIDTH % WIDTH_STEP != 0 ||
+        MAX_WIDTH % WIDTH_STEP != 0) begin : invalid_width
+      fps_sad5_d128u32_baf239_invalid_parameters_control_width_range_empty_or_too_wide_for_X_W_or_off_WIDTH_STEP failed ();
     end
     if (MIN_HEIGHT < 1 || MIN_HEIGHT > MAX_HEIGHT || MAX_HEIGHT >= (1 << Y_W)) begin : invalid_height
-      fps_sad5_d128u32_fc707c_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_control_height_range_empty_or_too_wide_for_Y_W failed ();
     end
     if (P1_INIT < 0 || P1_INIT > P2_INIT || P2_INIT > P2_MAX || P2_MAX >= (1 << PATH_W)) begin : invalid_penalties
-      fps_sad5_d128u32_fc707c_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_control_needs_P1_INIT_at_most_P2_INIT_at_most_P2_MAX_within_PATH_W failed ();
     end
     if (UNIQUENESS_INIT < 0 || UNIQUENESS_INIT > 99 || LR_THRESHOLD_INIT < 0 || LR_THRESHOLD_INIT > 15) begin : invalid_settings
-      fps_sad5_d128u32_fc707c_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_control_UNIQUENESS_INIT_or_LR_THRESHOLD_INIT_out_of_range failed ();
     end
   endgenerate
   localparam [7:0] A_CONTROL = 8'h00, A_STATUS = 8'h04, A_VERSION = 8'h08, A_CONFIG_ID = 8'h0C,
@@ -601,7 +606,8 @@ module fps_sad5_d128u32_fc707c_control #(
                    A_FRAMES_DROPPED = 8'h34, A_FRAMES_TRUNCATED = 8'h38, A_PROTOCOL_ERRORS = 8'h3C,
                    A_INFO = 8'h40;
   localparam [31:0] MIN_WIDTH_V = MIN_WIDTH, MAX_WIDTH_V = MAX_WIDTH, MIN_HEIGHT_V = MIN_HEIGHT,
-                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX;
+                    MAX_HEIGHT_V = MAX_HEIGHT, P1_MAX_V = P2_MAX < 255 ? P2_MAX : 255, P2_MAX_V = P2_MAX,
+                    WIDTH_STEP_V = WIDTH_STEP;
 
   reg             enable_q;
   reg [X_W-1:0]   width_q;
@@ -636,7 +642,7 @@ module fps_sad5_d128u32_fc707c_control #(
       A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
       A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
       A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
-      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V;
+      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V && (w & (WIDTH_STEP_V - 1)) == 0;
       A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
       default:        accepted = 1'b0;
     endcase
@@ -775,6 +781,8 @@ endmodule
 // tlast on each row's last.
 // The core needs frames of at least 2 x 2 (the control block's MIN_WIDTH and MIN_HEIGHT are
 // larger): the position flags are registers, set for the next pixel as one is taken.
+// With several pixels per beat (ppc > 1), a "pixel" here is a beat of DATA_W bits and
+// frame_width counts beats.
 //   SEEK: beats that do not start a frame are skipped. When both streams offer a start of frame
 //         and the core accepts a frame, the frame begins (or, while disabled, is skipped as dropped).
 //         If one stream skipped at least half a frame's rows more than the other, the other's
@@ -787,7 +795,9 @@ endmodule
 //   After the frame's last pixel the unit takes nothing for a cycle, then seeks again.
 // Every event is a one-cycle pulse for the status counters. Skipped data counts as one
 // protocol error per stretch, unless it follows an error already counted or a dropped frame.
-module fps_sad5_d128u32_fc707c_video_in #(
+module fps_sad5_d128u32_baf239_video_in #(
+  // bits of a beat's pixels (8 per pixel)
+  parameter DATA_W = 8,
   parameter X_W = 7,
   parameter Y_W = 6
 ) (
@@ -796,10 +806,10 @@ module fps_sad5_d128u32_fc707c_video_in #(
   // new frames are taken while high, skipped (and counted as dropped) while low
   input  wire           enable,
   // the streams after their register slices: {tuser, tlast, tdata}
-  input  wire [9:0]     left,
+  input  wire [DATA_W+1:0] left,
   input  wire           left_valid,
   output wire           left_ready,
-  input  wire [9:0]     right,
+  input  wire [DATA_W+1:0] right,
   input  wire           right_valid,
   output wire           right_ready,
   // the core: a frame begins with core_start while the core accepts one (idle, or able to take
@@ -809,8 +819,8 @@ module fps_sad5_d128u32_fc707c_video_in #(
   input  wire [X_W-1:0] frame_width,
   input  wire [Y_W-1:0] frame_height,
   output wire           in_valid,
-  output wire [7:0]     in_left,
-  output wire [7:0]     in_right,
+  output wire [DATA_W-1:0] in_left,
+  output wire [DATA_W-1:0] in_right,
   input  wire           in_take,
   // events
   output wire           frame_dropped,
@@ -819,8 +829,8 @@ module fps_sad5_d128u32_fc707c_video_in #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (X_W < 2 || Y_W < 2) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_video_in_X_W_or_Y_W_below_2 failed ();
+    if (X_W < 2 || Y_W < 2 || DATA_W < 8) begin : invalid
+      fps_sad5_d128u32_baf239_invalid_parameters_video_in_X_W_or_Y_W_below_2_or_DATA_W_below_8 failed ();
     end
   endgenerate
   localparam [1:0] SEEK = 2'd0, RUN = 2'd1, PAD = 2'd2;
@@ -829,8 +839,8 @@ module fps_sad5_d128u32_fc707c_video_in #(
   reg [X_W-1:0] x;
   reg [Y_W-1:0] y;
 
-  wire left_user = left[9], left_last = left[8];
-  wire right_user = right[9], right_last = right[8];
+  wire left_user = left[DATA_W+1], left_last = left[DATA_W];
+  wire right_user = right[DATA_W+1], right_last = right[DATA_W];
   wire both = left_valid && right_valid;
   // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
   // on the path from the streams to the core.
@@ -861,8 +871,8 @@ module fps_sad5_d128u32_fc707c_video_in #(
   wire fault = state == RUN && !done && both && !flags_match;
   wire passing = state == RUN && !done && both && flags_match;
   assign in_valid = passing || (state == PAD && !done);
-  assign in_left = passing ? left[7:0] : 8'd0;
-  assign in_right = passing ? right[7:0] : 8'd0;
+  assign in_left = passing ? left[DATA_W-1:0] : {DATA_W{1'b0}};
+  assign in_right = passing ? right[DATA_W-1:0] : {DATA_W{1'b0}};
   wire pass_take = passing && in_take;
   assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
   assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
@@ -961,14 +971,14 @@ endmodule
 // any other and begins when the frame ends; the settings cannot have changed (settings_held
 // falls in the cycle after a write is taken, and the write is applied a cycle later). So no
 // start taken while accepting is lost (tests/formal/sequencer_props.v).
-module fps_sad5_d128u32_fc707c_sequencer #(
+module fps_sad5_d128u32_baf239_sequencer #(
   parameter STEP_W = 20
 ) (
   input  wire              clk,
   input  wire              rst,
   input  wire              start,
   output wire              idle,
-  // the written settings equal the running frame's (a register, fps_sad5_d128u32_fc707c_control)
+  // the written settings equal the running frame's (a register, fps_sad5_d128u32_baf239_control)
   input  wire              settings_held,
   output reg               accepting,
   input  wire              follow_open,
@@ -989,7 +999,7 @@ module fps_sad5_d128u32_fc707c_sequencer #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (STEP_W < 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_sequencer_STEP_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_sequencer_STEP_W_below_1 failed ();
     end
   endgenerate
   reg starting, in_frame, pending;
@@ -1036,7 +1046,7 @@ endmodule
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
 // rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
 // rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
-module fps_sad5_d128u32_fc707c_front_end #(
+module fps_sad5_d128u32_baf239_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -1082,10 +1092,10 @@ module fps_sad5_d128u32_fc707c_front_end #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_sad5_d128u32_fc707c_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_front_end_N_is_not_odd_and_at_least_3 failed ();
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -1096,7 +1106,7 @@ module fps_sad5_d128u32_fc707c_front_end #(
   wire [X_W-1:0] si;
   wire [Y_W-1:0] ti;
   /* verilator lint_off PINCONNECTEMPTY */  // the centre's RAM slot has a counter of its own
-  fps_sad5_d128u32_fc707c_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
+  fps_sad5_d128u32_baf239_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(1), .G_W(G_W), .X_W(X_W), .Y_W(Y_W), .K_W(1))
     input_position (.clk(clk), .restart(restart), .en(adv), .wrap(overlap), .height(frame_height), .group(group),
                     .slot(si), .row(ti), .row_slot(), .slot_end(slot_end));
   /* verilator lint_on PINCONNECTEMPTY */
@@ -1107,7 +1117,7 @@ module fps_sad5_d128u32_fc707c_front_end #(
   localparam [G_W-1:0] GROUP_BEFORE_LAST = BEFORE_LAST_I[G_W-1:0];
   // Whether the slot is the row-time's last, the frame's last column and last row, as registers
   // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
-  // before step 0 (fps_sad5_d128u32_fc707c_sequencer) to the frame's end.
+  // before step 0 (fps_sad5_d128u32_baf239_sequencer) to the frame's end.
   localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
   localparam [X_W-1:0] TWO_X = 2;
   localparam [Y_W-1:0] TWO_Y = 2;
@@ -1165,10 +1175,10 @@ module fps_sad5_d128u32_fc707c_front_end #(
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
 
-  fps_sad5_d128u32_fc707c_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+  fps_sad5_d128u32_baf239_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_left : 8'd0), .window(window_left));
-  fps_sad5_d128u32_fc707c_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+  fps_sad5_d128u32_baf239_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
     .word(in_due ? in_right : 8'd0), .window(window_right));
 
@@ -1198,7 +1208,7 @@ module fps_sad5_d128u32_fc707c_front_end #(
   reg  signed [SIGNED_Y_W-1:0] newest_prev_y;
   reg  [COST_ROW_W-1:0] newest_slot, newest_prev_slot;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_sad5_d128u32_fc707c_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
+  fps_sad5_d128u32_baf239_frame_row #(.Y_W(SIGNED_Y_W), .START(-R)) newest_row (
     .clk(clk), .restart(restart), .next(input_row_ends), .wrap(overlap), .height(height_y), .row(newest_y), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1239,10 +1249,10 @@ module fps_sad5_d128u32_fc707c_front_end #(
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_fc707c_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
+  fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
     .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
-  fps_sad5_d128u32_fc707c_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
+  fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
@@ -1267,9 +1277,9 @@ endmodule
 // history_x / history_y / history_slot are the centre whose costs the lanes compute in this slot.
 // ZSAD spreads the base window's mean over three shifts after the window's register (its row
 // sums, their total, the constant multiply), so the window, its position and the match column
-// wait two shifts longer than for SAD. fps_sad5_d128u32_fc707c_cost_history holds the window and its centre,
+// wait two shifts longer than for SAD. fps_sad5_d128u32_baf239_cost_history holds the window and its centre,
 // and the match columns, with the disparity offset's delays.
-module fps_sad5_d128u32_fc707c_pixel_window_cost #(
+module fps_sad5_d128u32_baf239_pixel_window_cost #(
   parameter N = 5,
   // ZSAD: subtract the windows' means
   parameter ZERO_MEAN = 0,
@@ -1286,7 +1296,7 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
   parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   parameter MIN_DISP = 0,
-  // the cost lanes' latency the stage plans with (fps_sad5_d128u32_fc707c_window_cost_lanes checks it)
+  // the cost lanes' latency the stage plans with (fps_sad5_d128u32_baf239_window_cost_lanes checks it)
   parameter LAT = 4
 ) (
   input  wire                   clk,
@@ -1311,14 +1321,14 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3 || N % 2 == 0) begin : invalid_N
-      fps_sad5_d128u32_fc707c_invalid_parameters_pixel_window_cost_N_is_not_odd_and_at_least_3 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_pixel_window_cost_N_is_not_odd_and_at_least_3 failed ();
     end
     if (255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_pixel_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_pixel_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
     end
   endgenerate
   wire [N*N*8-1:0] base_masked;
-  fps_sad5_d128u32_fc707c_window_mask #(.N(N), .WORD_W(8)) base_mask (
+  fps_sad5_d128u32_baf239_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
   localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
   localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
@@ -1330,7 +1340,7 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
     for (e = 0; e < N; e = e + 1)
       newest_column[e*8 +: 8] = newest_row_valid[e] ? window_right[(e*N + N - 1)*8 +: 8] : 8'd0;
   wire [COLUMN_SUM_W-1:0] newest_sum;
-  fps_sad5_d128u32_fc707c_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
+  fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) newest_total (.clk(clk), .en(shift), .values(newest_column), .sum(newest_sum));
   // Registered with the window (shift k): the match column and its sum. The base window is held
   // with its position (transform_* lags the window by one, so the position is a shift later)
   // and registered once more.
@@ -1345,7 +1355,7 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
       base_h   <= base_t;
     end
   wire [(UF+N-1)*COLUMN_W-1:0] view_columns;
-  fps_sad5_d128u32_fc707c_cost_history #(.BASE_W(N*N*8), .POSITION_W(POSITION_W), .COLUMN_W(COLUMN_W), .SPAN(N), .DMAX(DMAX),
+  fps_sad5_d128u32_baf239_cost_history #(.BASE_W(N*N*8), .POSITION_W(POSITION_W), .COLUMN_W(COLUMN_W), .SPAN(N), .DMAX(DMAX),
                           .UF(UF), .G_W(G_W), .MIN_DISP(MIN_DISP)) cost_history (
     .clk(clk), .adv(adv), .slot_end(slot_end), .shift(shift), .base(base_masked),
     .position({transform_x, transform_y, transform_slot}), .column(column_l), .base_held(base_t),
@@ -1368,21 +1378,21 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
   genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(COLUMN_W), .DEPTH(2)) column_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(COLUMN_W), .DEPTH(2)) column_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in(column_t), .out(column_l));
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(N*N*8 + POSITION_W), .DEPTH(2)) base_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(N*N*8 + POSITION_W), .DEPTH(2)) base_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_h, position_h}),
         .out({base_l, history_x, history_y, history_slot}));
       // The base window's mean over three shifts from the held window: its row sums at
       // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
       wire [N*COLUMN_SUM_W-1:0] row_sums;
       for (r = 0; r < N; r = r + 1) begin : row
-        fps_sad5_d128u32_fc707c_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
+        fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
           .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLUMN_SUM_W +: COLUMN_SUM_W]));
       end
       reg  [N*COLUMN_SUM_W-1:0] row_sums_q;
       wire [WINSUM_W-1:0]   total;
-      fps_sad5_d128u32_fc707c_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
+      fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
         .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
       reg  [WINSUM_W-1:0]   total_q;
       reg  [7:0]            mean_q;
@@ -1401,7 +1411,7 @@ module fps_sad5_d128u32_fc707c_pixel_window_cost #(
       assign base_mean = 8'd0;
     end
   endgenerate
-  fps_sad5_d128u32_fc707c_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
+  fps_sad5_d128u32_baf239_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
                                .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(G_W), .X_W(X_W),
                                .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT), .MIN_DISP(MIN_DISP),
                                .LAT(LAT)) lanes (
@@ -1417,7 +1427,7 @@ endmodule
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
 // COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
 // A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
-module fps_sad5_d128u32_fc707c_cost_reorder #(
+module fps_sad5_d128u32_baf239_cost_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -1453,24 +1463,24 @@ module fps_sad5_d128u32_fc707c_cost_reorder #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (LAT < 1) begin : invalid_LAT
-      fps_sad5_d128u32_fc707c_invalid_parameters_cost_reorder_LAT_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_cost_reorder_LAT_below_1 failed ();
     end
     if (COST_AW < $clog2(COST_ROWS * ROW_SLOTS * G) || COST_ROWS > (1 << COST_ROW_W) || G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2) begin : invalid_widths
-      fps_sad5_d128u32_fc707c_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_cost_reorder_addresses_or_positions_too_narrow failed ();
     end
   endgenerate
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire history_valid = {1'b0, history_x} < width_x && history_y >= 0 && history_y < height_y;
-  fps_sad5_d128u32_fc707c_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
+  fps_sad5_d128u32_baf239_delay #(.WIDTH(1 + X_W + COST_ROW_W + G_W), .DEPTH(LAT), .RESET(1)) cost_tag (
     .clk(clk), .rst(restart), .en(adv), .in({history_valid, history_x, history_slot, group}),
     .out({cost_valid, cost_x, cost_row_slot, cost_group}));
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
   /* verilator lint_off WIDTH */
   wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
   /* verilator lint_on WIDTH */
-  fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+  fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
 endmodule
@@ -1484,7 +1494,7 @@ endmodule
 // cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
 // word of the match side reads all banks at one address.
 // From match_on on, completed_* writes Dm(x') of each match pixel.
-module fps_sad5_d128u32_fc707c_lr2_match #(
+module fps_sad5_d128u32_baf239_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
@@ -1518,7 +1528,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   input  wire                 restart,
   input  wire                 adv,
   input  wire                 match_on,
-  // back-to-back frames, as fps_sad5_d128u32_fc707c_aggregator takes them
+  // back-to-back frames, as fps_sad5_d128u32_baf239_aggregator takes them
   input  wire                 overlap,
   input  wire                 wrapped,
   input  wire [X_W-1:0]       frame_width,
@@ -1540,7 +1550,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
     if (DMAX != G * UF || COST_ROWS != K + 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
@@ -1558,7 +1568,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
       wire [P_W-1:0] d_behind = cost_group * UF + l + BEHIND;
       wire in_row = x_ahead >= d_behind && (MIN_DISP >= 0 || x_ahead < d_behind + frame_width);
       wire [COST_AW-1:0] waddr = (cost_row_slot * ROW_SLOTS + (x_ahead - d_behind)) * G + cost_group;
-      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
         .clk(clk), .we(adv && cost_valid && in_row),
         .waddr(waddr),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
@@ -1579,7 +1589,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   wire [(UF+1)*PATH_W-1:0]   edges135;
   /* verilator lint_on UNUSEDSIGNAL */
   /* verilator lint_off PINCONNECTEMPTY */  // the schedule serves a chain-order cost stage only
-  fps_sad5_d128u32_fc707c_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
+  fps_sad5_d128u32_baf239_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF),
                         .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W),
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
@@ -1597,7 +1607,7 @@ module fps_sad5_d128u32_fc707c_lr2_match #(
   /* verilator lint_off UNUSEDSIGNAL */  // the match side's disparities are never invalid
   wire [DISP_W:0]   word_w;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_sad5_d128u32_fc707c_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
+  fps_sad5_d128u32_baf239_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(LANE_W), .G_W(G_W),
                  .TAG_W(1 + X_W + OUT_ROW_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
     .clk(clk), .restart(restart), .adv(adv), .sums(sums), .group(group), .tag({active, x, slot}),
     .group_out(group_w), .tag_out({active_w, x_w, slot_w}), .word(word_w));
@@ -1616,12 +1626,12 @@ endmodule
 // adv is high. With MATCH_SIDE the pixels are match-image pixels x' and lanes whose base pixel
 // x' + MIN_DISP + d lies outside the row get COST_MAX (docs/semantics.md section 5, LR2). With
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
-// enabled path (fps_sad5_d128u32_fc707c_adaptive_p2), which replaces the p2 input for that path.
+// enabled path (fps_sad5_d128u32_baf239_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (tests/modules/fps_sad5_d128u32_fc707c_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (tests/modules/fps_sad5_d128u32_baf239_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
-module fps_sad5_d128u32_fc707c_aggregator #(
+module fps_sad5_d128u32_baf239_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -1653,8 +1663,8 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   parameter COST_ROW_W = 1,
   // the match side's disparity offset
   parameter MIN_DISP = 0,
-  // 1: the RAM holds a pixel's entries, not its cost words (fps_sad5_d128u32_fc707c_code_reorder): a word per
-  // pixel, which fps_sad5_d128u32_fc707c_chain_cost turns into the cost words
+  // 1: the RAM holds a pixel's entries, not its cost words (fps_sad5_d128u32_baf239_code_reorder): a word per
+  // pixel, which fps_sad5_d128u32_baf239_chain_cost turns into the cost words
   parameter CODES = 0,
   // steps from cost_raddr to its word on cost_q (1: the RAM's read register; with CODES, the
   // chain cost stage's)
@@ -1676,7 +1686,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   // high from the frame's step at which aggregation starts
   input  wire                 agg_on,
-  // back-to-back frames (fps_sad5_d128u32_fc707c_front_end): the row-times wrap after the frame's last row, and
+  // back-to-back frames (fps_sad5_d128u32_baf239_front_end): the row-times wrap after the frame's last row, and
   // once wrapped, the rows above row 0 are the previous frame's
   input  wire                 overlap,
   input  wire                 wrapped,
@@ -1702,35 +1712,35 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   output wire [2*(UF+1)*PATH_W-1:0] edge_out,
   output wire [(UF+1)*PATH_W-1:0]   edge135_out
 );
-  localparam LANES_LAT = 2;  // steps of fps_sad5_d128u32_fc707c_path_lanes
+  localparam LANES_LAT = 2;  // steps of fps_sad5_d128u32_baf239_path_lanes
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (K < 1 || SEGMENT < 1 || SEGMENT * K != ROW_SLOTS || (STRIPS == 0 && ROW_SLOTS < W)) begin : invalid_segments
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_ROW_SLOTS_is_not_K_segments_of_SEGMENT_covering_W failed ();
     end
     if ((K - 1) * G < PATH_TREE_LAT + LANES_LAT) begin : invalid_chains
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_K_chains_too_few_for_the_path_minimum_latency failed ();
     end
     if (COST_LEAD < 1 || (CODES != 0 && MATCH_SIDE != 0)) begin : invalid_CODES
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_CODES_only_on_the_base_side failed ();
     end
     if (COST_ROWS < K || OUT_ROWS < K) begin : invalid_rows
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_COST_ROWS_or_OUT_ROWS_below_K failed ();
     end
     if (G - 1 >= (1 << G_W) || K - 1 >= (1 << K_W) || ROW_SLOTS - 1 >= (1 << X_W) || W >= (1 << X_W) || COST_ROWS > (1 << COST_ROW_W) || OUT_ROWS > (1 << OUT_ROW_W) || COST_AW < $clog2(COST_ROWS * ROW_SLOTS * (CODES != 0 ? 1 : G))) begin : invalid_widths
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_counter_or_address_widths_too_narrow failed ();
     end
     if (COST_MAX >= (1 << COST_W) || PATH_W < COST_W || SUM_W < PATH_W) begin : invalid_costs
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_needs_COST_MAX_within_COST_W_and_COST_W_at_most_PATH_W_at_most_SUM_W failed ();
     end
     if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
     end
     if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
     if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && (X_BASE != 0 || CHAIN_BASE != 0)) || (STRIPS != 0 && G != 1)) begin : invalid_strip
-      fps_sad5_d128u32_fc707c_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -1772,7 +1782,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   wire [Y_W-1:0] ta;
   wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_sad5_d128u32_fc707c_frame_row #(.Y_W(Y_W)) row_time (
+  fps_sad5_d128u32_baf239_frame_row #(.Y_W(Y_W)) row_time (
     .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
@@ -1820,7 +1830,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   wire [TAG_W-1:0] tag_led;
   generate
     if (COST_LEAD > 1) begin : lead
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
         .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
     end else begin : no_lead
       assign tag_led = tag0;
@@ -1858,8 +1868,18 @@ module fps_sad5_d128u32_fc707c_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
-  wire             first_group2 = g2 == 0;
-  wire             last_group2 = g2 == G - 1;
+  // Whether S2's step is its pixel's first or last group: registered from S1's tag, so that the
+  // lanes' neighbour selection starts from a register (logic depth, docs/timing.md).
+  wire [G_W-1:0]   g1 = `FPS_TAG_GROUP(tag1);
+  reg              first_group2, last_group2;
+  always @(posedge clk)
+    if (restart) begin
+      first_group2 <= 1'b0;
+      last_group2 <= 1'b0;
+    end else if (adv) begin
+      first_group2 <= g1 == 0;
+      last_group2 <= g1 == G - 1;
+    end
   /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
   wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
   wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
@@ -1911,7 +1931,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
 
   // Path tag delayed by the path minimum trees' latency, for the running minimum.
   wire [TAG_W-1:0] tag_m;
-  fps_sad5_d128u32_fc707c_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
+  fps_sad5_d128u32_baf239_delay #(.WIDTH(TAG_W), .DEPTH(PATH_TREE_LAT), .RESET(1)) tag_to_min (.clk(clk), .rst(restart), .en(adv), .in(tag4), .out(tag_m));
   wire             pixel_done_m = `FPS_TAG_ACTIVE(tag_m) && `FPS_TAG_GROUP(tag_m) == G - 1;
 
   wire [LANES_W-1:0] path_0, path_45, path_90, path_135;
@@ -1939,18 +1959,18 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       /* verilator lint_on UNUSEDSIGNAL */
       wire [PATH_W-1:0] min_0;  // finished minimum of the pixel in tag_m
       wire [STATE_AW-1:0] state_waddr = `FPS_TAG_CHAIN(tag4) * G + g4;
-      fps_sad5_d128u32_fc707c_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_sad5_d128u32_baf239_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv && active4), .waddr(state_waddr), .wdata(path_0),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
       always @(posedge clk)
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
-      fps_sad5_d128u32_fc707c_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_sad5_d128u32_baf239_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
-      fps_sad5_d128u32_fc707c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_sad5_d128u32_baf239_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
@@ -1985,10 +2005,10 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       reg  [PATH_W-1:0] above_min2;
       wire [ROW_AW-1:0] row_raddr = (x_read - X_FIRST) * G + g_read;
       wire [MIN_AW-1:0] min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read - X_FIRST;
-      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
         .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_45),
         .re(adv), .raddr(row_raddr), .rdata(above_q));
-      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
         .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_45),
         .re(adv), .raddr(min_raddr), .rdata(above_min_q));
       always @(posedge clk)
@@ -1996,7 +2016,7 @@ module fps_sad5_d128u32_fc707c_aggregator #(
           above2 <= above_q;
           above_min2 <= above_min_q;
         end
-      fps_sad5_d128u32_fc707c_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
+      fps_sad5_d128u32_baf239_ram_async #(.WIDTH(LANES_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) state (
         .clk(clk), .we(adv), .waddr(state_addr2), .wdata(above2),
         .raddr_a(state_addr2), .rdata_a(cur), .raddr_b(state_next_addr2), .rdata_b(nxt));
       reg [PATH_W-1:0] below_q;
@@ -2005,12 +2025,12 @@ module fps_sad5_d128u32_fc707c_aggregator #(
       reg [PATH_W-1:0] minimum [0:K-1];
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
-      fps_sad5_d128u32_fc707c_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+      fps_sad5_d128u32_baf239_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0),
         .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
         .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
         .path(path_45));
-      fps_sad5_d128u32_fc707c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+      fps_sad5_d128u32_baf239_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_45), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_45));
       // The row above at the strip's last pixel, which the next strip's first pixel follows.
@@ -2046,10 +2066,10 @@ module fps_sad5_d128u32_fc707c_aggregator #(
         reg  [PATH_W-1:0]  below_q, above_min2;
         wire [ROW_AW-1:0]  row_raddr = (x_read + DX - X_FIRST) * G + g_read;
         wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read + DX - X_FIRST;
-        fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+        fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
           .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
           .re(adv), .raddr(row_raddr), .rdata(above_read_q));
-        fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
+        fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
           .re(adv), .raddr(min_raddr), .rdata(above_min_read_q));
         // 135 degrees in a strip with one to its right: the pixel after the strip's last is that
@@ -2079,11 +2099,11 @@ module fps_sad5_d128u32_fc707c_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
-        fps_sad5_d128u32_fc707c_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
+        fps_sad5_d128u32_baf239_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
-        fps_sad5_d128u32_fc707c_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+        fps_sad5_d128u32_baf239_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
           reduce (.clk(clk), .en(adv), .path(path_out), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_out));
       end
@@ -2135,11 +2155,11 @@ endmodule
 `resetall
 `default_nettype none
 // Winner-take-all (docs/semantics.md, section 4): per step the minimum over the UF lanes of one
-// group (fps_sad5_d128u32_fc707c_min_tree), then a running minimum over the groups of the pixel, the earlier
+// group (fps_sad5_d128u32_baf239_min_tree), then a running minimum over the groups of the pixel, the earlier
 // group winning ties. word is the pixel's word (invalid flag on top, never set here) including
 // the group in group_out; it is the pixel's result in its last group's step. The tag (the
 // pixel's position) travels along, TREE_LAT steps (the tree's latency, which it checks).
-module fps_sad5_d128u32_fc707c_wta #(
+module fps_sad5_d128u32_baf239_wta #(
   parameter UF = 8,
   parameter SUM_W = 9,
   parameter DISP_W = 5,
@@ -2159,12 +2179,12 @@ module fps_sad5_d128u32_fc707c_wta #(
   output wire [TAG_W-1:0]    tag_out,
   output wire [DISP_W:0]     word
 );
-  // fps_sad5_d128u32_fc707c_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
-  fps_sad5_d128u32_fc707c_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
+  // fps_sad5_d128u32_baf239_reduction_tree checks UF, LANE_W, LEVELS_PER_STAGE and TREE_LAT.
+  fps_sad5_d128u32_baf239_delay #(.WIDTH(TAG_W + G_W), .DEPTH(TREE_LAT), .RESET(1)) tag_to_wta (
     .clk(clk), .rst(restart), .en(adv), .in({tag, group}), .out({tag_out, group_out}));
   wire [SUM_W-1:0]  group_min;
   wire [LANE_W-1:0] group_lane;
-  fps_sad5_d128u32_fc707c_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_sad5_d128u32_baf239_min_tree #(.N(UF), .W(SUM_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                      .LAT(TREE_LAT)) tree (
     .clk(clk), .en(adv), .values(sums), .min_value(group_min), .min_index(group_lane));
   /* verilator lint_off WIDTH */  // group * UF + lane, cut to the disparity width
@@ -2190,7 +2210,7 @@ endmodule
 // EXTRA_ROWS more for gap interpolation, one row behind) and bubble slots read as invalid words.
 // The read stream: read_done in the step after each slot's read, read_event where that slot is a
 // pixel of the frame's output rows, its position and word.
-module fps_sad5_d128u32_fc707c_disparity_reorder #(
+module fps_sad5_d128u32_baf239_disparity_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter DISP_W = 5,
@@ -2208,7 +2228,7 @@ module fps_sad5_d128u32_fc707c_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
-  // back-to-back frames (fps_sad5_d128u32_fc707c_front_end): the read rows wrap after the frame's last, and the
+  // back-to-back frames (fps_sad5_d128u32_baf239_front_end): the read rows wrap after the frame's last, and the
   // next frame's rows stand in for the rows below the image
   input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
@@ -2232,7 +2252,7 @@ module fps_sad5_d128u32_fc707c_disparity_reorder #(
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
     if (DISP_AW < $clog2(DISP_DEPTH) || (1 << OUT_ROW_W) < OUT_ROWS) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_reorder_addresses_too_narrow failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_reorder_addresses_too_narrow failed ();
     end
   endgenerate
   // Addresses are products of narrow counters and constants, cut to the RAM's address width.
@@ -2247,7 +2267,7 @@ module fps_sad5_d128u32_fc707c_disparity_reorder #(
   wire [Y_W-1:0] to;
   wire [OUT_ROW_W-1:0] to_slot;  // to mod OUT_ROWS
   wire slot_end;
-  fps_sad5_d128u32_fc707c_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
+  fps_sad5_d128u32_baf239_raster_counter #(.G(G), .ROW_SLOTS(ROW_SLOTS), .K(OUT_ROWS), .G_W(G_W), .X_W(X_W), .Y_W(Y_W),
                             .K_W(OUT_ROW_W))
     output_position (.clk(clk), .restart(restart), .en(adv && out_on), .wrap(overlap), .height(frame_height),
                      .group(go), .slot(so), .row(to), .row_slot(to_slot), .slot_end(slot_end));
@@ -2257,7 +2277,7 @@ module fps_sad5_d128u32_fc707c_disparity_reorder #(
   wire read_valid = read_now && to < frame_height;
   wire [DISP_W:0] disparity_q;
   wire [DISP_AW-1:0] raddr = to_slot * ROW_SLOTS + so;
-  fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
+  fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(DISP_W + 1), .DEPTH(DISP_DEPTH), .ADDR_W(DISP_AW)) disp_ram (
     .clk(clk), .we(write), .waddr(waddr), .wdata(word),
     .re(adv && read_valid), .raddr(raddr), .rdata(disparity_q));
   // verilator lint_on WIDTH
@@ -2282,7 +2302,7 @@ endmodule
 `resetall
 `default_nettype none
 // Left-right check (docs/semantics.md, section 5), three steps: for the read stream's pixel x
-// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_sad5_d128u32_fc707c_match_lookup: the match side's
+// with index D, Dm of x' = x - MIN_DISP - D is looked up (fps_sad5_d128u32_baf239_match_lookup: the match side's
 // completed pixels, with ROW_END, as LR1 does, its row ends), and the word becomes invalid where
 // x' lies outside the image or |D - Dm(x')| > lr_threshold. The RAMs are read in the first step,
 // Dm is registered in the second, the check's result in the third, and the stream leaves three
@@ -2291,7 +2311,7 @@ endmodule
 // whole D: the check uses D (semantics section 5), and the word that leaves is {invalid, refined}.
 // With RIGHT_VIEW, Dm(x) itself leaves beside the checked word (right_word, the right view's
 // disparity at x), from a second lookup.
-module fps_sad5_d128u32_fc707c_lr_check #(
+module fps_sad5_d128u32_baf239_lr_check #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -2322,7 +2342,7 @@ module fps_sad5_d128u32_fc707c_lr_check #(
   input  wire                 row_end_we,
   input  wire [END_AW-1:0]    row_end_waddr,
   input  wire [UF*DISP_W-1:0] row_end_wdata,
-  // the read stream (fps_sad5_d128u32_fc707c_disparity_reorder)
+  // the read stream (fps_sad5_d128u32_baf239_disparity_reorder)
   input  wire                 read_done,
   input  wire                 read_event,
   input  wire [X_W-1:0]       read_x,
@@ -2352,7 +2372,7 @@ module fps_sad5_d128u32_fc707c_lr_check #(
   wire outside = read_word[IN_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
   wire [X_W-1:0] xm = x_ahead - d_behind;  // wraps where x' lies outside, and then goes unused
   wire [DISP_W-1:0] dm;
-  fps_sad5_d128u32_fc707c_match_lookup #(
+  fps_sad5_d128u32_baf239_match_lookup #(
     .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
     .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
     .MIN_DISP(MIN_DISP)
@@ -2386,8 +2406,11 @@ module fps_sad5_d128u32_fc707c_lr_check #(
   reg [IN_W:0]     word_q;
   reg [OUT_W:0]    checked_word_q;
   reg              outside_q;
-  wire [DISP_W-1:0] db = word_q[DISP_W-1:0];
-  wire [DISP_W-1:0] difference = db > dm_q ? db - dm_q : dm_q - db;
+  // |D - Dm| > threshold as Dm > D + threshold or Dm < D - threshold, with D's two bounds
+  // registered in the second step: the third compares Dm with registers only (logic depth).
+  wire [DISP_W-1:0] db_c = word_c[DISP_W-1:0];
+  reg  signed [DISP_W+1:0] db_high_q, db_low_q;
+  wire signed [DISP_W+1:0] dm_signed = $signed({2'b00, dm_q});
   always @(posedge clk)
     if (restart) begin
       done_q <= 1'b0;
@@ -2402,11 +2425,13 @@ module fps_sad5_d128u32_fc707c_lr_check #(
       word_q <= word_c;
       outside_q <= outside_c;
       dm_q <= dm;
+      db_high_q <= $signed({2'b00, db_c}) + $signed({2'b00, lr_threshold});
+      db_low_q <= $signed({2'b00, db_c}) - $signed({2'b00, lr_threshold});
       checked_done <= done_q;
       checked_event <= event_q;
       checked_x <= x_q;
       checked_y <= y_q;
-      checked_word_q <= (outside_q || difference > lr_threshold) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
+      checked_word_q <= (outside_q || dm_signed > db_high_q || dm_signed < db_low_q) ? INVALID_WORD : {word_q[IN_W], word_q[IN_W-1 -: OUT_W]};
     end
   // verilator lint_on WIDTH
   assign checked_word = checked_word_q;
@@ -2414,7 +2439,7 @@ module fps_sad5_d128u32_fc707c_lr_check #(
   generate
     if (RIGHT_VIEW != 0) begin : right_view
       wire [DISP_W-1:0] dm_right;
-      fps_sad5_d128u32_fc707c_match_lookup #(
+      fps_sad5_d128u32_baf239_match_lookup #(
         .ROW_SLOTS(ROW_SLOTS), .G(G), .UF(UF), .DMAX(DMAX), .DISP_W(DISP_W), .OUT_ROWS(OUT_ROWS),
         .OUT_ROW_W(OUT_ROW_W), .DISP_AW(DISP_AW), .ROW_END(ROW_END), .END_AW(END_AW), .X_W(X_W), .LANE_W(LANE_W),
         .MIN_DISP(MIN_DISP)
@@ -2440,9 +2465,9 @@ endmodule
 `default_nettype none
 // Position of a stage on the time base (docs/architecture.md): step `group` of slot `slot` of
 // row-time `row`, and which row of a K-row reorder RAM the row uses. While `wrap` is high the
-// row-time returns to 0 after the frame's last (fps_sad5_d128u32_fc707c_frame_row); the RAM row counts on modulo
+// row-time returns to 0 after the frame's last (fps_sad5_d128u32_baf239_frame_row); the RAM row counts on modulo
 // K regardless, so that the next frame's rows take the RAM rows that follow.
-module fps_sad5_d128u32_fc707c_raster_counter #(
+module fps_sad5_d128u32_baf239_raster_counter #(
   parameter G = 4,
   parameter ROW_SLOTS = 64,
   parameter K = 2,
@@ -2465,10 +2490,10 @@ module fps_sad5_d128u32_fc707c_raster_counter #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (G < 1 || ROW_SLOTS < 1 || K < 1) begin : invalid_counts
-      fps_sad5_d128u32_fc707c_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_raster_counter_G_ROW_SLOTS_or_K_below_1 failed ();
     end
     if (G - 1 >= (1 << G_W) || ROW_SLOTS - 1 >= (1 << X_W) || K - 1 >= (1 << K_W)) begin : invalid_widths
-      fps_sad5_d128u32_fc707c_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_raster_counter_G_W_X_W_or_K_W_too_narrow failed ();
     end
   endgenerate
   localparam integer LAST_GROUP_I = G - 1;
@@ -2492,7 +2517,7 @@ module fps_sad5_d128u32_fc707c_raster_counter #(
       end
     end
   /* verilator lint_off PINCONNECTEMPTY */
-  fps_sad5_d128u32_fc707c_frame_row #(.Y_W(Y_W)) frame_row (
+  fps_sad5_d128u32_baf239_frame_row #(.Y_W(Y_W)) frame_row (
     .clk(clk), .restart(restart), .next(en && slot_end && slot == LAST_SLOT), .wrap(wrap), .height(height),
     .row(row), .last());
   /* verilator lint_on PINCONNECTEMPTY */
@@ -2505,7 +2530,7 @@ endmodule
 // codes). The N-1 previous rows of each column live in one block RAM word (registered read, read
 // one slot ahead); the window is a register array that shifts in one column per slot.
 // window[(i*N + j)*WORD_W +: WORD_W] is row i (0 = oldest) and column j (0 = leftmost).
-module fps_sad5_d128u32_fc707c_window #(
+module fps_sad5_d128u32_baf239_window #(
   // window side
   parameter N = 7,
   // bits per word
@@ -2529,10 +2554,10 @@ module fps_sad5_d128u32_fc707c_window #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 3) begin : invalid_N
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_N_below_3 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_N_below_3 failed ();
     end
     if (ROW_SLOTS < 2 || ADDR_W < $clog2(ROW_SLOTS)) begin : invalid_ADDR_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_ADDR_W_below_clog2_ROW_SLOTS failed ();
     end
   endgenerate
   localparam STORED_W = (N - 1) * WORD_W;
@@ -2543,7 +2568,7 @@ module fps_sad5_d128u32_fc707c_window #(
   // The column moves down one row: the entering word on top, the oldest row dropped (N >= 3).
   wire [STORED_W-1:0] updated = {stored[STORED_W-WORD_W-1:0], word};
 
-  fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
+  fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(STORED_W), .DEPTH(ROW_SLOTS), .ADDR_W(LB_AW)) line_buffer (
     .clk(clk), .we(shift), .waddr(col[LB_AW-1:0]), .wdata(updated),
     .re(shift), .raddr(next_col[LB_AW-1:0]), .rdata(stored));
 
@@ -2568,7 +2593,7 @@ endmodule
 // past the frame (the rows a lone frame drains through). `last` says the row is the frame's last,
 // as a register (frames are at least 2 rows high). A counter that lags its stage's row-times
 // starts at START < 0 (two's complement: rows above the first frame).
-module fps_sad5_d128u32_fc707c_frame_row #(
+module fps_sad5_d128u32_baf239_frame_row #(
   parameter Y_W = 6,
   parameter START = 0
 ) (
@@ -2601,7 +2626,7 @@ endmodule
 `default_nettype none
 // Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
 // image (docs/semantics.md, section 1: outside, a window reads zeros).
-module fps_sad5_d128u32_fc707c_window_bounds #(
+module fps_sad5_d128u32_baf239_window_bounds #(
   parameter SIDE = 5,
   parameter X_W = 7,
   // signed row width
@@ -2617,7 +2642,7 @@ module fps_sad5_d128u32_fc707c_window_bounds #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
     end
   endgenerate
   localparam LAG = SIDE / 2;
@@ -2643,7 +2668,7 @@ endmodule
 `default_nettype none
 // Zero extension (docs/semantics.md, section 1): words of an N x N window whose row or column
 // lies outside the image read as 0.
-module fps_sad5_d128u32_fc707c_window_mask #(
+module fps_sad5_d128u32_baf239_window_mask #(
   // window side
   parameter N = 5,
   // bits per word
@@ -2657,7 +2682,7 @@ module fps_sad5_d128u32_fc707c_window_mask #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || WORD_W < 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_mask_N_or_WORD_W_below_1 failed ();
     end
   endgenerate
   genvar p;
@@ -2678,7 +2703,7 @@ endmodule
 // 2^SUM_W: the caller sizes SUM_W for its largest sum. Combinational, or with the partial sums
 // of level REGISTER_LEVEL registered (latency 1), which splits the tree's logic from whatever
 // computes the values.
-module fps_sad5_d128u32_fc707c_sum_tree #(
+module fps_sad5_d128u32_baf239_sum_tree #(
   parameter N = 7,
   parameter IN_W = 8,
   parameter SUM_W = 11,
@@ -2695,13 +2720,13 @@ module fps_sad5_d128u32_fc707c_sum_tree #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || IN_W < 1) begin : invalid_N
-      fps_sad5_d128u32_fc707c_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
     end
     if (SUM_W < IN_W) begin : invalid_SUM_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
     end
     if (REGISTER_LEVEL < 0 || REGISTER_LEVEL > ((N > 1) ? $clog2(N) : 0)) begin : invalid_REGISTER_LEVEL
-      fps_sad5_d128u32_fc707c_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
     end
   endgenerate
   localparam LEVELS = (N > 1) ? $clog2(N) : 0;
@@ -2768,7 +2793,7 @@ endmodule
 // delays one side first: the ring serves d = 0 .. DMAX - 1 from its newest column back, so with
 // MIN_DISP > 0 the match columns enter it MIN_DISP slots late; with MIN_DISP < 0 the base waits
 // -MIN_DISP slots instead, so that the ring already holds the match columns right of it.
-module fps_sad5_d128u32_fc707c_cost_history #(
+module fps_sad5_d128u32_baf239_cost_history #(
   // bits of the base's data (a code or a window) and of its centre's position
   parameter BASE_W = 8,
   parameter POSITION_W = 8,
@@ -2795,7 +2820,7 @@ module fps_sad5_d128u32_fc707c_cost_history #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || DMAX / (UF > 0 ? UF : 1) - 1 >= (1 << G_W)) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_cost_history_needs_DMAX_a_multiple_of_UF_and_G_W_holding_the_group failed ();
     end
   endgenerate
   // The offset's delays: shift registers advanced once per slot, none at MIN_DISP = 0.
@@ -2803,13 +2828,13 @@ module fps_sad5_d128u32_fc707c_cost_history #(
   wire [COLUMN_W-1:0]          column_now;
   generate
     if (MIN_DISP > 0) begin : match_late
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(COLUMN_W), .DEPTH(MIN_DISP)) match_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in(column), .out(column_now));
     end else begin : match_in_time
       assign column_now = column;
     end
     if (MIN_DISP < 0) begin : base_late
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(BASE_W + POSITION_W), .DEPTH(-MIN_DISP)) base_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base, position}), .out(base_now));
     end else begin : base_in_time
       assign base_now = {base, position};
@@ -2817,7 +2842,7 @@ module fps_sad5_d128u32_fc707c_cost_history #(
   endgenerate
   always @(posedge clk)
     if (shift) {base_held, position_held} <= base_now;
-  fps_sad5_d128u32_fc707c_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
+  fps_sad5_d128u32_baf239_match_ring #(.COLUMN_W(COLUMN_W), .SPAN(SPAN), .DMAX(DMAX), .UF(UF)) match_history (
     .clk(clk), .en(adv), .slot_end(slot_end), .column_in(column_now), .view(view));
 endmodule
 `resetall
@@ -2828,7 +2853,7 @@ endmodule
 // so that a valid flag travelling in it never starts out set; without, rst is unused: data that a
 // valid flag qualifies needs no reset, and registers without one need no reset routing and can
 // become shift-register LUTs.
-module fps_sad5_d128u32_fc707c_delay #(
+module fps_sad5_d128u32_baf239_delay #(
   parameter WIDTH = 8,
   parameter DEPTH = 1,
   // 1: rst clears every register (flags, tags); 0: no reset (data)
@@ -2845,7 +2870,7 @@ module fps_sad5_d128u32_fc707c_delay #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || WIDTH < 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_delay_DEPTH_or_WIDTH_below_1 failed ();
     end
   endgenerate
   reg [WIDTH*DEPTH-1:0] line;
@@ -2877,15 +2902,15 @@ endmodule
 //   ZSAD: |(b - mean_b) - (m - mean_m)| over pixels, means floor(sum / SPAN^2) (ZERO_MEAN)
 //   SHD:  popcount(b xor m)            over census codes (HAMMING)
 // b is the (already zero-extended) base window; the match window of lane l is view columns
-// l .. l + SPAN - 1 (fps_sad5_d128u32_fc707c_match_ring), newest first; its columns outside the image read as 0
+// l .. l + SPAN - 1 (fps_sad5_d128u32_baf239_match_ring), newest first; its columns outside the image read as 0
 // (at the right border the ring already holds the next row's first columns).
 // Lane l's disparity is MIN_DISP + d; where its match centre x - MIN_DISP - d lies outside the
 // row the cost is COST_MAX. Register steps
 // (LAT): the view's column masks, the windows and the border flag; ZSAD: the masked column sums,
 // the match window's sum, its mean, the difference of the means (with the masked view); the
 // magnitudes' pair sums; the row sums; the total. Sums are balanced adder trees
-// (fps_sad5_d128u32_fc707c_sum_tree).
-module fps_sad5_d128u32_fc707c_window_cost_lanes #(
+// (fps_sad5_d128u32_baf239_sum_tree).
+module fps_sad5_d128u32_baf239_window_cost_lanes #(
   // pixels with their windows' means subtracted (ZSAD); census codes compared bit by bit (SHD)
   parameter ZERO_MEAN = 0,
   parameter HAMMING = 0,
@@ -2922,19 +2947,19 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SPAN < 1 || SPAN % 2 == 0 || (ZERO_MEAN != 0 && SPAN > 16)) begin : invalid_SPAN
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_cost_lanes_SPAN_is_not_odd_or_too_large_for_the_window_sum failed ();
     end
     if (UF < 1 || UF > 512) begin : invalid_UF
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_cost_lanes_UF_is_not_1_to_512 failed ();
     end
     if ((HAMMING == 0 && ELEM_W != 8) || ELEM_W < 1) begin : invalid_ELEM_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_cost_lanes_pixels_need_ELEM_W_8 failed ();
     end
     if (COST_MAX >= (1 << COST_W)) begin : invalid_COST_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_cost_lanes_COST_MAX_does_not_fit_COST_W failed ();
     end
     if (LAT != (ZERO_MEAN != 0 ? 4 : 0) + (SPAN > 1 ? 1 : 0) + 3) begin : invalid_LAT
-      fps_sad5_d128u32_fc707c_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_window_cost_lanes_LAT_is_not_the_latency failed ();
     end
   endgenerate
   localparam R = SPAN / 2;
@@ -2998,7 +3023,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
       wire [VIEW_COLS*COLUMN_W-1:0] view_late;
       wire [VIEW_COLS-1:0]          valid_late;
       reg  [VIEW_COLS*COLUMN_W-1:0] view_masked_q;
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(VIEW_COLS*COLUMN_W + VIEW_COLS), .DEPTH(MEAN_STEPS - 1)) view_wait (
         .clk(clk), .rst(1'b0), .en(en), .in({view_q, view_valid_q}), .out({view_late, valid_late}));
       integer n;
       always @(posedge clk)
@@ -3013,7 +3038,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
       assign view_d = view_masked_q;
       assign view_sums_masked = view_sums_masked_q;
       // the base window's mean meets the match window's (step 4)
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(8), .DEPTH(MEAN_STEPS)) base_mean_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(base_mean), .out(base_mean_d));
     end else begin : early_mask
       for (c = 0; c < VIEW_COLS; c = c + 1) begin : column
@@ -3024,7 +3049,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
     end
   endgenerate
   wire [SPAN*SPAN*ELEM_W-1:0] base_d;
-  fps_sad5_d128u32_fc707c_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
+  fps_sad5_d128u32_baf239_delay #(.WIDTH(SPAN*SPAN*ELEM_W), .DEPTH(1 + MEAN_STEPS)) base_wait (
     .clk(clk), .rst(1'b0), .en(en), .in(base), .out(base_d));
 
   genvar l, i, k;
@@ -3036,7 +3061,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
       wire outside_d;
       always @(posedge clk)
         if (en) outside_q <= x_ahead < d || (MIN_DISP < 0 && x_ahead >= d + width_wide);
-      fps_sad5_d128u32_fc707c_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(1), .DEPTH(LAT - 2)) outside_wait (
         .clk(clk), .rst(1'b0), .en(en), .in(outside_q), .out(outside_d));
 
       // ZSAD, steps 3 to 5: the match window's sum from its masked column sums, its mean, and
@@ -3046,7 +3071,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
       /* verilator lint_on UNUSEDSIGNAL */
       if (ZERO_MEAN != 0) begin : zero_mean
         wire [WINSUM_W-1:0] match_sum;
-        fps_sad5_d128u32_fc707c_sum_tree #(.N(SPAN), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) match_total (
+        fps_sad5_d128u32_baf239_sum_tree #(.N(SPAN), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) match_total (
           .clk(clk), .en(en), .values(view_sums_masked[l*COLUMN_SUM_W +: SPAN*COLUMN_SUM_W]), .sum(match_sum));
         reg [WINSUM_W-1:0] match_sum_q;
         reg [7:0]          match_mean_q;
@@ -3100,9 +3125,9 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
         // the row sum are not one path.
         wire [COST_W-1:0]  magnitude_sum;
         wire [SIGNS_W-1:0] sign_count;
-        fps_sad5_d128u32_fc707c_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
+        fps_sad5_d128u32_baf239_sum_tree #(.N(SPAN), .IN_W(MAG_W), .SUM_W(COST_W), .REGISTER_LEVEL(PAIR_STEP)) magnitude_total (
           .clk(clk), .en(en), .values(magnitudes), .sum(magnitude_sum));
-        fps_sad5_d128u32_fc707c_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
+        fps_sad5_d128u32_baf239_sum_tree #(.N(SPAN), .IN_W(1), .SUM_W(SIGNS_W), .REGISTER_LEVEL(PAIR_STEP)) sign_total (
           .clk(clk), .en(en), .values(negative), .sum(sign_count));
         reg [COST_W-1:0] row_sum_q;
         always @(posedge clk)
@@ -3112,7 +3137,7 @@ module fps_sad5_d128u32_fc707c_window_cost_lanes #(
 
       // The total.
       wire [COST_W-1:0] total;
-      fps_sad5_d128u32_fc707c_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
+      fps_sad5_d128u32_baf239_sum_tree #(.N(SPAN), .IN_W(COST_W), .SUM_W(COST_W)) row_total (
         .clk(clk), .en(en), .values(row_sums), .sum(total));
       always @(posedge clk)
         if (en) costs[l*COST_W +: COST_W] <= outside_d ? COST_MAX[COST_W-1:0] : total;
@@ -3125,7 +3150,7 @@ endmodule
 `default_nettype none
 // Simple dual-port RAM with a registered read port (what block RAM inference needs). The read
 // register only loads when re is high, so a stalled pipeline keeps its read data.
-module fps_sad5_d128u32_fc707c_ram_sdp #(
+module fps_sad5_d128u32_baf239_ram_sdp #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -3144,7 +3169,7 @@ module fps_sad5_d128u32_fc707c_ram_sdp #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_ram_sdp_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -3161,7 +3186,7 @@ endmodule
 // Small RAM with two asynchronous read ports (distributed RAM): per-chain state that must be
 // read in the cycle it is needed. Writes take effect at the clock edge, so reads in the same
 // cycle see the old word.
-module fps_sad5_d128u32_fc707c_ram_async #(
+module fps_sad5_d128u32_baf239_ram_async #(
   // word width in bits
   parameter WIDTH = 8,
   // number of words
@@ -3181,7 +3206,7 @@ module fps_sad5_d128u32_fc707c_ram_async #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (DEPTH < 1 || ADDR_W < $clog2(DEPTH)) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_ram_async_ADDR_W_below_clog2_DEPTH failed ();
     end
   endgenerate
   reg [WIDTH-1:0] mem [0:DEPTH-1];
@@ -3202,7 +3227,7 @@ endmodule
 // prev holds the predecessor's lanes of this group; prev_below / prev_above its lanes d-1 of
 // the first lane and d+1 of the last lane, all ones where they do not exist. Two register steps
 // (LATENCY): the neighbours' and the jump's minima, then the best and the sum.
-module fps_sad5_d128u32_fc707c_path_lanes #(
+module fps_sad5_d128u32_baf239_path_lanes #(
   parameter UF = 32,
   parameter COST_W = 6,
   parameter PATH_W = 8
@@ -3223,7 +3248,7 @@ module fps_sad5_d128u32_fc707c_path_lanes #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || COST_W < 1 || PATH_W < COST_W) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_path_lanes_PATH_W_below_COST_W failed ();
     end
   endgenerate
   // One extra bit so that a missing neighbour (all ones) plus P1 does not wrap.
@@ -3274,12 +3299,12 @@ endmodule
 // Minimum of one pixel's path costs over all DMAX = G * UF disparities: a pipelined tree over
 // the UF lanes of each group, then a running minimum over the groups. minimum is the pixel's
 // result in the step where the tree delivers its last group (group == G - 1).
-module fps_sad5_d128u32_fc707c_path_minimum #(
+module fps_sad5_d128u32_baf239_path_minimum #(
   parameter UF = 32,
   parameter PATH_W = 8,
   parameter G_W = 2,
   parameter LEVELS_PER_STAGE = 3,
-  // the tree's latency the caller plans with (fps_sad5_d128u32_fc707c_reduction_tree checks it)
+  // the tree's latency the caller plans with (fps_sad5_d128u32_baf239_reduction_tree checks it)
   parameter TREE_LAT = 2
 ) (
   input  wire               clk,
@@ -3289,11 +3314,11 @@ module fps_sad5_d128u32_fc707c_path_minimum #(
   input  wire [G_W-1:0]     group,
   output wire [PATH_W-1:0]  minimum
 );
-  // fps_sad5_d128u32_fc707c_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
+  // fps_sad5_d128u32_baf239_reduction_tree checks UF, LEVELS_PER_STAGE and TREE_LAT.
   localparam LANE_W = UF > 1 ? $clog2(UF) : 1;
   wire [PATH_W-1:0] group_min;
   wire [LANE_W-1:0] unused_lane;
-  fps_sad5_d128u32_fc707c_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+  fps_sad5_d128u32_baf239_min_tree #(.N(UF), .W(PATH_W), .IDX_W(LANE_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                      .LAT(TREE_LAT)) tree (
     .clk(clk), .en(en), .values(path), .min_value(group_min), .min_index(unused_lane));
 
@@ -3306,9 +3331,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// Pipelined minimum (and its index) over N values: fps_sad5_d128u32_fc707c_reduction_tree over {value, index}
+// Pipelined minimum (and its index) over N values: fps_sad5_d128u32_baf239_reduction_tree over {value, index}
 // summaries, ties keeping the lower index. Latency LAT: max(1, ceil(clog2(N) / LEVELS_PER_STAGE)).
-module fps_sad5_d128u32_fc707c_min_tree #(
+module fps_sad5_d128u32_baf239_min_tree #(
   // number of values
   parameter N = 8,
   // value width
@@ -3317,7 +3342,7 @@ module fps_sad5_d128u32_fc707c_min_tree #(
   parameter IDX_W = 3,
   // compare-select levels between registers
   parameter LEVELS_PER_STAGE = 3,
-  // the latency the caller plans with (fps_sad5_d128u32_fc707c_reduction_tree checks it)
+  // the latency the caller plans with (fps_sad5_d128u32_baf239_reduction_tree checks it)
   parameter LAT = 1
 ) (
   input  wire             clk,
@@ -3335,7 +3360,7 @@ module fps_sad5_d128u32_fc707c_min_tree #(
       assign leaves[i*S_W +: S_W] = {values[i*W +: W], at};
     end
   endgenerate
-  fps_sad5_d128u32_fc707c_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
+  fps_sad5_d128u32_baf239_reduction_tree #(.N(N), .W(W), .IDX_W(IDX_W), .UNIQUE(0), .S_W(S_W),
                             .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .LAT(LAT)) tree (
     .clk(clk), .en(en), .leaves(leaves), .root({min_value, min_index}));
 endmodule
@@ -3343,13 +3368,13 @@ endmodule
 
 `resetall
 `default_nettype none
-// The match side's disparity Dm(x') for the left-right check (fps_sad5_d128u32_fc707c_lr_check), two steps: the
+// The match side's disparity Dm(x') for the left-right check (fps_sad5_d128u32_baf239_lr_check), two steps: the
 // RAMs are read with x' in the first, Dm is there (combinational, from the RAMs' registered
 // outputs) in the second. The match side writes Dm of its completed pixels into the completed
 // RAM and, with ROW_END (LR1), the last DMAX - 1 of each row into the row-end RAM, one word of
 // UF per group: x' reads the row end where e = frame_width - 1 - MIN_DISP - x' < DMAX - 1, and
 // is 0 where no base pixel of the row meets it (e < 0 or e > frame_width - 1 + DMAX - 1).
-module fps_sad5_d128u32_fc707c_match_lookup #(
+module fps_sad5_d128u32_baf239_match_lookup #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
   parameter UF = 8,
@@ -3385,14 +3410,14 @@ module fps_sad5_d128u32_fc707c_match_lookup #(
 );
   generate
     if (DISP_AW < $clog2(OUT_ROWS * ROW_SLOTS) || (ROW_END != 0 && END_AW < $clog2(OUT_ROWS * G))) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_match_lookup_addresses_too_narrow failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_match_lookup_addresses_too_narrow failed ();
     end
   endgenerate
   // Addresses are products of narrow counters and constants, cut to the RAMs' address widths.
   // verilator lint_off WIDTH
   wire [DISP_W-1:0] completed_q;
   wire [DISP_AW-1:0] completed_raddr = slot_row * ROW_SLOTS + xm;
-  fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
+  fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(DISP_W), .DEPTH(OUT_ROWS * ROW_SLOTS), .ADDR_W(DISP_AW)) completed (
     .clk(clk), .we(completed_we), .waddr(completed_waddr), .wdata(completed_wdata),
     .re(adv), .raddr(completed_raddr), .rdata(completed_q));
   generate
@@ -3411,7 +3436,7 @@ module fps_sad5_d128u32_fc707c_match_lookup #(
       reg none_q;
       wire [UF*DISP_W-1:0] end_q;
       wire [END_AW-1:0] end_raddr = slot_row * G + from_end / UF;
-      fps_sad5_d128u32_fc707c_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(UF*DISP_W), .DEPTH(OUT_ROWS * G), .ADDR_W(END_AW)) row_end (
         .clk(clk), .we(row_end_we), .waddr(row_end_waddr), .wdata(row_end_wdata),
         .re(adv), .raddr(end_raddr), .rdata(end_q));
       reg              from_row_end_q;
@@ -3438,7 +3463,7 @@ endmodule
 // a slot, view column p holds the column g*UF + p slots back from the newest, so lane l of the
 // group reads its columns l .. l + SPAN - 1 from fixed registers, without wide multiplexers. The
 // slot's last step completes the ring's turn and shifts the next column in (docs/architecture.md).
-module fps_sad5_d128u32_fc707c_match_ring #(
+module fps_sad5_d128u32_baf239_match_ring #(
   // bits of one column
   parameter COLUMN_W = 48,
   // window side the lanes need (1: one code per disparity)
@@ -3457,7 +3482,7 @@ module fps_sad5_d128u32_fc707c_match_ring #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (UF < 1 || SPAN < 1 || DMAX < UF || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_match_ring_DMAX_is_not_a_multiple_of_UF failed ();
     end
   endgenerate
   localparam LENGTH = DMAX + SPAN - 1;
@@ -3481,15 +3506,15 @@ endmodule
 
 `resetall
 `default_nettype none
-// The skeleton of the pipelined selection trees (fps_sad5_d128u32_fc707c_min_tree, fps_sad5_d128u32_fc707c_unique_tree): N
+// The skeleton of the pipelined selection trees (fps_sad5_d128u32_baf239_min_tree, fps_sad5_d128u32_baf239_unique_tree): N
 // summaries of S_W bits joined pairwise over clog2(N) levels, a register after every
 // LEVELS_PER_STAGE levels and at the output, so the delay per stage does not grow with N. The
 // last summary of an odd level passes up alone. A summary is {value (W bits), index (IDX_W)} for
 // the minimum (UNIQUE 0: the lower value wins, ties keep the lower range), or the uniqueness
-// summary that fps_sad5_d128u32_fc707c_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
+// summary that fps_sad5_d128u32_baf239_unique_join joins (UNIQUE 1). Latency: max(1, ceil(clog2(N) /
 // LEVELS_PER_STAGE)) steps, which the caller states in LAT (checked here, the one place of the
 // formula in Verilog; gen/pipeline/plan.cpp, min_tree_latency, is its C++ counterpart).
-module fps_sad5_d128u32_fc707c_reduction_tree #(
+module fps_sad5_d128u32_baf239_reduction_tree #(
   parameter N = 8,
   parameter W = 8,
   parameter IDX_W = 3,
@@ -3508,16 +3533,16 @@ module fps_sad5_d128u32_fc707c_reduction_tree #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (N < 1 || W < 1) begin : invalid_N
-      fps_sad5_d128u32_fc707c_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_reduction_tree_N_or_W_below_1 failed ();
     end
     if (IDX_W < 1 || N - 1 >= (1 << IDX_W)) begin : invalid_IDX_W
-      fps_sad5_d128u32_fc707c_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_reduction_tree_IDX_W_does_not_hold_N_minus_1 failed ();
     end
     if (LEVELS_PER_STAGE < 1) begin : invalid_LEVELS_PER_STAGE
-      fps_sad5_d128u32_fc707c_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_reduction_tree_LEVELS_PER_STAGE_below_1 failed ();
     end
     if (LAT != (STAGES > 1 ? STAGES : 1)) begin : invalid_LAT
-      fps_sad5_d128u32_fc707c_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_reduction_tree_LAT_is_not_the_tree_latency failed ();
     end
   endgenerate
 
@@ -3537,7 +3562,7 @@ module fps_sad5_d128u32_fc707c_reduction_tree #(
           wire [S_W-1:0] a = level[l-1].s[(2*i)*S_W +: S_W];
           wire [S_W-1:0] b = level[l-1].s[(2*i+1)*S_W +: S_W];
           if (UNIQUE != 0) begin : unique_join
-            fps_sad5_d128u32_fc707c_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
+            fps_sad5_d128u32_baf239_unique_join #(.W(W), .IDX_W(IDX_W)) join_ranges (.a(a), .b(b), .joined(s_d[i*S_W +: S_W]));
           end else begin : min_join
             wire take_b = b[S_W-1 -: W] < a[S_W-1 -: W];
             assign s_d[i*S_W +: S_W] = take_b ? b : a;
@@ -3564,9 +3589,9 @@ endmodule
 `resetall
 `default_nettype none
 // Joins the winner-take-all summaries of two adjacent index ranges, A (lower) and B (higher), as
-// fps_sad5_d128u32_fc707c_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
+// fps_sad5_d128u32_baf239_unique_tree explains; packed as {best, all, but_first, but_last, second, index,
 // first, last} with W-bit values and an IDX_W-bit index.
-module fps_sad5_d128u32_fc707c_unique_join #(
+module fps_sad5_d128u32_baf239_unique_join #(
   parameter W = 10,
   parameter IDX_W = 3
 ) (
@@ -3577,7 +3602,7 @@ module fps_sad5_d128u32_fc707c_unique_join #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (W < 1 || IDX_W < 1) begin : invalid
-      fps_sad5_d128u32_fc707c_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
+      fps_sad5_d128u32_baf239_invalid_parameters_unique_join_W_or_IDX_W_below_1 failed ();
     end
   endgenerate
   localparam S_W = 5 * W + IDX_W + 2;

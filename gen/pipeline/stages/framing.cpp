@@ -1,5 +1,6 @@
-// Framing: the input register slices, the pairing and framing checks (fpstereo_video_in) and the
-// control interface, in the top; the core starts its time base with the frame
+// Framing: the input register slices, the pairing and framing checks (fpstereo_video_in), with
+// several pixels per beat the beats' split into pixels (fpstereo_beat_split), and the control
+// interface, in the top; the core starts its time base with the frame
 // (fpstereo_sequencer), and adv, every stage's enable, stalls the pipeline as one.
 #include <fmt/core.h>
 
@@ -13,7 +14,7 @@ namespace {
 class FramingStage : public Stage {
  public:
   std::string title() const override { return "framing"; }
-  std::vector<std::string> knobs() const override { return {"width", "height"}; }
+  std::vector<std::string> knobs() const override { return {"width", "height", "ppc"}; }
   Latency latency(const Geometry&) const override { return {}; }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {

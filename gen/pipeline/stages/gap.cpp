@@ -12,7 +12,7 @@ class GapStage : public Stage {
  public:
   std::string title() const override { return "gap interpolation"; }
   std::vector<std::string> knobs() const override { return {"gap-interp"}; }
-  Latency latency(const Geometry&) const override { return {1, 0, 3}; }
+  Latency latency(const Geometry&) const override { return {1, 0, 4}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     return {{"core.gap.words.mem", 2 * int64_t(g.cfg.width), g.widths.output_word + g.x_bits},
             {"core.gap.right_neighbours.mem", 2 * int64_t(g.cfg.width), g.widths.output_word}};
