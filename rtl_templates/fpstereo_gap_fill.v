@@ -56,6 +56,8 @@ module fpstereo_gap_fill #(
   reg  [X_W-1:0]   x0;
   reg  [Y_W-1:0]   y_above0;  // the row read: in_y - 1, or the frame's last row above row 0
   reg  [WORD_W-1:0] word0;
+  // Only the event flags take restart: the words and positions beside them matter only with an
+  // event, and their enables stay free of restart's logic (depth, docs/timing.md).
   always @(posedge clk)
     if (restart) begin
       event0 <= 1'b0;
@@ -65,6 +67,9 @@ module fpstereo_gap_fill #(
       event0 <= in_event;
       writing0 <= in_event && in_y < frame_height;
       reading0 <= in_event && (in_y != 0 || wrapped);
+    end
+  always @(posedge clk)
+    if (adv) begin
       first0 <= in_x == 0;
       last0 <= in_x == last_x;
       x0 <= in_x;
@@ -114,8 +119,9 @@ module fpstereo_gap_fill #(
   reg           parity1;
   always @(posedge clk)
     if (restart) event1 <= 1'b0;
-    else if (adv) begin
-      event1 <= reading;
+    else if (adv) event1 <= reading;
+  always @(posedge clk)
+    if (adv) begin
       first1 <= first0;
       x1 <= x0;
       y1 <= y_above0;
@@ -134,10 +140,12 @@ module fpstereo_gap_fill #(
   reg  [X_W-1:0]    x2;
   reg  [Y_W-1:0]    y2;
   reg  [WORD_W-1:0] word2, left2;
+  // left is read only behind a row's first column (left_before), so no restart needs to clear it.
   always @(posedge clk)
     if (restart) event2 <= 1'b0;
-    else if (adv) begin
-      event2 <= event1;
+    else if (adv) event2 <= event1;
+  always @(posedge clk)
+    if (adv) begin
       x2 <= x1;
       y2 <= y1;
       word2 <= word1;
@@ -151,8 +159,9 @@ module fpstereo_gap_fill #(
                          : left_ok ? left2 : right2;
   always @(posedge clk)
     if (restart) out_event <= 1'b0;
-    else if (adv) begin
-      out_event <= event2;
+    else if (adv) out_event <= event2;
+  always @(posedge clk)
+    if (adv) begin
       out_x <= x2;
       out_y <= y2;
       out_word <= word2[WORD_W-1] ? filled : word2;

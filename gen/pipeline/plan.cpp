@@ -102,7 +102,8 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.chains = std::max(2, 1 + ceil_div(g.path_tree_latency + kPathLanesLatency, g.groups));
   // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
   // where dmax < 128 (width >= 16) and K <= 6 otherwise.
-  g.segment = ceil_div(cfg.width + (g.groups == 1 ? kFollowBubbles : 0), g.chains);
+  const int beat_split = cfg.ppc > 1 ? kBeatSplitCycles : 0;
+  g.segment = ceil_div(cfg.width + (g.groups == 1 ? kFollowBubbles + beat_split : 0), g.chains);
   g.row_slots = g.chains * g.segment;
   g.lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
   g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
@@ -170,7 +171,7 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // pixel (0, 0) on.
   const int64_t push_first = at - kStepsAfterPush;
   const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
-  d.lone_frame_cycles = at + last_pixel * G;
+  d.lone_frame_cycles = at + last_pixel * G + (cfg.ppc > 1 ? kBeatSplitCycles : 0);
   // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
   // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
   // and a frame is done before the one after the next begins).
@@ -180,7 +181,7 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
   // With several pixels per beat, the beat's register (fpstereo_beat_split), and the output beat
   // leaves with its last pixel, (ppc - 1) slots after its first.
-  d.first_output_latency = push_first + 4 + (cfg.ppc > 1 ? 1 + (cfg.ppc - 1) * G : 0);
+  d.first_output_latency = push_first + 4 + (cfg.ppc > 1 ? kBeatSplitCycles + (cfg.ppc - 1) * G : 0);
   d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
   d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
   d.signed_y_bits = d.y_bits + 2;

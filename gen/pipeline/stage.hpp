@@ -35,6 +35,9 @@ constexpr int64_t kStepsAfterPush = 3;
 // before's last (the framing stage rests a cycle, starts the frame, then passes the pixel through
 // the pixel register slice). With G >= 2 that slice runs a pixel ahead, which covers it.
 constexpr int kFollowBubbles = 2;
+// With several pixels per beat the beat's register (fpstereo_beat_split) adds a cycle on that way,
+// and so a bubble; a frame that runs alone starts a cycle later for it too.
+constexpr int kBeatSplitCycles = 1;
 
 // A RAM a stage instantiates: its name as Yosys gives it after flattening the top
 // ("core.cost_reorder.cost_ram.mem"), its shape and whether its read is registered (block RAM)

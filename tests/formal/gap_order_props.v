@@ -13,8 +13,12 @@
 // at least two row-times after the first output push: overlap_height). Words are free. The unit
 // (asserted): the events it emits (out_event at an adv) are the frame's positions (x, y), x <
 // width and y < height, each once and in raster order, with overlap wrapping to the next frame's.
-// The induction walks the stage's three registers from the next position expected, each valid
-// one being the next position, and ends at the input's next event, a row further on:
+// The induction walks the stage's four registers from the next position expected, each valid
+// one being the next position (the first step's as the row it reads), and ends at the input's
+// next event, a row further on:
+// formal-probe: probe_reading0 gap.reading0
+// formal-probe: probe_x0 gap.x0
+// formal-probe: probe_y0 gap.y_above0
 // formal-probe: probe_event1 gap.event1
 // formal-probe: probe_x1 gap.x1
 // formal-probe: probe_y1 gap.y1
@@ -45,9 +49,9 @@ module gap_order_props (
     .out_event(out_event), .out_x(out_x), .out_y(out_y), .out_word(out_word));
 
 `ifdef FORMAL
-  (* keep *) wire           probe_event1, probe_event2;
-  (* keep *) wire [X_W-1:0] probe_x1, probe_x2;
-  (* keep *) wire [Y_W-1:0] probe_y1, probe_y2;
+  (* keep *) wire           probe_reading0, probe_event1, probe_event2;
+  (* keep *) wire [X_W-1:0] probe_x0, probe_x1, probe_x2;
+  (* keep *) wire [Y_W-1:0] probe_y0, probe_y1, probe_y2;
 
   wire past_valid, past_rst;
   formal_start run_start (.clk(clk), .rst(restart), .past_valid(past_valid), .past_rst(past_rst));
@@ -105,6 +109,7 @@ module gap_order_props (
   wire [P_W-1:0] walk1 = out_event ? after(walk0, height) : walk0;
   wire [P_W-1:0] walk2 = probe_event2 ? after(walk1, height) : walk1;
   wire [P_W-1:0] walk3 = probe_event1 ? after(walk2, height) : walk2;
+  wire [P_W-1:0] walk4 = probe_reading0 ? after(walk3, height) : walk3;
   // the position the input's next event brings: a row up, from row 0 the previous frame's last
   // once wrapped, or none yet (the first output comes with row 1)
   wire [P_W-1:0] brought = next_in[P_W-1:X_W] != 0 ? {next_in[P_W-1:X_W] - 1'b1, next_in[X_W-1:0]}
@@ -117,7 +122,8 @@ module gap_order_props (
       if (out_event) assert(in_frame({out_y, out_x}, height) && {out_y, out_x} == walk0);
       if (probe_event2) assert(in_frame({probe_y2, probe_x2}, height) && {probe_y2, probe_x2} == walk1);
       if (probe_event1) assert(in_frame({probe_y1, probe_x1}, height) && {probe_y1, probe_x1} == walk2);
-      assert(brought == walk3);
+      if (probe_reading0) assert(in_frame({probe_y0, probe_x0}, height) && {probe_y0, probe_x0} == walk3);
+      assert(brought == walk4);
       if (input_wrapped) assert(overlap);
     end
 `endif

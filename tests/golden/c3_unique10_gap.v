@@ -36,7 +36,7 @@
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1907801; frames follow on from 12 rows
 // Latency without stalls from the first input handshake to the first output handshake: 44806 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
-//   framing                              0     0    0   width, height
+//   framing                              0     0    0   width, height, ppc
 //   window and transform                 3     5    0   window, cost
 //   cost                                 0     1    2   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
@@ -2726,6 +2726,8 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   reg  [X_W-1:0]   x0;
   reg  [Y_W-1:0]   y_above0;  // the row read: in_y - 1, or the frame's last row above row 0
   reg  [WORD_W-1:0] word0;
+  // Only the event flags take restart: the words and positions beside them matter only with an
+  // event, and their enables stay free of restart's logic (depth, docs/timing.md).
   always @(posedge clk)
     if (restart) begin
       event0 <= 1'b0;
@@ -2735,6 +2737,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
       event0 <= in_event;
       writing0 <= in_event && in_y < frame_height;
       reading0 <= in_event && (in_y != 0 || wrapped);
+    end
+  always @(posedge clk)
+    if (adv) begin
       first0 <= in_x == 0;
       last0 <= in_x == last_x;
       x0 <= in_x;
@@ -2784,8 +2789,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   reg           parity1;
   always @(posedge clk)
     if (restart) event1 <= 1'b0;
-    else if (adv) begin
-      event1 <= reading;
+    else if (adv) event1 <= reading;
+  always @(posedge clk)
+    if (adv) begin
       first1 <= first0;
       x1 <= x0;
       y1 <= y_above0;
@@ -2804,10 +2810,12 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   reg  [X_W-1:0]    x2;
   reg  [Y_W-1:0]    y2;
   reg  [WORD_W-1:0] word2, left2;
+  // left is read only behind a row's first column (left_before), so no restart needs to clear it.
   always @(posedge clk)
     if (restart) event2 <= 1'b0;
-    else if (adv) begin
-      event2 <= event1;
+    else if (adv) event2 <= event1;
+  always @(posedge clk)
+    if (adv) begin
       x2 <= x1;
       y2 <= y1;
       word2 <= word1;
@@ -2821,8 +2829,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
                          : left_ok ? left2 : right2;
   always @(posedge clk)
     if (restart) out_event <= 1'b0;
-    else if (adv) begin
-      out_event <= event2;
+    else if (adv) out_event <= event2;
+  always @(posedge clk)
+    if (adv) begin
       out_x <= x2;
       out_y <= y2;
       out_word <= word2[WORD_W-1] ? filled : word2;

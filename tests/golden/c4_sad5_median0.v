@@ -36,7 +36,7 @@
 // Initiation interval: 4 cycles per pixel; expected cycles per frame without stalls: 1863000 = W*H*dmax/uf (1863000) + 0 (frames back to back); a lone frame: 1892849; frames follow on from 9 rows
 // Latency without stalls from the first input handshake to the first output handshake: 29854 cycles
 // Stages in data order, their latency (row-times, slots, steps) and the settings they own:
-//   framing                              0     0    0   width, height
+//   framing                              0     0    0   width, height, ppc
 //   window                               2     4    0   window, cost
 //   cost                                 0     1    4   cost, window, shd-window, dmax, uf, p2-adapt, min-disp, fused-weight, fused-trunc, fused-term
 //   cost reorder                         0     0    1   uf
