@@ -64,6 +64,10 @@ draw() {
     add --speckle-size 0 0 2 5 12
     add --speckle-range 0 1 2
   fi
+  # Pixels per beat need uf = dmax (a width that is not a whole number of beats is redrawn).
+  if (( uf == dmax )); then
+    add --ppc 1 2 4
+  fi
 }
 
 failed=0
