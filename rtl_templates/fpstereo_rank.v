@@ -25,14 +25,26 @@ module fpstereo_rank #(
   localparam CENTRE = (N / 2) * N + N / 2;
   wire [7:0] centre = window[CENTRE*8 +: 8];
 
-  integer p;
-  reg [7:0] q;
+  // Each neighbour's flag (one outside the image reads 0: darker while the centre is not 0), the
+  // flags counted in chunks of 6 (one LUT level each), the counts summed in a balanced tree: a
+  // chain of N*N increments would be as many LUT levels deep (docs/timing.md).
+  localparam CHUNKS = (N * N + 5) / 6;
+  reg [CHUNKS*6-1:0] darker;
+  reg [CHUNKS*3-1:0] counts;
+  integer p, k, b;
   always @* begin
-    rank = 0;
-    for (p = 0; p < N * N; p = p + 1) begin
-      q = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] : 8'd0;
-      if (p != CENTRE && q < centre) rank = rank + 1'b1;
+    darker = {CHUNKS*6{1'b0}};
+    for (p = 0; p < N * N; p = p + 1)
+      if (p != CENTRE)
+        darker[p] = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] < centre : centre != 8'd0;
+    for (k = 0; k < CHUNKS; k = k + 1) begin
+      counts[k*3 +: 3] = 3'd0;
+      for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, darker[k*6 + b]};
     end
   end
+  wire [RANK_W-1:0] total;
+  fpstereo_sum_tree #(.N(CHUNKS), .IN_W(3), .SUM_W(RANK_W), .REGISTER_LEVEL(0)) chunk_sum (
+    .clk(1'b0), .en(1'b0), .values(counts), .sum(total));
+  always @* rank = total;
 endmodule
 `resetall

@@ -134,6 +134,14 @@ expect_error("paths = 0,180: the 180-degree path is not in the hardware generato
 if(EXISTS ${WORK}/hls_path180)
   message(SEND_ERROR "fpstereo-rtl --emit hls --paths 0,180 left ${WORK}/hls_path180 behind")
 endif()
+# Pixels per beat: the rules, and the HLS path's refusal (nothing written).
+expect_error("ppc = 3: expected 1, 2 or 4" --ppc 3 --uf 128)
+expect_error("ppc = 2: needs uf = dmax (uf 32, dmax 128)" --ppc 2)
+expect_error("width = 1242: must be a multiple of ppc (4)" --ppc 4 --uf 128)
+expect_error("ppc = 2: the HLS path takes one pixel per beat (ppc 1)" --emit hls --ppc 2 --uf 128 -o ${WORK}/hls_ppc2)
+if(EXISTS ${WORK}/hls_ppc2)
+  message(SEND_ERROR "fpstereo-rtl --emit hls --ppc 2 left ${WORK}/hls_ppc2 behind")
+endif()
 expect_error("speckle-size = 100: the speckle filter's stage needs dmax / uf >= 4 (2); use a smaller uf or speckle-size 0"
              --dmax 64 --uf 32 --speckle-size 100 -o ${WORK}/rtl_speckle_uf)
 if(EXISTS ${WORK}/rtl_speckle_uf)

@@ -3069,15 +3069,27 @@ module fps_census7_d128u32_79bc18_rank #(
   localparam CENTRE = (N / 2) * N + N / 2;
   wire [7:0] centre = window[CENTRE*8 +: 8];
 
-  integer p;
-  reg [7:0] q;
+  // Each neighbour's flag (one outside the image reads 0: darker while the centre is not 0), the
+  // flags counted in chunks of 6 (one LUT level each), the counts summed in a balanced tree: a
+  // chain of N*N increments would be as many LUT levels deep (docs/timing.md).
+  localparam CHUNKS = (N * N + 5) / 6;
+  reg [CHUNKS*6-1:0] darker;
+  reg [CHUNKS*3-1:0] counts;
+  integer p, k, b;
   always @* begin
-    rank = 0;
-    for (p = 0; p < N * N; p = p + 1) begin
-      q = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] : 8'd0;
-      if (p != CENTRE && q < centre) rank = rank + 1'b1;
+    darker = {CHUNKS*6{1'b0}};
+    for (p = 0; p < N * N; p = p + 1)
+      if (p != CENTRE)
+        darker[p] = (row_valid[p / N] && col_valid[p % N]) ? window[p*8 +: 8] < centre : centre != 8'd0;
+    for (k = 0; k < CHUNKS; k = k + 1) begin
+      counts[k*3 +: 3] = 3'd0;
+      for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, darker[k*6 + b]};
     end
   end
+  wire [RANK_W-1:0] total;
+  fps_census7_d128u32_79bc18_sum_tree #(.N(CHUNKS), .IN_W(3), .SUM_W(RANK_W), .REGISTER_LEVEL(0)) chunk_sum (
+    .clk(1'b0), .en(1'b0), .values(counts), .sum(total));
+  always @* rank = total;
 endmodule
 `resetall
 
@@ -3887,6 +3899,96 @@ module fps_census7_d128u32_79bc18_median_select #(
         always @(posedge clk)
           if (en) median_q <= invalid_z ? INVALID : {1'b0, answer};
       end
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The sum of N unsigned values as a balanced tree of two-input adders: ceil(log2 N) adders
+// deep, where a chain of additions would be N - 1 deep. Level v's nodes are IN_W + v bits wide
+// (at most SUM_W), so no adder is wider than its operands need. The sum is taken modulo
+// 2^SUM_W: the caller sizes SUM_W for its largest sum. Combinational, or with the partial sums
+// of level REGISTER_LEVEL registered (latency 1), which splits the tree's logic from whatever
+// computes the values.
+module fps_census7_d128u32_79bc18_sum_tree #(
+  parameter N = 7,
+  parameter IN_W = 8,
+  parameter SUM_W = 11,
+  // 0: combinational; 1 .. ceil(log2 N): that level's partial sums are registered
+  parameter REGISTER_LEVEL = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // with REGISTER_LEVEL 0
+  input  wire              clk,
+  input  wire              en,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [N*IN_W-1:0] values,
+  output wire [SUM_W-1:0]  sum
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || IN_W < 1) begin : invalid_N
+      fps_census7_d128u32_79bc18_invalid_parameters_sum_tree_N_or_IN_W_below_1 failed ();
+    end
+    if (SUM_W < IN_W) begin : invalid_SUM_W
+      fps_census7_d128u32_79bc18_invalid_parameters_sum_tree_SUM_W_below_IN_W failed ();
+    end
+    if (REGISTER_LEVEL < 0 || REGISTER_LEVEL > ((N > 1) ? $clog2(N) : 0)) begin : invalid_REGISTER_LEVEL
+      fps_census7_d128u32_79bc18_invalid_parameters_sum_tree_REGISTER_LEVEL_is_not_a_level failed ();
+    end
+  endgenerate
+  localparam LEVELS = (N > 1) ? $clog2(N) : 0;
+
+  genvar v, i;
+  generate
+    for (v = 0; v <= LEVELS; v = v + 1) begin : level
+      // Level v holds ceil(N / 2^v) partial sums of LEVEL_W bits.
+      localparam COUNT = (N + (1 << v) - 1) >> v;
+      localparam PREV_COUNT = (N + (1 << v) / 2 - 1) / ((1 << v) / 2 > 0 ? (1 << v) / 2 : 1);
+      localparam LEVEL_W = IN_W + v < SUM_W ? IN_W + v : SUM_W;
+      localparam PREV_W = IN_W + v - 1 < SUM_W ? IN_W + v - 1 : SUM_W;
+      wire [COUNT*LEVEL_W-1:0] nodes_d;  // the level's sums
+      wire [COUNT*LEVEL_W-1:0] nodes;    // as the next level reads them
+      if (v > 0 && v == REGISTER_LEVEL) begin : stage
+        reg [COUNT*LEVEL_W-1:0] nodes_q;
+        always @(posedge clk)
+          if (en) nodes_q <= nodes_d;
+        assign nodes = nodes_q;
+      end else begin : wire_through
+        assign nodes = nodes_d;
+      end
+      // a level's nodes are one bit wider than the level below, until SUM_W
+      localparam GROWS = LEVEL_W > PREV_W;
+      for (i = 0; i < COUNT; i = i + 1) begin : node
+        if (v == 0) begin : leaf
+          assign nodes_d[i*LEVEL_W +: LEVEL_W] = values[i*IN_W +: IN_W];
+        end else if (2 * i + 1 < PREV_COUNT) begin : pair
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          wire [PREV_W-1:0] b = level[v-1].nodes[(2*i+1)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a} + {1'b0, b};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a + b;
+          end
+        end else begin : single  // the last node of an odd level passes up alone
+          wire [PREV_W-1:0] a = level[v-1].nodes[(2*i)*PREV_W +: PREV_W];
+          if (GROWS) begin : wider
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = {1'b0, a};
+          end else begin : capped
+            assign nodes_d[i*LEVEL_W +: LEVEL_W] = a;
+          end
+        end
+      end
+    end
+  endgenerate
+
+  localparam TOP_W = IN_W + LEVELS < SUM_W ? IN_W + LEVELS : SUM_W;
+  generate
+    if (TOP_W < SUM_W) begin : widen
+      assign sum = {{(SUM_W-TOP_W){1'b0}}, level[LEVELS].nodes};
+    end else begin : full
+      assign sum = level[LEVELS].nodes;
     end
   endgenerate
 endmodule
