@@ -69,7 +69,7 @@ set(expected
     "FAIL: measured ${cycles} cycles per frame, the design states ${wrong_cycles}\n"
     "FAIL: measured a first-output latency of ${latency} cycles, the design states ${wrong_latency}\n"
     "registers: VERSION="
-    " CYCLES_PER_FRAME=${wrong_cycles} WIDTH="  # read back from the altered INFO word, no error
+    " CYCLES_PER_FRAME=${wrong_cycles} PIXELS_PER_BEAT="  # read back from the altered INFO word, no error
     "FAIL: 4 frames compared, 0 mismatching pixels, 0 protocol errors, 0 register errors, 2 timing errors\n")
 foreach(line IN LISTS expected)
   string(FIND "${out}" "${line}" at)
