@@ -27,8 +27,10 @@ module fpstereo_gap_fill #(
   input  wire              restart,
   input  wire              adv,
   // the frame's size
-  input  wire [X_W-1:0]    frame_width,
   input  wire [Y_W-1:0]    frame_height,
+  // the frame's last column and row, registers of the core (the frame's size holds while it runs)
+  input  wire [X_W-1:0]    frame_last_x,
+  input  wire [Y_W-1:0]    frame_last_y,
   input  wire              wrapped,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
@@ -47,10 +49,6 @@ module fpstereo_gap_fill #(
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  // The row's last column, registered (the frame's size holds while it runs).
-  reg  [X_W-1:0] last_x;
-  always @(posedge clk) last_x <= frame_width - 1'b1;
-
   // ---- Stage 0: the event and what its position is.
   reg              event0, writing0, reading0, first0, last0;
   reg  [X_W-1:0]   x0;
@@ -71,9 +69,9 @@ module fpstereo_gap_fill #(
   always @(posedge clk)
     if (adv) begin
       first0 <= in_x == 0;
-      last0 <= in_x == last_x;
+      last0 <= in_x == frame_last_x;
       x0 <= in_x;
-      y_above0 <= in_y == 0 ? frame_height - 1'b1 : in_y - 1'b1;
+      y_above0 <= in_y == 0 ? frame_last_y : in_y - 1'b1;
       word0 <= in_word;
     end
 

@@ -44,7 +44,8 @@ module gap_order_props (
   wire [Y_W-1:0] out_y;
   wire [WORD_W-1:0] out_word;
   fpstereo_gap_fill #(.W(W), .WORD_W(WORD_W), .X_W(X_W), .Y_W(Y_W)) gap (
-    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .clk(clk), .restart(restart), .adv(adv), .frame_height(frame_height),
+    .frame_last_x(frame_width - 3'd1), .frame_last_y(frame_height - 3'd1),
     .wrapped(wrapped), .in_event(in_event), .in_x(in_x), .in_y(in_y), .in_word(in_word),
     .out_event(out_event), .out_x(out_x), .out_y(out_y), .out_word(out_word));
 

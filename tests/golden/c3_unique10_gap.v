@@ -468,9 +468,9 @@ module fps_census7_d128u32_79bc18_sgm_core (
   fps_census7_d128u32_79bc18_gap_fill #(
     .W(1242), .WORD_W(8), .X_W(11), .Y_W(9)
   ) gap (
-    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
-    .wrapped(wrapped), .in_event(median_event), .in_x(median_x), .in_y(median_y), .in_word(median_word),
-    .out_event(gap_event), .out_x(gap_x), .out_y(gap_y), .out_word(gap_word));
+    .clk(clk), .restart(restart), .adv(adv), .frame_height(frame_height), .frame_last_x(frame_last_x),
+    .frame_last_y(frame_last_y), .wrapped(wrapped), .in_event(median_event), .in_x(median_x), .in_y(median_y),
+    .in_word(median_word), .out_event(gap_event), .out_x(gap_x), .out_y(gap_y), .out_word(gap_word));
 
   // Output: registered, so that the sequencer's inputs are flip-flops.
   reg out_event_q, out_first_q, out_last_q;
@@ -2697,8 +2697,10 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   input  wire              restart,
   input  wire              adv,
   // the frame's size
-  input  wire [X_W-1:0]    frame_width,
   input  wire [Y_W-1:0]    frame_height,
+  // the frame's last column and row, registers of the core (the frame's size holds while it runs)
+  input  wire [X_W-1:0]    frame_last_x,
+  input  wire [Y_W-1:0]    frame_last_y,
   input  wire              wrapped,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
@@ -2717,10 +2719,6 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   endgenerate
   localparam ADDR_W = $clog2(2 * W);
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
-  // The row's last column, registered (the frame's size holds while it runs).
-  reg  [X_W-1:0] last_x;
-  always @(posedge clk) last_x <= frame_width - 1'b1;
-
   // ---- Stage 0: the event and what its position is.
   reg              event0, writing0, reading0, first0, last0;
   reg  [X_W-1:0]   x0;
@@ -2741,9 +2739,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   always @(posedge clk)
     if (adv) begin
       first0 <= in_x == 0;
-      last0 <= in_x == last_x;
+      last0 <= in_x == frame_last_x;
       x0 <= in_x;
-      y_above0 <= in_y == 0 ? frame_height - 1'b1 : in_y - 1'b1;
+      y_above0 <= in_y == 0 ? frame_last_y : in_y - 1'b1;
       word0 <= in_word;
     end
 
