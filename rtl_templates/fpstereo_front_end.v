@@ -11,6 +11,9 @@
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
 // rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
 // rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
+// With G = 1 that step is the frame's last slot, which comes sooner than a following frame's first
+// pixel can: `hold` stops the pipeline for FOLLOW_WAIT cycles there (only in the last row of a
+// frame that may be followed), so that a frame sent on time is taken.
 module fpstereo_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
@@ -22,7 +25,9 @@ module fpstereo_front_end #(
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
   parameter SIGNED_Y_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // cycles the frame's last step waits for a following frame (0 when G > 1)
+  parameter FOLLOW_WAIT = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -33,6 +38,7 @@ module fpstereo_front_end #(
   input  wire                   next_frame,
   output wire                   next_taken,
   output wire                   follow_open,
+  output wire                   hold,
   output reg                    continuing,
   output reg                    wrapped,
   // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
@@ -61,6 +67,9 @@ module fpstereo_front_end #(
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
       fpstereo_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+    end
+    if (FOLLOW_WAIT < 0 || FOLLOW_WAIT > 3 || (FOLLOW_WAIT != 0 && G != 1)) begin : invalid_FOLLOW_WAIT
+      fpstereo_invalid_parameters_front_end_FOLLOW_WAIT_outside_0_to_3_or_with_G_above_1 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -135,6 +144,19 @@ module fpstereo_front_end #(
       end
       if (rows_end && overlap) wrapped <= 1'b1;
     end
+  // The hold: armed in the step before the last row's last slot (G = 1: every step is a slot),
+  // while the frame may be followed; it lasts FOLLOW_WAIT cycles, whether the frame comes or not,
+  // so that every frame takes the same time. Registers only, as adv depends on it.
+  reg armed;
+  reg [1:0] waited;
+  localparam [1:0] WAIT = FOLLOW_WAIT;
+  always @(posedge clk)
+    if (restart) armed <= 1'b0;
+    else if (adv) armed <= FOLLOW_WAIT != 0 && si == SLOT_BEFORE_LAST && at_last_row && overlap && row_in && !closed;
+  assign hold = armed && waited != WAIT;
+  always @(posedge clk)
+    if (restart || !armed) waited <= 2'd0;
+    else if (hold) waited <= waited + 1'b1;
   assign in_due  = in_due_q;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;

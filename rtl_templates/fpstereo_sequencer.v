@@ -5,7 +5,8 @@
 // first pixel by then); from then on the step counter advances in every cycle where adv is high,
 // and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
 // while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
+// that cannot leave (out_due, and view_due for the right view's stream), and while the window
+// stage holds a frame's end for the next frame (hold, a few cycles a frame). A start while a frame
 // runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
 // a register, from the next cycle until the window stage takes it, which it can while
 // follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
@@ -39,6 +40,7 @@ module fpstereo_sequencer #(
   input  wire              out_ready,
   input  wire              view_due,
   input  wire              view_ready,
+  input  wire              hold,
   input  wire              frame_done,
   output wire              adv,
   output reg  [STEP_W-1:0] step,
@@ -52,7 +54,7 @@ module fpstereo_sequencer #(
   endgenerate
   reg starting, in_frame, pending;
   wire follow = in_frame && follow_open && !pending;
-  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready) && !hold;
   wire ends = adv && frame_done && !continuing;
   // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
   // as from idle: the framing stage is already passing its pixels.

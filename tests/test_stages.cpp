@@ -2,6 +2,7 @@
 // by some configuration, and the schedule is the sum of the stages' latencies.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <set>
 
 #include "rtl_emitter.hpp"
@@ -87,11 +88,20 @@ TEST_CASE("the schedule is the sum of the stages' latencies", "[stages]") {
     for (const auto& stage : d.stages) sum += stage->latency(d).in_steps(d.row_slots, d.groups);
     const int64_t last_pixel = (int64_t(cfg.height) - 1) * d.row_slots + cfg.width - 1;
     INFO(config_tag(cfg));
+    // A row-time is the width in whole segments, without bubble slots.
+    CHECK(d.row_slots == d.chains * ((cfg.width + d.chains - 1) / d.chains));
     // With several pixels per beat, the beat's register delays the frame's first pixel a cycle.
-    CHECK(d.lone_frame_cycles == sum + last_pixel * d.groups + (cfg.ppc > 1 ? rtl::kBeatSplitCycles : 0));
-    // Back to back, a frame takes its row-times, once it is taller than the drain.
+    const int beat = cfg.ppc > 1 ? rtl::kBeatSplitCycles : 0;
+    // At G = 1 a frame that may be followed waits at its end for what the row's spare slots and
+    // the beat's other pixels do not cover of the next frame's way in.
+    const int64_t spare = d.row_slots - cfg.width + cfg.ppc - 1;
+    const int64_t wait = d.groups == 1 ? std::max<int64_t>(0, rtl::kFollowCycles - spare) : 0;
+    CHECK(d.follow_wait == wait);
+    const bool follows_on = cfg.height >= d.overlap_height;
+    CHECK(d.lone_frame_cycles == sum + last_pixel * d.groups + beat + (follows_on ? wait : 0));
+    // Back to back, a frame takes its row-times and the wait, once it is taller than the drain.
     const int64_t rows_cycles = int64_t(cfg.height) * d.row_slots * d.groups;
-    CHECK(d.cycles_per_frame == (cfg.height >= d.overlap_height ? rows_cycles : d.lone_frame_cycles));
+    CHECK(d.cycles_per_frame == (follows_on ? rows_cycles + wait : d.lone_frame_cycles));
     CHECK(d.overlap_height * d.row_slots * d.groups >= sum + 2 * d.row_slots * d.groups);
     // Every stage with a schedule of its own has its start step, and only those.
     for (const auto& stage : d.stages)

@@ -102,9 +102,13 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.chains = std::max(2, 1 + ceil_div(g.path_tree_latency + kPathLanesLatency, g.groups));
   // Segments need at least 3 pixels (docs/architecture.md); width >= dmax gives it, as K <= 5
   // where dmax < 128 (width >= 16) and K <= 6 otherwise.
-  const int beat_split = cfg.ppc > 1 ? kBeatSplitCycles : 0;
-  g.segment = ceil_div(cfg.width + (g.groups == 1 ? kFollowBubbles + beat_split : 0), g.chains);
+  g.segment = ceil_div(cfg.width, g.chains);
   g.row_slots = g.chains * g.segment;
+  if (g.groups == 1) {
+    // With P pixels a beat the framing stage is done with a frame as its last beat enters the
+    // beat register, P - 1 pixels before the core takes the last: the wait is that much shorter.
+    g.follow_wait = std::max(0, kFollowCycles - (cfg.ppc - 1) - (g.row_slots - cfg.width));
+  }
   g.lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
   g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
   g.out_rows = g.chains + 1 + g.lr_rows;
@@ -171,12 +175,14 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // pixel (0, 0) on.
   const int64_t push_first = at - kStepsAfterPush;
   const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
-  d.lone_frame_cycles = at + last_pixel * G + (cfg.ppc > 1 ? kBeatSplitCycles : 0);
   // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
   // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
-  // and a frame is done before the one after the next begins).
+  // and a frame is done before the one after the next begins). Such a frame waits follow_wait
+  // cycles at its end for the next one, whether it comes or not.
   d.overlap_height = int(ceil_div(push_first, R * G) + 2);
-  d.cycles_per_frame = cfg.height >= d.overlap_height ? int64_t(cfg.height) * R * G : d.lone_frame_cycles;
+  const bool follows_on = cfg.height >= d.overlap_height;
+  d.lone_frame_cycles = at + last_pixel * G + (cfg.ppc > 1 ? kBeatSplitCycles : 0) + (follows_on ? d.follow_wait : 0);
+  d.cycles_per_frame = follows_on ? int64_t(cfg.height) * R * G + d.follow_wait : d.lone_frame_cycles;
   // At the ports: the input register slice, the cycle in which the framing stage starts the core
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
   // With several pixels per beat, the beat's register (fpstereo_beat_split), and the output beat

@@ -48,6 +48,9 @@ struct Geometry {
   int chains = 0;     // K
   int segment = 0;    // ceil(W / K): pixels per chain per row
   int row_slots = 0;  // R = K * segment: slots per row-time
+  // Cycles the window stage holds a frame's last step for a following frame (G = 1 only; see
+  // kFollowCycles in stage.hpp): once per frame, where bubble slots would cost every row.
+  int follow_wait = 0;
   // Row-times the output waits for the left-right check's match side: 0, 1 (LR1) or 2 (LR2).
   int lr_rows = 0;
   // rows of the cost reorder RAM (K, one more with LR2, whose match side reads a row longer) and

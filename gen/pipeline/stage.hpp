@@ -30,13 +30,16 @@ struct Latency {
 // which the sequencer starts (fpstereo_sequencer). The output stage's latency ends with them.
 constexpr int64_t kStepsAfterPush = 3;
 
-// Bubble slots a row-time keeps at its end when G = 1, so that a frame that follows on finds its
-// first pixel there when due: it reaches the core three cycles after the core took the frame
-// before's last (the framing stage rests a cycle, starts the frame, then passes the pixel through
-// the pixel register slice). With G >= 2 that slice runs a pixel ahead, which covers it.
-constexpr int kFollowBubbles = 2;
-// With several pixels per beat the beat's register (fpstereo_beat_split) adds a cycle on that way,
-// and so a bubble; a frame that runs alone starts a cycle later for it too.
+// When G = 1 the window stage decides whether the next frame follows on in the row-time's last
+// slot, and a frame that follows on reaches the core this many cycles too late for that: the
+// framing stage rests a cycle after the frame before's last pixel, starts the frame, and the
+// sequencer offers it (next_frame) a cycle later. The row-time's spare slots (R - W) cover part
+// of it and the window stage holds the pipeline (adv low) for the rest, once per frame
+// (Geometry::follow_wait; the test bench's timing check finds a cycle less too few). With G >= 2
+// the decision comes G - 1 steps after the last pixel's, which covers it.
+constexpr int kFollowCycles = 2;
+// With several pixels per beat the beat's register (fpstereo_beat_split) delays a frame that runs
+// alone by a cycle.
 constexpr int kBeatSplitCycles = 1;
 
 // A RAM a stage instantiates: its name as Yosys gives it after flattening the top

@@ -4,8 +4,8 @@
 // sequencer: the framing stage starts a frame only while accepting is high, at most once per
 // cycle; the window stage takes the next frame only while it is offered (next_frame) and the
 // pipeline advances, and not in the frame's last step (it takes it after the frame's last row,
-// at least two row-times before the last push); follow_open, continuing, settings_held, the stalls and frame_done are
-// arbitrary. Asserted: every start is outstanding until the frame begins, either from idle
+// at least two row-times before the last push); follow_open, continuing, settings_held, the
+// stalls (hold among them) and frame_done are arbitrary. Asserted: every start is outstanding until the frame begins, either from idle
 // (starting) or taken by the window stage (next_taken), and at most one is outstanding; while
 // accepting, a start can be kept (the core is idle, or runs a frame with no next one waiting).
 // The induction reads the sequencer's state:
@@ -25,6 +25,7 @@ module sequencer_props (
   input wire out_ready,
   input wire view_due,
   input wire view_ready,
+  input wire hold,
   input wire frame_done
 );
   localparam STEP_W = 4;
@@ -34,7 +35,7 @@ module sequencer_props (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held),
     .accepting(accepting), .follow_open(follow_open), .next_frame(next_frame), .next_taken(next_taken),
     .continuing(continuing), .in_due(in_due), .in_valid(in_valid), .out_due(out_due),
-    .out_ready(out_ready), .view_due(view_due), .view_ready(view_ready), .frame_done(frame_done),
+    .out_ready(out_ready), .view_due(view_due), .view_ready(view_ready), .hold(hold), .frame_done(frame_done),
     .adv(adv), .step(step), .restart(restart));
 
 `ifdef FORMAL

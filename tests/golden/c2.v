@@ -253,6 +253,7 @@ module fps_census7_d128u32_6e9658_sgm_core (
   wire frame_done;
   wire [20:0] step;
   wire follow_open;
+  wire hold;
   wire next_frame;
   wire next_taken;
   wire continuing;
@@ -276,7 +277,7 @@ module fps_census7_d128u32_6e9658_sgm_core (
     .clk(clk), .rst(rst), .start(start), .idle(idle), .settings_held(settings_held), .accepting(accepting),
     .follow_open(follow_open), .next_frame(next_frame), .next_taken(next_taken), .continuing(continuing),
     .in_due(in_due), .in_valid(in_valid), .out_due(out_due), .out_ready(out_ready), .view_due(1'b0),
-    .view_ready(1'b1), .frame_done(frame_done), .adv(adv), .step(step), .restart(restart));
+    .view_ready(1'b1), .hold(hold), .frame_done(frame_done), .adv(adv), .step(step), .restart(restart));
 
   // Window stage: line buffers, windows, their bounds and centres.
   wire shift;
@@ -295,13 +296,14 @@ module fps_census7_d128u32_6e9658_sgm_core (
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e9658_front_end #(
-    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
+    .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
+    .G_W(2), .FOLLOW_WAIT(0)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
-    .continuing(continuing), .wrapped(wrapped), .in_due(in_due), .in_take(in_take), .in_left(in_left),
-    .in_right(in_right), .group(group), .slot_end(slot_end), .shift(shift), .window_left(window_left),
-    .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
+    .hold(hold), .continuing(continuing), .wrapped(wrapped), .in_due(in_due), .in_take(in_take),
+    .in_left(in_left), .in_right(in_right), .group(group), .slot_end(slot_end), .shift(shift),
+    .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
     .newest_row_valid(newest_row_valid), .transform_x(transform_x), .transform_y(transform_y),
     .transform_slot(transform_slot));
   wire [47:0] code_base;
@@ -941,7 +943,8 @@ endmodule
 // first pixel by then); from then on the step counter advances in every cycle where adv is high,
 // and adv is the one enable of every stage, so the whole pipeline stalls together. adv is low
 // while a stage is due to take an input pixel that is not there (in_due) or to push an output word
-// that cannot leave (out_due, and view_due for the right view's stream). A start while a frame
+// that cannot leave (out_due, and view_due for the right view's stream), and while the window
+// stage holds a frame's end for the next frame (hold, a few cycles a frame). A start while a frame
 // runs begins the next frame (docs/architecture.md, "Back-to-back frames"): next_frame (pending),
 // a register, from the next cycle until the window stage takes it, which it can while
 // follow_open is high. A frame ends in the step that pushes its last word (frame_done); unless
@@ -975,6 +978,7 @@ module fps_census7_d128u32_6e9658_sequencer #(
   input  wire              out_ready,
   input  wire              view_due,
   input  wire              view_ready,
+  input  wire              hold,
   input  wire              frame_done,
   output wire              adv,
   output reg  [STEP_W-1:0] step,
@@ -988,7 +992,7 @@ module fps_census7_d128u32_6e9658_sequencer #(
   endgenerate
   reg starting, in_frame, pending;
   wire follow = in_frame && follow_open && !pending;
-  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready);
+  assign adv = in_frame && !(in_due && !in_valid) && !(out_due && !out_ready) && !(view_due && !view_ready) && !hold;
   wire ends = adv && frame_done && !continuing;
   // A next frame not taken (pending, or begun in this very step) starts when this frame ends,
   // as from idle: the framing stage is already passing its pixels.
@@ -1030,6 +1034,9 @@ endmodule
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
 // rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
 // rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
+// With G = 1 that step is the frame's last slot, which comes sooner than a following frame's first
+// pixel can: `hold` stops the pipeline for FOLLOW_WAIT cycles there (only in the last row of a
+// frame that may be followed), so that a frame sent on time is taken.
 module fps_census7_d128u32_6e9658_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
@@ -1041,7 +1048,9 @@ module fps_census7_d128u32_6e9658_front_end #(
   parameter Y_W = 6,
   // signed row coordinates (Y_W + 2): a window centre may lie above the image
   parameter SIGNED_Y_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  // cycles the frame's last step waits for a following frame (0 when G > 1)
+  parameter FOLLOW_WAIT = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -1052,6 +1061,7 @@ module fps_census7_d128u32_6e9658_front_end #(
   input  wire                   next_frame,
   output wire                   next_taken,
   output wire                   follow_open,
+  output wire                   hold,
   output reg                    continuing,
   output reg                    wrapped,
   // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
@@ -1080,6 +1090,9 @@ module fps_census7_d128u32_6e9658_front_end #(
     end
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
       fps_census7_d128u32_6e9658_invalid_parameters_front_end_SIGNED_Y_W_below_Y_W_plus_2 failed ();
+    end
+    if (FOLLOW_WAIT < 0 || FOLLOW_WAIT > 3 || (FOLLOW_WAIT != 0 && G != 1)) begin : invalid_FOLLOW_WAIT
+      fps_census7_d128u32_6e9658_invalid_parameters_front_end_FOLLOW_WAIT_outside_0_to_3_or_with_G_above_1 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -1154,6 +1167,19 @@ module fps_census7_d128u32_6e9658_front_end #(
       end
       if (rows_end && overlap) wrapped <= 1'b1;
     end
+  // The hold: armed in the step before the last row's last slot (G = 1: every step is a slot),
+  // while the frame may be followed; it lasts FOLLOW_WAIT cycles, whether the frame comes or not,
+  // so that every frame takes the same time. Registers only, as adv depends on it.
+  reg armed;
+  reg [1:0] waited;
+  localparam [1:0] WAIT = FOLLOW_WAIT;
+  always @(posedge clk)
+    if (restart) armed <= 1'b0;
+    else if (adv) armed <= FOLLOW_WAIT != 0 && si == SLOT_BEFORE_LAST && at_last_row && overlap && row_in && !closed;
+  assign hold = armed && waited != WAIT;
+  always @(posedge clk)
+    if (restart || !armed) waited <= 2'd0;
+    else if (hold) waited <= waited + 1'b1;
   assign in_due  = in_due_q;
   assign in_take = adv && in_due;
   assign shift = adv && slot_end;

@@ -23,7 +23,7 @@ class FramingStage : public Stage {
     if (d.cfg.right_view) core.wire("view_due", 1);
     core.wire("frame_done", 1);
     core.wire("step", d.step_bits);
-    for (const char* net : {"follow_open", "next_frame", "next_taken", "continuing", "wrapped"}) core.wire(net, 1);
+    for (const char* net : {"follow_open", "hold", "next_frame", "next_taken", "continuing", "wrapped"}) core.wire(net, 1);
     core.logic(fmt::format("  // Frames follow on (docs/architecture.md, \"Back-to-back frames\") when they are taller\n"
                            "  // than the pipeline's drain.\n"
                            "  localparam OVERLAP_HEIGHT = {};\n"

@@ -48,7 +48,8 @@ class WindowStage : public Stage {
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
                    {"SIGNED_Y_W", num(d.signed_y_bits)},
-                   {"G_W", num(d.group_bits)}});
+                   {"G_W", num(d.group_bits)},
+                   {"FOLLOW_WAIT", num(d.follow_wait)}});
     if (!transform_) return;
     const int code_bits = std::max(1, d.widths.code);
     core.wire("code_base", code_bits);
