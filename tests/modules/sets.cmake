@@ -30,6 +30,12 @@ modtb_set(window window_n7_s16 TOP fpstereo_window SOURCES fpstereo_window.v fps
           PARAMS N=7 WORD_W=4 ROW_SLOTS=16 ADDR_W=5)
 modtb_set(window window_n5_s3 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
           PARAMS N=5 WORD_W=10 ROW_SLOTS=3 ADDR_W=2)
+modtb_set(window window_n7_p2_c9_s10 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=7 WORD_W=8 P=2 COLS=9 ROW_SLOTS=10 ADDR_W=4)
+modtb_set(window window_n3_p4_s6 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=3 WORD_W=6 P=4 ROW_SLOTS=6 ADDR_W=3)
+modtb_set(window window_n5_p4_s3 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
+          PARAMS N=5 WORD_W=8 P=4 ROW_SLOTS=3 ADDR_W=2)
 modtb_set(path_lanes path_lanes_uf4 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
           PARAMS UF=4 COST_W=6 PATH_W=8)
 modtb_set(path_lanes path_lanes_uf1 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v

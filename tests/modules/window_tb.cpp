@@ -1,9 +1,10 @@
-// fpstereo_window (with its line buffer fpstereo_ram_sdp): an N x N window over a raster stream.
-// Reference: per column, the last N-1 words that entered it; on a shift with word w at column c
-// the window moves one column left and its new right column is, top (oldest) to bottom, the
-// words N-1 .. 1 rows above w in column c, then w. Columns run 0 .. ROW_SLOTS-1 and wrap; idle
-// cycles (shift low) carry random col / next_col / word and must change nothing. Window entries
-// whose words never entered (power-up) are not compared.
+// fpstereo_window (with its line buffer fpstereo_ram_sdp): a window N rows high and COLS columns
+// wide over a raster stream of P words a slot. Reference: per column, the last N-1 words that entered it; on a shift
+// with words w_0 .. w_{P-1} at slot c (columns c * P + q) the window moves P columns left and its
+// new right columns q are, top (oldest) to bottom, the words N-1 .. 1 rows above w_q in column
+// c * P + q, then w_q. Slots run 0 .. ROW_SLOTS-1 and wrap; idle cycles (shift low) carry random
+// col / next_col / words and must change nothing. Window entries whose words never entered
+// (power-up) are not compared.
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +15,7 @@
 namespace {
 
 struct WindowParams {
-  int N = 7, WORD_W = 8, ROW_SLOTS = 64, ADDR_W = 6;
+  int N = 7, WORD_W = 8, P = 1, COLS = 0, ROW_SLOTS = 64, ADDR_W = 6;  // COLS 0: N + P - 1
 };
 
 template <typename M>
@@ -25,9 +26,10 @@ int run_window(const char* name, const WindowParams& p, const modtb::Options& o)
   modtb::Rng rng(o.seed);
   modtb::Checker check(name);
   using Word = std::optional<uint64_t>;
-  // above[c][k]: the word k + 1 rows above the next one to enter column c
-  std::vector<std::vector<Word>> above(p.ROW_SLOTS, std::vector<Word>(p.N - 1));
-  std::vector<Word> window(p.N * p.N);  // row i, column j at i * N + j
+  const int C = p.COLS != 0 ? p.COLS : p.N + p.P - 1;  // window columns
+  // above[x][k]: the word k + 1 rows above the next one to enter column x
+  std::vector<std::vector<Word>> above(size_t(p.ROW_SLOTS * p.P), std::vector<Word>(size_t(p.N - 1)));
+  std::vector<Word> window(size_t(p.N * C));  // row i, column j at i * C + j
   int col = 0;
   long shifts = 0, compared = 0;
   m.clk = 0;
@@ -35,9 +37,14 @@ int run_window(const char* name, const WindowParams& p, const modtb::Options& o)
   m.eval();
   for (long cycle = 0; cycle < o.cycles; ++cycle) {
     const bool shift = !rng.chance(cycle % 1000 < 300 ? 0 : 40);
-    const uint64_t word = rng.bits(p.WORD_W);
+    std::vector<uint64_t> words(size_t(p.P));
+    uint64_t packed = 0;
+    for (int q = 0; q < p.P; ++q) {
+      words[size_t(q)] = rng.bits(p.WORD_W);
+      packed |= words[size_t(q)] << (q * p.WORD_W);
+    }
     m.shift = shift;
-    m.word = word;
+    m.word = packed;
     if (shift) {
       m.col = col;
       m.next_col = (col + 1) % p.ROW_SLOTS;
@@ -49,28 +56,32 @@ int run_window(const char* name, const WindowParams& p, const modtb::Options& o)
     modtb::tick(m);
     if (shift) {
       for (int i = 0; i < p.N; ++i) {
-        for (int j = 0; j < p.N - 1; ++j) window[i * p.N + j] = window[i * p.N + j + 1];
-        window[i * p.N + p.N - 1] = i == p.N - 1 ? Word(word) : above[col][p.N - 2 - i];
+        for (int j = 0; j < C - p.P; ++j) window[size_t(i * C + j)] = window[size_t(i * C + j + p.P)];
+        for (int q = 0; q < p.P; ++q)
+          window[size_t(i * C + C - p.P + q)] =
+              i == p.N - 1 ? Word(words[size_t(q)]) : above[size_t(col * p.P + q)][size_t(p.N - 2 - i)];
       }
-      auto& column = above[col];
-      for (int k = p.N - 2; k > 0; --k) column[k] = column[k - 1];
-      column[0] = word;
+      for (int q = 0; q < p.P; ++q) {
+        auto& column = above[size_t(col * p.P + q)];
+        for (int k = p.N - 2; k > 0; --k) column[size_t(k)] = column[size_t(k - 1)];
+        column[0] = words[size_t(q)];
+      }
       col = (col + 1) % p.ROW_SLOTS;
       ++shifts;
     }
     for (int i = 0; i < p.N; ++i)
-      for (int j = 0; j < p.N; ++j)
-        if (const Word& want = window[i * p.N + j]) {
+      for (int j = 0; j < C; ++j)
+        if (const Word& want = window[size_t(i * C + j)]) {
           ++compared;
           check.expect(cycle, "window row " + std::to_string(i) + " col " + std::to_string(j), *want,
-                       modtb::get_bits(m.window, (i * p.N + j) * p.WORD_W, p.WORD_W));
+                       modtb::get_bits(m.window, (i * C + j) * p.WORD_W, p.WORD_W));
         }
   }
-  return check.finish("N=" + std::to_string(p.N) + " WORD_W=" + std::to_string(p.WORD_W) + " ROW_SLOTS=" +
-                      std::to_string(p.ROW_SLOTS) + ": every window word after each cycle (" +
-                      std::to_string(compared) + " words), " + std::to_string(shifts) + " shifts (" +
-                      std::to_string(shifts / p.ROW_SLOTS) + " rows) in " + std::to_string(o.cycles) +
-                      " cycles, idle cycles with random col/next_col/word");
+  return check.finish("N=" + std::to_string(p.N) + " WORD_W=" + std::to_string(p.WORD_W) + " P=" +
+                      std::to_string(p.P) + " COLS=" + std::to_string(C) + " ROW_SLOTS=" + std::to_string(p.ROW_SLOTS) +
+                      ": every window word after each cycle (" + std::to_string(compared) + " words), " +
+                      std::to_string(shifts) + " shifts (" + std::to_string(shifts / p.ROW_SLOTS) + " rows) in " +
+                      std::to_string(o.cycles) + " cycles, idle cycles with random col/next_col/words");
 }
 
 #define X(NAME, MODEL, SETTER) MODTB_REGISTER_ONE(NAME, MODEL, SETTER, run_window, WindowParams)
