@@ -37,7 +37,8 @@ module fpstereo_raster_counter #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
 
   assign slot_end = group == LAST_GROUP;
   always @(posedge clk)

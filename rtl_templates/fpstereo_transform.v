@@ -1,22 +1,26 @@
 `resetall
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
-// centres, registered once per slot (docs/semantics.md, section 2).
+// centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
+// window arrays are COLS columns wide and hold P windows side by side (fpstereo_front_end):
+// window q is columns q .. q + N - 1, its code in bits q * CODE_W of the outputs.
 module fpstereo_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
   parameter RANK = 0,
   // code width: N*N - 1 for census, clog2(N*N) for rank
-  parameter CODE_W = 24
+  parameter CODE_W = 24,
+  parameter P = 1,
+  parameter COLS = N
 ) (
-  input  wire              clk,
-  input  wire              shift,
-  input  wire [N*N*8-1:0]  window_left,
-  input  wire [N*N*8-1:0]  window_right,
-  input  wire [N-1:0]      row_valid,
-  input  wire [N-1:0]      col_valid,
-  output reg  [CODE_W-1:0] code_base,
-  output reg  [CODE_W-1:0] code_match
+  input  wire                clk,
+  input  wire                shift,
+  input  wire [N*COLS*8-1:0] window_left,
+  input  wire [N*COLS*8-1:0] window_right,
+  input  wire [N-1:0]        row_valid,
+  input  wire [N+P-2:0]      col_valid,
+  output reg  [P*CODE_W-1:0] code_base,
+  output reg  [P*CODE_W-1:0] code_match
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -26,19 +30,32 @@ module fpstereo_transform #(
     if ((RANK == 0 && CODE_W != N * N - 1) || (RANK != 0 && N * N - 1 >= (1 << CODE_W))) begin : invalid_CODE_W
       fpstereo_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
     end
+    if (P < 1 || COLS < N + P - 1) begin : invalid_P
+      fpstereo_invalid_parameters_transform_COLS_below_N_plus_P_minus_1 failed ();
+    end
   endgenerate
-  wire [CODE_W-1:0] code_left, code_right;
+  wire [P*CODE_W-1:0] code_left, code_right;
+  genvar q, i;
   generate
-    if (RANK) begin : rank
-      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
-                                                     .col_valid(col_valid), .rank(code_left));
-      fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
-                                                      .col_valid(col_valid), .rank(code_right));
-    end else begin : census
-      fpstereo_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
-                                     .code(code_left));
-      fpstereo_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
-                                      .code(code_right));
+    for (q = 0; q < P; q = q + 1) begin : pixel
+      // window q's N x N pixels, row by row
+      wire [N*N*8-1:0] left, right;
+      for (i = 0; i < N; i = i + 1) begin : row
+        assign left[i*N*8 +: N*8] = window_left[(i*COLS + q)*8 +: N*8];
+        assign right[i*N*8 +: N*8] = window_right[(i*COLS + q)*8 +: N*8];
+      end
+      wire [N-1:0] cols = col_valid[q +: N];
+      if (RANK) begin : rank
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),
+                                                       .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(right), .row_valid(row_valid),
+                                                        .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
+      end else begin : census
+        fpstereo_census #(.N(N)) base (.window(left), .row_valid(row_valid), .col_valid(cols),
+                                       .code(code_left[q*CODE_W +: CODE_W]));
+        fpstereo_census #(.N(N)) match (.window(right), .row_valid(row_valid), .col_valid(cols),
+                                        .code(code_right[q*CODE_W +: CODE_W]));
+      end
     end
   endgenerate
   always @(posedge clk)

@@ -1,9 +1,13 @@
 `resetall
 `default_nettype none
 // Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
-// image (docs/semantics.md, section 1: outside, a window reads zeros).
+// image (docs/semantics.md, section 1: outside, a window reads zeros). COLS and COL_LAG widen the
+// columns: column v is image column x + v - COL_LAG (the P windows of a front end that takes P
+// pixels a slot, centred on x .. x + P - 1: COLS = SIDE + P - 1).
 module fpstereo_window_bounds #(
   parameter SIDE = 5,
+  parameter COLS = SIDE,
+  parameter COL_LAG = SIDE / 2,
   parameter X_W = 7,
   // signed row width
   parameter SIGNED_Y_W = 8
@@ -13,27 +17,34 @@ module fpstereo_window_bounds #(
   input  wire [X_W:0]           width,
   input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
-  output wire [SIDE-1:0]        col_valid
+  output wire [COLS-1:0]        col_valid
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
       fpstereo_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
     end
+    if (COLS < 1 || COL_LAG < 0 || COL_LAG >= COLS) begin : invalid_cols
+      fpstereo_invalid_parameters_window_bounds_COL_LAG_outside_COLS failed ();
+    end
   endgenerate
   localparam LAG = SIDE / 2;
 
-  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
-  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
+  // Window column v is image column x + v - COL_LAG, inside where COL_LAG - v <= x < width +
+  // COL_LAG - v; row v likewise with LAG: the constants go to the frame-size side, so that no adder
+  // lies on the path from x or y.
   genvar v;
   generate
+    for (v = 0; v < COLS; v = v + 1) begin : column
+      localparam signed [31:0] OFFSET = COL_LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      wire signed [X_W+2:0] at = $signed({3'b000, x});
+      assign col_valid[v] = at >= OFFSET_X && at < $signed({2'b00, width}) + OFFSET_X;
+    end
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
-      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
       localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
-      wire signed [X_W+2:0] column = $signed({3'b000, x});
       wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
-      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
       assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate

@@ -1023,12 +1023,16 @@ endmodule
 
 `resetall
 `default_nettype none
-// Window stage (docs/architecture.md, "Front end"): takes one left and one right pixel per slot
-// in raster order, keeps N - 1 rows of each image in line buffers and forms the N x N windows,
-// with the positions of their centres and which window rows and columns lie inside the image
-// (semantics section 1). Outside the frame (bubble slots, rows below the image) the windows take
-// zeros. transform_x / transform_y / transform_slot are the centre of the windows of the
-// previous shift: the position of what the transform (or the SAD/ZSAD window registers) holds.
+// Window stage (docs/architecture.md, "Front end"): takes P left and P right pixels per slot (a
+// beat: columns slot * P + q, q = 0 .. P - 1) in raster order, keeps N - 1 rows of each image in
+// line buffers and forms the N x N windows, with the positions of their centres and which window
+// rows and columns lie inside the image (semantics section 1). Outside the frame (bubble slots,
+// rows below the image) the windows take zeros. The P windows of a shift are centred on the P
+// columns of one slot, CENTRE_LAG slots behind the input: window q is columns q .. q + N - 1 of
+// the COLS-wide arrays, whose column bounds are col_valid[q + N - 1 : q].
+// transform_x / transform_y / transform_slot are the centres' slot, row and cost RAM row of the
+// windows of the previous shift: the position of what the transform (or the SAD/ZSAD window
+// registers) holds.
 // Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
 // the frame's last row. If the next frame has begun by the step that would take its first pixel
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
@@ -1050,7 +1054,12 @@ module fps_census7_d128u32_6e9658_front_end #(
   parameter SIGNED_Y_W = 8,
   parameter G_W = 2,
   // cycles the frame's last step waits for a following frame (0 when G > 1)
-  parameter FOLLOW_WAIT = 0
+  parameter FOLLOW_WAIT = 0,
+  // pixels per slot (1, 2 or 4); frame_width counts pixels, a multiple of P, and X_W holds it
+  parameter P = 1,
+  // the slots the windows' centres lag the input, and the window arrays' columns
+  parameter CENTRE_LAG = (N / 2 + P - 1) / P,
+  parameter COLS = P * (1 + CENTRE_LAG) + N / 2
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -1067,16 +1076,16 @@ module fps_census7_d128u32_6e9658_front_end #(
   // the pixel pair, taken in a step where in_due is high (in_take = adv && in_due)
   output wire                   in_due,
   output wire                   in_take,
-  input  wire [7:0]             in_left,
-  input  wire [7:0]             in_right,
+  input  wire [P*8-1:0]         in_left,
+  input  wire [P*8-1:0]         in_right,
   // the step's group and the slot's last step; shift = adv in a slot's last step
   output wire [G_W-1:0]         group,
   output wire                   slot_end,
   output wire                   shift,
-  output wire [N*N*8-1:0]       window_left,
-  output wire [N*N*8-1:0]       window_right,
+  output wire [N*COLS*8-1:0]    window_left,
+  output wire [N*COLS*8-1:0]    window_right,
   output wire [N-1:0]           row_valid,
-  output wire [N-1:0]           col_valid,
+  output wire [N+P-2:0]         col_valid,
   // window rows inside the image for the newest column (zero when that column is outside)
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
@@ -1094,9 +1103,15 @@ module fps_census7_d128u32_6e9658_front_end #(
     if (FOLLOW_WAIT < 0 || FOLLOW_WAIT > 3 || (FOLLOW_WAIT != 0 && G != 1)) begin : invalid_FOLLOW_WAIT
       fps_census7_d128u32_6e9658_invalid_parameters_front_end_FOLLOW_WAIT_outside_0_to_3_or_with_G_above_1 failed ();
     end
+    if ((P != 1 && P != 2 && P != 4) || (P != 1 && G != 1) || ROW_SLOTS * P > (1 << X_W) ||
+        CENTRE_LAG * P < N / 2 || COLS != P * (1 + CENTRE_LAG) + N / 2) begin : invalid_P
+      fps_census7_d128u32_6e9658_invalid_parameters_front_end_P_not_1_2_4_with_G_1_or_X_W_CENTRE_LAG_COLS_wrong failed ();
+    end
   endgenerate
   localparam R = N / 2;
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
 
@@ -1115,13 +1130,14 @@ module fps_census7_d128u32_6e9658_front_end #(
   // Whether the slot is the row-time's last, the frame's last column and last row, as registers
   // set when the counter moves (frames are at least 2 x 2); the frame size holds from the cycle
   // before step 0 (fps_census7_d128u32_6e9658_sequencer) to the frame's end.
-  localparam [X_W-1:0] SLOT_BEFORE_LAST = ROW_SLOTS - 2;
+  localparam integer SLOT_BEFORE_LAST_I = ROW_SLOTS - 2;
+  localparam [X_W-1:0] SLOT_BEFORE_LAST = SLOT_BEFORE_LAST_I[X_W-1:0];
   localparam [X_W-1:0] TWO_X = 2;
   localparam [Y_W-1:0] TWO_Y = 2;
   reg  [X_W-1:0] col_before_last;
   reg  [Y_W-1:0] row_before_last;
   always @(posedge clk) begin
-    col_before_last <= frame_width - TWO_X;
+    col_before_last <= (frame_width >> LOG_P) - TWO_X;
     row_before_last <= frame_height - TWO_Y;
   end
   reg  at_last_slot, at_last_col, at_last_row;
@@ -1185,19 +1201,19 @@ module fps_census7_d128u32_6e9658_front_end #(
   assign shift = adv && slot_end;
   wire [X_W-1:0] next_col = (si == LAST_SLOT) ? {X_W{1'b0}} : si + 1'b1;
 
-  fps_census7_d128u32_6e9658_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
+  fps_census7_d128u32_6e9658_window #(.N(N), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) left_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .word(in_due ? in_left : 8'd0), .window(window_left));
-  fps_census7_d128u32_6e9658_window #(.N(N), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
+    .word(in_due ? in_left : {(P*8){1'b0}}), .window(window_left));
+  fps_census7_d128u32_6e9658_window #(.N(N), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) right_window (
     .clk(clk), .shift(shift), .col(si), .next_col(next_col),
-    .word(in_due ? in_right : 8'd0), .window(window_right));
+    .word(in_due ? in_right : {(P*8){1'b0}}), .window(window_right));
 
-  // Centre of the window that forms in this shift, R slots and R rows behind the input, and its
-  // row's slot in the cost reorder RAM, all counters, so that the bounds compare registers. The
-  // window's newest column is the input column itself: in the image if the input column is, and
-  // its rows centred on the input row - R (newest_y: no borrow, unlike the centre at a row's
-  // start, which lies in the previous row-time, newest_prev_y).
-  localparam integer CENTRE_START_I = ROW_SLOTS - R;
+  // Centre of the windows that form in this shift, CENTRE_LAG slots (R pixels at P = 1) and R rows
+  // behind the input, and its row's slot in the cost reorder RAM, all counters, so that the
+  // bounds compare registers. The windows' newest columns are the input slot's own: in the image
+  // if the input slot is, and their rows centred on the input row - R (newest_y: no borrow, unlike
+  // the centre at a row's start, which lies in the previous row-time, newest_prev_y).
+  localparam integer CENTRE_START_I = ROW_SLOTS - CENTRE_LAG;
   localparam integer SLOT_BIAS = COST_ROWS * ((R + 1 + COST_ROWS) / COST_ROWS);  // a multiple above R + 1
   localparam integer NEWEST_SLOT_I = (SLOT_BIAS - R) % COST_ROWS;
   localparam integer PREV_SLOT_I = (SLOT_BIAS - R - 1) % COST_ROWS;
@@ -1208,7 +1224,8 @@ module fps_census7_d128u32_6e9658_front_end #(
   localparam [COST_ROW_W-1:0] PREV_SLOT = PREV_SLOT_I[COST_ROW_W-1:0];
   localparam [COST_ROW_W-1:0] LAST_COST_ROW = LAST_COST_ROW_I[COST_ROW_W-1:0];
   localparam [SIGNED_Y_W-1:0] PREV_START = PREV_START_I[SIGNED_Y_W-1:0];
-  localparam [X_W-1:0] R_X = R;
+  localparam integer LAG_I = CENTRE_LAG;
+  localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   reg  [X_W-1:0] centre_x;
   always @(posedge clk)
     if (restart) centre_x <= CENTRE_START;
@@ -1231,12 +1248,12 @@ module fps_census7_d128u32_6e9658_front_end #(
       newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
-  // The centre lies in the previous row-time while the input slot is below R: a register that
+  // The centre lies in the previous row-time while the input slot is below CENTRE_LAG: a register that
   // moves with the slot counter (slot 0 after a restart), so the rows' mux starts from it.
   reg borrow;
   always @(posedge clk)
     if (restart) borrow <= 1'b1;
-    else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < R_X;
+    else if (shift) borrow <= si == LAST_SLOT || si + 1'b1 < LAG_X;
   wire signed [SIGNED_Y_W-1:0] centre_y = borrow ? newest_prev_y : newest_y;
   wire [COST_ROW_W-1:0] centre_slot = borrow ? newest_prev_slot : newest_slot;
   reg  [X_W-1:0] window_x;
@@ -1255,23 +1272,30 @@ module fps_census7_d128u32_6e9658_front_end #(
   // The bounds of the window that forms in this shift are registered with its position, so that
   // the compares with the frame size and the transform lie in different steps. Its rows' bounds
   // are those of one of the two counted rows.
-  wire [N-1:0] centre_columns, newest_rows, prev_rows;
+  // The columns' bounds are those of the P windows side by side, centred on the slot's first pixel
+  // and the P - 1 after it.
+  wire [N+P-2:0] centre_columns;
+  wire [N-1:0] newest_rows, prev_rows;
   /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
   wire [N-1:0] prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
-    .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+  /* verilator lint_off WIDTH */  // the slot's first pixel, slot * P (below 2^X_W)
+  wire [X_W-1:0] centre_pixel = centre_x << LOG_P;
+  /* verilator lint_on WIDTH */
+  fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .COLS(N + P - 1), .COL_LAG(R), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
+    .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
   fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
-  reg [N-1:0] row_valid_q, col_valid_q, newest_row_valid_q;
+  reg [N-1:0] row_valid_q, newest_row_valid_q;
+  reg [N+P-2:0] col_valid_q;
   always @(posedge clk)
     if (shift) begin
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
-      newest_row_valid_q <= {1'b0, si} < width_x ? newest_rows : {N{1'b0}};
+      newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
@@ -1282,22 +1306,26 @@ endmodule
 `resetall
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
-// centres, registered once per slot (docs/semantics.md, section 2).
+// centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
+// window arrays are COLS columns wide and hold P windows side by side (fps_census7_d128u32_6e9658_front_end):
+// window q is columns q .. q + N - 1, its code in bits q * CODE_W of the outputs.
 module fps_census7_d128u32_6e9658_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
   parameter RANK = 0,
   // code width: N*N - 1 for census, clog2(N*N) for rank
-  parameter CODE_W = 24
+  parameter CODE_W = 24,
+  parameter P = 1,
+  parameter COLS = N
 ) (
-  input  wire              clk,
-  input  wire              shift,
-  input  wire [N*N*8-1:0]  window_left,
-  input  wire [N*N*8-1:0]  window_right,
-  input  wire [N-1:0]      row_valid,
-  input  wire [N-1:0]      col_valid,
-  output reg  [CODE_W-1:0] code_base,
-  output reg  [CODE_W-1:0] code_match
+  input  wire                clk,
+  input  wire                shift,
+  input  wire [N*COLS*8-1:0] window_left,
+  input  wire [N*COLS*8-1:0] window_right,
+  input  wire [N-1:0]        row_valid,
+  input  wire [N+P-2:0]      col_valid,
+  output reg  [P*CODE_W-1:0] code_base,
+  output reg  [P*CODE_W-1:0] code_match
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1307,19 +1335,32 @@ module fps_census7_d128u32_6e9658_transform #(
     if ((RANK == 0 && CODE_W != N * N - 1) || (RANK != 0 && N * N - 1 >= (1 << CODE_W))) begin : invalid_CODE_W
       fps_census7_d128u32_6e9658_invalid_parameters_transform_CODE_W_is_not_N_N_minus_1_for_census_or_too_narrow_for_rank failed ();
     end
+    if (P < 1 || COLS < N + P - 1) begin : invalid_P
+      fps_census7_d128u32_6e9658_invalid_parameters_transform_COLS_below_N_plus_P_minus_1 failed ();
+    end
   endgenerate
-  wire [CODE_W-1:0] code_left, code_right;
+  wire [P*CODE_W-1:0] code_left, code_right;
+  genvar q, i;
   generate
-    if (RANK) begin : rank
-      fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.window(window_left), .row_valid(row_valid),
-                                                     .col_valid(col_valid), .rank(code_left));
-      fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) match (.window(window_right), .row_valid(row_valid),
-                                                      .col_valid(col_valid), .rank(code_right));
-    end else begin : census
-      fps_census7_d128u32_6e9658_census #(.N(N)) base (.window(window_left), .row_valid(row_valid), .col_valid(col_valid),
-                                     .code(code_left));
-      fps_census7_d128u32_6e9658_census #(.N(N)) match (.window(window_right), .row_valid(row_valid), .col_valid(col_valid),
-                                      .code(code_right));
+    for (q = 0; q < P; q = q + 1) begin : pixel
+      // window q's N x N pixels, row by row
+      wire [N*N*8-1:0] left, right;
+      for (i = 0; i < N; i = i + 1) begin : row
+        assign left[i*N*8 +: N*8] = window_left[(i*COLS + q)*8 +: N*8];
+        assign right[i*N*8 +: N*8] = window_right[(i*COLS + q)*8 +: N*8];
+      end
+      wire [N-1:0] cols = col_valid[q +: N];
+      if (RANK) begin : rank
+        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),
+                                                       .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
+        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) match (.window(right), .row_valid(row_valid),
+                                                        .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
+      end else begin : census
+        fps_census7_d128u32_6e9658_census #(.N(N)) base (.window(left), .row_valid(row_valid), .col_valid(cols),
+                                       .code(code_left[q*CODE_W +: CODE_W]));
+        fps_census7_d128u32_6e9658_census #(.N(N)) match (.window(right), .row_valid(row_valid), .col_valid(cols),
+                                        .code(code_right[q*CODE_W +: CODE_W]));
+      end
     end
   endgenerate
   always @(posedge clk)
@@ -2378,7 +2419,8 @@ module fps_census7_d128u32_6e9658_raster_counter #(
   localparam integer LAST_CHAIN_I = K - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   localparam [K_W-1:0] LAST_ROW_SLOT = LAST_CHAIN_I[K_W-1:0];
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
 
   assign slot_end = group == LAST_GROUP;
   always @(posedge clk)
@@ -2518,9 +2560,13 @@ endmodule
 `resetall
 `default_nettype none
 // Which rows and columns of a SIDE x SIDE window centred on (x, y) lie inside the width x height
-// image (docs/semantics.md, section 1: outside, a window reads zeros).
+// image (docs/semantics.md, section 1: outside, a window reads zeros). COLS and COL_LAG widen the
+// columns: column v is image column x + v - COL_LAG (the P windows of a front end that takes P
+// pixels a slot, centred on x .. x + P - 1: COLS = SIDE + P - 1).
 module fps_census7_d128u32_6e9658_window_bounds #(
   parameter SIDE = 5,
+  parameter COLS = SIDE,
+  parameter COL_LAG = SIDE / 2,
   parameter X_W = 7,
   // signed row width
   parameter SIGNED_Y_W = 8
@@ -2530,27 +2576,34 @@ module fps_census7_d128u32_6e9658_window_bounds #(
   input  wire [X_W:0]           width,
   input  wire signed [SIGNED_Y_W-1:0] height,
   output wire [SIDE-1:0]        row_valid,
-  output wire [SIDE-1:0]        col_valid
+  output wire [COLS-1:0]        col_valid
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (SIDE < 1 || SIDE % 2 == 0) begin : invalid
       fps_census7_d128u32_6e9658_invalid_parameters_window_bounds_SIDE_is_not_odd failed ();
     end
+    if (COLS < 1 || COL_LAG < 0 || COL_LAG >= COLS) begin : invalid_cols
+      fps_census7_d128u32_6e9658_invalid_parameters_window_bounds_COL_LAG_outside_COLS failed ();
+    end
   endgenerate
   localparam LAG = SIDE / 2;
 
-  // Window column v is image column x + v - LAG, inside where LAG - v <= x < width + LAG - v:
-  // the constants go to the frame-size side, so that no adder lies on the path from x or y.
+  // Window column v is image column x + v - COL_LAG, inside where COL_LAG - v <= x < width +
+  // COL_LAG - v; row v likewise with LAG: the constants go to the frame-size side, so that no adder
+  // lies on the path from x or y.
   genvar v;
   generate
+    for (v = 0; v < COLS; v = v + 1) begin : column
+      localparam signed [31:0] OFFSET = COL_LAG - v;
+      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
+      wire signed [X_W+2:0] at = $signed({3'b000, x});
+      assign col_valid[v] = at >= OFFSET_X && at < $signed({2'b00, width}) + OFFSET_X;
+    end
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
-      localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
       localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
-      wire signed [X_W+2:0] column = $signed({3'b000, x});
       wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
-      assign col_valid[v] = column >= OFFSET_X && column < $signed({2'b00, width}) + OFFSET_X;
       assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
     end
   endgenerate
