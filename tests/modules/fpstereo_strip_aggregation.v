@@ -11,7 +11,10 @@
 // to its right. uf = dmax (G = 1). Each strip has its own cost read port and sums; the ports are
 // the aggregator's, strip p's in bits p * width. With CODES each strip reads code entries
 // ({match, base}, HAMMING: census codes, else ranks) and its own fpstereo_chain_cost computes
-// the costs, the strips handing their match rings on as their rows move right.
+// the costs, the strips handing their match rings on as their rows move right. With RAM (and
+// CODES) the entries come from fpstereo_strip_code_reorder instead, written in raster order a
+// slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
+// strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused).
 module fpstereo_strip_aggregation #(
   parameter P = 2,
   parameter W = 64,
@@ -42,7 +45,12 @@ module fpstereo_strip_aggregation #(
   parameter LANES_LAT = 2,
   /* verilator lint_on UNUSEDPARAM */
   // steps from cost_raddr to the aggregator's cost word: 1 (the RAM), or with CODES 2 + LANES_LAT
-  parameter COST_LEAD = 1
+  parameter COST_LEAD = 1,
+  /* verilator lint_off UNUSEDPARAM */  // with RAM
+  parameter RAM = 0,
+  parameter SLOT_ROWS = 10,
+  parameter SLOT_W = 4
+  /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
   input  wire                  restart,
@@ -56,7 +64,13 @@ module fpstereo_strip_aggregation #(
   input  wire                  wrapped,
   output wire [P*COST_AW-1:0]  cost_raddr,
   // each strip's cost word, or with CODES its entry, a step after its address
+  /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM, the code ports without
   input  wire [P*(CODES != 0 ? 2*CODE_W : UF*COST_W)-1:0] cost_q,
+  input  wire                  code_we,
+  input  wire [X_W-1:0]        code_slot,
+  input  wire [SLOT_W-1:0]     code_row,
+  input  wire [P*2*CODE_W-1:0] code_data,
+  /* verilator lint_on UNUSEDSIGNAL */
   output wire [P*UF*SUM_W-1:0] sums,
   output wire [P-1:0]          sums_active,
   output wire [P*X_W-1:0]      sums_x,
@@ -72,6 +86,23 @@ module fpstereo_strip_aggregation #(
   localparam EDGE_W = (UF + 1) * PATH_W;
   localparam Q_W = CODES != 0 ? 2 * CODE_W : UF * COST_W;
   localparam RING_W = UF * CODE_W;
+  // With RAM, the strips' code entries from their RAMs (a step after each address); else cost_q.
+  /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM
+  wire [P*Q_W-1:0] entries;
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (RAM != 0) begin : code_ram
+      if (CODES == 0) begin : invalid_ram
+        fpstereo_invalid_parameters_strip_aggregation_RAM_needs_CODES failed ();
+      end
+      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(2 * CODE_W),
+                                    .SLOT_ROWS(SLOT_ROWS), .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
+        .clk(clk), .adv(adv), .we(code_we), .wslot(code_slot), .wrow(code_row), .wdata(code_data),
+        .raddr(cost_raddr), .q(entries));
+    end else begin : from_port
+      assign entries = cost_q;
+    end
+  endgenerate
   /* verilator lint_off UNUSEDSIGNAL */  // with CODES
   wire [(P+1)*RING_W-1:0] rings;  // rings[p]: from strip p - 1's chain costs to strip p's
   /* verilator lint_on UNUSEDSIGNAL */
@@ -101,11 +132,11 @@ module fpstereo_strip_aggregation #(
                               .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(0), .LANES_LAT(LANES_LAT),
                               .LAT(LANES_LAT), .ENTRY_W(CODE_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
-          .frame_width(frame_width), .entry(cost_q[p*Q_W +: Q_W]), .extra(1'b0), .costs(costs), .extra_out(),
+          .frame_width(frame_width), .entry(entries[p*Q_W +: Q_W]), .extra(1'b0), .costs(costs), .extra_out(),
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */
       end else begin : cost_words
-        assign costs = cost_q[p*Q_W +: Q_W];
+        assign costs = entries[p*Q_W +: Q_W];
         assign rings[(p+1)*RING_W +: RING_W] = 0;
       end
       /* verilator lint_off PINCONNECTEMPTY */
@@ -114,7 +145,8 @@ module fpstereo_strip_aggregation #(
                             .MATCH_SIDE(0), .PENALTIES(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                             .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                             .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(1), .K_W(K_W),
-                            .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(0), .CODES(CODES),
+                            .COST_ROWS(RAM != 0 ? (p + 1) * K : COST_ROWS), .COST_ROW_W(COST_ROW_W),
+                            .MIN_DISP(0), .CODES(CODES),
                             .COST_LEAD(COST_LEAD), .STRIPS(1), .X_BASE(p * ROW_SLOTS), .CHAIN_BASE(p * K))
         aggregation (
           .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),

@@ -7,7 +7,11 @@
 // the output slot name the row itself. Random idle steps (adv low), several frames, each with its
 // own size, penalties and costs. With CODES the strips read code entries {match, base} instead,
 // census codes whose costs their chain cost stages compute (Hamming distance, COST_MAX where
-// x - d < 0), with the match rings handed from strip to strip.
+// x - d < 0), with the match rings handed from strip to strip. With RAM the entries go through
+// the strips' code RAMs (fpstereo_strip_code_reorder), each (p + 1) * K rows: written a slot of P
+// pixels a step in raster order, one row a row-time, with the aggregation starting RAM_LEAD steps
+// after the first write, as a front end at P pixels a clock would write them; the frame is then a
+// multiple of P wide.
 #include <algorithm>
 #include <map>
 #include <string>
@@ -24,8 +28,13 @@ struct StripParams {
   int P = 2, W = 40, ROW_SLOTS = 20, K = 5, SEGMENT = 4, UF = 16, COST_W = 5, COST_MAX = 24, PATH_W = 8,
       SUM_W = 10, PATHS = 15, LEVELS_PER_STAGE = 2, PATH_TREE_LAT = 2, OUT_ROWS = 16, OUT_ROW_W = 4, COST_AW = 9,
       X_W = 6, Y_W = 5, K_W = 3, COST_ROWS = 16, COST_ROW_W = 4, COST_LEAD = 1, CODES = 0, HAMMING = 1, CODE_W = 8,
-      LANES_LAT = 2;
+      LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4;
 };
+
+// Steps from the first write of a frame's codes to the aggregation's start, with RAM. Strip 0
+// must read a row before the row (p + 1) * K later overwrites it, which bounds the lead at
+// (K * SEGMENT - 1) / P + 1: measured, at P = 4, K = 5, SEGMENT = 4 a lead of 5 passes and 6 fails.
+constexpr long kRamLead = 1;
 
 using Volume = std::vector<std::vector<std::vector<int>>>;  // [y][x][d]
 
@@ -82,7 +91,8 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
   while (cycle < o.cycles || frames < 2) {
     // A frame: its size (the last strip partly or wholly outside the run-time width at times),
     // penalties and costs.
-    const int width = int(rng.range(uint64_t(std::max(dmax, (p.P - 1) * R - R / 2)), uint64_t(p.W)));
+    int width = int(rng.range(uint64_t(std::max(dmax, (p.P - 1) * R - R / 2)), uint64_t(p.W)));
+    if (p.RAM != 0) width = p.P * ((width + p.P - 1) / p.P);  // whole slots (W is a multiple of P)
     const int height = int(rng.range(4, uint64_t(p.COST_ROWS)));
     const int p1 = int(rng.range(0, uint64_t(penalty_max / 4)));
     const int p2 = int(rng.range(uint64_t(p1), uint64_t(penalty_max)));
@@ -119,7 +129,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     m.eval();
     modtb::tick(m);
     m.restart = 0;
-    m.agg_on = 1;
+    m.agg_on = p.RAM == 0;
     // Every row-time until the last strip has finished the last row, and the pipeline's tail.
     const long steps = long(height + p.P * p.K + 1) * R + 32;
     std::map<std::pair<int, int>, int> seen;  // (y, x) -> times
@@ -128,6 +138,19 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     for (long step = 0; step < steps;) {
       const bool adv = !rng.chance(modtb::idle_percent(cycle));
       m.adv = adv;
+      if (p.RAM != 0) {
+        // The front end's writes: row step / R, slot step % R.
+        const long row = step / R, slot = step % R;
+        const bool write = adv && row < height && slot * p.P < width;
+        m.code_we = write;
+        m.code_slot = uint32_t(slot);
+        m.code_row = uint32_t(row % p.SLOT_ROWS);
+        for (int q = 0; q < p.P && write; ++q) {
+          const size_t y = size_t(row), x = size_t(slot * p.P + q);
+          modtb::set_bits(m.code_data, q * 2 * p.CODE_W, 2 * p.CODE_W, match[y][x] << p.CODE_W | base[y][x]);
+        }
+        m.agg_on = step >= kRamLead;
+      }
       m.eval();
       // The cost RAM's registered read: the word of the address at this edge, on cost_q after it.
       if (adv)
@@ -175,7 +198,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     pixels += long(width) * height;
     ++frames;
   }
-  return check.finish(std::string(p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
+  return check.finish(std::string(p.RAM ? "codes through the strips' RAMs, " : p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
                       " W=" + std::to_string(p.W) + " dmax=" + std::to_string(dmax) + " paths " +
                       std::to_string(p.PATHS) + ": S(x, y, d) of every pixel once, against SGM; " +
                       std::to_string(frames) + " frames, " + std::to_string(pixels) + " pixels, " +

@@ -1,0 +1,76 @@
+`resetall
+`default_nettype none
+// The code reorder RAM over P strips of a row (docs/ppc-hardware.md, "Memories"; no generator
+// emits strips yet, so it lives beside the module tests, as fpstereo_strip_aggregation): the
+// front end writes a slot's P entries (P consecutive pixels, {match, base} each) at once in raster
+// order, and strip s's aggregator reads one entry a step in its chain order. A slot lies in one
+// strip (STRIP_PIXELS is a multiple of P), so strip s has a RAM of its own whose word is a slot's
+// entries, and the read picks the entry by the address' low bits, registered with the word.
+// Strip s reads a row during the K row-times that follow the strip's lag of s * K, so its RAM
+// holds (s + 1) * K rows: row r takes row slot r mod (s + 1) * K. The write's row slot counts
+// modulo SLOT_ROWS, a multiple of every strip's rows, so each strip's is a constant modulus of it.
+module fpstereo_strip_code_reorder #(
+  parameter P = 2,
+  parameter K = 5,
+  // pixels of a strip (K * SEGMENT, a multiple of P)
+  parameter STRIP_PIXELS = 20,
+  parameter ENTRY_W = 24,
+  parameter SLOT_ROWS = 10,
+  parameter SLOT_W = 4,
+  // width of the write's slot (pixel / P) and of each strip's read address
+  parameter X_W = 6,
+  parameter AW = 9
+) (
+  input  wire               clk,
+  input  wire               adv,
+  input  wire               we,
+  input  wire [X_W-1:0]     wslot,
+  input  wire [SLOT_W-1:0]  wrow,
+  input  wire [P*ENTRY_W-1:0] wdata,
+  // strip s: its row slot * STRIP_PIXELS + its pixel within the strip
+  input  wire [P*AW-1:0]    raddr,
+  output wire [P*ENTRY_W-1:0] q
+);
+  localparam WORDS = STRIP_PIXELS / P;  // a strip's words per row
+  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * WORDS > (1 << X_W) || SLOT_ROWS > (1 << SLOT_W) ||
+        (1 << AW) < P * K * STRIP_PIXELS) begin : invalid
+      fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_or_widths failed ();
+    end
+  endgenerate
+  genvar s;
+  generate
+    for (s = 0; s < P; s = s + 1) begin : strip
+      localparam ROWS = (s + 1) * K;
+      localparam DEPTH = ROWS * WORDS;
+      localparam RAM_AW = $clog2(DEPTH);
+      if (SLOT_ROWS % ROWS != 0) begin : invalid_rows
+        fpstereo_invalid_parameters_strip_code_reorder_SLOT_ROWS_not_a_multiple_of_a_strips_rows failed ();
+      end
+      localparam integer FIRST_I = s * WORDS, AFTER_I = (s + 1) * WORDS;
+      localparam [X_W:0] FIRST = FIRST_I[X_W:0], AFTER = AFTER_I[X_W:0];
+      wire mine;
+      if (s == 0) begin : first_strip
+        assign mine = {1'b0, wslot} < AFTER;
+      end else begin : later_strip
+        assign mine = {1'b0, wslot} >= FIRST && {1'b0, wslot} < AFTER;
+      end
+      // The address is a product of narrow values and constants, cut to the RAM's address width.
+      /* verilator lint_off WIDTH */
+      wire [RAM_AW-1:0] waddr = (wrow % ROWS) * WORDS + (wslot - FIRST);
+      wire [AW-1:0] at = raddr[s*AW +: AW];
+      wire [RAM_AW-1:0] word_addr = at >> LOG_P;
+      /* verilator lint_on WIDTH */
+      wire [P*ENTRY_W-1:0] word;
+      fpstereo_ram_sdp #(.WIDTH(P*ENTRY_W), .DEPTH(DEPTH), .ADDR_W(RAM_AW)) ram (
+        .clk(clk), .we(we && mine), .waddr(waddr), .wdata(wdata), .re(adv), .raddr(word_addr), .rdata(word));
+      reg [LOG_P-1:0] pick;
+      always @(posedge clk)
+        if (adv) pick <= at[LOG_P-1:0];
+      assign q[s*ENTRY_W +: ENTRY_W] = word[pick*ENTRY_W +: ENTRY_W];
+    end
+  endgenerate
+endmodule
+`resetall
