@@ -14,7 +14,10 @@
 // the costs, the strips handing their match rings on as their rows move right. With RAM (and
 // CODES) the entries come from fpstereo_strip_code_reorder instead, written in raster order a
 // slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
-// strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused).
+// strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
+// go on to a winner-take-all (fpstereo_wta) and its words to fpstereo_strip_disparity_reorder,
+// read from out_on on in raster order a slot of P pixels a step (the strips' OUT_ROWS are then
+// (P - p) * K + 1 and the parameter is unused).
 module fpstereo_strip_aggregation #(
   parameter P = 2,
   parameter W = 64,
@@ -49,7 +52,10 @@ module fpstereo_strip_aggregation #(
   /* verilator lint_off UNUSEDPARAM */  // with RAM
   parameter RAM = 0,
   parameter SLOT_ROWS = 10,
-  parameter SLOT_W = 4
+  parameter SLOT_W = 4,
+  parameter OUTPUT = 0,
+  parameter DISP_W = 4,
+  parameter WTA_TREE_LAT = 2
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -75,7 +81,16 @@ module fpstereo_strip_aggregation #(
   output wire [P-1:0]          sums_active,
   output wire [P*X_W-1:0]      sums_x,
   output wire [P*K_W-1:0]      sums_chain,
-  output wire [P*OUT_ROW_W-1:0] sums_slot
+  output wire [P*OUT_ROW_W-1:0] sums_slot,
+  // with OUTPUT: the raster order's stream (fpstereo_strip_disparity_reorder)
+  /* verilator lint_off UNUSEDSIGNAL */  // without OUTPUT
+  input  wire                  out_on,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire                  read_done,
+  output wire                  read_event,
+  output wire [X_W-1:0]        read_x,
+  output wire [Y_W-1:0]        read_y,
+  output wire [P*(DISP_W+1)-1:0] read_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -143,7 +158,8 @@ module fpstereo_strip_aggregation #(
       fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(1), .UF(UF),
                             .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
                             .MATCH_SIDE(0), .PENALTIES(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
-                            .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
+                            .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUTPUT != 0 ? (P - p) * K + 1 : OUT_ROWS),
+                            .OUT_ROW_W(OUT_ROW_W),
                             .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(1), .K_W(K_W),
                             .COST_ROWS(RAM != 0 ? (p + 1) * K : COST_ROWS), .COST_ROW_W(COST_ROW_W),
                             .MIN_DISP(0), .CODES(CODES),
@@ -157,6 +173,36 @@ module fpstereo_strip_aggregation #(
           .edge_in(edge_right[p*2*EDGE_W +: 2*EDGE_W]), .edge135_in(edge_left[(p+1)*EDGE_W +: EDGE_W]),
           .edge_out(edge_right[(p+1)*2*EDGE_W +: 2*EDGE_W]), .edge135_out(edge_left[p*EDGE_W +: EDGE_W]));
       /* verilator lint_on PINCONNECTEMPTY */
+    end
+  endgenerate
+  generate
+    if (OUTPUT != 0) begin : output_order
+      localparam TAG_W = 1 + X_W + OUT_ROW_W;
+      wire [P-1:0] wta_active;
+      wire [P*X_W-1:0] wta_x;
+      wire [P*OUT_ROW_W-1:0] wta_slot;
+      wire [P*(DISP_W+1)-1:0] wta_word;
+      for (p = 0; p < P; p = p + 1) begin : wta_of_strip
+        /* verilator lint_off PINCONNECTEMPTY */
+        fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
+                       .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+          .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
+          .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
+          .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+          .word(wta_word[p*(DISP_W+1) +: DISP_W+1]));
+        /* verilator lint_on PINCONNECTEMPTY */
+      end
+      fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(DISP_W), .X_W(X_W),
+                                         .Y_W(Y_W), .SLOT_W(OUT_ROW_W)) disparities (
+        .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .frame_width(frame_width),
+        .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .word(wta_word),
+        .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));
+    end else begin : no_output
+      assign read_done = 1'b0;
+      assign read_event = 1'b0;
+      assign read_x = {X_W{1'b0}};
+      assign read_y = {Y_W{1'b0}};
+      assign read_word = {(P*(DISP_W+1)){1'b0}};
     end
   endgenerate
   /* verilator lint_off UNUSEDSIGNAL */  // the last strip's edge to the right, the first's to the left

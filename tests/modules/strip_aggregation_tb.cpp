@@ -11,7 +11,10 @@
 // the strips' code RAMs (fpstereo_strip_code_reorder), each (p + 1) * K rows: written a slot of P
 // pixels a step in raster order, one row a row-time, with the aggregation starting RAM_LEAD steps
 // after the first write, as a front end at P pixels a clock would write them; the frame is then a
-// multiple of P wide.
+// multiple of P wide. With OUTPUT the sums go on through a winner-take-all per strip and the
+// strips' disparity RAMs, read in raster order a slot of P pixels a step from kOutLead row-times
+// after the aggregation's start: every pixel's word once, the lowest disparity of the least sum
+// (the sums themselves are not read there: their row slots wrap within the frame).
 #include <algorithm>
 #include <map>
 #include <string>
@@ -28,13 +31,19 @@ struct StripParams {
   int P = 2, W = 40, ROW_SLOTS = 20, K = 5, SEGMENT = 4, UF = 16, COST_W = 5, COST_MAX = 24, PATH_W = 8,
       SUM_W = 10, PATHS = 15, LEVELS_PER_STAGE = 2, PATH_TREE_LAT = 2, OUT_ROWS = 16, OUT_ROW_W = 4, COST_AW = 9,
       X_W = 6, Y_W = 5, K_W = 3, COST_ROWS = 16, COST_ROW_W = 4, COST_LEAD = 1, CODES = 0, HAMMING = 1, CODE_W = 8,
-      LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4;
+      LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4, OUTPUT = 0, DISP_W = 4, WTA_TREE_LAT = 2;
 };
 
 // Steps from the first write of a frame's codes to the aggregation's start, with RAM. Strip 0
 // must read a row before the row (p + 1) * K later overwrites it, which bounds the lead at
 // (K * SEGMENT - 1) / P + 1: measured, at P = 4, K = 5, SEGMENT = 4 a lead of 5 passes and 6 fails.
 constexpr long kRamLead = 1;
+// With OUTPUT, the output's start: P * K row-times after the aggregation's (the last strip's last
+// chain finishes a row P * K - 1 row-times after the first strip's first chain began it) and a few
+// steps for the pipeline from a chain's read address to its word at the winner-take-all. Measured
+// over six seeds at P 2 and 4: 0 to 24 steps pass, -5 and 30 fail (too early for the last writes,
+// too late for the row that overwrites); 12 lies in the middle.
+constexpr long kOutSteps = 12;
 
 using Volume = std::vector<std::vector<std::vector<int>>>;  // [y][x][d]
 
@@ -130,8 +139,11 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     modtb::tick(m);
     m.restart = 0;
     m.agg_on = p.RAM == 0;
+    m.out_on = 0;
+    const long out_start = (p.RAM != 0 ? kRamLead : 0) + long(p.P) * p.K * R + kOutSteps;
+    std::map<std::pair<int, int>, int> read;  // (y, x) -> times, with OUTPUT
     // Every row-time until the last strip has finished the last row, and the pipeline's tail.
-    const long steps = long(height + p.P * p.K + 1) * R + 32;
+    const long steps = p.OUTPUT != 0 ? out_start + long(height + 1) * R + 8 : long(height + p.P * p.K + 1) * R + 32;
     std::map<std::pair<int, int>, int> seen;  // (y, x) -> times
     std::vector<std::vector<int>> read_q(size_t(p.P), std::vector<int>(size_t(dmax), 0));
     std::vector<uint64_t> entry_q(size_t(p.P), 0);
@@ -151,6 +163,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
         }
         m.agg_on = step >= kRamLead;
       }
+      m.out_on = p.OUTPUT != 0 && step >= out_start;
       m.eval();
       // The cost RAM's registered read: the word of the address at this edge, on cost_q after it.
       if (adv)
@@ -174,8 +187,24 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
         for (int d = 0; d < dmax; ++d)
           modtb::set_bits(m.cost_q, (s * dmax + d) * p.COST_W, p.COST_W, uint64_t(read_q[size_t(s)][size_t(d)]));
       }
-      // The sums of this step (registers: they changed at the edge just taken).
-      for (int s = 0; s < p.P; ++s) {
+      // The raster order's slot read in the step before (registers).
+      if (p.OUTPUT != 0 && m.read_event) {
+        const int y = int(m.read_y);
+        for (int q = 0; q < p.P; ++q) {
+          const int x = int(m.read_x) * p.P + q;
+          if (x >= width) continue;
+          const std::string where = "output (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+          if (!check.require(cycle, where + " lies in the frame", y < height)) continue;
+          ++read[{y, x}];
+          const std::vector<int>& s = want[size_t(y)][size_t(x)];
+          const auto best = std::min_element(s.begin(), s.end()) - s.begin();
+          check.expect(cycle, where, uint64_t(best),
+                       modtb::get_bits(m.read_word, q * (p.DISP_W + 1), p.DISP_W + 1));
+        }
+      }
+      // The sums of this step (registers: they changed at the edge just taken). With OUTPUT the
+      // strips' row slots are modulo fewer rows than the frame's, and the output stands for them.
+      for (int s = 0; s < p.P && p.OUTPUT == 0; ++s) {
         if (!modtb::get_bits(m.sums_active, s, 1)) continue;
         const int x = int(modtb::get_bits(m.sums_x, s * p.X_W, p.X_W));
         const int y = int(modtb::get_bits(m.sums_slot, s * p.OUT_ROW_W, p.OUT_ROW_W));
@@ -191,16 +220,24 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     }
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
-        const auto it = seen.find({y, x});
-        check.require(cycle, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") summed once",
-                      it != seen.end() && it->second == 1);
+        if (p.OUTPUT == 0) {
+          const auto it = seen.find({y, x});
+          check.require(cycle, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") summed once",
+                        it != seen.end() && it->second == 1);
+          continue;
+        }
+        const auto out = read.find({y, x});
+        check.require(cycle, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") read once",
+                      out != read.end() && out->second == 1);
       }
     pixels += long(width) * height;
     ++frames;
   }
-  return check.finish(std::string(p.RAM ? "codes through the strips' RAMs, " : p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
+  return check.finish(std::string(p.OUTPUT ? "codes through the strips' RAMs to the raster disparities, " : p.RAM ? "codes through the strips' RAMs, " : p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
                       " W=" + std::to_string(p.W) + " dmax=" + std::to_string(dmax) + " paths " +
-                      std::to_string(p.PATHS) + ": S(x, y, d) of every pixel once, against SGM; " +
+                      std::to_string(p.PATHS) +
+                      (p.OUTPUT ? ": the winner of every pixel once, in raster order, against SGM; "
+                                : ": S(x, y, d) of every pixel once, against SGM; ") +
                       std::to_string(frames) + " frames, " + std::to_string(pixels) + " pixels, " +
                       std::to_string(cycle) + " cycles");
 }

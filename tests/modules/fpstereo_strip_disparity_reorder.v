@@ -1,0 +1,119 @@
+`resetall
+`default_nettype none
+// The disparity reorder RAM over P strips of a row and the output's raster order at P pixels a
+// slot (docs/ppc-hardware.md, "Memories"; no generator emits strips yet, so it lives beside the
+// module tests, as fpstereo_strip_aggregation). Strip s's winner-take-all writes one word a step
+// in the strip's chain order; from out_on on, one slot (P consecutive pixels, which lie in one
+// strip) is read a step in raster order. Strip s has P banks, bank q holding its pixels x with
+// x mod P = q, so that a slot's P words are read at once, each bank written a word at a time.
+// Strip s writes a row from the row-time s * K after its first chain's to K - 1 later, and the
+// output reads it P * K row-times after strip 0 began it: the strip's RAM holds
+// (P - s) * K + 1 rows, and it and the output keep the row's slot modulo that, each a counter.
+// The read stream as fpstereo_disparity_reorder's: read_done in the step after each slot's read,
+// read_event where the slot holds pixels of the frame, its slot read_x (pixels read_x * P + q) and
+// row, and the P words; rows below the frame and bubble slots read nothing.
+module fpstereo_strip_disparity_reorder #(
+  parameter P = 2,
+  parameter K = 5,
+  // pixels of a strip (K * SEGMENT, a multiple of P)
+  parameter STRIP_PIXELS = 20,
+  parameter DISP_W = 5,
+  // width of a pixel's x (and of a slot's), of a row, and of the strips' row slots
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter SLOT_W = 5
+) (
+  input  wire               clk,
+  input  wire               restart,
+  input  wire               adv,
+  input  wire               out_on,
+  input  wire [X_W-1:0]     frame_width,
+  input  wire [Y_W-1:0]     frame_height,
+  // strip s's word: active, its pixel's x, its row slot (modulo the strip's rows), the word
+  input  wire [P-1:0]        active,
+  input  wire [P*X_W-1:0]    x,
+  input  wire [P*SLOT_W-1:0] slot,
+  input  wire [P*(DISP_W+1)-1:0] word,
+  output reg                read_done,
+  output reg                read_event,
+  output reg  [X_W-1:0]     read_x,
+  output reg  [Y_W-1:0]     read_y,
+  output wire [P*(DISP_W+1)-1:0] read_word
+);
+  localparam WORDS = STRIP_PIXELS / P;  // a strip's slots per row
+  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam WORD_W = DISP_W + 1;
+  localparam STRIP_W = $clog2(P);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * STRIP_PIXELS > (1 << X_W) ||
+        P * K + 1 > (1 << SLOT_W)) begin : invalid
+      fpstereo_invalid_parameters_strip_disparity_reorder_P_STRIP_PIXELS_or_widths failed ();
+    end
+  endgenerate
+
+  // The output's raster order: slot so of row to, a slot a step from out_on on, over row-times of
+  // STRIP_PIXELS steps (K * SEGMENT, the aggregation's).
+  localparam integer LAST_I = STRIP_PIXELS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_I[X_W-1:0];
+  reg  [X_W-1:0] so;
+  wire [Y_W-1:0] to;
+  wire row_ends = adv && out_on && so == LAST_SLOT;
+  /* verilator lint_off PINCONNECTEMPTY */
+  fpstereo_frame_row #(.Y_W(Y_W)) output_row (
+    .clk(clk), .restart(restart), .next(row_ends), .wrap(1'b0), .height(frame_height), .row(to), .last());
+  /* verilator lint_on PINCONNECTEMPTY */
+  always @(posedge clk)
+    if (restart) so <= {X_W{1'b0}};
+    else if (adv && out_on) so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
+  /* verilator lint_off WIDTH */
+  wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && to < frame_height;
+  wire [STRIP_W-1:0] strip_of = so / WORDS;
+  /* verilator lint_on WIDTH */
+  reg [STRIP_W-1:0] strip_q;
+  always @(posedge clk)
+    if (restart) begin
+      read_done <= 1'b0;
+      read_event <= 1'b0;
+    end else if (adv) begin
+      read_done <= out_on;
+      read_event <= read_now;
+      read_x <= so;
+      read_y <= to;
+      strip_q <= strip_of;
+    end
+
+  wire [P*P*WORD_W-1:0] banks_q;  // strip s's P words at s * P * WORD_W
+  genvar s, q;
+  generate
+    for (s = 0; s < P; s = s + 1) begin : strip
+      localparam ROWS = (P - s) * K + 1;
+      localparam DEPTH = ROWS * WORDS;
+      localparam AW = $clog2(DEPTH);
+      localparam integer FIRST_I = s * STRIP_PIXELS;
+      localparam [X_W-1:0] FIRST = FIRST_I[X_W-1:0];
+      localparam integer FIRST_SLOT_I = s * WORDS;
+      localparam [X_W-1:0] FIRST_SLOT = FIRST_SLOT_I[X_W-1:0];
+      localparam integer LAST_ROW_I = ROWS - 1;
+      localparam [SLOT_W-1:0] LAST_ROW = LAST_ROW_I[SLOT_W-1:0];
+      // The output's row slot in this strip's RAM.
+      reg [SLOT_W-1:0] out_slot;
+      always @(posedge clk)
+        if (restart) out_slot <= {SLOT_W{1'b0}};
+        else if (row_ends) out_slot <= out_slot == LAST_ROW ? {SLOT_W{1'b0}} : out_slot + 1'b1;
+      wire [X_W-1:0] wx = x[s*X_W +: X_W] - FIRST;
+      /* verilator lint_off WIDTH */  // products of narrow values and constants, cut to the address
+      wire [AW-1:0] waddr = slot[s*SLOT_W +: SLOT_W] * WORDS + (wx >> LOG_P);
+      wire [AW-1:0] raddr = out_slot * WORDS + (so - FIRST_SLOT);
+      /* verilator lint_on WIDTH */
+      for (q = 0; q < P; q = q + 1) begin : bank
+        wire write = adv && active[s] && wx[LOG_P-1:0] == q;
+        fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(DEPTH), .ADDR_W(AW)) ram (
+          .clk(clk), .we(write), .waddr(waddr), .wdata(word[s*WORD_W +: WORD_W]),
+          .re(adv), .raddr(raddr), .rdata(banks_q[(s*P + q)*WORD_W +: WORD_W]));
+      end
+    end
+  endgenerate
+  assign read_word = banks_q[strip_q*P*WORD_W +: P*WORD_W];
+endmodule
+`resetall
