@@ -15,8 +15,10 @@ module fpstereo_transform #(
 ) (
   input  wire                clk,
   input  wire                shift,
+  /* verilator lint_off UNUSEDSIGNAL */  // the arrays' columns right of the last window (COLS > N + P - 1)
   input  wire [N*COLS*8-1:0] window_left,
   input  wire [N*COLS*8-1:0] window_right,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [N-1:0]        row_valid,
   input  wire [N+P-2:0]      col_valid,
   output reg  [P*CODE_W-1:0] code_base,

@@ -46,6 +46,22 @@ void check_hardware_rules(const StereoConfig& cfg) {
                       ": the 180-degree path is not in the hardware generators yet (the models have it); drop 180");
 }
 
+// Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
+// configuration: so far census and rank costs with the paths' sums straight to the winner and out
+// (no check, median, gap interpolation, uniqueness, sub-pixel, confidence, adaptive P2, fused cost
+// or min-disp). Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
+bool strip_options(const StereoConfig& c) {
+  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && c.lr == LrCheck::None &&
+         c.median == 0 && !c.gap_interpolation && c.uniqueness == 0 && c.subpixel_bits == 0 && !c.confidence &&
+         c.p2_adapt == 0 && c.fused_weight == 0 && c.min_disp == 0 && c.speckle_size == 0 && !c.right_view;
+}
+
+int64_t lcm(int64_t a, int64_t b) {
+  int64_t x = a, y = b;
+  while (y != 0) std::tie(x, y) = std::pair<int64_t, int64_t>{y, x % y};
+  return a / x * b;
+}
+
 }  // namespace
 
 int min_tree_latency(int n, int levels_per_stage) {
@@ -104,7 +120,22 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   // where dmax < 128 (width >= 16) and K <= 6 otherwise.
   g.segment = ceil_div(cfg.width, g.chains);
   g.row_slots = g.chains * g.segment;
-  if (g.groups == 1) {
+  if (strip_options(cfg)) {
+    // P strips of R = K * SEG pixels, R a multiple of P (a slot in one strip), the last strip
+    // not empty; a row-time is R steps.
+    const int P = cfg.ppc, K = g.chains;
+    int seg = ceil_div(cfg.width, int64_t(P) * K);
+    while ((int64_t(K) * seg) % P != 0) ++seg;
+    if (int64_t(P - 1) * K * seg < cfg.width) {
+      g.strips = P;
+      g.segment = seg;
+      g.row_slots = K * seg;
+    }
+  }
+  if (g.strips > 1) {
+    // A slot takes a beat: the row-time's spare slots are R - W / P.
+    g.follow_wait = std::max(0, kFollowCycles - (g.row_slots - cfg.width / g.strips));
+  } else if (g.groups == 1) {
     // With P pixels a beat the framing stage is done with a frame as its last beat enters the
     // beat register, P - 1 pixels before the core takes the last: the wait is that much shorter.
     g.follow_wait = std::max(0, kFollowCycles - (cfg.ppc - 1) - (g.row_slots - cfg.width));
@@ -112,6 +143,14 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
   g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
   g.out_rows = g.chains + 1 + g.lr_rows;
+  if (g.strips > 1) {
+    // The strips' RAMs: strip s's code RAM (s + 1) * K rows, its disparity RAM (P - s) * K + 1;
+    // the widths of the largest.
+    g.cost_rows = g.strips * g.chains;
+    g.out_rows = g.strips * g.chains + 1;
+    g.slot_rows = 1;
+    for (int s = 1; s <= g.strips; ++s) g.slot_rows = int(lcm(g.slot_rows, int64_t(s) * g.chains));
+  }
   g.carries_whole = cfg.subpixel_bits != 0 && cfg.lr != LrCheck::None;
   g.reorder_word_bits = g.widths.output_word + (g.carries_whole ? g.widths.disparity : 0);
   g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
@@ -124,11 +163,11 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   }
   g.output_bits = g.widths.output_lane + (cfg.confidence ? kConfidenceBits : 0);
   const int64_t R = g.row_slots, G = g.groups;
-  g.x_bits = bits_for(uint64_t(R));
+  g.x_bits = bits_for(uint64_t(R) * g.strips);  // with strips, a pixel's x across the P strips
   g.group_bits = bits_for(uint64_t(G - 1));
   g.chain_bits = bits_for(uint64_t(g.chains - 1));
   g.lane_bits = std::max(1, clog2(cfg.uf));
-  g.cost_row_bits = clog2(g.cost_rows);
+  g.cost_row_bits = clog2(g.strips > 1 ? g.slot_rows : g.cost_rows);
   g.out_row_bits = clog2(g.out_rows);
   g.cost_addr_bits = clog2(g.cost_depth());
   g.disp_addr_bits = clog2(g.disp_depth());
@@ -174,21 +213,24 @@ RtlDesign plan(const StereoConfig& cfg, const RtlOptions& options) {
   // The output stage is the last: its latency ends with the kStepsAfterPush from the push of
   // pixel (0, 0) on.
   const int64_t push_first = at - kStepsAfterPush;
-  const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width - 1;
+  // The step that takes the frame's last pixel (with strips, its last slot's).
+  const int64_t last_pixel = (int64_t(cfg.height) - 1) * R + cfg.width / d.strips - 1;
+  // Beats split into pixels for the core that takes a pixel a step (fpstereo_beat_split).
+  const bool splits_beats = cfg.ppc > 1 && d.strips == 1;
   // Back-to-back frames (docs/architecture.md): the next frame's rows follow this frame's when the
   // frame is taller than the drain by two row-times (every stage's lag then lies within one frame,
   // and a frame is done before the one after the next begins). Such a frame waits follow_wait
   // cycles at its end for the next one, whether it comes or not.
   d.overlap_height = int(ceil_div(push_first, R * G) + 2);
   const bool follows_on = cfg.height >= d.overlap_height;
-  d.lone_frame_cycles = at + last_pixel * G + (cfg.ppc > 1 ? kBeatSplitCycles : 0) + (follows_on ? d.follow_wait : 0);
+  d.lone_frame_cycles = at + last_pixel * G + (splits_beats ? kBeatSplitCycles : 0) + (follows_on ? d.follow_wait : 0);
   d.cycles_per_frame = follows_on ? int64_t(cfg.height) * R * G + d.follow_wait : d.lone_frame_cycles;
   // At the ports: the input register slice, the cycle in which the framing stage starts the core
   // and the one in which the sequencer starts (step 0 follows), and the output register slice.
   // With several pixels per beat, the beat's register (fpstereo_beat_split), and the output beat
   // leaves with its last pixel, (ppc - 1) slots after its first.
-  d.first_output_latency = push_first + 4 + (cfg.ppc > 1 ? kBeatSplitCycles + (cfg.ppc - 1) * G : 0);
-  d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G;
+  d.first_output_latency = push_first + 4 + (splits_beats ? kBeatSplitCycles + (cfg.ppc - 1) * G : 0);
+  d.extra_cycles = d.cycles_per_frame - int64_t(cfg.width) * cfg.height * G / d.strips;
   d.y_bits = bits_for(uint64_t(ceil_div(d.lone_frame_cycles, R * G) + 2));
   d.signed_y_bits = d.y_bits + 2;
   d.step_bits = bits_for(uint64_t(d.lone_frame_cycles + 16));

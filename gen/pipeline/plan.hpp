@@ -48,6 +48,13 @@ struct Geometry {
   int chains = 0;     // K
   int segment = 0;    // ceil(W / K): pixels per chain per row
   int row_slots = 0;  // R = K * segment: slots per row-time
+  // Strips (docs/ppc-hardware.md): with ppc = P pixels a clock the row is P strips of R pixels,
+  // each aggregated by a lane set of its own, K steps behind the one to its left; a slot then
+  // takes P pixels (a beat, which lies in one strip). 1 where the core takes a pixel a step.
+  int strips = 1;
+  // With strips, the modulus of the front end's row slot, a multiple of every strip's code rows
+  // ((s + 1) * K for strip s).
+  int slot_rows = 0;
   // Cycles the window stage holds a frame's last step for a following frame (G = 1 only; see
   // kFollowCycles in stage.hpp): once per frame, where bubble slots would cost every row.
   int follow_wait = 0;

@@ -45,10 +45,16 @@ std::string banner(const RtlDesign& d) {
      << w.aggregated << " (max " << w.aggregated_max << "), disparity " << w.disparity << ", output word "
      << w.output_word << " (invalid = " << w.invalid_word << "), m_axis_disp_tdata " << d.output_bits << "\n"
      << "// Architecture (docs/architecture.md): " << d.groups << " steps per pixel (dmax / uf), " << d.chains
-     << " interleaved chains of " << d.segment << " pixels, " << d.row_slots << " slots per row-time\n"
-     << "// Initiation interval: " << d.groups
-     << " cycles per pixel; expected cycles per frame without stalls: " << d.cycles_per_frame
-     << " = W*H*dmax/uf (" << int64_t(d.cfg.width) * d.cfg.height * d.groups << ") + " << d.extra_cycles
+     << " interleaved chains of " << d.segment << " pixels, " << d.row_slots << " slots per row-time"
+     << (d.strips > 1 ? ", in " + std::to_string(d.strips) + " strips of " + std::to_string(d.row_slots) +
+                            " pixels side by side (docs/ppc-hardware.md)"
+                      : std::string())
+     << "\n"
+     << "// Initiation interval: "
+     << (d.strips > 1 ? std::to_string(d.strips) + " pixels per cycle" : std::to_string(d.groups) + " cycles per pixel")
+     << "; expected cycles per frame without stalls: " << d.cycles_per_frame
+     << (d.strips > 1 ? " = W*H/ppc (" : " = W*H*dmax/uf (")
+     << int64_t(d.cfg.width) * d.cfg.height * d.groups / d.strips << ") + " << d.extra_cycles
      << (d.cycles_per_frame < d.lone_frame_cycles ? " (frames back to back)" : " (each frame drains first)")
      << "; a lone frame: " << d.lone_frame_cycles << "; frames follow on from " << d.overlap_height
      << " rows\n"
@@ -194,7 +200,9 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
   top.instance("fpstereo_video_in", "framing",
                {{"DATA_W", num(8 * P)}, {"X_W", num(d.x_bits)}, {"Y_W", num(d.y_bits)}}, framing);
   std::string pair = "{framed_left, framed_right}", pair_valid = "framed_valid", pair_ready = "framed_ready";
-  if (P > 1) {
+  // With strips the core takes a beat a step (Ps pixels of each image); else a pixel a step.
+  const int Ps = d.strips;
+  if (P > 1 && Ps == 1) {
     top.text(fmt::format("\n  // The core takes a pixel pair a step: the beat's {} pairs one after another.\n", P));
     std::string pairs;
     for (int i = P; i-- > 0;)
@@ -217,9 +225,9 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
            "  // framing checks through the core's enable.\n");
   top.wire("core_valid", 1);
   top.wire("take", 1);
-  top.wire("core_left", 8);
-  top.wire("core_right", 8);
-  top.instance("fpstereo_axis_skid", "pixel_slice", {{"DATA_W", "16"}},
+  top.wire("core_left", 8 * Ps);
+  top.wire("core_right", 8 * Ps);
+  top.instance("fpstereo_axis_skid", "pixel_slice", {{"DATA_W", num(16 * Ps)}},
                clock + Connections{{"s_data", pair},
                                    {"s_valid", pair_valid},
                                    {"s_ready", pair_ready},
@@ -237,25 +245,33 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
                                                {"frame_end", "frame_done"}};
   for (const auto& o : outputs) {
     for (const char* handshake : {"_ready", "_push", "_first", "_last"}) top.wire(o.core + handshake, 1);
-    for (const auto& word : o.words) top.wire(word.name, word.bits);
+    for (const auto& word : o.words) top.wire(word.name, int64_t(word.bits) * Ps);
   }
   top.instance(core_signature, "core", {}, core_ports);
   // Output register slices: {tuser, tlast, tdata}, the core's words at their bits in a pixel,
   // zeros between; with several pixels per beat, P pixels gathered into a beat before the slice.
   top.text("\n  // Output register slices.\n");
   for (const auto& o : outputs) {
-    std::string pixel;
-    int at = 0;
-    for (const auto& word : o.words) {
-      if (word.lsb > at) pixel = fmt::format("{}'d0, ", word.lsb - at) + pixel;
-      pixel = word.name + (pixel.empty() ? "" : ", ") + pixel;
-      at = word.lsb + word.bits;
-    }
-    if (o.pixel_bits > at) pixel = fmt::format("{}'d0, ", o.pixel_bits - at) + pixel;
+    // Pixel q of the core's word (with strips it pushes a beat's Ps pixels, pixel 0 lowest).
+    auto pixel_of = [&](int q) {
+      std::string pixel;
+      int at = 0;
+      for (const auto& word : o.words) {
+        if (word.lsb > at) pixel = fmt::format("{}'d0, ", word.lsb - at) + pixel;
+        const std::string bits =
+            Ps > 1 ? fmt::format("{}[{}:{}]", word.name, (q + 1) * word.bits - 1, q * word.bits) : word.name;
+        pixel = bits + (pixel.empty() ? "" : ", ") + pixel;
+        at = word.lsb + word.bits;
+      }
+      if (o.pixel_bits > at) pixel = fmt::format("{}'d0, ", o.pixel_bits - at) + pixel;
+      return pixel;
+    };
+    std::string pixel = pixel_of(0);
+    for (int q = 1; q < Ps; ++q) pixel = pixel_of(q) + ", " + pixel;
     const std::string name = o.port.substr(std::string("m_axis_").size());
     std::string beat = fmt::format("{{{0}_first, {0}_last, {1}}}", o.core, pixel), valid = o.core + "_push",
                 ready = o.core + "_ready";
-    if (P > 1) {
+    if (P > 1 && Ps == 1) {
       for (const char* net : {"_first", "_last", "_valid", "_ready"}) top.wire(name + "_beat" + net, 1);
       top.wire(name + "_beat", o.tdata_bits());
       top.instance("fpstereo_beat_pack", name + "_beats",
@@ -296,9 +312,12 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
       "`resetall\n`default_nettype none\n"
       "// AXI4-Stream top: left and right 8-bit pixels in, disparity words out (Xilinx video convention:\n"
       "// tuser marks a frame's first pixel, tlast a row's last; docs/semantics.md gives the fields).\n" +
-      (P > 1 ? "// " + num(P) + " pixels per beat (UG934 samples per clock), pixel 0 in the lowest bits; the core takes\n"
-               "// a pixel a step, so a beat every " + num(P) + " cycles at most.\n"
-             : std::string()) +
+      (P > 1 && d.strips > 1
+           ? "// " + num(P) + " pixels per beat (UG934 samples per clock), pixel 0 in the lowest bits; the core takes\n"
+             "// a beat a step, in " + num(P) + " strips (docs/ppc-hardware.md).\n"
+       : P > 1 ? "// " + num(P) + " pixels per beat (UG934 samples per clock), pixel 0 in the lowest bits; the core takes\n"
+                 "// a pixel a step, so a beat every " + num(P) + " cycles at most.\n"
+               : std::string()) +
       layout + "// Frames are at most " + num(c.width) + " x " + num(c.height) +
       " pixels; fpstereo_video_in checks the input's\n"
       "// framing and resynchronises on the next start of frame after an error.\n" +
@@ -329,13 +348,13 @@ std::string core_module(const RtlDesign& d) {
   core.input("uniqueness", 7);
   core.input("lr_threshold", 4);
   core.input("in_valid", 1, "one pixel of each image, taken when in_take is high");
-  core.input("in_left", 8);
-  core.input("in_right", 8);
+  core.input("in_left", 8 * d.strips);
+  core.input("in_right", 8 * d.strips);
   core.output("in_take", 1);
   for (const auto& o : output_streams(d)) {
     core.input(o.core + "_ready", 1, o.what + ", pushed when " + o.core + "_push is high");
     core.output(o.core + "_push", 1);
-    for (const auto& word : o.words) core.output(word.name, word.bits);
+    for (const auto& word : o.words) core.output(word.name, int64_t(word.bits) * d.strips);
     core.output(o.core + "_first", 1);
     core.output(o.core + "_last", 1);
   }

@@ -83,7 +83,7 @@ modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckl
 # Strips of aggregation (docs/ppc-hardware.md): two strips of one chain's latency; four, the last
 # one narrower than the others; two at uf 32 (K = 6) with the 0 and 135-degree paths only.
 # The harness lives beside the tests (no generator emits it yet): named from rtl_templates.
-set(MODTB_STRIP_SOURCES ../tests/modules/fpstereo_strip_aggregation.v fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v
+set(MODTB_STRIP_SOURCES fpstereo_strip_aggregation.v fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v
     fpstereo_ram_sdp.v fpstereo_ram_async.v fpstereo_path_lanes.v fpstereo_path_minimum.v fpstereo_min_tree.v
     fpstereo_reduction_tree.v fpstereo_unique_join.v)
 # The RAMs' rows (16) hold a whole frame, so that addresses and slots name the rows.
@@ -116,13 +116,13 @@ modtb_set(strip_aggregation strip_aggregation_codes_p4 TOP fpstereo_strip_aggreg
 set(MODTB_STRIP_RAM_COMMON COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10 LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=4
     COST_ROWS=16 Y_W=6 K_W=3 COST_AW=9 CODES=1 CODE_W=12 COST_LEAD=4 RAM=1)
 modtb_set(strip_aggregation strip_aggregation_ram_p2 TOP fpstereo_strip_aggregation
-          SOURCES ${MODTB_STRIP_CODES_SOURCES} ../tests/modules/fpstereo_strip_code_reorder.v
+          SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_strip_code_reorder.v
           PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 COST_ROW_W=4
           SLOT_ROWS=10 SLOT_W=4 ${MODTB_STRIP_RAM_COMMON})
 # ... and on through a winner-take-all per strip and the strips' disparity RAMs ((P - p) * K + 1
 # rows each) to the raster order, a slot of P pixels a step.
-set(MODTB_STRIP_OUT_SOURCES ${MODTB_STRIP_CODES_SOURCES} ../tests/modules/fpstereo_strip_code_reorder.v
-    ../tests/modules/fpstereo_strip_disparity_reorder.v fpstereo_wta.v)
+set(MODTB_STRIP_OUT_SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_strip_code_reorder.v
+    fpstereo_strip_disparity_reorder.v fpstereo_wta.v)
 modtb_set(strip_aggregation strip_aggregation_out_p2 TOP fpstereo_strip_aggregation
           SOURCES ${MODTB_STRIP_OUT_SOURCES}
           PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 COST_ROW_W=4
@@ -136,6 +136,6 @@ modtb_set(strip_aggregation strip_aggregation_out_p4 TOP fpstereo_strip_aggregat
           LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=5 COST_ROWS=16 Y_W=6 K_W=3 COST_AW=9 CODES=1 CODE_W=12
           COST_LEAD=4 RAM=1)
 modtb_set(strip_aggregation strip_aggregation_ram_p4 TOP fpstereo_strip_aggregation
-          SOURCES ${MODTB_STRIP_CODES_SOURCES} ../tests/modules/fpstereo_strip_code_reorder.v
+          SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_strip_code_reorder.v
           PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 COST_ROW_W=5
           SLOT_ROWS=60 SLOT_W=6 ${MODTB_STRIP_RAM_COMMON})

@@ -2,6 +2,8 @@
 // row-times after its first, and the sums leave the aggregator's five register stages (S0 .. S5).
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "hls_text.hpp"
 #include "stage_list.hpp"
 #include "stage_support.hpp"
@@ -16,12 +18,34 @@ class AggregationStage : public Stage {
   std::string start_parameter() const override { return "AGG_START"; }
   // The sums leave S5; where the costs are computed in chain order they reach S1 cost_lead steps
   // after S0 instead of one.
-  Latency latency(const Geometry& g) const override { return {g.chains - 1, 0, 4 + g.cost_lead}; }
+  // The last chain finishes a row K - 1 row-times after the first began it; with P strips, the
+  // last strip's a row-time more than P * K - 1 after the first strip's first (the output reads a
+  // slot of P pixels, further right than one pixel a step would be).
+  Latency latency(const Geometry& g) const override {
+    if (g.strips > 1) return {int64_t(g.strips) * g.chains, 0, 4 + g.cost_lead};
+    return {g.chains - 1, 0, 4 + g.cost_lead};
+  }
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    return aggregator_memories(g, "core.aggregation");
+    if (g.strips == 1) return aggregator_memories(g, "core.aggregation");
+    // Each strip's aggregator over its pixels, then its disparity RAM's P banks ((P - s) * K + 1
+    // rows of R / P words).
+    std::vector<StageMemory> m;
+    const int64_t words = g.row_slots / g.strips;
+    for (int s = 0; s < g.strips; ++s) {
+      const std::string strip = "core.aggregation.strip[" + std::to_string(s) + "]";
+      const int pixels = std::min(g.row_slots, g.cfg.width - s * g.row_slots);
+      for (auto& mem : aggregator_memories(g, strip + ".aggregation", pixels)) m.push_back(mem);
+    }
+    for (int s = 0; s < g.strips; ++s)
+      for (int q = 0; q < g.strips; ++q)
+        m.push_back({"core.aggregation.output_order.disparities.strip[" + std::to_string(s) + "].bank[" +
+                         std::to_string(q) + "].ram.mem",
+                     (int64_t(g.strips - s) * g.chains + 1) * words, g.widths.output_word});
+    return m;
   }
 
-  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+  void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    if (d.strips > 1) return strips_verilog(d, core, streams);
     core.text("\n  // Aggregation in K interleaved chains, from step AGG_START.\n");
     start_flag(core, d, *this, "agg_on");
     core.wire("agg_sums", d.cfg.uf * d.widths.aggregated);
@@ -60,6 +84,66 @@ class AggregationStage : public Stage {
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
   // Returns the aggregator's cost words.
+  // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,
+  // their chain costs and aggregators, a winner-take-all each and their disparity RAMs, from the
+  // code writes (the cost reorder stage's) to the raster order at P pixels a step (the pixel
+  // stream the disparity reorder stage names, from its OUT_START on).
+  static void strips_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
+    const int P = d.strips, code_bits = std::max(1, w.code);
+    core.text(fmt::format("\n  // Aggregation in {} strips of {} interleaved chains, from step AGG_START, to the raster\n"
+                          "  // order's slots of {} pixels.\n",
+                          P, d.chains, P));
+    start_flag(core, d, AggregationStage(), "agg_on");
+    core.wire("strip_raddr", int64_t(P) * d.cost_addr_bits);
+    core.wire("strip_sums", int64_t(P) * c.uf * w.aggregated);
+    core.wire("strip_active", P);
+    core.wire("strip_x", int64_t(P) * d.x_bits);
+    core.wire("strip_chain", int64_t(P) * d.chain_bits);
+    core.wire("strip_slot", int64_t(P) * d.out_row_bits);
+    core.instance("fpstereo_strip_aggregation", "aggregation",
+                  {{"P", num(P)},
+                   {"W", num(c.width)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"K", num(d.chains)},
+                   {"SEGMENT", num(d.segment)},
+                   {"UF", num(c.uf)},
+                   {"COST_W", num(w.cost)},
+                   {"COST_MAX", num(int64_t(w.cost_max))},
+                   {"PATH_W", num(w.path_cost)},
+                   {"SUM_W", num(w.aggregated)},
+                   {"PATHS", num(c.paths)},
+                   {"LEVELS_PER_STAGE", num(d.levels_per_stage)},
+                   {"PATH_TREE_LAT", num(d.path_tree_latency)},
+                   {"OUT_ROWS", num(d.out_rows)},
+                   {"OUT_ROW_W", num(d.out_row_bits)},
+                   {"COST_AW", num(d.cost_addr_bits)},
+                   {"X_W", num(d.x_bits)},
+                   {"Y_W", num(d.y_bits)},
+                   {"K_W", num(d.chain_bits)},
+                   {"COST_ROWS", num(d.cost_rows)},
+                   {"COST_ROW_W", num(d.cost_row_bits)},
+                   {"CODES", "1"},
+                   {"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
+                   {"CODE_W", num(code_bits)},
+                   {"LANES_LAT", num(d.cost_lanes_latency)},
+                   {"COST_LEAD", num(d.cost_lead)},
+                   {"RAM", "1"},
+                   {"SLOT_ROWS", num(d.slot_rows)},
+                   {"SLOT_W", num(d.cost_row_bits)},
+                   {"OUTPUT", "1"},
+                   {"DISP_W", num(w.output_word - 1)},
+                   {"WTA_TREE_LAT", num(d.wta_tree_latency)}},
+                  {{"cost_raddr", "strip_raddr"},
+                   {"cost_q", fmt::format("{}'d0", 2 * P * code_bits)},
+                   {"sums", "strip_sums"},
+                   {"sums_active", "strip_active"},
+                   {"sums_x", "strip_x"},
+                   {"sums_chain", "strip_chain"},
+                   {"sums_slot", "strip_slot"}});
+  }
+
   static std::string chain_cost(const RtlDesign& d, CoreBuilder& core) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;

@@ -1,6 +1,10 @@
 // Cost reorder RAM: the cost words in raster order in, in chain order out; or, where the geometry
 // reorders codes, the pixels' code entries (fpstereo_code_reorder), whose costs fpstereo_chain_cost
 // computes in chain order (the aggregation stage places it).
+#include <fmt/core.h>
+
+#include <algorithm>
+
 #include "stage_list.hpp"
 #include "stage_support.hpp"
 
@@ -13,6 +17,15 @@ class CostReorderStage : public Stage {
   std::vector<std::string> knobs() const override { return {"uf"}; }
   Latency latency(const Geometry&) const override { return {0, 0, 1}; }  // written, then read
   std::vector<StageMemory> memories(const Geometry& g) const override {
+    if (g.strips > 1) {
+      // Strip s's code RAM: (s + 1) * K rows of R / P words, a slot's P entries each.
+      std::vector<StageMemory> m;
+      const int64_t words = g.row_slots / g.strips;
+      for (int s = 0; s < g.strips; ++s)
+        m.push_back({"core.aggregation.code_ram.codes.strip[" + std::to_string(s) + "].ram.mem",
+                     int64_t(s + 1) * g.chains * words, 2 * int64_t(g.code_entry_bits) * g.strips});
+      return m;
+    }
     if (!g.reorders_codes) return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
     std::vector<StageMemory> m = {{"core.cost_reorder.code_ram.mem", g.cost_depth(), 2 * g.code_entry_bits}};
     if (g.penalty_bits != 0) m.push_back({"core.cost_reorder.extras.extra_ram.mem", g.cost_depth(), g.penalty_bits});
@@ -20,6 +33,7 @@ class CostReorderStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    if (d.strips > 1) return strip_writes(d, core);
     if (d.reorders_codes) return code_reorder(d, core);
     Connections parameters = {{"ROW_SLOTS", num(d.row_slots)},
                               {"G", num(d.groups)},
@@ -80,6 +94,29 @@ class CostReorderStage : public Stage {
   }
 
   // ---- HLS: aggregate's to_chain_order.
+  // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
+  // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
+  static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
+    const int P = d.strips, code_bits = std::max(1, d.widths.code);
+    std::string data;
+    for (int q = P; q-- > 0;)
+      data += fmt::format("{}code_match[{}:{}], code_base[{}:{}]", q + 1 < P ? ", " : "", (q + 1) * code_bits - 1,
+                          q * code_bits, (q + 1) * code_bits - 1, q * code_bits);
+    core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
+    core.logic(fmt::format("  wire [{0}:0] transform_pixel = {{transform_x[{1}:0], {2}'d0}};\n"
+                           "  assign code_we = shift && transform_pixel < frame_width && transform_y >= 0 &&\n"
+                           "                   transform_y < $signed({{2'b00, frame_height}});\n"
+                           "  assign code_slot = transform_x;\n"
+                           "  assign code_row = transform_slot;\n"
+                           "  assign code_data = {{{3}}};\n",
+                           d.x_bits - 1, d.x_bits - 1 - clog2(P), clog2(P), data),
+               {"code_we", "code_slot", "code_row", "code_data"});
+    core.wire("code_we", 1);
+    core.wire("code_slot", d.x_bits);
+    core.wire("code_row", d.cost_row_bits);
+    core.wire("code_data", 2 * int64_t(code_bits) * P);
+  }
+
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
     return "\n  // Cost reorder: in aggregate (to_chain_order).\n";
   }

@@ -14,6 +14,7 @@ class DisparityReorderStage : public Stage {
   Latency latency(const Geometry& g) const override { return {g.lr_rows, 1, 0}; }
   Latency start_offset(const Geometry& g) const override { return {g.lr_rows, 0, 0}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
+    if (g.strips > 1) return {};  // the strips' disparity RAMs, in the aggregation stage's
     return {{"core.disparity_reorder.disp_ram.mem", g.disp_depth(), g.reorder_ram_bits}};
   }
 
@@ -21,6 +22,13 @@ class DisparityReorderStage : public Stage {
     const std::string& w = streams.words;
     streams.pixels = {"read_done", "read_event", "read_x", "read_y", "read_word"};
     const bool confidence = d.cfg.confidence;
+    if (d.strips > 1) {
+      // The strips' disparity RAMs are read in fpstereo_strip_aggregation, a slot's P words a step.
+      core.text("\n  // The strips' disparity RAMs, read in raster order from step OUT_START.\n");
+      start_flag(core, d, *this, "out_on");
+      stream_wires(core, d, streams.pixels, d.strips * d.reorder_ram_bits);
+      return;
+    }
     core.text("\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n");
     start_flag(core, d, *this, "out_on");
     stream_wires(core, d, streams.pixels, d.reorder_word_bits);

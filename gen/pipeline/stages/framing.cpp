@@ -29,15 +29,19 @@ class FramingStage : public Stage {
                            "  localparam OVERLAP_HEIGHT = {};\n"
                            "  reg overlap;\n"
                            "  always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;\n"
-                           "  // The frame's last column and row, registered (the settings hold while a frame runs), so\n"
-                           "  // that the stages' end-of-row and end-of-frame compares take no subtraction.\n"
+                           "  // The frame's last column (with strips, slot) and row, registered (the settings hold\n"
+                           "  // while a frame runs), so that the stages' end-of-row and end-of-frame compares take no\n"
+                           "  // subtraction.\n"
                            "  reg [{}:0] frame_last_x;\n"
                            "  reg [{}:0] frame_last_y;\n"
                            "  always @(posedge clk) begin\n"
-                           "    frame_last_x <= frame_width - 1'b1;\n"
+                           "    frame_last_x <= {};\n"
                            "    frame_last_y <= frame_height - 1'b1;\n"
                            "  end\n",
-                           d.overlap_height, d.x_bits - 1, d.y_bits - 1),
+                           d.overlap_height, d.x_bits - 1, d.y_bits - 1,
+                           // with strips a slot holds P pixels: the last slot's
+                           d.strips > 1 ? fmt::format("(frame_width >> {}) - 1'b1", clog2(d.strips))
+                                        : std::string("frame_width - 1'b1")),
                {}, {{"overlap", 1}, {"frame_last_x", d.x_bits}, {"frame_last_y", d.y_bits}});
     // Without the right view nothing waits for its stream.
     Connections view;

@@ -23,7 +23,7 @@ class OutputStage : public Stage {
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
     const PixelStream& s = streams.pixels;
     core.text("\n  // Output: registered, so that the sequencer's inputs are flip-flops.\n");
-    output_register(core, "out", s, s.event, s.word, d.widths.output_word);
+    output_register(core, "out", s, s.event, s.word, d.widths.output_word * d.strips);
     if (d.cfg.confidence) confidence_verilog(core, d, s);
     core.logic(fmt::format("  reg frame_done_q;\n"
                            "  always @(posedge clk)\n"

@@ -45,23 +45,24 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
   return tag + "}";
 }
 
-std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope) {
+std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope, int pixels) {
   const StereoConfig& c = g.cfg;
+  const int width = pixels != 0 ? pixels : c.width;
   const int64_t lanes_w = int64_t(c.uf) * g.widths.path_cost;
-  const int64_t row_depth = int64_t(c.width + 1) * g.groups;
+  const int64_t row_depth = int64_t(width + 1) * g.groups;
   const int64_t state_depth = int64_t(g.chains) * g.groups;
   std::vector<StageMemory> out;
   if (c.paths & kPath0) out.push_back({scope + ".path0.state.mem", state_depth, lanes_w, false});
   if (c.paths & kPath45) {
     out.push_back({scope + ".path45.row.mem", row_depth, lanes_w});
-    out.push_back({scope + ".path45.row_min.mem", c.width + 1, g.widths.path_cost});
+    out.push_back({scope + ".path45.row_min.mem", width + 1, g.widths.path_cost});
     out.push_back({scope + ".path45.state.mem", state_depth, lanes_w, false});
   }
   for (int v = 0; v < 2; ++v) {
     if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
     const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
     out.push_back({p + ".row.mem", row_depth, lanes_w});
-    out.push_back({p + ".row_min.mem", c.width + 1, g.widths.path_cost});
+    out.push_back({p + ".row_min.mem", width + 1, g.widths.path_cost});
   }
   return out;
 }

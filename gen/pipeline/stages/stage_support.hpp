@@ -28,9 +28,10 @@ void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, 
 // Their position as one tag: {_active, _x, _slot}, with_group _group, then the extra nets.
 std::string word_tag(const std::string& words, bool with_group, const std::vector<std::string>& extra = {});
 
-// The aggregator's memories below scope (fpstereo_aggregator.v), and its parameters but
-// MATCH_SIDE, which LR2's match side sets itself.
-std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope);
+// The aggregator's memories below scope (fpstereo_aggregator.v), over a row of `pixels` (a strip's,
+// or by default the whole width), and its parameters but MATCH_SIDE, which LR2's match side sets
+// itself.
+std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope, int pixels = 0);
 Connections aggregator_parameters(const RtlDesign& d);
 
 // The fused cost's parameters of the cost lanes (fpstereo_point_lanes and the stages around it):

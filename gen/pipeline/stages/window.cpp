@@ -16,17 +16,20 @@ class WindowStage : public Stage {
   explicit WindowStage(const StereoConfig& c) : transform_(c.cost != CostFunction::Sad && c.cost != CostFunction::Zsad) {}
   std::string title() const override { return transform_ ? "window and transform" : "window"; }
   std::vector<std::string> knobs() const override { return {"window", "cost"}; }
-  // The window centred r rows and r slots behind the input is complete after the input's slot;
-  // its registered position (and the transform's codes) one slot later.
-  Latency latency(const Geometry& g) const override { return {g.window_radius, g.window_radius + 2, 0}; }
+  // The window centred r rows and r slots behind the input (with strips, the windows of a slot's P
+  // pixels, ceil(r / P) slots behind) is complete after the input's slot; its registered position
+  // (and the transform's codes) one slot later.
+  Latency latency(const Geometry& g) const override { return {g.window_radius, centre_lag(g) + 2, 0}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    const int64_t bits = int64_t(g.cfg.window - 1) * g.widths.pixel;
+    const int64_t bits = int64_t(g.cfg.window - 1) * g.widths.pixel * g.strips;
     return {{"core.front_end.left_window.line_buffer.mem", g.row_slots, bits},
             {"core.front_end.right_window.line_buffer.mem", g.row_slots, bits}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
-    const int n = d.cfg.window, window_bits = n * n * 8;
+    // With strips, P windows side by side in arrays of COLS columns (fpstereo_front_end).
+    const int n = d.cfg.window, P = d.strips, lag = centre_lag(d), cols = P * (1 + lag) + d.window_radius;
+    const int window_bits = n * cols * 8;
     core.text("\n  // Window stage: line buffers, windows, their bounds and centres.\n");
     core.wire("shift", 1);
     core.wire("slot_end", 1);
@@ -34,7 +37,7 @@ class WindowStage : public Stage {
     core.wire("window_left", window_bits);
     core.wire("window_right", window_bits);
     core.wire("row_valid", n);
-    core.wire("col_valid", n);
+    core.wire("col_valid", n + P - 1);
     core.wire("transform_x", d.x_bits);
     core.wire("transform_y", d.signed_y_bits, true);
     core.wire("transform_slot", d.cost_row_bits);
@@ -43,19 +46,24 @@ class WindowStage : public Stage {
                   {{"N", num(n)},
                    {"ROW_SLOTS", num(d.row_slots)},
                    {"G", num(d.groups)},
-                   {"COST_ROWS", num(d.cost_rows)},
+                   {"COST_ROWS", num(P > 1 ? d.slot_rows : d.cost_rows)},
                    {"COST_ROW_W", num(d.cost_row_bits)},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
                    {"SIGNED_Y_W", num(d.signed_y_bits)},
                    {"G_W", num(d.group_bits)},
-                   {"FOLLOW_WAIT", num(d.follow_wait)}});
+                   {"FOLLOW_WAIT", num(d.follow_wait)},
+                   {"P", num(P)}});
     if (!transform_) return;
     const int code_bits = std::max(1, d.widths.code);
-    core.wire("code_base", code_bits);
-    core.wire("code_match", code_bits);
+    core.wire("code_base", int64_t(P) * code_bits);
+    core.wire("code_match", int64_t(P) * code_bits);
     core.instance("fpstereo_transform", "transform",
-                  {{"N", num(n)}, {"RANK", d.cfg.cost == CostFunction::Rank ? "1" : "0"}, {"CODE_W", num(code_bits)}});
+                  {{"N", num(n)},
+                   {"RANK", d.cfg.cost == CostFunction::Rank ? "1" : "0"},
+                   {"CODE_W", num(code_bits)},
+                   {"P", num(P)},
+                   {"COLS", num(cols)}});
   }
 
   // ---- HLS: the windows the cost sums over. SAD's are the pixel windows; the others transform the
@@ -97,6 +105,7 @@ class WindowStage : public Stage {
   int hls_fill_rows(const Geometry& g) const override { return g.window_fill_rows; }
 
  private:
+  static int centre_lag(const Geometry& g) { return (g.window_radius + g.strips - 1) / g.strips; }
   bool transform_;
 };
 

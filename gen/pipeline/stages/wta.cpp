@@ -19,6 +19,7 @@ class WtaStage : public Stage {
   Latency latency(const Geometry& g) const override { return {0, 0, g.wta_word_lag + 1}; }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    if (d.strips > 1) return;  // a winner-take-all per strip, in fpstereo_strip_aggregation
     streams.words = "winner";
     core.text("\n  // Winner-take-all: the pixel's word in its last group's step.\n");
     word_wires(core, d, streams.words, d.widths.disparity + 1, false);

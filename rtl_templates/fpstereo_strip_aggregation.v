@@ -194,7 +194,7 @@ module fpstereo_strip_aggregation #(
       end
       fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(DISP_W), .X_W(X_W),
                                          .Y_W(Y_W), .SLOT_W(OUT_ROW_W)) disparities (
-        .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .frame_width(frame_width),
+        .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
         .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .word(wta_word),
         .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));
     end else begin : no_output

@@ -27,6 +27,8 @@ module fpstereo_strip_disparity_reorder #(
   input  wire               restart,
   input  wire               adv,
   input  wire               out_on,
+  // back-to-back frames (fpstereo_front_end): the read rows wrap after the frame's last
+  input  wire               overlap,
   input  wire [X_W-1:0]     frame_width,
   input  wire [Y_W-1:0]     frame_height,
   // strip s's word: active, its pixel's x, its row slot (modulo the strip's rows), the word
@@ -61,7 +63,7 @@ module fpstereo_strip_disparity_reorder #(
   wire row_ends = adv && out_on && so == LAST_SLOT;
   /* verilator lint_off PINCONNECTEMPTY */
   fpstereo_frame_row #(.Y_W(Y_W)) output_row (
-    .clk(clk), .restart(restart), .next(row_ends), .wrap(1'b0), .height(frame_height), .row(to), .last());
+    .clk(clk), .restart(restart), .next(row_ends), .wrap(overlap), .height(frame_height), .row(to), .last());
   /* verilator lint_on PINCONNECTEMPTY */
   always @(posedge clk)
     if (restart) so <= {X_W{1'b0}};
