@@ -46,6 +46,12 @@ std::vector<StereoConfig> covering_configs() {
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
   out.push_back(beats);
+  // ... and in strips, where the core takes a beat a step (census, no post-processing).
+  StereoConfig strips = beats;
+  strips.median = 0;
+  strips.ppc = 4;
+  strips.width = 128;
+  out.push_back(strips);
   return out;
 }
 
@@ -86,15 +92,27 @@ TEST_CASE("the schedule is the sum of the stages' latencies", "[stages]") {
     const rtl::RtlDesign d = rtl::plan(cfg);
     int64_t sum = 0;
     for (const auto& stage : d.stages) sum += stage->latency(d).in_steps(d.row_slots, d.groups);
-    const int64_t last_pixel = (int64_t(cfg.height) - 1) * d.row_slots + cfg.width - 1;
+    // With strips a step takes a slot of P pixels.
+    const int64_t last_pixel = (int64_t(cfg.height) - 1) * d.row_slots + cfg.width / d.strips - 1;
     INFO(config_tag(cfg));
-    // A row-time is the width in whole segments, without bubble slots.
-    CHECK(d.row_slots == d.chains * ((cfg.width + d.chains - 1) / d.chains));
-    // With several pixels per beat, the beat's register delays the frame's first pixel a cycle.
-    const int beat = cfg.ppc > 1 ? rtl::kBeatSplitCycles : 0;
+    // A row-time is the width in whole segments, without bubble slots; with strips, P strips of
+    // whole segments and whole slots, the last one not empty.
+    if (d.strips == 1) {
+      CHECK(d.row_slots == d.chains * ((cfg.width + d.chains - 1) / d.chains));
+    } else {
+      CHECK(d.strips == cfg.ppc);
+      CHECK(d.row_slots == d.chains * d.segment);
+      CHECK(d.row_slots % d.strips == 0);
+      CHECK(int64_t(d.strips) * d.row_slots >= cfg.width);
+      CHECK(int64_t(d.strips - 1) * d.row_slots < cfg.width);
+    }
+    // With several pixels per beat split for the one-pixel core, the beat's register delays the
+    // frame's first pixel a cycle.
+    const int beat = cfg.ppc > 1 && d.strips == 1 ? rtl::kBeatSplitCycles : 0;
     // At G = 1 a frame that may be followed waits at its end for what the row's spare slots and
-    // the beat's other pixels do not cover of the next frame's way in.
-    const int64_t spare = d.row_slots - cfg.width + cfg.ppc - 1;
+    // the beat's other pixels do not cover of the next frame's way in (with strips a slot is a beat).
+    const int64_t spare =
+        d.strips > 1 ? d.row_slots - cfg.width / d.strips : d.row_slots - cfg.width + cfg.ppc - 1;
     const int64_t wait = d.groups == 1 ? std::max<int64_t>(0, rtl::kFollowCycles - spare) : 0;
     CHECK(d.follow_wait == wait);
     const bool follows_on = cfg.height >= d.overlap_height;
