@@ -3,8 +3,10 @@
 # uf 128 at 1920x1080 and at 3840x2160, on Middlebury 2005 Reindeer (a real pair) enlarged 3x and
 # 6x (bilinear) and cropped to the frame. Each run streams four frames back to back without stalls
 # (cycles per frame, steady state) and one with 10 % idle and backpressure. About 4 and 20 minutes
-# of simulation on an idle 2-core machine; needs ../shared/data/stereo.
-#   bench/large-frames.sh [--build-dir B] [1080p|4k ...]
+# of simulation on an idle 2-core machine; needs ../shared/data/stereo. The -ppc sizes take beats of
+# 2 (or 4) pixels with the core in strips (docs/ppc-hardware.md: census with the median, as C2);
+# 1080p-ppc4 at 64 disparities.
+#   bench/large-frames.sh [--build-dir B] [1080p|4k|1080p-ppc2|4k-ppc2|1080p-ppc4 ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
@@ -14,13 +16,17 @@ pair=$root/../shared/data/stereo/middlebury_2005_2006_half
 sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(1080p 4k)
 for size in "${sizes[@]}"; do
+  range=(--dmax 128 --uf 128)
   case $size in
     1080p) geometry=(--width 1920 --height 1080); factor=3 ;;
     4k) geometry=(--width 3840 --height 2160); factor=6 ;;
-    *) echo "large-frames: unknown size '$size' (1080p or 4k)" >&2; exit 2 ;;
+    1080p-ppc2) geometry=(--width 1920 --height 1080 --ppc 2); factor=3 ;;
+    4k-ppc2) geometry=(--width 3840 --height 2160 --ppc 2); factor=6 ;;
+    1080p-ppc4) geometry=(--width 1920 --height 1080 --ppc 4); factor=3; range=(--dmax 64 --uf 64) ;;
+    *) echo "large-frames: unknown size '$size' (1080p, 4k, 1080p-ppc2, 4k-ppc2 or 1080p-ppc4)" >&2; exit 2 ;;
   esac
   echo "== $size"
-  "$root/scripts/verify-rtl.sh" --build-dir "$build" --cost census --window 7 --dmax 128 --uf 128 \
+  "$root/scripts/verify-rtl.sh" --build-dir "$build" --cost census --window 7 "${range[@]}" \
     "${geometry[@]}" -- --left "$pair/left/Reindeer/view1.png" --right "$pair/right/Reindeer/view5.png" \
     --upscale "$factor" --crop --frames 1 --idle 0.1 --backpressure 0.1 | grep -v '^\['
 done

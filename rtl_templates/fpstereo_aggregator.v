@@ -8,7 +8,7 @@
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fpstereo_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (tests/modules/fpstereo_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (fpstereo_strip_aggregation wires them): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fpstereo_aggregator #(

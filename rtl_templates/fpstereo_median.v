@@ -4,7 +4,9 @@
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
 // the median of the window's valid words (fpstereo_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
-// interpolation), with its word.
+// interpolation), with its word. With P words a slot (the core in strips, docs/ppc-hardware.md)
+// the window is COLS columns wide and its P medians are those of the slot CENTRE_LAG slots behind
+// (as fpstereo_front_end's windows), the slot's words in bits q * (DISP_W + 1) of the ports.
 module fpstereo_median #(
   parameter M = 5,
   parameter ROW_SLOTS = 64,
@@ -12,7 +14,10 @@ module fpstereo_median #(
   parameter EXTRA_ROWS = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter SIGNED_Y_W = 8
+  parameter SIGNED_Y_W = 8,
+  parameter P = 1,
+  parameter CENTRE_LAG = (M / 2 + P - 1) / P,
+  parameter COLS = P * (1 + CENTRE_LAG) + M / 2
 ) (
   input  wire             clk,
   input  wire             restart,
@@ -24,11 +29,11 @@ module fpstereo_median #(
   input  wire             in_done,
   input  wire [X_W-1:0]   in_x,
   input  wire [Y_W-1:0]   in_y,
-  input  wire [DISP_W:0]  in_word,
+  input  wire [P*(DISP_W+1)-1:0] in_word,
   output reg              out_event,
   output reg  [X_W-1:0]   out_x,
   output reg  [Y_W-1:0]   out_y,
-  output reg  [DISP_W:0]  out_word
+  output reg  [P*(DISP_W+1)-1:0] out_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -38,15 +43,22 @@ module fpstereo_median #(
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
       fpstereo_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
+    if ((P != 1 && P != 2 && P != 4) || ROW_SLOTS * P > (1 << X_W) || CENTRE_LAG * P < M / 2 ||
+        COLS != P * (1 + CENTRE_LAG) + M / 2) begin : invalid_P
+      fpstereo_invalid_parameters_median_P_not_1_2_4_or_X_W_CENTRE_LAG_COLS_wrong failed ();
+    end
   endgenerate
   localparam RM = M / 2;
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam WORD_W = DISP_W + 1;
+  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
-  wire [M*M*(DISP_W+1)-1:0] window;
-  fpstereo_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+  wire [M*COLS*WORD_W-1:0] window;
+  fpstereo_window #(.N(M), .WORD_W(WORD_W), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
   wire signed [SIGNED_Y_W-1:0] centre_y;
@@ -54,7 +66,7 @@ module fpstereo_median #(
   wire centre_slot;
   wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fpstereo_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
+  fpstereo_window_centre #(.LAG(CENTRE_LAG), .ROW_LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
@@ -68,15 +80,34 @@ module fpstereo_median #(
       median_x <= centre_x;
       median_y <= centre_y;
     end
-  wire [M-1:0] row_valid, col_valid;
-  fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
-    .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  wire [DISP_W:0] selected;
-  fpstereo_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
-    .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
+  // The P windows' columns' bounds side by side, from the slot's first pixel.
+  /* verilator lint_off WIDTH */  // slot * P, below 2^X_W
+  wire [X_W-1:0] median_pixel = median_x << LOG_P;
+  /* verilator lint_on WIDTH */
+  wire [M-1:0] row_valid;
+  wire [M+P-2:0] col_valid;
+  fpstereo_window_bounds #(.SIDE(M), .COLS(M + P - 1), .COL_LAG(RM), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
+    .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+  wire [P*WORD_W-1:0] selected;
+  genvar q, i;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : pixel
+      // window q's M x M words, row by row
+      wire [M*M*WORD_W-1:0] words;
+      for (i = 0; i < M; i = i + 1) begin : row
+        assign words[i*M*WORD_W +: M*WORD_W] = window[(i*COLS + q)*WORD_W +: M*WORD_W];
+      end
+      fpstereo_median_select #(.M(M), .WORD_W(WORD_W)) select (
+        .clk(clk), .en(adv), .window(words), .row_valid(row_valid), .col_valid(col_valid[q +: M]),
+        .median(selected[q*WORD_W +: WORD_W]));
+    end
+  endgenerate
+  /* verilator lint_off UNUSEDSIGNAL */  // the array's columns right of the last window (COLS > M + P - 1)
+  wire unused_columns = ^window;
+  /* verilator lint_on UNUSEDSIGNAL */
   // The centre's coordinates travel as long as the selection takes.
   wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
-  wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
+  wire in_image = {1'b0, median_pixel} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
   wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */

@@ -1,7 +1,8 @@
 `resetall
 `default_nettype none
-// The module tests' harness of the aggregation over P strips of a row (docs/ppc-hardware.md; no
-// generator emits strips yet, so it is not a template): P aggregators side by side, each
+// The aggregation over P strips of a row (docs/ppc-hardware.md), the core's middle when it takes
+// P pixels a step (the aggregation stage places it with CODES, RAM and OUTPUT; the module tests
+// drive it without them too): P aggregators side by side, each
 // with K chains over its strip of ROW_SLOTS = K * SEGMENT pixels, strip p starting at pixel
 // p * ROW_SLOTS. Strip p runs p * K steps behind strip 0 (its start and wrap flags wait that long)
 // and its chain k works on row t - p * K - k of its row-time t, so the chain that continues a row

@@ -1,8 +1,7 @@
 `resetall
 `default_nettype none
-// The code reorder RAM over P strips of a row (docs/ppc-hardware.md, "Memories"; no generator
-// emits strips yet, so it lives beside the module tests, as fpstereo_strip_aggregation): the
-// front end writes a slot's P entries (P consecutive pixels, {match, base} each) at once in raster
+// The code reorder RAM over P strips of a row (docs/ppc-hardware.md, "Memories";
+// fpstereo_strip_aggregation places it): the front end writes a slot's P entries (P consecutive pixels, {match, base} each) at once in raster
 // order, and strip s's aggregator reads one entry a step in its chain order. A slot lies in one
 // strip (STRIP_PIXELS is a multiple of P), so strip s has a RAM of its own whose word is a slot's
 // entries, and the read picks the entry by the address' low bits, registered with the word.

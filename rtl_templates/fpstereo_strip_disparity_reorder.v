@@ -1,8 +1,7 @@
 `resetall
 `default_nettype none
 // The disparity reorder RAM over P strips of a row and the output's raster order at P pixels a
-// slot (docs/ppc-hardware.md, "Memories"; no generator emits strips yet, so it lives beside the
-// module tests, as fpstereo_strip_aggregation). Strip s's winner-take-all writes one word a step
+// slot (docs/ppc-hardware.md, "Memories"; fpstereo_strip_aggregation places it). Strip s's winner-take-all writes one word a step
 // in the strip's chain order; from out_on on, one slot (P consecutive pixels, which lie in one
 // strip) is read a step in raster order. Strip s has P banks, bank q holding its pixels x with
 // x mod P = q, so that a slot's P words are read at once, each bank written a word at a time.
@@ -11,7 +10,7 @@
 // (P - s) * K + 1 rows, and it and the output keep the row's slot modulo that, each a counter.
 // The read stream as fpstereo_disparity_reorder's: read_done in the step after each slot's read,
 // read_event where the slot holds pixels of the frame, its slot read_x (pixels read_x * P + q) and
-// row, and the P words; rows below the frame and bubble slots read nothing.
+// row, and the P words; rows below the frame and bubble slots read invalid words.
 module fpstereo_strip_disparity_reorder #(
   parameter P = 2,
   parameter K = 5,
@@ -73,13 +72,16 @@ module fpstereo_strip_disparity_reorder #(
   wire [STRIP_W-1:0] strip_of = so / WORDS;
   /* verilator lint_on WIDTH */
   reg [STRIP_W-1:0] strip_q;
+  reg read_was_valid;
   always @(posedge clk)
     if (restart) begin
       read_done <= 1'b0;
       read_event <= 1'b0;
+      read_was_valid <= 1'b0;
     end else if (adv) begin
       read_done <= out_on;
       read_event <= read_now;
+      read_was_valid <= read_now;
       read_x <= so;
       read_y <= to;
       strip_q <= strip_of;
@@ -116,6 +118,7 @@ module fpstereo_strip_disparity_reorder #(
       end
     end
   endgenerate
-  assign read_word = banks_q[strip_q*P*WORD_W +: P*WORD_W];
+  localparam [WORD_W-1:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  assign read_word = read_was_valid ? banks_q[strip_q*P*WORD_W +: P*WORD_W] : {P{INVALID_WORD}};
 endmodule
 `resetall

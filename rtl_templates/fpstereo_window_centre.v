@@ -1,7 +1,8 @@
 `resetall
 `default_nettype none
-// The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
-// and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
+// The centre of the window that forms when the word of slot x of row-time y enters it: ROW_LAG rows
+// and LAG slots behind (ROW_LAG = LAG but with several pixels a slot), back into the previous
+// row-time near a row's start (docs/architecture.md).
 // Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
 // earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
 // above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
@@ -9,6 +10,7 @@
 // would be slow logic). row_y is the centre row of the entering column (no borrow).
 module fpstereo_window_centre #(
   parameter LAG = 2,
+  parameter ROW_LAG = LAG,
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
@@ -40,9 +42,10 @@ module fpstereo_window_centre #(
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [SIGNED_Y_W-1:0] LAG_Y = LAG_I[SIGNED_Y_W-1:0];
+  localparam integer ROW_LAG_I = ROW_LAG;
+  localparam signed [SIGNED_Y_W-1:0] LAG_Y = ROW_LAG_I[SIGNED_Y_W-1:0];
 
-  localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
+  localparam integer SLOT_BIAS = ROWS * ((ROW_LAG + ROWS) / ROWS);  // a multiple of ROWS above ROW_LAG
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
@@ -54,7 +57,7 @@ module fpstereo_window_centre #(
   wire signed [SIGNED_Y_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
   assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
+  assign centre_slot = (slot + SLOT_BIAS - ROW_LAG - borrow) % ROWS;
   /* verilator lint_on WIDTH */
 endmodule
 `resetall

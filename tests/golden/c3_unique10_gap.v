@@ -265,8 +265,9 @@ module fps_census7_d128u32_79bc18_sgm_core (
   localparam OVERLAP_HEIGHT = 12;
   reg overlap;
   always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
-  // The frame's last column and row, registered (the settings hold while a frame runs), so
-  // that the stages' end-of-row and end-of-frame compares take no subtraction.
+  // The frame's last column (with strips, slot) and row, registered (the settings hold
+  // while a frame runs), so that the stages' end-of-row and end-of-frame compares take no
+  // subtraction.
   reg [10:0] frame_last_x;
   reg [8:0] frame_last_y;
   always @(posedge clk) begin
@@ -299,7 +300,7 @@ module fps_census7_d128u32_79bc18_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_79bc18_front_end #(
     .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
-    .G_W(2), .FOLLOW_WAIT(0)
+    .G_W(2), .FOLLOW_WAIT(0), .P(1)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -311,7 +312,7 @@ module fps_census7_d128u32_79bc18_sgm_core (
   wire [47:0] code_base;
   wire [47:0] code_match;
   fps_census7_d128u32_79bc18_transform #(
-    .N(7), .RANK(0), .CODE_W(48)
+    .N(7), .RANK(0), .CODE_W(48), .P(1), .COLS(7)
   ) transform (
     .clk(clk), .shift(shift), .window_left(window_left), .window_right(window_right), .row_valid(row_valid),
     .col_valid(col_valid), .code_base(code_base), .code_match(code_match));
@@ -456,7 +457,7 @@ module fps_census7_d128u32_79bc18_sgm_core (
   wire [8:0] median_y;
   wire [7:0] median_word;
   fps_census7_d128u32_79bc18_median #(
-    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11)
+    .M(5), .ROW_SLOTS(1242), .DISP_W(7), .EXTRA_ROWS(1), .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .P(1)
   ) median (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .wrapped(wrapped), .in_done(checked_done), .in_x(checked_x), .in_y(checked_y), .in_word(checked_word),
@@ -1372,8 +1373,10 @@ module fps_census7_d128u32_79bc18_transform #(
 ) (
   input  wire                clk,
   input  wire                shift,
+  /* verilator lint_off UNUSEDSIGNAL */  // the arrays' columns right of the last window (COLS > N + P - 1)
   input  wire [N*COLS*8-1:0] window_left,
   input  wire [N*COLS*8-1:0] window_right,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [N-1:0]        row_valid,
   input  wire [N+P-2:0]      col_valid,
   output reg  [P*CODE_W-1:0] code_base,
@@ -1660,7 +1663,7 @@ endmodule
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_census7_d128u32_79bc18_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (tests/modules/fps_census7_d128u32_79bc18_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (fps_census7_d128u32_79bc18_strip_aggregation wires them): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fps_census7_d128u32_79bc18_aggregator #(
@@ -2640,7 +2643,9 @@ endmodule
 // word outside the image) enters an M x M window; its centre, RM rows and RM slots behind, gets
 // the median of the window's valid words (fps_census7_d128u32_79bc18_median_select, 3 * WORD_W steps), and leaves with
 // its position: out_event for each pixel of the frame's rows (EXTRA_ROWS more for gap
-// interpolation), with its word.
+// interpolation), with its word. With P words a slot (the core in strips, docs/ppc-hardware.md)
+// the window is COLS columns wide and its P medians are those of the slot CENTRE_LAG slots behind
+// (as fps_census7_d128u32_79bc18_front_end's windows), the slot's words in bits q * (DISP_W + 1) of the ports.
 module fps_census7_d128u32_79bc18_median #(
   parameter M = 5,
   parameter ROW_SLOTS = 64,
@@ -2648,7 +2653,10 @@ module fps_census7_d128u32_79bc18_median #(
   parameter EXTRA_ROWS = 0,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter SIGNED_Y_W = 8
+  parameter SIGNED_Y_W = 8,
+  parameter P = 1,
+  parameter CENTRE_LAG = (M / 2 + P - 1) / P,
+  parameter COLS = P * (1 + CENTRE_LAG) + M / 2
 ) (
   input  wire             clk,
   input  wire             restart,
@@ -2660,11 +2668,11 @@ module fps_census7_d128u32_79bc18_median #(
   input  wire             in_done,
   input  wire [X_W-1:0]   in_x,
   input  wire [Y_W-1:0]   in_y,
-  input  wire [DISP_W:0]  in_word,
+  input  wire [P*(DISP_W+1)-1:0] in_word,
   output reg              out_event,
   output reg  [X_W-1:0]   out_x,
   output reg  [Y_W-1:0]   out_y,
-  output reg  [DISP_W:0]  out_word
+  output reg  [P*(DISP_W+1)-1:0] out_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -2674,15 +2682,22 @@ module fps_census7_d128u32_79bc18_median #(
     if (SIGNED_Y_W < Y_W + 2) begin : invalid_SIGNED_Y_W
       fps_census7_d128u32_79bc18_invalid_parameters_median_SIGNED_Y_W_below_Y_W_plus_2 failed ();
     end
+    if ((P != 1 && P != 2 && P != 4) || ROW_SLOTS * P > (1 << X_W) || CENTRE_LAG * P < M / 2 ||
+        COLS != P * (1 + CENTRE_LAG) + M / 2) begin : invalid_P
+      fps_census7_d128u32_79bc18_invalid_parameters_median_P_not_1_2_4_or_X_W_CENTRE_LAG_COLS_wrong failed ();
+    end
   endgenerate
   localparam RM = M / 2;
-  localparam [X_W-1:0] LAST_SLOT = ROW_SLOTS - 1;
+  localparam WORD_W = DISP_W + 1;
+  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
+  localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
   wire [X_W:0] width_x = {1'b0, frame_width};
   wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
   wire shift = adv && in_done;  // a slot's word (or the invalid word outside the image)
   wire [X_W-1:0] next_col = (in_x == LAST_SLOT) ? {X_W{1'b0}} : in_x + 1'b1;
-  wire [M*M*(DISP_W+1)-1:0] window;
-  fps_census7_d128u32_79bc18_window #(.N(M), .WORD_W(DISP_W + 1), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
+  wire [M*COLS*WORD_W-1:0] window;
+  fps_census7_d128u32_79bc18_window #(.N(M), .WORD_W(WORD_W), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) line_window (
     .clk(clk), .shift(shift), .col(in_x), .next_col(next_col), .word(in_word), .window(window));
   wire [X_W-1:0] centre_x;
   wire signed [SIGNED_Y_W-1:0] centre_y;
@@ -2690,7 +2705,7 @@ module fps_census7_d128u32_79bc18_median #(
   wire centre_slot;
   wire signed [SIGNED_Y_W-1:0] newest_y;
   /* verilator lint_on UNUSEDSIGNAL */
-  fps_census7_d128u32_79bc18_window_centre #(.LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
+  fps_census7_d128u32_79bc18_window_centre #(.LAG(CENTRE_LAG), .ROW_LAG(RM), .ROW_SLOTS(ROW_SLOTS), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W), .ROWS(1), .SLOT_W(1)) centre (
     .x(in_x), .y($signed({2'b00, in_y})), .slot(1'b0), .wrapped(wrapped), .height(height_y), .centre_x(centre_x),
     .centre_y(centre_y), .centre_slot(centre_slot), .row_y(newest_y));
   reg [X_W-1:0] median_x;
@@ -2704,15 +2719,34 @@ module fps_census7_d128u32_79bc18_median #(
       median_x <= centre_x;
       median_y <= centre_y;
     end
-  wire [M-1:0] row_valid, col_valid;
-  fps_census7_d128u32_79bc18_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
-    .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
-  wire [DISP_W:0] selected;
-  fps_census7_d128u32_79bc18_median_select #(.M(M), .WORD_W(DISP_W + 1)) select (
-    .clk(clk), .en(adv), .window(window), .row_valid(row_valid), .col_valid(col_valid), .median(selected));
+  // The P windows' columns' bounds side by side, from the slot's first pixel.
+  /* verilator lint_off WIDTH */  // slot * P, below 2^X_W
+  wire [X_W-1:0] median_pixel = median_x << LOG_P;
+  /* verilator lint_on WIDTH */
+  wire [M-1:0] row_valid;
+  wire [M+P-2:0] col_valid;
+  fps_census7_d128u32_79bc18_window_bounds #(.SIDE(M), .COLS(M + P - 1), .COL_LAG(RM), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
+    .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+  wire [P*WORD_W-1:0] selected;
+  genvar q, i;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : pixel
+      // window q's M x M words, row by row
+      wire [M*M*WORD_W-1:0] words;
+      for (i = 0; i < M; i = i + 1) begin : row
+        assign words[i*M*WORD_W +: M*WORD_W] = window[(i*COLS + q)*WORD_W +: M*WORD_W];
+      end
+      fps_census7_d128u32_79bc18_median_select #(.M(M), .WORD_W(WORD_W)) select (
+        .clk(clk), .en(adv), .window(words), .row_valid(row_valid), .col_valid(col_valid[q +: M]),
+        .median(selected[q*WORD_W +: WORD_W]));
+    end
+  endgenerate
+  /* verilator lint_off UNUSEDSIGNAL */  // the array's columns right of the last window (COLS > M + P - 1)
+  wire unused_columns = ^window;
+  /* verilator lint_on UNUSEDSIGNAL */
   // The centre's coordinates travel as long as the selection takes.
   wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
-  wire in_image = {1'b0, median_x} < width_x && median_y >= 0 && median_y < event_rows_y;
+  wire in_image = {1'b0, median_pixel} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
   wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -3725,8 +3759,9 @@ endmodule
 
 `resetall
 `default_nettype none
-// The centre of the window that forms when the word of slot x of row-time y enters it: LAG rows
-// and LAG slots behind, back into the previous row-time near a row's start (docs/architecture.md).
+// The centre of the window that forms when the word of slot x of row-time y enters it: ROW_LAG rows
+// and LAG slots behind (ROW_LAG = LAG but with several pixels a slot), back into the previous
+// row-time near a row's start (docs/architecture.md).
 // Rows are signed: a centre may lie above the image. Once the rows have wrapped (`wrapped`: an
 // earlier frame's rows came before these, docs/architecture.md, "Back-to-back frames"), a row
 // above is the previous frame's, `height` rows further on. The centre's row modulo ROWS (its slot
@@ -3734,6 +3769,7 @@ endmodule
 // would be slow logic). row_y is the centre row of the entering column (no borrow).
 module fps_census7_d128u32_79bc18_window_centre #(
   parameter LAG = 2,
+  parameter ROW_LAG = LAG,
   parameter ROW_SLOTS = 64,
   parameter X_W = 7,
   // signed row width
@@ -3765,9 +3801,10 @@ module fps_census7_d128u32_79bc18_window_centre #(
   localparam integer BACK_I = ROW_SLOTS - LAG;
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   localparam [X_W-1:0] BACK = BACK_I[X_W-1:0];
-  localparam signed [SIGNED_Y_W-1:0] LAG_Y = LAG_I[SIGNED_Y_W-1:0];
+  localparam integer ROW_LAG_I = ROW_LAG;
+  localparam signed [SIGNED_Y_W-1:0] LAG_Y = ROW_LAG_I[SIGNED_Y_W-1:0];
 
-  localparam integer SLOT_BIAS = ROWS * ((LAG + ROWS) / ROWS);  // a multiple of ROWS above LAG
+  localparam integer SLOT_BIAS = ROWS * ((ROW_LAG + ROWS) / ROWS);  // a multiple of ROWS above ROW_LAG
 
   wire borrow = x < LAG_X;  // the centre lies in the previous row-time
   assign centre_x = borrow ? x + BACK : x - LAG_X;
@@ -3779,7 +3816,7 @@ module fps_census7_d128u32_79bc18_window_centre #(
   wire signed [SIGNED_Y_W-1:0] prev_y = wrapped && lagged_prev < 0 ? wrapped_prev : lagged_prev;
   assign centre_y = borrow ? prev_y : row_y;
   /* verilator lint_off WIDTH */  // a few bits of slot arithmetic against integer constants
-  assign centre_slot = (slot + SLOT_BIAS - LAG - borrow) % ROWS;
+  assign centre_slot = (slot + SLOT_BIAS - ROW_LAG - borrow) % ROWS;
   /* verilator lint_on WIDTH */
 endmodule
 `resetall

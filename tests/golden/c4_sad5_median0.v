@@ -263,8 +263,9 @@ module fps_sad5_d128u32_baf239_sgm_core (
   localparam OVERLAP_HEIGHT = 9;
   reg overlap;
   always @(posedge clk) overlap <= frame_height >= OVERLAP_HEIGHT;
-  // The frame's last column and row, registered (the settings hold while a frame runs), so
-  // that the stages' end-of-row and end-of-frame compares take no subtraction.
+  // The frame's last column (with strips, slot) and row, registered (the settings hold
+  // while a frame runs), so that the stages' end-of-row and end-of-frame compares take no
+  // subtraction.
   reg [10:0] frame_last_x;
   reg [8:0] frame_last_y;
   always @(posedge clk) begin
@@ -293,7 +294,7 @@ module fps_sad5_d128u32_baf239_sgm_core (
   wire [4:0] newest_row_valid;
   fps_sad5_d128u32_baf239_front_end #(
     .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(4), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
-    .G_W(2), .FOLLOW_WAIT(0)
+    .G_W(2), .FOLLOW_WAIT(0), .P(1)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -1678,7 +1679,7 @@ endmodule
 // PENALTIES (adaptive P2, the base side), each cost word carries above its costs one P2 per
 // enabled path (fps_sad5_d128u32_baf239_adaptive_p2), which replaces the p2 input for that path.
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
-// aggregator each (tests/modules/fps_sad5_d128u32_baf239_strip_aggregation.v shows the wiring): this one's pixels are X_BASE + k * SEGMENT + j, its
+// aggregator each (fps_sad5_d128u32_baf239_strip_aggregation wires them): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
 // pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
 module fps_sad5_d128u32_baf239_aggregator #(

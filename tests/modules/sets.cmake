@@ -82,7 +82,6 @@ modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckl
           PARAMS W=24 S=1 R=1 WORD_W=6)
 # Strips of aggregation (docs/ppc-hardware.md): two strips of one chain's latency; four, the last
 # one narrower than the others; two at uf 32 (K = 6) with the 0 and 135-degree paths only.
-# The harness lives beside the tests (no generator emits it yet): named from rtl_templates.
 set(MODTB_STRIP_SOURCES fpstereo_strip_aggregation.v fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v
     fpstereo_ram_sdp.v fpstereo_ram_async.v fpstereo_path_lanes.v fpstereo_path_minimum.v fpstereo_min_tree.v
     fpstereo_reduction_tree.v fpstereo_unique_join.v)

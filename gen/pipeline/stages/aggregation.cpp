@@ -82,8 +82,6 @@ class AggregationStage : public Stage {
                    {"edge135_out", "agg_edge135"}});
   }
 
-  // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
-  // Returns the aggregator's cost words.
   // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,
   // their chain costs and aggregators, a winner-take-all each and their disparity RAMs, from the
   // code writes (the cost reorder stage's) to the raster order at P pixels a step (the pixel
@@ -144,6 +142,8 @@ class AggregationStage : public Stage {
                    {"sums_slot", "strip_slot"}});
   }
 
+  // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
+  // Returns the aggregator's cost words.
   static std::string chain_cost(const RtlDesign& d, CoreBuilder& core) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;

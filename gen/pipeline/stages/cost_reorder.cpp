@@ -93,7 +93,6 @@ class CostReorderStage : public Stage {
                    {"extra_q", "code_penalties"}});
   }
 
-  // ---- HLS: aggregate's to_chain_order.
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
@@ -117,6 +116,7 @@ class CostReorderStage : public Stage {
     core.wire("code_data", 2 * int64_t(code_bits) * P);
   }
 
+  // ---- HLS: aggregate's to_chain_order.
   std::string hls_calls(const RtlDesign&, HlsStreams&) const override {
     return "\n  // Cost reorder: in aggregate (to_chain_order).\n";
   }

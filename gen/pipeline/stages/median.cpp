@@ -1,6 +1,6 @@
 // Median filter (fpstereo_median): its window's newest word is rm rows and rm slots past the
-// centre; the selection takes three steps per word bit, and a step each for the window and the
-// result.
+// centre (with strips, ceil(rm / P) slots: P medians a slot); the selection takes three steps per
+// word bit, and a step each for the window and the result.
 #include <fmt/core.h>
 
 #include "hls_text.hpp"
@@ -16,17 +16,18 @@ class MedianStage : public Stage {
   std::vector<std::string> knobs() const override { return {"median"}; }
   Latency latency(const Geometry& g) const override {
     const int rm = g.cfg.median / 2;
-    return {rm, rm, 2 + 3 * g.widths.output_word};
+    return {rm, (rm + g.strips - 1) / g.strips, 2 + 3 * g.widths.output_word};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    return {{"core.median.line_window.line_buffer.mem", g.row_slots, int64_t(g.cfg.median - 1) * g.widths.output_word}};
+    return {{"core.median.line_window.line_buffer.mem", g.row_slots,
+             int64_t(g.cfg.median - 1) * g.widths.output_word * g.strips}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
     const PixelStream in = streams.pixels;
     const PixelStream& out = streams.pixels = {"", "median_event", "median_x", "median_y", "median_word"};
     core.text("\n  // Median filter.\n");
-    stream_wires(core, d, out);
+    stream_wires(core, d, out, d.widths.output_word * d.strips);
     core.instance("fpstereo_median", "median",
                   {{"M", num(d.cfg.median)},
                    {"ROW_SLOTS", num(d.row_slots)},
@@ -34,7 +35,8 @@ class MedianStage : public Stage {
                    {"EXTRA_ROWS", d.cfg.gap_interpolation ? "1" : "0"},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
-                   {"SIGNED_Y_W", num(d.signed_y_bits)}},
+                   {"SIGNED_Y_W", num(d.signed_y_bits)},
+                   {"P", num(d.strips)}},
                   Connections{{"in_done", in.done}} + stream_connections(in, out));
   }
 
