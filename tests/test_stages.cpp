@@ -39,16 +39,18 @@ std::vector<StereoConfig> covering_configs() {
       c.speckle_size = cost == CostFunction::Census || cost == CostFunction::Rank ? 6 : 0;
       out.push_back(c);
     }
-  // Beats of two pixels (uf = dmax), which the top's beat split and pack serve.
+  // Beats of two pixels (uf = dmax) with an option the strips lack, which the top's beat split and
+  // pack serve for the one-pixel core.
   StereoConfig beats;
   beats.width = 64;
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
+  beats.uniqueness = 10;
   out.push_back(beats);
-  // ... and in strips, where the core takes a beat a step (census, no post-processing).
+  // ... and in strips, where the core takes a beat a step (census and the median).
   StereoConfig strips = beats;
-  strips.median = 0;
+  strips.uniqueness = 0;
   strips.ppc = 4;
   strips.width = 128;
   out.push_back(strips);
