@@ -60,6 +60,19 @@ module fpstereo_strip_disparity_reorder #(
   reg  [X_W-1:0] so;
   wire [Y_W-1:0] to;
   wire row_ends = adv && out_on && so == LAST_SLOT;
+  // The strip of slot so and the slot within it, counters (no division by WORDS).
+  localparam integer LAST_WORD_I = WORDS - 1;
+  localparam [X_W-1:0] LAST_WORD = LAST_WORD_I[X_W-1:0];
+  reg [STRIP_W-1:0] strip_of;
+  reg [X_W-1:0] in_strip;
+  always @(posedge clk)
+    if (restart || row_ends) begin
+      strip_of <= {STRIP_W{1'b0}};
+      in_strip <= {X_W{1'b0}};
+    end else if (adv && out_on) begin
+      if (in_strip == LAST_WORD) strip_of <= strip_of + 1'b1;
+      in_strip <= in_strip == LAST_WORD ? {X_W{1'b0}} : in_strip + 1'b1;
+    end
   /* verilator lint_off PINCONNECTEMPTY */
   fpstereo_frame_row #(.Y_W(Y_W)) output_row (
     .clk(clk), .restart(restart), .next(row_ends), .wrap(overlap), .height(frame_height), .row(to), .last());
@@ -69,7 +82,6 @@ module fpstereo_strip_disparity_reorder #(
     else if (adv && out_on) so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
   /* verilator lint_off WIDTH */
   wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && to < frame_height;
-  wire [STRIP_W-1:0] strip_of = so / WORDS;
   /* verilator lint_on WIDTH */
   reg [STRIP_W-1:0] strip_q;
   reg read_was_valid;
@@ -96,8 +108,6 @@ module fpstereo_strip_disparity_reorder #(
       localparam AW = $clog2(DEPTH);
       localparam integer FIRST_I = s * STRIP_PIXELS;
       localparam [X_W-1:0] FIRST = FIRST_I[X_W-1:0];
-      localparam integer FIRST_SLOT_I = s * WORDS;
-      localparam [X_W-1:0] FIRST_SLOT = FIRST_SLOT_I[X_W-1:0];
       localparam integer LAST_ROW_I = ROWS - 1;
       localparam [SLOT_W-1:0] LAST_ROW = LAST_ROW_I[SLOT_W-1:0];
       // The output's row slot in this strip's RAM.
@@ -108,7 +118,7 @@ module fpstereo_strip_disparity_reorder #(
       wire [X_W-1:0] wx = x[s*X_W +: X_W] - FIRST;
       /* verilator lint_off WIDTH */  // products of narrow values and constants, cut to the address
       wire [AW-1:0] waddr = slot[s*SLOT_W +: SLOT_W] * WORDS + (wx >> LOG_P);
-      wire [AW-1:0] raddr = out_slot * WORDS + (so - FIRST_SLOT);
+      wire [AW-1:0] raddr = out_slot * WORDS + in_strip;
       /* verilator lint_on WIDTH */
       for (q = 0; q < P; q = q + 1) begin : bank
         wire write = adv && active[s] && wx[LOG_P-1:0] == q;
