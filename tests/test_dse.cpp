@@ -316,6 +316,28 @@ TEST_CASE("any parameter of the table is an axis, set through the table like its
   }
 }
 
+TEST_CASE("the pixels-per-clock axis: one accuracy run for its values, the strips' frame rate", "[dse]") {
+  // ppc needs uf = dmax: accepted as an axis, skipped where uf is below dmax.
+  dse::SpaceText t = single_design_space();
+  dse::set_axis(t, {"uf", {"16", "64"}});
+  dse::set_axis(t, dse::parse_axis("ppc=1,2,4"));
+  std::vector<dse::Skipped> skipped;
+  const std::vector<StereoConfig> configs = dse::enumerate(dse::parse_space(t), StereoConfig{}, skipped);
+  REQUIRE(configs.size() == 4);  // uf 16 at ppc 1, uf 64 at ppc 1, 2, 4
+  CHECK(skipped.size() == 2);
+  std::set<std::string> keys;
+  std::map<int, double> fps;
+  for (const auto& c : configs) {
+    keys.insert(dse::accuracy_key(c));
+    if (c.uf == 64) fps[c.ppc] = dse::frames_per_second(rtl::plan(c), 200);
+  }
+  CHECK(keys.size() == 1);  // ppc, like uf, leaves the output as it is
+  // 320 wide, census 5 with the median: in strips, so about ppc times the frames of ppc 1.
+  REQUIRE(fps.size() == 3);
+  CHECK(fps[2] > 1.9 * fps[1]);
+  CHECK(fps[4] > 3.5 * fps[1]);
+}
+
 TEST_CASE("a value is refused only when no combination could use it", "[dse]") {
   // p1 200 exceeds the default p2 (86) but not every p2: it is skipped per combination.
   dse::SpaceText t = single_design_space();

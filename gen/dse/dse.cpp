@@ -58,8 +58,9 @@ std::vector<Setting> settings(const std::string& axis, const std::string& value)
 
 // Validates a value on its own: the other parameters are set to what suits any legal value (uf 1
 // divides every dmax, the smallest dmax fits any width, P2 at its largest is above any P1 and P1 at
-// 0 below any P2, the left-right check the right view needs is on), and for a uf the smallest
-// dmax it divides. So only a value that no combination could use is an error; the rest are skipped
+// 0 below any P2, the left-right check the right view needs is on), for a uf the smallest
+// dmax it divides, and for ppc uf = dmax. So only a value that no combination could use is an
+// error; the rest are skipped
 // per combination.
 void check_alone(const std::string& axis, const std::vector<Setting>& value) {
   StereoConfig probe;
@@ -71,6 +72,7 @@ void check_alone(const std::string& axis, const std::vector<Setting>& value) {
   probe.lr = LrCheck::Lr1;
   for (const Setting& s : value) set_param(probe, s.parameter, s.value);
   if (axis == "uf") probe.dmax = probe.uf * ((16 + probe.uf - 1) / probe.uf);
+  if (axis == "ppc") probe.uf = probe.dmax;  // pixels per clock need uf = dmax
   validate(probe);
 }
 
@@ -276,6 +278,7 @@ std::string accuracy_key(const StereoConfig& cfg) {
   StereoConfig c = cfg;
   c.width = c.height = 0;
   c.uf = 0;
+  c.ppc = 1;  // hardware only, as uf
   return describe(c);
 }
 

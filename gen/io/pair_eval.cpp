@@ -36,6 +36,7 @@ StereoConfig config_for_pair(const StereoConfig& cfg, const PairInputs& in) {
   StereoConfig run = cfg;
   run.width = in.left.width;
   run.height = in.left.height;
+  run.ppc = 1;  // the hardware's beats: the models ignore them, and a pair's width need not be whole beats
   try {
     check_pair(in.left, in.right, run);
     validate(run);
