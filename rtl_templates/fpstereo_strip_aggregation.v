@@ -16,7 +16,8 @@
 // CODES) the entries come from fpstereo_strip_code_reorder instead, written in raster order a
 // slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
 // strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
-// go on to a winner-take-all (fpstereo_wta) and its words to fpstereo_strip_disparity_reorder,
+// go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
+// check) and its words to fpstereo_strip_disparity_reorder,
 // read from out_on on in raster order a slot of P pixels a step (the strips' OUT_ROWS are then
 // (P - p) * K + 1 and the parameter is unused).
 module fpstereo_strip_aggregation #(
@@ -56,7 +57,9 @@ module fpstereo_strip_aggregation #(
   parameter SLOT_W = 4,
   parameter OUTPUT = 0,
   parameter DISP_W = 4,
-  parameter WTA_TREE_LAT = 2
+  parameter WTA_TREE_LAT = 2,
+  parameter WTA_LEVELS_PER_STAGE = LEVELS_PER_STAGE,
+  parameter UNIQUE = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -86,6 +89,7 @@ module fpstereo_strip_aggregation #(
   // with OUTPUT: the raster order's stream (fpstereo_strip_disparity_reorder)
   /* verilator lint_off UNUSEDSIGNAL */  // without OUTPUT
   input  wire                  out_on,
+  input  wire [6:0]            uniqueness,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire                  read_done,
   output wire                  read_event,
@@ -185,12 +189,22 @@ module fpstereo_strip_aggregation #(
       wire [P*(DISP_W+1)-1:0] wta_word;
       for (p = 0; p < P; p = p + 1) begin : wta_of_strip
         /* verilator lint_off PINCONNECTEMPTY */
-        fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
-                       .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
-          .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
-          .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
-          .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
-          .word(wta_word[p*(DISP_W+1) +: DISP_W+1]));
+        if (UNIQUE != 0) begin : with_uniqueness
+          fpstereo_wta_unique #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
+                                .LEVELS_PER_STAGE(WTA_LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+            .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
+            .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .uniqueness(uniqueness), .group_out(),
+            .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .word(wta_word[p*(DISP_W+1) +: DISP_W+1]), .best_sum(), .second_sum());
+        end else begin : plain
+          fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
+                         .LEVELS_PER_STAGE(WTA_LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+            .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
+            .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
+            .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .word(wta_word[p*(DISP_W+1) +: DISP_W+1]));
+        end
         /* verilator lint_on PINCONNECTEMPTY */
       end
       fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(DISP_W), .X_W(X_W),

@@ -46,11 +46,12 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.uniqueness = 10;
+  beats.subpixel_bits = 2;
   out.push_back(beats);
-  // ... and in strips, where the core takes a beat a step (census and the median).
+  // ... and in strips, where the core takes a beat a step (census, uniqueness and the median).
   StereoConfig strips = beats;
-  strips.uniqueness = 0;
+  strips.subpixel_bits = 0;
+  strips.uniqueness = 10;
   strips.ppc = 4;
   strips.width = 128;
   out.push_back(strips);

@@ -90,6 +90,7 @@ class AggregationStage : public Stage {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
     const int P = d.strips, code_bits = std::max(1, w.code);
+    const bool unique = c.uniqueness != 0;  // a winner-take-all with the uniqueness check per strip
     core.text(fmt::format("\n  // Aggregation in {} strips of {} interleaved chains, from step AGG_START, to the raster\n"
                           "  // order's slots of {} pixels.\n",
                           P, d.chains, P));
@@ -116,14 +117,18 @@ class AggregationStage : public Stage {
                                   {"SLOT_W", num(d.cost_row_bits)},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
-                                  {"WTA_TREE_LAT", num(d.wta_tree_latency)}},
+                                  {"UNIQUE", unique ? "1" : "0"},
+                                  {"WTA_LEVELS_PER_STAGE",
+                                   num(unique ? Geometry::kUniqueLevelsPerStage : d.levels_per_stage)},
+                                  {"WTA_TREE_LAT", num(unique ? d.unique_tree_latency : d.wta_tree_latency)}},
                   {{"cost_raddr", "strip_raddr"},
                    {"cost_q", fmt::format("{}'d0", 2 * P * code_bits)},
                    {"sums", "strip_sums"},
                    {"sums_active", "strip_active"},
                    {"sums_x", "strip_x"},
                    {"sums_chain", "strip_chain"},
-                   {"sums_slot", "strip_slot"}});
+                   {"sums_slot", "strip_slot"},
+                   {"uniqueness", unique ? "uniqueness" : "7'd0"}});
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).
