@@ -13,11 +13,11 @@
 // Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
 // the frame's last row. If the next frame has begun by the step that would take its first pixel
 // (next_frame), its rows follow at once (next_taken, and `continuing` until the next frame's own
-// rows end); otherwise the input stays closed and the frame drains as a lone one. `wrapped`: the
-// rows have wrapped since the restart, so the rows above row 0 are the previous frame's.
-// With G = 1 that step is the frame's last slot, which comes sooner than a following frame's first
-// pixel can: `hold` stops the pipeline for FOLLOW_WAIT cycles there (only in the last row of a
-// frame that may be followed), so that a frame sent on time is taken.
+// rows end); otherwise the input stays closed and the frame drains as a lone one. With G = 1 that
+// step is the frame's last slot, which comes sooner than a following frame's first pixel can:
+// `hold` stops the pipeline for FOLLOW_WAIT cycles there (only in the last row of a frame that
+// may be followed), so that a frame sent on time is taken. `wrapped`: the rows have wrapped since
+// the restart, so the rows above row 0 are the previous frame's.
 module fpstereo_front_end #(
   parameter N = 5,
   parameter ROW_SLOTS = 64,
@@ -225,8 +225,8 @@ module fpstereo_front_end #(
       newest_slot <= newest_slot == LAST_COST_ROW ? {COST_ROW_W{1'b0}} : newest_slot + 1'b1;
       newest_prev_slot <= newest_slot;
     end
-  // The centre lies in the previous row-time while the input slot is below CENTRE_LAG: a register that
-  // moves with the slot counter (slot 0 after a restart), so the rows' mux starts from it.
+  // The centre lies in the previous row-time while the input slot is below CENTRE_LAG: a register
+  // that moves with the slot counter (slot 0 after a restart), so the rows' mux starts from it.
   reg borrow;
   always @(posedge clk)
     if (restart) borrow <= 1'b1;

@@ -1,13 +1,14 @@
 `resetall
 `default_nettype none
 // The code reorder RAM over P strips of a row (docs/ppc-hardware.md, "Memories";
-// fpstereo_strip_aggregation places it): the front end writes a slot's P entries (P consecutive pixels, {match, base} each) at once in raster
-// order, and strip s's aggregator reads one entry a step in its chain order. A slot lies in one
-// strip (STRIP_PIXELS is a multiple of P), so strip s has a RAM of its own whose word is a slot's
-// entries, and the read picks the entry by the address' low bits, registered with the word.
-// Strip s reads a row during the K row-times that follow the strip's lag of s * K, so its RAM
-// holds (s + 1) * K rows: row r takes row slot r mod (s + 1) * K. The write's row slot counts
-// modulo SLOT_ROWS, a multiple of every strip's rows, so each strip's is a constant modulus of it.
+// fpstereo_strip_aggregation places it): the front end writes a slot's P entries (P consecutive
+// pixels, {match, base} each) at once in raster order, and strip s's aggregator reads one entry a
+// step in its chain order. A slot lies in one strip (STRIP_PIXELS is a multiple of P), so strip s
+// has a RAM of its own whose word is a slot's entries, and the read picks the entry by the address'
+// low bits, registered with the word. Strip s reads a row during the K row-times that follow the
+// strip's lag of s * K, so its RAM holds (s + 1) * K rows: row r takes row slot r mod (s + 1) * K.
+// The write's row slot counts modulo SLOT_ROWS, a multiple of every strip's rows, so each strip's
+// is a constant modulus of it.
 module fpstereo_strip_code_reorder #(
   parameter P = 2,
   parameter K = 5,

@@ -1,16 +1,16 @@
 `resetall
 `default_nettype none
-// The disparity reorder RAM over P strips of a row and the output's raster order at P pixels a
-// slot (docs/ppc-hardware.md, "Memories"; fpstereo_strip_aggregation places it). Strip s's winner-take-all writes one word a step
-// in the strip's chain order; from out_on on, one slot (P consecutive pixels, which lie in one
-// strip) is read a step in raster order. Strip s has P banks, bank q holding its pixels x with
-// x mod P = q, so that a slot's P words are read at once, each bank written a word at a time.
-// Strip s writes a row from the row-time s * K after its first chain's to K - 1 later, and the
-// output reads it P * K row-times after strip 0 began it: the strip's RAM holds
-// (P - s) * K + 1 rows, and it and the output keep the row's slot modulo that, each a counter.
-// The read stream as fpstereo_disparity_reorder's: read_done in the step after each slot's read,
-// read_event where the slot holds pixels of the frame, its slot read_x (pixels read_x * P + q) and
-// row, and the P words; rows below the frame and bubble slots read invalid words.
+// The disparity reorder RAM over P strips of a row and the output's raster order at P pixels a slot
+// (docs/ppc-hardware.md, "Memories"; fpstereo_strip_aggregation places it). Strip s's
+// winner-take-all writes one word a step in the strip's chain order; from out_on on, one slot (P
+// consecutive pixels, which lie in one strip) is read a step in raster order. Strip s has P banks,
+// bank q holding its pixels x with x mod P = q, so that a slot's P words are read at once, each
+// bank written a word at a time. Strip s writes a row from the row-time s * K after its first
+// chain's to K - 1 later, and the output reads it P * K row-times after strip 0 began it: the
+// strip's RAM holds (P - s) * K + 1 rows, and it and the output keep the row's slot modulo that,
+// each a counter. The read stream as fpstereo_disparity_reorder's: read_done in the step after each
+// slot's read, read_event where the slot holds pixels of the frame, its slot read_x (pixels read_x
+// * P + q) and row, and the P words; rows below the frame and bubble slots read invalid words.
 module fpstereo_strip_disparity_reorder #(
   parameter P = 2,
   parameter K = 5,
