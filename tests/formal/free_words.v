@@ -5,15 +5,17 @@
 module fpstereo_window #(
   parameter N = 7,
   parameter WORD_W = 8,
+  parameter P = 1,
+  parameter COLS = N + P - 1,
   parameter ROW_SLOTS = 64,
   parameter ADDR_W = 6
 ) (
-  input  wire                  clk,
-  input  wire                  shift,
-  input  wire [ADDR_W-1:0]     col,
-  input  wire [ADDR_W-1:0]     next_col,
-  input  wire [WORD_W-1:0]     word,
-  output wire [N*N*WORD_W-1:0] window
+  input  wire                     clk,
+  input  wire                     shift,
+  input  wire [ADDR_W-1:0]        col,
+  input  wire [ADDR_W-1:0]        next_col,
+  input  wire [P*WORD_W-1:0]      word,
+  output wire [N*COLS*WORD_W-1:0] window
 );
   assign window = $anyseq;
 endmodule
