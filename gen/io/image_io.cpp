@@ -350,6 +350,14 @@ GrayImage upscale(const GrayImage& image, int factor) {
   return result;
 }
 
+void start_image_codecs() {
+  try {
+    without_stderr([] { (void)cv::haveImageReader(""); });
+  } catch (...) {
+    // Not built: the first decode builds it and reports what fails there.
+  }
+}
+
 GrayImage load_gray(const std::string& path, const std::string& role) {
   try {
     return to_gray_image(decode(read_bytes(path, role), path, role), role + " " + quoted(path));

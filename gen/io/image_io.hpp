@@ -22,6 +22,11 @@ class InputError : public std::runtime_error {
 // Reads any image OpenCV decodes and returns it as 8-bit gray (colour and alpha images are
 // converted with cv::cvtColor). `role` names the image in messages, e.g. "left image".
 GrayImage load_gray(const std::string& path, const std::string& role);
+
+// Builds OpenCV's image codec registry now. It is built on first use, and registering its GDAL
+// decoder aborts the process when memory runs out: a program that decodes images calls this as
+// it starts, so that the registry is part of what it needs to start, not an abort mid-run.
+void start_image_codecs();
 // A decoded image (8-bit, 1, 3 or 4 channels) converted as load_gray converts a file; `what`
 // names it in messages. Throws InputError.
 GrayImage to_gray_image(const cv::Mat& decoded, const std::string& what);

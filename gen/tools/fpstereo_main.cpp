@@ -184,6 +184,7 @@ int run_command_line(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  fpstereo::start_image_codecs();
   const int exit_code = run_command_line(argc, argv);
   fpstereo::die_if_interrupted();  // a signal during synth: end by it, as without the handler
   return exit_code;
