@@ -86,7 +86,7 @@ module fpstereo_front_end #(
     end
   endgenerate
   localparam R = N / 2;
-  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam LOG_P = $clog2(P);
   localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
   localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
   wire [X_W:0] width_x = {1'b0, frame_width};

@@ -8,7 +8,9 @@
 // low bits, registered with the word. Strip s reads a row during the K row-times that follow the
 // strip's lag of s * K, so its RAM holds (s + 1) * K rows: row r takes row slot r mod (s + 1) * K.
 // The write's row slot counts modulo SLOT_ROWS, a multiple of every strip's rows, so each strip's
-// is a constant modulus of it.
+// is a constant modulus of it. A write reaches its RAM a clock after its inputs: each strip
+// registers whether it is its own, its row's first word and the slot's word within the row, so
+// that neither the frame's bounds (in we) nor the modulus lie on a path with the address' sum.
 module fpstereo_strip_code_reorder #(
   parameter P = 2,
   parameter K = 5,
@@ -32,7 +34,7 @@ module fpstereo_strip_code_reorder #(
   output wire [P*ENTRY_W-1:0] q
 );
   localparam WORDS = STRIP_PIXELS / P;  // a strip's words per row
-  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam LOG_P = $clog2(P);
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * WORDS > (1 << X_W) || SLOT_ROWS > (1 << SLOT_W) ||
@@ -40,6 +42,8 @@ module fpstereo_strip_code_reorder #(
       fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_or_widths failed ();
     end
   endgenerate
+  reg [P*ENTRY_W-1:0] write_data;  // the strips' writes a clock later (below)
+  always @(posedge clk) write_data <= wdata;
   genvar s;
   generate
     for (s = 0; s < P; s = s + 1) begin : strip
@@ -59,13 +63,22 @@ module fpstereo_strip_code_reorder #(
       end
       // The address is a product of narrow values and constants, cut to the RAM's address width.
       /* verilator lint_off WIDTH */
-      wire [RAM_AW-1:0] waddr = (wrow % ROWS) * WORDS + (wslot - FIRST);
+      wire [RAM_AW-1:0] row_first = (wrow % ROWS) * WORDS;
+      wire [RAM_AW-1:0] word_in_row = wslot - FIRST;
       wire [AW-1:0] at = raddr[s*AW +: AW];
       wire [RAM_AW-1:0] word_addr = at >> LOG_P;
       /* verilator lint_on WIDTH */
+      reg write = 1'b0;
+      reg [RAM_AW-1:0] write_first, write_word;
+      always @(posedge clk) begin
+        write <= we && mine;
+        write_first <= row_first;
+        write_word <= word_in_row;
+      end
       wire [P*ENTRY_W-1:0] word;
       fpstereo_ram_sdp #(.WIDTH(P*ENTRY_W), .DEPTH(DEPTH), .ADDR_W(RAM_AW)) ram (
-        .clk(clk), .we(we && mine), .waddr(waddr), .wdata(wdata), .re(adv), .raddr(word_addr), .rdata(word));
+        .clk(clk), .we(write), .waddr(write_first + write_word), .wdata(write_data), .re(adv), .raddr(word_addr),
+        .rdata(word));
       reg [LOG_P-1:0] pick;
       always @(posedge clk)
         if (adv) pick <= at[LOG_P-1:0];

@@ -42,7 +42,7 @@ module fpstereo_strip_disparity_reorder #(
   output wire [P*(DISP_W+1)-1:0] read_word
 );
   localparam WORDS = STRIP_PIXELS / P;  // a strip's slots per row
-  localparam LOG_P = P == 4 ? 2 : P == 2 ? 1 : 0;
+  localparam LOG_P = $clog2(P);
   localparam WORD_W = DISP_W + 1;
   localparam STRIP_W = $clog2(P);
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.

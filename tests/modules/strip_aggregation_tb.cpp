@@ -34,10 +34,11 @@ struct StripParams {
       LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4, OUTPUT = 0, DISP_W = 4, WTA_TREE_LAT = 2;
 };
 
-// Steps from the first write of a frame's codes to the aggregation's start, with RAM. Strip 0
-// must read a row before the row (p + 1) * K later overwrites it, which bounds the lead at
-// (K * SEGMENT - 1) / P + 1: measured, at P = 4, K = 5, SEGMENT = 4 a lead of 5 passes and 6 fails.
-constexpr long kRamLead = 1;
+// Steps from the first write of a frame's codes to the aggregation's start, with RAM: a write
+// reaches its RAM a clock after its inputs, so the lead is at least 2. Strip 0 must read a row
+// before the row (p + 1) * K later overwrites it, which bounds the lead at (K * SEGMENT - 1) / P + 1:
+// measured, at P = 4, K = 5, SEGMENT = 4 a lead of 5 passes and 6 fails.
+constexpr long kRamLead = 2;
 // With OUTPUT, the output's start: P * K row-times after the aggregation's (the last strip's last
 // chain finishes a row P * K - 1 row-times after the first strip's first chain began it) and a few
 // steps for the pipeline from a chain's read address to its word at the winner-take-all. Measured

@@ -15,7 +15,9 @@ class CostReorderStage : public Stage {
  public:
   std::string title() const override { return "cost reorder"; }
   std::vector<std::string> knobs() const override { return {"uf"}; }
-  Latency latency(const Geometry&) const override { return {0, 0, 1}; }  // written, then read
+  // Written, then read; in strips a write reaches its strip's RAM a clock later
+  // (fpstereo_strip_code_reorder registers it).
+  Latency latency(const Geometry& g) const override { return {0, 0, g.strips > 1 ? 2 : 1}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) {
       // Strip s's code RAM: (s + 1) * K rows of R / P words, a slot's P entries each.
