@@ -168,6 +168,7 @@ class StereoSGM {
 PYBIND11_MODULE(fpstereo, m) {
   using namespace fpstereo;
   m.doc() = "fpstereo: the SGM pipeline's golden model, bit-exact with the generated hardware";
+  start_image_codecs();  // its registry built on import, not in a later decode (image_io.hpp)
   // The CLIs' bad-input errors, one line each, as ValueError ("invalid config: ..." like the CLI).
   py::register_exception_translator([](std::exception_ptr p) {
     try {

@@ -670,6 +670,7 @@ int run_bench(const Options& opt) {
 int main(int argc, char** argv) {
   using namespace fpstereo;
   using namespace fpstereo::tb;
+  start_image_codecs();  // its registry built as the program starts (image_io.hpp)
   CLI::App app{"fpstereo-tb: checks the Verilated SGM pipeline against the golden model, bit for bit"};
   Options opt;
   auto* left = app.add_option("--left", opt.left, "left (base) image file");

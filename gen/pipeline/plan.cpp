@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 
@@ -55,12 +56,6 @@ bool strip_options(const StereoConfig& c) {
   return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && c.lr == LrCheck::None &&
          !c.gap_interpolation && c.subpixel_bits == 0 && !c.confidence &&
          c.p2_adapt == 0 && c.fused_weight == 0 && c.min_disp == 0 && c.speckle_size == 0 && !c.right_view;
-}
-
-int64_t lcm(int64_t a, int64_t b) {
-  int64_t x = a, y = b;
-  while (y != 0) std::tie(x, y) = std::pair<int64_t, int64_t>{y, x % y};
-  return a / x * b;
 }
 
 }  // namespace
@@ -155,7 +150,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
     g.cost_rows = g.strips * g.chains;
     g.out_rows = g.strips * g.chains + 1;
     g.slot_rows = 1;
-    for (int s = 1; s <= g.strips; ++s) g.slot_rows = int(lcm(g.slot_rows, int64_t(s) * g.chains));
+    for (int s = 1; s <= g.strips; ++s) g.slot_rows = std::lcm(g.slot_rows, s * g.chains);
   }
   g.carries_whole = cfg.subpixel_bits != 0 && cfg.lr != LrCheck::None;
   g.reorder_word_bits = g.widths.output_word + (g.carries_whole ? g.widths.disparity : 0);
