@@ -17,9 +17,9 @@
 // slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
 // strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
 // go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
-// check) and its words to fpstereo_strip_disparity_reorder,
-// read from out_on on in raster order a slot of P pixels a step (the strips' OUT_ROWS are then
-// (P - p) * K + 1 and the parameter is unused).
+// check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), and its words to
+// fpstereo_strip_disparity_reorder, read from out_on on in raster order a slot of P pixels a step
+// (the strips' OUT_ROWS are then (P - p) * K + 1 and the parameter is unused).
 module fpstereo_strip_aggregation #(
   parameter P = 2,
   parameter W = 64,
@@ -56,10 +56,16 @@ module fpstereo_strip_aggregation #(
   parameter SLOT_ROWS = 10,
   parameter SLOT_W = 4,
   parameter OUTPUT = 0,
+  // the output words' disparity width; the winner's (whole pixels) is WTA_DISP_W
   parameter DISP_W = 4,
+  parameter WTA_DISP_W = DISP_W,
   parameter WTA_TREE_LAT = 2,
   parameter WTA_LEVELS_PER_STAGE = LEVELS_PER_STAGE,
-  parameter UNIQUE = 0
+  parameter UNIQUE = 0,
+  // fpstereo_subpixel's fraction bits (0: none), its fit and the winner's word lag behind the sums
+  parameter SUBPIXEL_BITS = 0,
+  parameter EQUIANGULAR = 1,
+  parameter WTA_WORD_LAG = 1
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -186,31 +192,58 @@ module fpstereo_strip_aggregation #(
       wire [P-1:0] wta_active;
       wire [P*X_W-1:0] wta_x;
       wire [P*OUT_ROW_W-1:0] wta_slot;
-      wire [P*(DISP_W+1)-1:0] wta_word;
+      wire [P*(WTA_DISP_W+1)-1:0] wta_word;
       for (p = 0; p < P; p = p + 1) begin : wta_of_strip
         /* verilator lint_off PINCONNECTEMPTY */
         if (UNIQUE != 0) begin : with_uniqueness
-          fpstereo_wta_unique #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
+          fpstereo_wta_unique #(.UF(UF), .SUM_W(SUM_W), .DISP_W(WTA_DISP_W), .LANE_W(WTA_DISP_W), .G_W(1),
+                                .TAG_W(TAG_W),
                                 .LEVELS_PER_STAGE(WTA_LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
             .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
             .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
             .uniqueness(uniqueness), .group_out(),
             .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
-            .word(wta_word[p*(DISP_W+1) +: DISP_W+1]), .best_sum(), .second_sum());
+            .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]), .best_sum(), .second_sum());
         end else begin : plain
-          fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(DISP_W), .LANE_W(DISP_W), .G_W(1), .TAG_W(TAG_W),
+          fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(WTA_DISP_W), .LANE_W(WTA_DISP_W), .G_W(1),
+                         .TAG_W(TAG_W),
                          .LEVELS_PER_STAGE(WTA_LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
             .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]), .group(1'b0),
             .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
             .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
-            .word(wta_word[p*(DISP_W+1) +: DISP_W+1]));
+            .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]));
         end
         /* verilator lint_on PINCONNECTEMPTY */
+      end
+      // The words the disparity RAMs take: the winner's, or refined by the sub-pixel fit.
+      wire [P-1:0] out_active;
+      wire [P*X_W-1:0] out_x;
+      wire [P*OUT_ROW_W-1:0] out_slot;
+      wire [P*(DISP_W+1)-1:0] out_word;
+      if (SUBPIXEL_BITS != 0) begin : refined
+        for (p = 0; p < P; p = p + 1) begin : fit_of_strip
+          fpstereo_subpixel #(.UF(UF), .G(1), .SUM_W(SUM_W), .DMAX(UF), .DISP_W(WTA_DISP_W),
+                              .K(SUBPIXEL_BITS), .EQUIANGULAR(EQUIANGULAR), .OUT_W(DISP_W),
+                              .WTA_WORD_LAG(WTA_WORD_LAG), .TAG_W(TAG_W)) fit (
+            .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]),
+            .tag({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]),
+            .tag_out({out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .word_out(out_word[p*(DISP_W+1) +: DISP_W+1]));
+        end
+      end else begin : whole
+        if (WTA_DISP_W != DISP_W) begin : invalid_widths
+          fpstereo_invalid_parameters_strip_aggregation_DISP_W_differs_without_SUBPIXEL_BITS failed ();
+        end
+        assign out_active = wta_active;
+        assign out_x = wta_x;
+        assign out_slot = wta_slot;
+        assign out_word = wta_word;
       end
       fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(DISP_W), .X_W(X_W),
                                          .Y_W(Y_W), .SLOT_W(OUT_ROW_W)) disparities (
         .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
-        .frame_height(frame_height), .active(wta_active), .x(wta_x), .slot(wta_slot), .word(wta_word),
+        .frame_height(frame_height), .active(out_active), .x(out_x), .slot(out_slot), .word(out_word),
         .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));
     end else begin : no_output
       assign read_done = 1'b0;

@@ -116,8 +116,14 @@ synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
   [ -z "$netlist" ] || echo "write_json \"$netlist\""
 } >"$tmp/run.ys"
 
-if ! yosys -q -l "$log" -s "$tmp/run.ys" >/dev/null 2>&1; then
-  err=$(grep -m1 "ERROR:" "$log" || true)
+status=0
+yosys -q -l "$log" -s "$tmp/run.ys" >/dev/null 2>&1 || status=$?
+if [ $status -ne 0 ]; then
+  if [ $status -gt 128 ]; then  # killed: the kernel's out-of-memory killer sends SIGKILL
+    err="killed by signal $((status - 128))$([ $status != 137 ] || echo ' (SIGKILL: out of memory?)')"
+  else
+    err=$(grep -m1 "ERROR:" "$log" || true)
+  fi
   keep_log=1  # named in the message
   die "yosys failed: ${err:-see log} (log: $log)"
 fi

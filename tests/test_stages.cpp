@@ -46,11 +46,13 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.subpixel_bits = 2;
+  beats.confidence = true;
   out.push_back(beats);
-  // ... and in strips, where the core takes a beat a step (census, uniqueness and the median).
+  // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit
+  // and the median).
   StereoConfig strips = beats;
-  strips.subpixel_bits = 0;
+  strips.confidence = false;
+  strips.subpixel_bits = 2;
   strips.uniqueness = 10;
   strips.ppc = 4;
   strips.width = 128;
@@ -123,7 +125,10 @@ TEST_CASE("the schedule is the sum of the stages' latencies", "[stages]") {
     // Back to back, a frame takes its row-times and the wait, once it is taller than the drain.
     const int64_t rows_cycles = int64_t(cfg.height) * d.row_slots * d.groups;
     CHECK(d.cycles_per_frame == (follows_on ? rows_cycles + wait : d.lone_frame_cycles));
-    CHECK(d.overlap_height * d.row_slots * d.groups >= sum + 2 * d.row_slots * d.groups);
+    // Frames follow on when taller than the drain, up to the push of pixel (0, 0) (the output
+    // stage's last kStepsAfterPush steps come after it), by two row-times.
+    const int64_t push_first = sum - rtl::kStepsAfterPush;
+    CHECK(d.overlap_height * d.row_slots * d.groups >= push_first + 2 * d.row_slots * d.groups);
     // Every stage with a schedule of its own has its start step, and only those.
     for (const auto& stage : d.stages)
       CHECK(d.start_steps.count(stage->start_parameter()) == (stage->start_parameter().empty() ? 0u : 1u));

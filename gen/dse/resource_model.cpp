@@ -365,18 +365,23 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double kbits = c.subpixel_bits;
   const double subpixel =
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
-  return {1.0, uf * c.path_count() * w.path_cost * sides, code_lanes, pixel_lanes, ring + ring_features,
-          c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel,
-          c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) : 0.0,
+  // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
+  // winner-take-all, the sub-pixel fit and the median are there once per strip; the options strips
+  // leave out stay 0.
+  const double sets = d.strips;
+  return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
+          (ring + ring_features) * sets,
+          c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel * sets,
+          c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) * sets : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
           // LR2's uf-wide part is the second aggregation (sides); the rest is per design.
           c.lr == LrCheck::Lr2 ? 1.0 : 0.0, zero_mean,
           // fpstereo_wta_unique's tree carries the second-best sum beside the best.
-          d.finds_second_best ? uf * w.aggregated : 0.0,
+          d.finds_second_best ? uf * w.aggregated * sets : 0.0,
           // fpstereo_wta's minimum tree: the base side's without that, and LR2's match side's.
-          ((d.finds_second_best ? 0 : 1) + (c.lr == LrCheck::Lr2 ? 1 : 0)) * uf * w.aggregated,
+          ((d.finds_second_best ? 0 : 1) + (c.lr == LrCheck::Lr2 ? 1 : 0)) * uf * w.aggregated * sets,
           // 8 restoring steps over the sums, the word waiting 10 steps beside them.
-          c.confidence ? 16.0 * w.aggregated + 10 * tag : 0.0, subpixel,
+          c.confidence ? 16.0 * w.aggregated + 10 * tag : 0.0, subpixel * sets,
           // fpstereo_adaptive_p2: per path the pixel step, its product and P2; the penalties
           // then ride above the cost words.
           c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0,
@@ -387,11 +392,14 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           // The read multiplexers of the RAMs whose depth is split over several cells.
           memory_read_mux_bits(d),
           // the FF terms: register bits (see above)
-          aggregator_registers(d, d.penalty_bits) + (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0),
-          cost_registers(d, ring + ring_features) + fused_term_registers(d),
-          winner_registers(d, d.finds_second_best, word_tag) +
-              (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0),
-          median_registers(d), subpixel_registers(d), check_and_gap_registers(d),
+          (aggregator_registers(d, d.penalty_bits) +
+           (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0)) *
+              sets,
+          (cost_registers(d, ring + ring_features) + fused_term_registers(d)) * sets,
+          (winner_registers(d, d.finds_second_best, word_tag) +
+           (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0)) *
+              sets,
+          median_registers(d) * sets, subpixel_registers(d) * sets, check_and_gap_registers(d),
           // SAD, ZSAD and SHD: every lane sums a whole window (fpstereo_window_cost_lanes)
           c.cost == CostFunction::Shd ? code_lanes : pixel_lanes,
           // fpstereo_speckle and its stage: its logic, as LUTs per register bit
@@ -461,7 +469,8 @@ const std::vector<std::string>& dsp_feature_names() {
 // one per lane) and the uniqueness test's products (fpstereo_wta_unique).
 std::vector<double> dsp_features(const rtl::RtlDesign& d) {
   return {1.0, d.cfg.lr == LrCheck::Lr1 ? 1.0 : 0.0, d.cfg.lr == LrCheck::Lr2 ? 1.0 : 0.0,
-          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0, d.cfg.uniqueness != 0 ? 1.0 : 0.0};
+          d.cfg.cost == CostFunction::Zsad ? d.cfg.uf + 1.0 : 0.0,
+          d.cfg.uniqueness != 0 ? double(d.strips) : 0.0};  // a uniqueness test per strip
 }
 
 namespace {

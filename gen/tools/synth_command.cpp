@@ -344,6 +344,20 @@ std::string failure_message(const std::string& stderr_text, int status) {
   return fmt::format("synth-yosys.sh failed with exit status {}", WEXITSTATUS(status));
 }
 
+// A failed run's message names Yosys' log in the work directory, which goes with it: the log moves
+// to the cache's failed/TAG.log (the last failure of each configuration) and the message says so.
+std::string kept_log(std::string message, const fs::path& work, const fs::path& cache_dir,
+                     const std::string& tag) {
+  const std::string log = (work / "yosys.log").string();
+  const size_t at = message.find(log);
+  if (at == std::string::npos) return message;
+  const fs::path kept = cache_dir / "failed" / (tag + ".log");
+  std::error_code error;
+  fs::create_directories(kept.parent_path(), error);
+  if (!error) fs::rename(log, kept, error);
+  return message.replace(at, log.size(), error ? "removed with the work directory" : kept.string());
+}
+
 // The script's warnings as "warning=..." record lines, so a cached report repeats them.
 std::string warning_lines(const std::string& stderr_text) {
   std::string out;
@@ -438,7 +452,8 @@ Record synthesise(const SynthOptions& o, const StereoConfig& cfg, const std::vec
   }
   const std::string out = read_text(work.path() / "synth.out").value_or("");
   const std::string err = read_text(work.path() / "synth.err").value_or("");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw SynthError(failure_message(err, status));
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw SynthError(kept_log(failure_message(err, status), work.path(), cache_dir, tag));
   const std::string text = fmt::format("config={}\n{}synth_seconds={:.1f}\n{}{}", tag, out, seconds,
                                        depth_lines(netlist), warning_lines(err));
   if (!o.netlist.empty()) outputs.stage_copy(o.netlist, netlist);

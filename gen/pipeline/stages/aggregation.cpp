@@ -83,7 +83,8 @@ class AggregationStage : public Stage {
   }
 
   // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,
-  // their chain costs and aggregators, a winner-take-all each and their disparity RAMs, from the
+  // their chain costs and aggregators, a winner-take-all (and sub-pixel fit) each and their
+  // disparity RAMs, from the
   // code writes (the cost reorder stage's) to the raster order at P pixels a step (the pixel
   // stream the disparity reorder stage names, from its OUT_START on).
   static void strips_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) {
@@ -120,7 +121,11 @@ class AggregationStage : public Stage {
                                   {"UNIQUE", unique ? "1" : "0"},
                                   {"WTA_LEVELS_PER_STAGE",
                                    num(unique ? Geometry::kUniqueLevelsPerStage : d.levels_per_stage)},
-                                  {"WTA_TREE_LAT", num(unique ? d.unique_tree_latency : d.wta_tree_latency)}},
+                                  {"WTA_TREE_LAT", num(unique ? d.unique_tree_latency : d.wta_tree_latency)},
+                                  {"WTA_DISP_W", num(w.disparity)},
+                                  {"SUBPIXEL_BITS", num(c.subpixel_bits)},
+                                  {"EQUIANGULAR", c.subpixel_fit == SubpixelFit::Equiangular ? "1" : "0"},
+                                  {"WTA_WORD_LAG", num(d.wta_word_lag)}},
                   {{"cost_raddr", "strip_raddr"},
                    {"cost_q", fmt::format("{}'d0", 2 * P * code_bits)},
                    {"sums", "strip_sums"},

@@ -15,6 +15,7 @@ class SubpixelStage : public Stage {
   Latency latency(const Geometry& g) const override { return {0, 0, g.subpixel_steps}; }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    if (d.strips > 1) return;  // a fit per strip, in fpstereo_strip_aggregation
     // With a left-right check the whole D travels in the tag for the check.
     const bool whole = d.carries_whole;
     const int tag_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + (whole ? d.widths.disparity : 0);
