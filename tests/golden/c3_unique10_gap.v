@@ -1809,35 +1809,66 @@ module fps_census7_d128u32_79bc18_aggregator #(
   // ------------------------------------------------------------------------------------------
   // Aggregation schedule (S0): row-time ta, slot ja * K + ka, group ga. Chain ka works on row
   // ta - ka, pixel x = ka * SEGMENT + ja; its state lives in slot (ka + base) mod K.
-  reg [G_W-1:0] ga;
-  reg [K_W-1:0] ka, base;
-  reg [COST_ROW_W-1:0] ta_slot;       // ta mod COST_ROWS
+  // The cost RAM's read address is a register (logic depth, docs/timing.md): counters a step
+  // ahead (the _a registers, what ga, ka, ja and the row slot become at the next step) feed it,
+  // and ga, ka and ja follow them.
+  reg [G_W-1:0] ga, ga_a;
+  reg [K_W-1:0] ka, ka_a, base;
   reg [OUT_ROW_W-1:0] ta_out_slot;    // ta mod OUT_ROWS
-  reg [X_W-1:0] ja;
+  reg [X_W-1:0] ja, ja_a;
+  // the ahead step's (ta - CHAIN_BASE) mod COST_ROWS, and its chain's row slot
+  reg [COST_ROW_W-1:0] first_slot_a, row_slot_a;
   wire [Y_W-1:0] ta;
-  wire row_time_ends = adv && agg_on && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
+  wire step = adv && agg_on;
+  wire row_time_ends = step && ga == LAST_GROUP && ka == LAST_CHAIN && ja == LAST_SEGMENT_SLOT;
   /* verilator lint_off PINCONNECTEMPTY */
   fps_census7_d128u32_79bc18_frame_row #(.Y_W(Y_W)) row_time (
     .clk(clk), .restart(restart), .next(row_time_ends), .wrap(overlap), .height(frame_height), .row(ta), .last());
   /* verilator lint_on PINCONNECTEMPTY */
+  // The schedule's first two steps (K >= 2): group 0 of chain 0 of slot 0, then group 1 or chain 1.
+  localparam integer FIRST_SLOT_I = (COST_ROWS - CHAIN_BASE % COST_ROWS) % COST_ROWS;
+  localparam integer SECOND_SLOT_I = G == 1 ? (FIRST_SLOT_I + COST_ROWS - 1) % COST_ROWS : FIRST_SLOT_I;
+  localparam [COST_ROW_W-1:0] FIRST_SLOT = FIRST_SLOT_I[COST_ROW_W-1:0];
+  localparam [COST_ROW_W-1:0] SECOND_SLOT = SECOND_SLOT_I[COST_ROW_W-1:0];
+  localparam [G_W-1:0] SECOND_GROUP = G == 1 ? 0 : 1;
+  localparam [K_W-1:0] SECOND_CHAIN = G == 1 ? 1 : 0;
   always @(posedge clk)
     if (restart) begin
       ga <= 0;
       ka <= 0;
       ja <= 0;
       base <= 0;
-      ta_slot <= 0;
       ta_out_slot <= 0;
-    end else if (adv && agg_on) begin
-      ga <= (ga == LAST_GROUP) ? {G_W{1'b0}} : ga + 1'b1;
-      if (ga == LAST_GROUP) begin
-        ka <= (ka == LAST_CHAIN) ? {K_W{1'b0}} : ka + 1'b1;
-        if (ka == LAST_CHAIN) begin
-          ja <= (ja == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja + 1'b1;
-          if (ja == LAST_SEGMENT_SLOT) begin
-            ta_slot <= (ta_slot == COST_ROWS - 1) ? {COST_ROW_W{1'b0}} : ta_slot + 1'b1;
-            ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
-            base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
+    end else if (step) begin
+      ga <= ga_a;
+      ka <= ka_a;
+      ja <= ja_a;
+      if (row_time_ends) begin
+        ta_out_slot <= (ta_out_slot == OUT_ROWS - 1) ? {OUT_ROW_W{1'b0}} : ta_out_slot + 1'b1;
+        base <= (base == 0) ? LAST_CHAIN : base - 1'b1;
+      end
+    end
+  wire [COST_ROW_W-1:0] next_first_slot_a = first_slot_a == COST_ROWS - 1 ? {COST_ROW_W{1'b0}} : first_slot_a + 1'b1;
+  always @(posedge clk)
+    if (restart) begin
+      ga_a <= SECOND_GROUP;
+      ka_a <= SECOND_CHAIN;
+      ja_a <= 0;
+      first_slot_a <= FIRST_SLOT;
+      row_slot_a <= SECOND_SLOT;
+    end else if (step) begin
+      ga_a <= (ga_a == LAST_GROUP) ? {G_W{1'b0}} : ga_a + 1'b1;
+      if (ga_a == LAST_GROUP) begin
+        ka_a <= (ka_a == LAST_CHAIN) ? {K_W{1'b0}} : ka_a + 1'b1;
+        if (ka_a != LAST_CHAIN) begin
+          row_slot_a <= row_slot_a == 0 ? COST_ROWS - 1 : row_slot_a - 1'b1;
+        end else begin
+          ja_a <= (ja_a == LAST_SEGMENT_SLOT) ? {X_W{1'b0}} : ja_a + 1'b1;
+          if (ja_a == LAST_SEGMENT_SLOT) begin
+            first_slot_a <= next_first_slot_a;
+            row_slot_a <= next_first_slot_a;
+          end else begin
+            row_slot_a <= first_slot_a;
           end
         end
       end
@@ -1848,13 +1879,19 @@ module fps_census7_d128u32_79bc18_aggregator #(
   wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
   wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
   wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
-  // (row-time - CHAIN_BASE - ka) modulo the RAMs' rows, kept non-negative
-  localparam integer COST_ROWS_UP = CHAIN_BASE == 0 ? COST_ROWS : ((CHAIN_BASE + K) / COST_ROWS + 1) * COST_ROWS;
+  // (row-time - CHAIN_BASE - ka) modulo the output RAMs' rows, kept non-negative
   localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
-  wire [COST_ROW_W-1:0] row_slot0 = (ta_slot + COST_ROWS_UP - CHAIN_BASE - ka) % COST_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  assign cost_raddr = CODES != 0 ? row_slot0 * ROW_SLOTS + x_local0 : (row_slot0 * ROW_SLOTS + x_local0) * G + ga;
+  wire [COST_AW-1:0] raddr_a = CODES != 0 ? row_slot_a * ROW_SLOTS + ka_a * SEGMENT + ja_a
+                                            : (row_slot_a * ROW_SLOTS + ka_a * SEGMENT + ja_a) * G + ga_a;
+  localparam integer FIRST_RADDR_I = FIRST_SLOT_I * ROW_SLOTS * (CODES != 0 ? 1 : G);
+  localparam [COST_AW-1:0] FIRST_RADDR = FIRST_RADDR_I[COST_AW-1:0];
+  reg [COST_AW-1:0] raddr;
+  always @(posedge clk)
+    if (restart) raddr <= FIRST_RADDR;
+    else if (step) raddr <= raddr_a;
+  assign cost_raddr = raddr;
   assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
 
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
