@@ -17,9 +17,11 @@
 // slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
 // strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
 // go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
-// check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), and its words to
-// fpstereo_strip_disparity_reorder, read from out_on on in raster order a slot of P pixels a step
-// (the strips' OUT_ROWS are then (P - p) * K + 1 and the parameter is unused).
+// check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), with CONFIDENCE the confidence
+// (fpstereo_confidence, from fpstereo_wta_unique's two best sums: UNIQUE must be set), and its
+// words to fpstereo_strip_disparity_reorder, read from out_on on in raster order a slot of P pixels
+// a step, each word with its confidence above it (the strips' OUT_ROWS are then (P - p) * K + 1
+// and the parameter is unused).
 module fpstereo_strip_aggregation #(
   parameter P = 2,
   parameter W = 64,
@@ -65,7 +67,9 @@ module fpstereo_strip_aggregation #(
   // fpstereo_subpixel's fraction bits (0: none), its fit and the winner's word lag behind the sums
   parameter SUBPIXEL_BITS = 0,
   parameter EQUIANGULAR = 1,
-  parameter WTA_WORD_LAG = 1
+  parameter WTA_WORD_LAG = 1,
+  // 1: each word leaves with its pixel's 8-bit confidence above it
+  parameter CONFIDENCE = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -101,12 +105,15 @@ module fpstereo_strip_aggregation #(
   output wire                  read_event,
   output wire [X_W-1:0]        read_x,
   output wire [Y_W-1:0]        read_y,
-  output wire [P*(DISP_W+1)-1:0] read_word
+  output wire [P*(DISP_W+1+8*CONFIDENCE)-1:0] read_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (P < 2 || (P - 1) * ROW_SLOTS >= W || P * ROW_SLOTS < W) begin : invalid_P
       fpstereo_invalid_parameters_strip_aggregation_P_strips_of_ROW_SLOTS_do_not_cover_W failed ();
+    end
+    if (CONFIDENCE != 0 && (UNIQUE == 0 || CONFIDENCE != 1)) begin : invalid_CONFIDENCE
+      fpstereo_invalid_parameters_strip_aggregation_CONFIDENCE_needs_UNIQUE failed ();
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
@@ -193,6 +200,9 @@ module fpstereo_strip_aggregation #(
       wire [P*X_W-1:0] wta_x;
       wire [P*OUT_ROW_W-1:0] wta_slot;
       wire [P*(WTA_DISP_W+1)-1:0] wta_word;
+      /* verilator lint_off UNUSEDSIGNAL */  // without CONFIDENCE
+      wire [P*SUM_W-1:0] wta_best, wta_second;
+      /* verilator lint_on UNUSEDSIGNAL */
       for (p = 0; p < P; p = p + 1) begin : wta_of_strip
         /* verilator lint_off PINCONNECTEMPTY */
         if (UNIQUE != 0) begin : with_uniqueness
@@ -203,7 +213,8 @@ module fpstereo_strip_aggregation #(
             .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
             .uniqueness(uniqueness), .group_out(),
             .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
-            .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]), .best_sum(), .second_sum());
+            .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]), .best_sum(wta_best[p*SUM_W +: SUM_W]),
+            .second_sum(wta_second[p*SUM_W +: SUM_W]));
         end else begin : plain
           fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(WTA_DISP_W), .LANE_W(WTA_DISP_W), .G_W(1),
                          .TAG_W(TAG_W),
@@ -212,6 +223,8 @@ module fpstereo_strip_aggregation #(
             .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
             .tag_out({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
             .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]));
+          assign wta_best[p*SUM_W +: SUM_W] = {SUM_W{1'b0}};
+          assign wta_second[p*SUM_W +: SUM_W] = {SUM_W{1'b0}};
         end
         /* verilator lint_on PINCONNECTEMPTY */
       end
@@ -220,6 +233,34 @@ module fpstereo_strip_aggregation #(
       wire [P*X_W-1:0] out_x;
       wire [P*OUT_ROW_W-1:0] out_slot;
       wire [P*(DISP_W+1)-1:0] out_word;
+      // ... and with CONFIDENCE after the division, with their confidences above them.
+      localparam WORD_W = DISP_W + 1 + 8 * CONFIDENCE;
+      wire [P-1:0] rated_active;
+      wire [P*X_W-1:0] rated_x;
+      wire [P*OUT_ROW_W-1:0] rated_slot;
+      wire [P*WORD_W-1:0] rated_word;
+      for (p = 0; p < P; p = p + 1) begin : confidence_of_strip
+        if (CONFIDENCE != 0) begin : divided
+          localparam DATA_W = 1 + X_W + OUT_ROW_W + DISP_W + 1;
+          wire [7:0] confidence;
+          wire [DISP_W:0] word;
+          // The sub-pixel fit, when there, holds the words its latency after the winner's sums.
+          fpstereo_confidence #(.SUM_W(SUM_W), .DATA_W(DATA_W),
+                                .IN_DELAY(SUBPIXEL_BITS != 0 ? SUBPIXEL_BITS + 6 : 0), .LAT(10)) divider (
+            .clk(clk), .restart(restart), .adv(adv), .best(wta_best[p*SUM_W +: SUM_W]),
+            .second(wta_second[p*SUM_W +: SUM_W]),
+            .data_in({out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W],
+                      out_word[p*(DISP_W+1) +: DISP_W+1]}),
+            .data_out({rated_active[p], rated_x[p*X_W +: X_W], rated_slot[p*OUT_ROW_W +: OUT_ROW_W], word}),
+            .confidence(confidence));
+          assign rated_word[p*WORD_W +: WORD_W] = {confidence, word};
+        end else begin : passed
+          assign rated_active[p] = out_active[p];
+          assign rated_x[p*X_W +: X_W] = out_x[p*X_W +: X_W];
+          assign rated_slot[p*OUT_ROW_W +: OUT_ROW_W] = out_slot[p*OUT_ROW_W +: OUT_ROW_W];
+          assign rated_word[p*WORD_W +: WORD_W] = out_word[p*(DISP_W+1) +: DISP_W+1];
+        end
+      end
       if (SUBPIXEL_BITS != 0) begin : refined
         for (p = 0; p < P; p = p + 1) begin : fit_of_strip
           fpstereo_subpixel #(.UF(UF), .G(1), .SUM_W(SUM_W), .DMAX(UF), .DISP_W(WTA_DISP_W),
@@ -240,17 +281,17 @@ module fpstereo_strip_aggregation #(
         assign out_slot = wta_slot;
         assign out_word = wta_word;
       end
-      fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(DISP_W), .X_W(X_W),
+      fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(WORD_W - 1), .X_W(X_W),
                                          .Y_W(Y_W), .SLOT_W(OUT_ROW_W)) disparities (
         .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
-        .frame_height(frame_height), .active(out_active), .x(out_x), .slot(out_slot), .word(out_word),
+        .frame_height(frame_height), .active(rated_active), .x(rated_x), .slot(rated_slot), .word(rated_word),
         .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));
     end else begin : no_output
       assign read_done = 1'b0;
       assign read_event = 1'b0;
       assign read_x = {X_W{1'b0}};
       assign read_y = {Y_W{1'b0}};
-      assign read_word = {(P*(DISP_W+1)){1'b0}};
+      assign read_word = {(P*(DISP_W+1+8*CONFIDENCE)){1'b0}};
     end
   endgenerate
   /* verilator lint_off UNUSEDSIGNAL */  // the last strip's edge to the right, the first's to the left

@@ -46,12 +46,13 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.confidence = true;
+  beats.gap_interpolation = true;
   out.push_back(beats);
-  // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit
-  // and the median).
+  // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,
+  // the confidence and the median).
   StereoConfig strips = beats;
-  strips.confidence = false;
+  strips.gap_interpolation = false;
+  strips.confidence = true;
   strips.subpixel_bits = 2;
   strips.uniqueness = 10;
   strips.ppc = 4;

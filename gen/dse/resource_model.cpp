@@ -366,8 +366,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double subpixel =
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
-  // winner-take-all, the sub-pixel fit and the median are there once per strip; the options strips
-  // leave out stay 0.
+  // winner-take-all, the sub-pixel fit, the confidence and the median are there once per strip;
+  // the options strips leave out stay 0.
   const double sets = d.strips;
   return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
           (ring + ring_features) * sets,
@@ -381,7 +381,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           // fpstereo_wta's minimum tree: the base side's without that, and LR2's match side's.
           ((d.finds_second_best ? 0 : 1) + (c.lr == LrCheck::Lr2 ? 1 : 0)) * uf * w.aggregated * sets,
           // 8 restoring steps over the sums, the word waiting 10 steps beside them.
-          c.confidence ? 16.0 * w.aggregated + 10 * tag : 0.0, subpixel * sets,
+          c.confidence ? (16.0 * w.aggregated + 10 * tag) * sets : 0.0, subpixel * sets,
           // fpstereo_adaptive_p2: per path the pixel step, its product and P2; the penalties
           // then ride above the cost words.
           c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0,

@@ -91,7 +91,9 @@ class AggregationStage : public Stage {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
     const int P = d.strips, code_bits = std::max(1, w.code);
-    const bool unique = c.uniqueness != 0;  // a winner-take-all with the uniqueness check per strip
+    // A winner-take-all with the uniqueness check per strip, which the confidence's two best sums
+    // come from too.
+    const bool unique = c.uniqueness != 0 || c.confidence;
     core.text(fmt::format("\n  // Aggregation in {} strips of {} interleaved chains, from step AGG_START, to the raster\n"
                           "  // order's slots of {} pixels.\n",
                           P, d.chains, P));
@@ -125,7 +127,8 @@ class AggregationStage : public Stage {
                                   {"WTA_DISP_W", num(w.disparity)},
                                   {"SUBPIXEL_BITS", num(c.subpixel_bits)},
                                   {"EQUIANGULAR", c.subpixel_fit == SubpixelFit::Equiangular ? "1" : "0"},
-                                  {"WTA_WORD_LAG", num(d.wta_word_lag)}},
+                                  {"WTA_WORD_LAG", num(d.wta_word_lag)},
+                                  {"CONFIDENCE", c.confidence ? "1" : "0"}},
                   {{"cost_raddr", "strip_raddr"},
                    {"cost_q", fmt::format("{}'d0", 2 * P * code_bits)},
                    {"sums", "strip_sums"},
@@ -133,7 +136,8 @@ class AggregationStage : public Stage {
                    {"sums_x", "strip_x"},
                    {"sums_chain", "strip_chain"},
                    {"sums_slot", "strip_slot"},
-                   {"uniqueness", unique ? "uniqueness" : "7'd0"}});
+                   {"uniqueness", c.uniqueness != 0 ? "uniqueness" : "7'd0"},
+                   {"read_word", c.confidence ? kStripConfidentWords : "read_word"}});
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).

@@ -17,6 +17,7 @@ class ConfidenceStage : public Stage {
   Latency latency(const Geometry&) const override { return {0, 0, kSteps}; }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    if (d.strips > 1) return;  // a divider per strip, in fpstereo_strip_aggregation
     const bool whole = d.carries_whole;
     const int data_bits = 1 + d.x_bits + d.out_row_bits + d.group_bits + d.widths.output_word +
                           (whole ? d.widths.disparity : 0);

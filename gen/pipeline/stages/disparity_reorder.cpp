@@ -1,5 +1,7 @@
 // Disparity reorder RAM: the words in chain order in, one word per slot in raster order out (the
 // pixel stream). With a left-right check the reads wait lr_rows more row-times for the match side.
+#include <fmt/core.h>
+
 #include "stage_list.hpp"
 #include "stage_support.hpp"
 
@@ -26,7 +28,8 @@ class DisparityReorderStage : public Stage {
       // The strips' disparity RAMs are read in fpstereo_strip_aggregation, a slot's P words a step.
       core.text("\n  // The strips' disparity RAMs, read in raster order from step OUT_START.\n");
       start_flag(core, d, *this, "out_on");
-      stream_wires(core, d, streams.pixels, d.strips * d.reorder_ram_bits);
+      stream_wires(core, d, streams.pixels, d.strips * d.reorder_word_bits);
+      if (confidence) strip_confidences(core, d);
       return;
     }
     core.text("\n  // Disparity reorder RAM, read in raster order from step OUT_START.\n");
@@ -52,6 +55,22 @@ class DisparityReorderStage : public Stage {
                    {"word", "{" + (confidence ? w + "_confidence, " : "") + w + "_word" +
                                 (d.carries_whole ? ", " + w + "_whole}" : "}")},
                    {"read_word", confidence ? "{read_confidence, read_word}" : "read_word"}});
+  }
+
+  // The strips' words with their confidences above them, split into the slot's words and its
+  // confidences (pixel 0 lowest in each).
+  static void strip_confidences(CoreBuilder& core, const RtlDesign& d) {
+    const int P = d.strips, word = d.reorder_word_bits, entry = d.reorder_ram_bits;
+    core.wire(kStripConfidentWords, int64_t(P) * entry);
+    core.wire("read_confidence", int64_t(P) * kConfidenceBits);
+    std::string words, confidences;
+    for (int q = P - 1; q >= 0; --q) {
+      const std::string sep = q ? ", " : "";
+      words += fmt::format("{}[{}:{}]{}", kStripConfidentWords, q * entry + word - 1, q * entry, sep);
+      confidences += fmt::format("{}[{}:{}]{}", kStripConfidentWords, (q + 1) * entry - 1, q * entry + word, sep);
+    }
+    core.logic(fmt::format("  assign read_word = {{{}}};\n  assign read_confidence = {{{}}};\n", words, confidences),
+               {"read_word", "read_confidence"});
   }
 
   // ---- HLS: select_base writes raster order.

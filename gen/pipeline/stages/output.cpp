@@ -17,7 +17,8 @@ class OutputStage : public Stage {
   Latency latency(const Geometry&) const override { return {0, 0, 1 + kStepsAfterPush}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (!confidence_rows(g)) return {};
-    return {{"core.confidence_rows.confidences.mem", int64_t(confidence_rows(g)) * g.cfg.width, kConfidenceBits}};
+    return {{"core.confidence_rows.confidences.mem", int64_t(confidence_rows(g)) * (g.cfg.width / g.strips),
+             int64_t(kConfidenceBits) * g.strips}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
@@ -52,22 +53,25 @@ class OutputStage : public Stage {
       return 0;
     return g.speckle_rows + c.median / 2 + (c.gap_interpolation ? 1 : 0) + 2;
   }
-  // The pixel's confidence beside its word, registered with it.
+  // The pixel's confidence beside its word, registered with it (with strips, a slot's P).
   static void confidence_verilog(CoreBuilder& core, const RtlDesign& d, const PixelStream& s) {
     const int rows = confidence_rows(d);
     if (rows == 0) {
-      core.logic("  reg [7:0] out_confidence_q;\n"
-                 "  always @(posedge clk)\n"
-                 "    if (adv) out_confidence_q <= read_confidence;\n"
-                 "  assign out_confidence = out_confidence_q;\n",
+      core.logic(fmt::format("  reg [{}:0] out_confidence_q;\n"
+                             "  always @(posedge clk)\n"
+                             "    if (adv) out_confidence_q <= read_confidence;\n"
+                             "  assign out_confidence = out_confidence_q;\n",
+                             kConfidenceBits * d.strips - 1),
                  {"out_confidence"});
       return;
     }
+    const int64_t slots = d.cfg.width / d.strips;  // a row's slots
     core.instance("fpstereo_confidence_rows", "confidence_rows",
-                  {{"W", num(d.cfg.width)},
+                  {{"W", num(slots)},
+                   {"P", num(d.strips)},
                    {"ROWS", num(rows)},
                    {"ROW_K_W", num(bits_for(uint64_t(rows - 1)))},
-                   {"AW", num(bits_for(uint64_t(rows) * d.cfg.width - 1))},
+                   {"AW", num(bits_for(uint64_t(rows) * slots - 1))},
                    {"X_W", num(d.x_bits)}},
                   {{"in_event", "read_event"},
                    {"in_x", "read_x"},

@@ -28,6 +28,10 @@ void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, 
 // Their position as one tag: {_active, _x, _slot}, with_group _group, then the extra nets.
 std::string word_tag(const std::string& words, bool with_group, const std::vector<std::string>& extra = {});
 
+// With strips and the confidence, the strips' disparity RAMs' words, each with its confidence
+// above it, as fpstereo_strip_aggregation reads them (the disparity reorder stage splits them).
+constexpr const char* kStripConfidentWords = "strip_read_words";
+
 // The aggregator's memories below scope (fpstereo_aggregator.v), over a row of `pixels` (a strip's,
 // or by default the whole width), and its parameters but MATCH_SIDE, which LR2's match side sets
 // itself.
