@@ -50,6 +50,8 @@ module fpstereo_strip_aggregation #(
   parameter CODE_W = 8,
   // the cost lanes' latency with CODES (2, or 3 for census codes above 48 bits)
   parameter LANES_LAT = 2,
+  // with CODES: the entries' match codes are pixel x - MIN_DISP's (fpstereo_chain_cost)
+  parameter MIN_DISP = 0,
   /* verilator lint_on UNUSEDPARAM */
   // steps from cost_raddr to the aggregator's cost word: 1 (the RAM), or with CODES 2 + LANES_LAT
   parameter COST_LEAD = 1,
@@ -162,7 +164,7 @@ module fpstereo_strip_aggregation #(
       if (CODES != 0) begin : chain_costs
         /* verilator lint_off PINCONNECTEMPTY */
         fpstereo_chain_cost #(.HAMMING(HAMMING), .CODE_W(CODE_W), .DMAX(UF), .UF(UF), .K(K), .COST_W(COST_W),
-                              .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(0), .LANES_LAT(LANES_LAT),
+                              .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(MIN_DISP), .LANES_LAT(LANES_LAT),
                               .LAT(LANES_LAT), .ENTRY_W(CODE_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
           .frame_width(frame_width), .entry(entries[p*Q_W +: Q_W]), .extra(1'b0), .costs(costs), .extra_out(),

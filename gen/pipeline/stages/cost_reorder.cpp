@@ -99,11 +99,12 @@ class CostReorderStage : public Stage {
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
     const int P = d.strips, code_bits = std::max(1, d.widths.code);
+    core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
+    const std::string match = strip_match_codes(d, core);
     std::string data;
     for (int q = P; q-- > 0;)
-      data += fmt::format("{}code_match[{}:{}], code_base[{}:{}]", q + 1 < P ? ", " : "", (q + 1) * code_bits - 1,
+      data += fmt::format("{}{}[{}:{}], code_base[{}:{}]", q + 1 < P ? ", " : "", match, (q + 1) * code_bits - 1,
                           q * code_bits, (q + 1) * code_bits - 1, q * code_bits);
-    core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
     core.logic(fmt::format("  wire [{0}:0] transform_pixel = {{transform_x[{1}:0], {2}'d0}};\n"
                            "  assign code_we = shift && transform_pixel < frame_width && transform_y >= 0 &&\n"
                            "                   transform_y < $signed({{2'b00, frame_height}});\n"
@@ -116,6 +117,33 @@ class CostReorderStage : public Stage {
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
     core.wire("code_data", 2 * int64_t(code_bits) * P);
+  }
+
+  // The match codes that go beside the base codes: pixel x's entry holds the match pixel
+  // x - min_disp's code (fpstereo_code_reorder's match_wait), a slot's P codes m / P slots late and
+  // turned by m mod P pixels across two slots. Returns the net.
+  static std::string strip_match_codes(const RtlDesign& d, CoreBuilder& core) {
+    const int P = d.strips, m = d.cfg.min_disp, code_bits = std::max(1, d.widths.code);
+    if (m == 0) return "code_match";
+    const int slots = m / P, turn = m % P;
+    const int64_t bits = int64_t(P) * code_bits;
+    std::string late = "code_match";
+    if (slots > 0) {
+      core.wire("match_late", bits);
+      core.instance("fpstereo_delay", "match_wait", {{"WIDTH", num(bits)}, {"DEPTH", num(slots)}, {"RESET", "0"}},
+                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", "code_match"}, {"out", "match_late"}});
+      late = "match_late";
+    }
+    if (turn == 0) return late;
+    // Pixel q of the slot is pixel q - turn of the late slot, or of the slot before it.
+    core.wire("match_later", bits);
+    core.wire("match_turned", bits);
+    core.instance("fpstereo_delay", "match_turn", {{"WIDTH", num(bits)}, {"DEPTH", "1"}, {"RESET", "0"}},
+                  {{"rst", "1'b0"}, {"en", "shift"}, {"in", late}, {"out", "match_later"}});
+    core.logic(fmt::format("  assign match_turned = {{{}[{}:0], match_later[{}:{}]}};\n", late,
+                           (P - turn) * code_bits - 1, bits - 1, (P - turn) * code_bits),
+               {"match_turned"});
+    return "match_turned";
   }
 
   // ---- HLS: aggregate's to_chain_order.
