@@ -83,10 +83,10 @@ class AggregationStage : public Stage {
   }
 
   // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,
-  // their chain costs and aggregators, a winner-take-all (and sub-pixel fit) each and their
-  // disparity RAMs, from the
-  // code writes (the cost reorder stage's) to the raster order at P pixels a step (the pixel
-  // stream the disparity reorder stage names, from its OUT_START on).
+  // their chain costs and aggregators, a winner-take-all (with the sub-pixel fit and the
+  // confidence) each and their disparity RAMs, from the code writes (the cost reorder stage's) to
+  // the raster order at P pixels a step (the pixel stream the disparity reorder stage names, from
+  // its OUT_START on).
   static void strips_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
