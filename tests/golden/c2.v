@@ -1883,22 +1883,36 @@ module fps_census7_d128u32_6e9658_aggregator #(
   wire [G_W-1:0]   g_read = `FPS_TAG_GROUP(tag_led);
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
-  /* verilator lint_off UNUSEDSIGNAL */  // some fields serve only some of the paths
-  wire [Y_W:0]     row2 = `FPS_TAG_ROW(tag2);
-  /* verilator lint_on UNUSEDSIGNAL */
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
-  // Whether S2's step is its pixel's first or last group: registered from S1's tag, so that the
-  // lanes' neighbour selection starts from a register (logic depth, docs/timing.md).
+  // Whether S2's step is its pixel's first or last group, the strip's first pixel, and which of
+  // its predecessors lie in the frame: registered from S1's tag, so that the lanes' neighbour
+  // selection starts from a register (logic depth, docs/timing.md).
   wire [G_W-1:0]   g1 = `FPS_TAG_GROUP(tag1);
+  wire [X_W-1:0]   x1 = `FPS_TAG_X(tag1);
+  wire [Y_W:0]     row1 = `FPS_TAG_ROW(tag1);
   reg              first_group2, last_group2;
+  /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  reg              first2;           // the strip's first pixel, whose 0 and 45-degree predecessors come from edge_in
+  reg              left_in2;         // x2 != 0
+  reg              above_in2;        // row2 != 0
+  reg  [1:0]       column_in2;       // x2 + dx < frame_width, dx = 0, 1
+  /* verilator lint_on UNUSEDSIGNAL */
   always @(posedge clk)
     if (restart) begin
       first_group2 <= 1'b0;
       last_group2 <= 1'b0;
+      first2 <= 1'b0;
+      left_in2 <= 1'b0;
+      above_in2 <= 1'b0;
+      column_in2 <= 2'b00;
     end else if (adv) begin
       first_group2 <= g1 == 0;
       last_group2 <= g1 == G - 1;
+      first2 <= FROM_LEFT && x1 == X_FIRST;
+      left_in2 <= x1 != 0;
+      above_in2 <= row1 != 0;
+      column_in2 <= {{1'b0, x1} + 1'b1 < {1'b0, frame_width}, x1 < frame_width};
     end
   /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
   wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
@@ -1962,7 +1976,6 @@ module fps_census7_d128u32_6e9658_aggregator #(
   // captured by the strip to the right at its first pixel of the row above.
   localparam EDGE_W = (UF + 1) * PATH_W;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
-  wire first2 = FROM_LEFT && x2 == X_FIRST;
   wire [LANES_W-1:0] edge_l0 = edge_in[0 +: LANES_W], edge_a45 = edge_in[EDGE_W +: LANES_W];
   wire [PATH_W-1:0]  edge_min0 = edge_in[LANES_W +: PATH_W], edge_a45_min = edge_in[EDGE_W + LANES_W +: PATH_W];
   /* verilator lint_on UNUSEDSIGNAL */
@@ -1987,7 +2000,7 @@ module fps_census7_d128u32_6e9658_aggregator #(
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
       fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(x2 != 0), .prev(first2 ? edge_l0 : cur),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(left_in2), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
         .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
       fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
@@ -2046,7 +2059,7 @@ module fps_census7_d128u32_6e9658_aggregator #(
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
       fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(x2 != 0 && row2 != 0),
+        .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(left_in2 && above_in2),
         .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
         .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
         .path(path_45));
@@ -2120,7 +2133,7 @@ module fps_census7_d128u32_6e9658_aggregator #(
             above_min2 <= above_min_q;
           end
         fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
-          .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(row2 != 0 && x2 + DX < frame_width), .prev(cur),
+          .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(above_in2 && column_in2[DX]), .prev(cur),
           .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
           .prev_min(above_min2), .path(path_out));
         fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
