@@ -52,6 +52,9 @@ module fpstereo_strip_aggregation #(
   parameter LANES_LAT = 2,
   // with CODES: the entries' match codes are pixel x - MIN_DISP's (fpstereo_chain_cost)
   parameter MIN_DISP = 0,
+  // with CODES: 0, or adaptive P2's penalties above each entry (a P2 field of PATH_W bits per
+  // enabled path), which leave with the pixel's costs to the aggregator (its PENALTIES)
+  parameter EXTRA_W = 0,
   /* verilator lint_on UNUSEDPARAM */
   // steps from cost_raddr to the aggregator's cost word: 1 (the RAM), or with CODES 2 + LANES_LAT
   parameter COST_LEAD = 1,
@@ -87,11 +90,11 @@ module fpstereo_strip_aggregation #(
   output wire [P*COST_AW-1:0]  cost_raddr,
   // each strip's cost word, or with CODES its entry, a step after its address
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM, the code ports without
-  input  wire [P*(CODES != 0 ? 2*CODE_W : UF*COST_W)-1:0] cost_q,
+  input  wire [P*(CODES != 0 ? 2*CODE_W+EXTRA_W : UF*COST_W)-1:0] cost_q,
   input  wire                  code_we,
   input  wire [X_W-1:0]        code_slot,
   input  wire [SLOT_W-1:0]     code_row,
-  input  wire [P*2*CODE_W-1:0] code_data,
+  input  wire [P*(2*CODE_W+EXTRA_W)-1:0] code_data,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [P*UF*SUM_W-1:0] sums,
   output wire [P-1:0]          sums_active,
@@ -114,12 +117,17 @@ module fpstereo_strip_aggregation #(
     if (P < 2 || (P - 1) * ROW_SLOTS >= W || P * ROW_SLOTS < W) begin : invalid_P
       fpstereo_invalid_parameters_strip_aggregation_P_strips_of_ROW_SLOTS_do_not_cover_W failed ();
     end
+    if (EXTRA_W != 0 && (CODES == 0 || EXTRA_W != NP * PATH_W)) begin : invalid_EXTRA_W
+      fpstereo_invalid_parameters_strip_aggregation_EXTRA_W_is_not_a_P2_per_path_with_CODES failed ();
+    end
     if (CONFIDENCE != 0 && (UNIQUE == 0 || CONFIDENCE != 1)) begin : invalid_CONFIDENCE
       fpstereo_invalid_parameters_strip_aggregation_CONFIDENCE_needs_UNIQUE failed ();
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
-  localparam Q_W = CODES != 0 ? 2 * CODE_W : UF * COST_W;
+  localparam Q_W = CODES != 0 ? 2 * CODE_W + EXTRA_W : UF * COST_W;
+  localparam NP = PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2;
+  localparam PENALTIES = EXTRA_W != 0 ? NP : 0;
   localparam RING_W = UF * CODE_W;
   // With RAM, the strips' code entries from their RAMs (a step after each address); else cost_q.
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM
@@ -130,7 +138,7 @@ module fpstereo_strip_aggregation #(
       if (CODES == 0) begin : invalid_ram
         fpstereo_invalid_parameters_strip_aggregation_RAM_needs_CODES failed ();
       end
-      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(2 * CODE_W),
+      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(Q_W),
                                     .SLOT_ROWS(SLOT_ROWS), .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
         .clk(clk), .adv(adv), .we(code_we), .wslot(code_slot), .wrow(code_row), .wdata(code_data),
         .raddr(cost_raddr), .q(entries));
@@ -157,27 +165,39 @@ module fpstereo_strip_aggregation #(
         fpstereo_delay #(.WIDTH(2), .DEPTH(p * K), .RESET(1)) lag (
           .clk(clk), .rst(restart), .en(adv), .in({agg_on, wrapped}), .out({on, wrapped_p}));
       end
-      wire [UF*COST_W-1:0] costs;
+      wire [UF*COST_W+PENALTIES*PATH_W-1:0] costs;
       /* verilator lint_off UNUSEDSIGNAL */  // the chain-order costs' schedule
       wire [X_W+1:0] schedule;
       /* verilator lint_on UNUSEDSIGNAL */
       if (CODES != 0) begin : chain_costs
         /* verilator lint_off PINCONNECTEMPTY */
+        // adaptive P2's penalties: read above the entry, out above the costs
+        wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] penalties_in;
+        /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+        wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] penalties;
+        /* verilator lint_on UNUSEDSIGNAL */
+        if (EXTRA_W > 0) begin : with_penalties
+          assign penalties_in = entries[p*Q_W + 2*CODE_W +: (EXTRA_W > 0 ? EXTRA_W : 1)];
+          assign costs[UF*COST_W +: (EXTRA_W > 0 ? EXTRA_W : 1)] = penalties;
+        end else begin : without_penalties
+          assign penalties_in = 1'b0;
+        end
         fpstereo_chain_cost #(.HAMMING(HAMMING), .CODE_W(CODE_W), .DMAX(UF), .UF(UF), .K(K), .COST_W(COST_W),
                               .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(MIN_DISP), .LANES_LAT(LANES_LAT),
-                              .LAT(LANES_LAT), .ENTRY_W(CODE_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
+                              .LAT(LANES_LAT), .ENTRY_W(CODE_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
-          .frame_width(frame_width), .entry(entries[p*Q_W +: Q_W]), .extra(1'b0), .costs(costs), .extra_out(),
+          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*CODE_W]),
+          .extra(penalties_in), .costs(costs[UF*COST_W-1:0]), .extra_out(penalties),
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */
       end else begin : cost_words
-        assign costs = entries[p*Q_W +: Q_W];
+        assign costs = entries[p*Q_W +: UF*COST_W];
         assign rings[(p+1)*RING_W +: RING_W] = 0;
       end
       /* verilator lint_off PINCONNECTEMPTY */
       fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(1), .UF(UF),
                             .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
-                            .MATCH_SIDE(0), .PENALTIES(0), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
+                            .MATCH_SIDE(0), .PENALTIES(PENALTIES), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                             .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUTPUT != 0 ? (P - p) * K + 1 : OUT_ROWS),
                             .OUT_ROW_W(OUT_ROW_W),
                             .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(1), .K_W(K_W),

@@ -366,8 +366,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double subpixel =
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
-  // winner-take-all, the sub-pixel fit, the confidence and the median are there once per strip;
-  // the options strips leave out stay 0.
+  // winner-take-all, the sub-pixel fit, the confidence, adaptive P2 and the median are there once
+  // per strip; the options strips leave out stay 0.
   const double sets = d.strips;
   return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
           (ring + ring_features) * sets,
@@ -384,7 +384,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           c.confidence ? (16.0 * w.aggregated + 10 * tag) * sets : 0.0, subpixel * sets,
           // fpstereo_adaptive_p2: per path the pixel step, its product and P2; the penalties
           // then ride above the cost words.
-          c.p2_adapt != 0 ? double(d.penalty_bits) + 20.0 * c.path_count() : 0.0,
+          c.p2_adapt != 0 ? (double(d.penalty_bits) + 20.0 * c.path_count()) * sets : 0.0,
           // The right view's output register and its stream's handshake (Dm exists for the check).
           c.right_view ? 3.0 * (w.disparity + 1) : 0.0,
           // fpstereo_gap_fill: the row's words and their positions (its RAMs are block RAM).

@@ -70,18 +70,39 @@ class CostStage : public Stage {
     if (!d.reorders_codes) raster_cost(d, core);
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
-    core.wire("cost_penalties", d.penalty_bits);
-    core.instance("fpstereo_adaptive_p2", "adaptive_p2",
-                  {{"N", num(c.window)},
-                   {"PATHS", num(c.paths)},
-                   {"NP", num(c.path_count())},
-                   {"GAIN", num(c.p2_adapt)},
-                   {"PATH_W", num(w.path_cost)},
-                   {"WAIT_SLOTS", num(base_wait(c).slots)},
-                   {"WAIT_ROWS", num(base_wait(c).rows)},
-                   {"ROW_SLOTS", num(d.row_slots)},
-                   {"LAT", num(d.cost_latency)}},
-                  {{"window", "window_left"}, {"penalties", "cost_penalties"}});
+    const Connections parameters = {{"N", num(c.window)},
+                                    {"PATHS", num(c.paths)},
+                                    {"NP", num(c.path_count())},
+                                    {"GAIN", num(c.p2_adapt)},
+                                    {"PATH_W", num(w.path_cost)},
+                                    {"WAIT_SLOTS", num(base_wait(c).slots)},
+                                    {"WAIT_ROWS", num(base_wait(c).rows)},
+                                    {"ROW_SLOTS", num(d.row_slots)},
+                                    {"LAT", num(d.cost_latency)}};
+    if (d.strips == 1) {
+      core.wire("cost_penalties", d.penalty_bits);
+      core.instance("fpstereo_adaptive_p2", "adaptive_p2", parameters,
+                    {{"window", "window_left"}, {"penalties", "cost_penalties"}});
+      return;
+    }
+    // With strips, one per pixel of the slot, on its window in the front end's arrays (pixel q's
+    // columns q to q + N - 1, as fpstereo_transform cuts them); cost_penalties holds pixel q's at
+    // q * penalty_bits.
+    const int n = c.window, cols = window_columns(d);
+    std::string all;
+    for (int q = 0; q < d.strips; ++q) {
+      std::string window;
+      for (int i = n; i-- > 0;)
+        window += fmt::format("{}window_left[{}:{}]", i + 1 < n ? ", " : "", (int64_t(i) * cols + q + n) * 8 - 1,
+                              (int64_t(i) * cols + q) * 8);
+      const std::string net = fmt::format("cost_penalties_{}", q);
+      core.wire(net, d.penalty_bits);
+      core.instance("fpstereo_adaptive_p2", fmt::format("adaptive_p2_{}", q), parameters,
+                    {{"window", "{" + window + "}"}, {"penalties", net}});
+      all = net + (q ? ", " : "") + all;
+    }
+    core.wire("cost_penalties", int64_t(d.strips) * d.penalty_bits);
+    core.logic(fmt::format("  assign cost_penalties = {{{}}};\n", all), {"cost_penalties"});
   }
 
   // The raster cost stage of the cost function: the centre it holds and its lanes' costs.

@@ -98,25 +98,56 @@ class CostReorderStage : public Stage {
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
-    const int P = d.strips, code_bits = std::max(1, d.widths.code);
+    const int P = d.strips, code_bits = std::max(1, d.widths.code), extra = d.penalty_bits;
     core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
     const std::string match = strip_match_codes(d, core);
-    std::string data;
-    for (int q = P; q-- > 0;)
-      data += fmt::format("{}{}[{}:{}], code_base[{}:{}]", q + 1 < P ? ", " : "", match, (q + 1) * code_bits - 1,
-                          q * code_bits, (q + 1) * code_bits - 1, q * code_bits);
-    core.logic(fmt::format("  wire [{0}:0] transform_pixel = {{transform_x[{1}:0], {2}'d0}};\n"
-                           "  assign code_we = shift && transform_pixel < frame_width && transform_y >= 0 &&\n"
-                           "                   transform_y < $signed({{2'b00, frame_height}});\n"
-                           "  assign code_slot = transform_x;\n"
-                           "  assign code_row = transform_slot;\n"
-                           "  assign code_data = {{{3}}};\n",
-                           d.x_bits - 1, d.x_bits - 1 - clog2(P), clog2(P), data),
-               {"code_we", "code_slot", "code_row", "code_data"});
+    const std::string in_frame = fmt::format(
+        "{{transform_x[{}:0], {}'d0}} < frame_width && transform_y >= 0 && transform_y < $signed({{2'b00, frame_height}})",
+        d.x_bits - 1 - clog2(P), clog2(P));
     core.wire("code_we", 1);
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
-    core.wire("code_data", 2 * int64_t(code_bits) * P);
+    core.wire("code_data", int64_t(2 * code_bits + extra) * P);
+    // Pixel q's entry: {its penalties (adaptive P2), its match code, its base code}, the codes
+    // from nets that hold a slot's P codes from bit `lsb` on.
+    auto entries = [&](const std::string& matches, int64_t match_lsb, const std::string& bases, int64_t base_lsb) {
+      std::string data;
+      for (int q = P; q-- > 0;) {
+        const int64_t lo = int64_t(q) * code_bits, hi = lo + code_bits - 1;
+        data += fmt::format("{}{}{}[{}:{}], {}[{}:{}]", q + 1 < P ? ", " : "",
+                            extra ? fmt::format("cost_penalties[{}:{}], ", (q + 1) * extra - 1, q * extra) : "",
+                            matches, match_lsb + hi, match_lsb + lo, bases, base_lsb + hi, base_lsb + lo);
+      }
+      return "{" + data + "}";
+    };
+    if (extra == 0) {
+      core.logic(fmt::format("  assign code_we = shift && {};\n"
+                             "  assign code_slot = transform_x;\n"
+                             "  assign code_row = transform_slot;\n"
+                             "  assign code_data = {};\n",
+                             in_frame, entries(match, 0, "code_base", 0)),
+                 {"code_we", "code_slot", "code_row", "code_data"});
+      return;
+    }
+    // Adaptive P2's penalties leave fpstereo_adaptive_p2 a slot and LAT steps after the codes
+    // (fpstereo_code_reorder's penalty RAM waits as long): the writes wait with them, so that
+    // each entry holds its pixel's. code_held: {in the frame, slot, row slot, match codes, base codes}.
+    const int64_t codes = int64_t(P) * code_bits, held = 1 + d.x_bits + d.cost_row_bits + 2 * codes;
+    core.logic(fmt::format("  reg [{}:0] code_held;\n"
+                           "  always @(posedge clk)\n"
+                           "    if (shift) code_held <= {{{}, transform_x, transform_slot, {}, code_base}};\n",
+                           held - 1, in_frame, match),
+               {}, {{"code_held", held}});
+    core.wire("code_later", held);
+    core.instance("fpstereo_delay", "code_wait", {{"WIDTH", num(held)}, {"DEPTH", num(d.cost_latency)}, {"RESET", "0"}},
+                  {{"rst", "1'b0"}, {"en", "adv"}, {"in", "code_held"}, {"out", "code_later"}});
+    core.logic(fmt::format("  assign code_we = adv && code_later[{}];\n"
+                           "  assign code_slot = code_later[{}:{}];\n"
+                           "  assign code_row = code_later[{}:{}];\n"
+                           "  assign code_data = {};\n",
+                           held - 1, held - 2, held - 1 - d.x_bits, held - 2 - d.x_bits, 2 * codes,
+                           entries("code_later", codes, "code_later", 0)),
+               {"code_we", "code_slot", "code_row", "code_data"});
   }
 
   // The match codes that go beside the base codes: pixel x's entry holds the match pixel

@@ -67,6 +67,9 @@ std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::strin
   return out;
 }
 
+int window_centre_lag(const Geometry& g) { return (g.window_radius + g.strips - 1) / g.strips; }
+int window_columns(const Geometry& g) { return g.strips * (1 + window_centre_lag(g)) + g.window_radius; }
+
 Connections aggregator_parameters(const RtlDesign& g) {
   const StereoConfig& c = g.cfg;
   return {{"W", num(c.width)},

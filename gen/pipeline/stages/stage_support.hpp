@@ -28,6 +28,12 @@ void word_wires(CoreBuilder& core, const Geometry& g, const std::string& words, 
 // Their position as one tag: {_active, _x, _slot}, with_group _group, then the extra nets.
 std::string word_tag(const std::string& words, bool with_group, const std::vector<std::string>& extra = {});
 
+// The window stage's centre lag in slots (with strips, the windows of a slot's P pixels lag
+// ceil(r / P) slots) and the columns of its window arrays (fpstereo_front_end's COLS: P windows
+// side by side, pixel q's in columns q to q + N - 1).
+int window_centre_lag(const Geometry& g);
+int window_columns(const Geometry& g);
+
 // With strips and the confidence, the strips' disparity RAMs' words, each with its confidence
 // above it, as fpstereo_strip_aggregation reads them (the disparity reorder stage splits them).
 constexpr const char* kStripConfidentWords = "strip_read_words";

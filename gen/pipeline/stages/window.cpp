@@ -19,7 +19,7 @@ class WindowStage : public Stage {
   // The window centred r rows and r slots behind the input (with strips, the windows of a slot's P
   // pixels, ceil(r / P) slots behind) is complete after the input's slot; its registered position
   // (and the transform's codes) one slot later.
-  Latency latency(const Geometry& g) const override { return {g.window_radius, centre_lag(g) + 2, 0}; }
+  Latency latency(const Geometry& g) const override { return {g.window_radius, window_centre_lag(g) + 2, 0}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     const int64_t bits = int64_t(g.cfg.window - 1) * g.widths.pixel * g.strips;
     return {{"core.front_end.left_window.line_buffer.mem", g.row_slots, bits},
@@ -28,7 +28,7 @@ class WindowStage : public Stage {
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
     // With strips, P windows side by side in arrays of COLS columns (fpstereo_front_end).
-    const int n = d.cfg.window, P = d.strips, lag = centre_lag(d), cols = P * (1 + lag) + d.window_radius;
+    const int n = d.cfg.window, P = d.strips, cols = window_columns(d);
     const int window_bits = n * cols * 8;
     core.text("\n  // Window stage: line buffers, windows, their bounds and centres.\n");
     core.wire("shift", 1);
@@ -105,7 +105,6 @@ class WindowStage : public Stage {
   int hls_fill_rows(const Geometry& g) const override { return g.window_fill_rows; }
 
  private:
-  static int centre_lag(const Geometry& g) { return (g.window_radius + g.strips - 1) / g.strips; }
   bool transform_;
 };
 
