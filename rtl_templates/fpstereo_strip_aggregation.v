@@ -52,6 +52,15 @@ module fpstereo_strip_aggregation #(
   parameter LANES_LAT = 2,
   // with CODES: the entries' match codes are pixel x - MIN_DISP's (fpstereo_chain_cost)
   parameter MIN_DISP = 0,
+  // with CODES: an entry's bits (the code, with the fused cost its feature above) and the fused
+  // cost's term (fpstereo_chain_cost's WEIGHT, TRUNC, FEATURE_W, GRADIENT; WEIGHT 0: none), and
+  // the chain costs' latency (LANES_LAT, or the fused term's)
+  parameter ENTRY_W = CODE_W,
+  parameter WEIGHT = 0,
+  parameter TRUNC = 20,
+  parameter FEATURE_W = 8,
+  parameter GRADIENT = 0,
+  parameter CHAIN_LAT = LANES_LAT,
   // with CODES: 0, or adaptive P2's penalties above each entry (a P2 field of PATH_W bits per
   // enabled path), which leave with the pixel's costs to the aggregator (its PENALTIES)
   parameter EXTRA_W = 0,
@@ -90,11 +99,11 @@ module fpstereo_strip_aggregation #(
   output wire [P*COST_AW-1:0]  cost_raddr,
   // each strip's cost word, or with CODES its entry, a step after its address
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM, the code ports without
-  input  wire [P*(CODES != 0 ? 2*CODE_W+EXTRA_W : UF*COST_W)-1:0] cost_q,
+  input  wire [P*(CODES != 0 ? 2*ENTRY_W+EXTRA_W : UF*COST_W)-1:0] cost_q,
   input  wire                  code_we,
   input  wire [X_W-1:0]        code_slot,
   input  wire [SLOT_W-1:0]     code_row,
-  input  wire [P*(2*CODE_W+EXTRA_W)-1:0] code_data,
+  input  wire [P*(2*ENTRY_W+EXTRA_W)-1:0] code_data,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [P*UF*SUM_W-1:0] sums,
   output wire [P-1:0]          sums_active,
@@ -125,10 +134,10 @@ module fpstereo_strip_aggregation #(
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
-  localparam Q_W = CODES != 0 ? 2 * CODE_W + EXTRA_W : UF * COST_W;
+  localparam Q_W = CODES != 0 ? 2 * ENTRY_W + EXTRA_W : UF * COST_W;
   localparam NP = PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2;
   localparam PENALTIES = EXTRA_W != 0 ? NP : 0;
-  localparam RING_W = UF * CODE_W;
+  localparam RING_W = UF * ENTRY_W;
   // With RAM, the strips' code entries from their RAMs (a step after each address); else cost_q.
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM
   wire [P*Q_W-1:0] entries;
@@ -177,16 +186,17 @@ module fpstereo_strip_aggregation #(
         wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] penalties;
         /* verilator lint_on UNUSEDSIGNAL */
         if (EXTRA_W > 0) begin : with_penalties
-          assign penalties_in = entries[p*Q_W + 2*CODE_W +: (EXTRA_W > 0 ? EXTRA_W : 1)];
+          assign penalties_in = entries[p*Q_W + 2*ENTRY_W +: (EXTRA_W > 0 ? EXTRA_W : 1)];
           assign costs[UF*COST_W +: (EXTRA_W > 0 ? EXTRA_W : 1)] = penalties;
         end else begin : without_penalties
           assign penalties_in = 1'b0;
         end
         fpstereo_chain_cost #(.HAMMING(HAMMING), .CODE_W(CODE_W), .DMAX(UF), .UF(UF), .K(K), .COST_W(COST_W),
-                              .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(MIN_DISP), .LANES_LAT(LANES_LAT),
-                              .LAT(LANES_LAT), .ENTRY_W(CODE_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
+                              .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(MIN_DISP), .WEIGHT(WEIGHT),
+                              .TRUNC(TRUNC), .FEATURE_W(FEATURE_W), .GRADIENT(GRADIENT), .LANES_LAT(LANES_LAT),
+                              .LAT(CHAIN_LAT), .ENTRY_W(ENTRY_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
-          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*CODE_W]),
+          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*ENTRY_W]),
           .extra(penalties_in), .costs(costs[UF*COST_W-1:0]), .extra_out(penalties),
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */

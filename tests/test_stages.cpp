@@ -49,11 +49,12 @@ std::vector<StereoConfig> covering_configs() {
   beats.gap_interpolation = true;
   out.push_back(beats);
   // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,
-  // the confidence, adaptive P2, min-disp and the median).
+  // the confidence, adaptive P2, the fused cost, min-disp and the median).
   StereoConfig strips = beats;
   strips.gap_interpolation = false;
   strips.confidence = true;
   strips.p2_adapt = 4;
+  strips.fused_weight = 4;
   strips.min_disp = 3;
   strips.subpixel_bits = 2;
   strips.uniqueness = 10;

@@ -366,8 +366,8 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   const double subpixel =
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
-  // winner-take-all, the sub-pixel fit, the confidence, adaptive P2 and the median are there once
-  // per strip; the options strips leave out stay 0.
+  // winner-take-all, the sub-pixel fit, the confidence, adaptive P2, the fused term and the
+  // median are there once per strip; the options strips leave out stay 0.
   const double sets = d.strips;
   return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
           (ring + ring_features) * sets,
@@ -406,7 +406,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           speckle_registers(d),
           // fpstereo_fused_term's lanes: the difference, truncation, weighting and sum, as LUTs
           // per register bit
-          fused_term_registers(d), speckle_registers(d)};
+          fused_term_registers(d) * sets, speckle_registers(d)};
 }
 
 const std::vector<std::string>& group_names() {

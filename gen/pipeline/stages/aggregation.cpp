@@ -109,11 +109,13 @@ class AggregationStage : public Stage {
     for (const auto& p : aggregator_parameters(d))
       if (p.first != "G" && p.first != "G_W") parameters.push_back(p);
     core.instance("fpstereo_strip_aggregation", "aggregation",
-                  Connections{{"P", num(P)}} + parameters +
+                  Connections{{"P", num(P)}} + parameters + fused_cost_parameters(d) +
                       Connections{{"CODES", "1"},
                                   {"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
                                   {"CODE_W", num(code_bits)},
+                                  {"ENTRY_W", num(d.code_entry_bits)},
                                   {"LANES_LAT", num(d.cost_lanes_latency)},
+                                  {"CHAIN_LAT", num(d.cost_latency)},
                                   {"COST_LEAD", num(d.cost_lead)},
                                   {"RAM", "1"},
                                   {"SLOT_ROWS", num(d.slot_rows)},
@@ -132,7 +134,7 @@ class AggregationStage : public Stage {
                                   {"MIN_DISP", num(c.min_disp)},
                                   {"EXTRA_W", num(d.penalty_bits)}},
                   {{"cost_raddr", "strip_raddr"},
-                   {"cost_q", fmt::format("{}'d0", P * (2 * code_bits + d.penalty_bits))},
+                   {"cost_q", fmt::format("{}'d0", P * (2 * d.code_entry_bits + d.penalty_bits))},
                    {"sums", "strip_sums"},
                    {"sums_active", "strip_active"},
                    {"sums_x", "strip_x"},

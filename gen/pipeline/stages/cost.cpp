@@ -59,14 +59,7 @@ class CostStage : public Stage {
     }
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
     // costs validate() lets have it).
-    if (c.fused_weight != 0) {
-      core.wire("feature_base", w.fused_feature);
-      core.wire("feature_match", w.fused_feature);
-      core.instance("fpstereo_fused_features", "fused_features",
-                    {{"N", num(c.window)},
-                     {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"},
-                     {"FEATURE_W", num(w.fused_feature)}});
-    }
+    if (c.fused_weight != 0) fused_features(d, core);
     if (!d.reorders_codes) raster_cost(d, core);
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
@@ -85,24 +78,61 @@ class CostStage : public Stage {
                     {{"window", "window_left"}, {"penalties", "cost_penalties"}});
       return;
     }
-    // With strips, one per pixel of the slot, on its window in the front end's arrays (pixel q's
-    // columns q to q + N - 1, as fpstereo_transform cuts them); cost_penalties holds pixel q's at
+    // With strips, one per pixel of the slot, on its window; cost_penalties holds pixel q's at
     // q * penalty_bits.
-    const int n = c.window, cols = window_columns(d);
     std::string all;
     for (int q = 0; q < d.strips; ++q) {
-      std::string window;
-      for (int i = n; i-- > 0;)
-        window += fmt::format("{}window_left[{}:{}]", i + 1 < n ? ", " : "", (int64_t(i) * cols + q + n) * 8 - 1,
-                              (int64_t(i) * cols + q) * 8);
       const std::string net = fmt::format("cost_penalties_{}", q);
       core.wire(net, d.penalty_bits);
       core.instance("fpstereo_adaptive_p2", fmt::format("adaptive_p2_{}", q), parameters,
-                    {{"window", "{" + window + "}"}, {"penalties", net}});
+                    {{"window", strip_window(d, "window_left", q)}, {"penalties", net}});
       all = net + (q ? ", " : "") + all;
     }
     core.wire("cost_penalties", int64_t(d.strips) * d.penalty_bits);
     core.logic(fmt::format("  assign cost_penalties = {{{}}};\n", all), {"cost_penalties"});
+  }
+
+  // The fused cost's features of the base and match windows' centres, registered with the codes;
+  // with strips one pair per pixel of the slot (pixel q's at q * FEATURE_W).
+  static void fused_features(const RtlDesign& d, CoreBuilder& core) {
+    const StereoConfig& c = d.cfg;
+    const int bits = d.widths.fused_feature, P = d.strips;
+    const Connections parameters = {{"N", num(c.window)},
+                                    {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"},
+                                    {"FEATURE_W", num(bits)}};
+    core.wire("feature_base", int64_t(P) * bits);
+    core.wire("feature_match", int64_t(P) * bits);
+    if (P == 1) {
+      core.instance("fpstereo_fused_features", "fused_features", parameters);
+      return;
+    }
+    std::string bases, matches;
+    for (int q = 0; q < P; ++q) {
+      const std::string base = fmt::format("feature_base_{}", q), match = fmt::format("feature_match_{}", q);
+      core.wire(base, bits);
+      core.wire(match, bits);
+      core.instance("fpstereo_fused_features", fmt::format("fused_features_{}", q), parameters,
+                    {{"window_left", strip_window(d, "window_left", q)},
+                     {"window_right", strip_window(d, "window_right", q)},
+                     {"col_valid", fmt::format("col_valid[{}:{}]", q + c.window - 1, q)},
+                     {"feature_base", base},
+                     {"feature_match", match}});
+      bases = base + (q ? ", " : "") + bases;
+      matches = match + (q ? ", " : "") + matches;
+    }
+    core.logic(fmt::format("  assign feature_base = {{{}}};\n  assign feature_match = {{{}}};\n", bases, matches),
+               {"feature_base", "feature_match"});
+  }
+
+  // With strips, pixel q's N x N window in the front end's arrays (columns q to q + N - 1, as
+  // fpstereo_transform cuts them).
+  static std::string strip_window(const RtlDesign& d, const std::string& array, int q) {
+    const int n = d.cfg.window, cols = window_columns(d);
+    std::string window;
+    for (int i = n; i-- > 0;)
+      window += fmt::format("{}{}[{}:{}]", i + 1 < n ? ", " : "", array, (int64_t(i) * cols + q + n) * 8 - 1,
+                            (int64_t(i) * cols + q) * 8);
+    return "{" + window + "}";
   }
 
   // The raster cost stage of the cost function: the centre it holds and its lanes' costs.

@@ -98,22 +98,42 @@ class CostReorderStage : public Stage {
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
-    const int P = d.strips, code_bits = std::max(1, d.widths.code), extra = d.penalty_bits;
+    const int P = d.strips, entry_bits = d.code_entry_bits, extra = d.penalty_bits;
     core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
-    const std::string match = strip_match_codes(d, core);
+    // A pixel's entry is its code, with the fused cost its feature above it.
+    std::string base = "code_base", match = "code_match";
+    if (d.cfg.fused_weight != 0) {
+      const int code_bits = std::max(1, d.widths.code), feature_bits = d.widths.fused_feature;
+      std::string bases, matches;
+      for (int q = P; q-- > 0;) {
+        const std::string sep = q ? ", " : "";
+        const auto slice = [&](const char* net, int bits) {
+          return fmt::format("{}[{}:{}]", net, (q + 1) * bits - 1, q * bits);
+        };
+        bases += slice("feature_base", feature_bits) + ", " + slice("code_base", code_bits) + sep;
+        matches += slice("feature_match", feature_bits) + ", " + slice("code_match", code_bits) + sep;
+      }
+      core.wire("entry_base", int64_t(P) * entry_bits);
+      core.wire("entry_match", int64_t(P) * entry_bits);
+      core.logic(fmt::format("  assign entry_base = {{{}}};\n  assign entry_match = {{{}}};\n", bases, matches),
+                 {"entry_base", "entry_match"});
+      base = "entry_base";
+      match = "entry_match";
+    }
+    match = strip_match_entries(d, core, match);
     const std::string in_frame = fmt::format(
         "{{transform_x[{}:0], {}'d0}} < frame_width && transform_y >= 0 && transform_y < $signed({{2'b00, frame_height}})",
         d.x_bits - 1 - clog2(P), clog2(P));
     core.wire("code_we", 1);
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
-    core.wire("code_data", int64_t(2 * code_bits + extra) * P);
-    // Pixel q's entry: {its penalties (adaptive P2), its match code, its base code}, the codes
-    // from nets that hold a slot's P codes from bit `lsb` on.
+    core.wire("code_data", int64_t(2 * entry_bits + extra) * P);
+    // Pixel q's word: {its penalties (adaptive P2), its match entry, its base entry}, the entries
+    // from nets that hold a slot's P entries from bit `lsb` on.
     auto entries = [&](const std::string& matches, int64_t match_lsb, const std::string& bases, int64_t base_lsb) {
       std::string data;
       for (int q = P; q-- > 0;) {
-        const int64_t lo = int64_t(q) * code_bits, hi = lo + code_bits - 1;
+        const int64_t lo = int64_t(q) * entry_bits, hi = lo + entry_bits - 1;
         data += fmt::format("{}{}{}[{}:{}], {}[{}:{}]", q + 1 < P ? ", " : "",
                             extra ? fmt::format("cost_penalties[{}:{}], ", (q + 1) * extra - 1, q * extra) : "",
                             matches, match_lsb + hi, match_lsb + lo, bases, base_lsb + hi, base_lsb + lo);
@@ -125,18 +145,19 @@ class CostReorderStage : public Stage {
                              "  assign code_slot = transform_x;\n"
                              "  assign code_row = transform_slot;\n"
                              "  assign code_data = {};\n",
-                             in_frame, entries(match, 0, "code_base", 0)),
+                             in_frame, entries(match, 0, base, 0)),
                  {"code_we", "code_slot", "code_row", "code_data"});
       return;
     }
     // Adaptive P2's penalties leave fpstereo_adaptive_p2 a slot and LAT steps after the codes
     // (fpstereo_code_reorder's penalty RAM waits as long): the writes wait with them, so that
-    // each entry holds its pixel's. code_held: {in the frame, slot, row slot, match codes, base codes}.
-    const int64_t codes = int64_t(P) * code_bits, held = 1 + d.x_bits + d.cost_row_bits + 2 * codes;
+    // each word holds its pixel's. code_held: {in the frame, slot, row slot, match entries, base
+    // entries}.
+    const int64_t codes = int64_t(P) * entry_bits, held = 1 + d.x_bits + d.cost_row_bits + 2 * codes;
     core.logic(fmt::format("  reg [{}:0] code_held;\n"
                            "  always @(posedge clk)\n"
-                           "    if (shift) code_held <= {{{}, transform_x, transform_slot, {}, code_base}};\n",
-                           held - 1, in_frame, match),
+                           "    if (shift) code_held <= {{{}, transform_x, transform_slot, {}, {}}};\n",
+                           held - 1, in_frame, match, base),
                {}, {{"code_held", held}});
     core.wire("code_later", held);
     core.instance("fpstereo_delay", "code_wait", {{"WIDTH", num(held)}, {"DEPTH", num(d.cost_latency)}, {"RESET", "0"}},
@@ -150,19 +171,19 @@ class CostReorderStage : public Stage {
                {"code_we", "code_slot", "code_row", "code_data"});
   }
 
-  // The match codes that go beside the base codes: pixel x's entry holds the match pixel
-  // x - min_disp's code (fpstereo_code_reorder's match_wait), a slot's P codes m / P slots late and
-  // turned by m mod P pixels across two slots. Returns the net.
-  static std::string strip_match_codes(const RtlDesign& d, CoreBuilder& core) {
-    const int P = d.strips, m = d.cfg.min_disp, code_bits = std::max(1, d.widths.code);
-    if (m == 0) return "code_match";
+  // The match entries that go beside the base entries: pixel x's word holds the match pixel
+  // x - min_disp's entry (fpstereo_code_reorder's match_wait), a slot's P entries (the net
+  // `match`) m / P slots late and turned by m mod P pixels across two slots. Returns the net.
+  static std::string strip_match_entries(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
+    const int P = d.strips, m = d.cfg.min_disp, entry_bits = d.code_entry_bits;
+    if (m == 0) return match;
     const int slots = m / P, turn = m % P;
-    const int64_t bits = int64_t(P) * code_bits;
-    std::string late = "code_match";
+    const int64_t bits = int64_t(P) * entry_bits;
+    std::string late = match;
     if (slots > 0) {
       core.wire("match_late", bits);
       core.instance("fpstereo_delay", "match_wait", {{"WIDTH", num(bits)}, {"DEPTH", num(slots)}, {"RESET", "0"}},
-                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", "code_match"}, {"out", "match_late"}});
+                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", match}, {"out", "match_late"}});
       late = "match_late";
     }
     if (turn == 0) return late;
@@ -172,7 +193,7 @@ class CostReorderStage : public Stage {
     core.instance("fpstereo_delay", "match_turn", {{"WIDTH", num(bits)}, {"DEPTH", "1"}, {"RESET", "0"}},
                   {{"rst", "1'b0"}, {"en", "shift"}, {"in", late}, {"out", "match_later"}});
     core.logic(fmt::format("  assign match_turned = {{{}[{}:0], match_later[{}:{}]}};\n", late,
-                           (P - turn) * code_bits - 1, bits - 1, (P - turn) * code_bits),
+                           (P - turn) * entry_bits - 1, bits - 1, (P - turn) * entry_bits),
                {"match_turned"});
     return "match_turned";
   }
