@@ -1884,7 +1884,9 @@ module fps_census7_d128u32_6e9658_aggregator #(
   /* verilator lint_on UNUSEDSIGNAL */
   wire [X_W-1:0]   x2 = `FPS_TAG_X(tag2);
   wire [G_W-1:0]   g2 = `FPS_TAG_GROUP(tag2);
+  /* verilator lint_off UNUSEDSIGNAL */  // the 45-degree path's kept minima
   wire [K_W-1:0]   chain2 = `FPS_TAG_CHAIN(tag2);
+  /* verilator lint_on UNUSEDSIGNAL */
   // Whether S2's step is its pixel's first or last group, the strip's first pixel, and which of
   // its predecessors lie in the frame: registered from S1's tag, so that the lanes' neighbour
   // selection starts from a register (logic depth, docs/timing.md).
@@ -1915,8 +1917,19 @@ module fps_census7_d128u32_6e9658_aggregator #(
       column_in2 <= {{1'b0, x1} + 1'b1 < {1'b0, frame_width}, x1 < frame_width};
     end
   /* verilator lint_off UNUSEDSIGNAL */  // the state RAMs of the 0 and 45 degree paths use these
-  wire [STATE_AW-1:0] state_addr2 = chain2 * G + g2;
-  wire [STATE_AW-1:0] state_next_addr2 = last_group2 ? state_addr2 : state_addr2 + 1'b1;
+  // The state RAMs' addresses of S2 (the chain's slot, its group and the next group's), registered
+  // from S1's tag like the flags above.
+  wire [K_W-1:0] chain1 = `FPS_TAG_CHAIN(tag1);
+  wire [STATE_AW-1:0] state_addr1 = chain1 * G + g1;
+  reg  [STATE_AW-1:0] state_addr2, state_next_addr2;
+  always @(posedge clk)
+    if (restart) begin
+      state_addr2 <= {STATE_AW{1'b0}};
+      state_next_addr2 <= G == 1 ? {STATE_AW{1'b0}} : {{(STATE_AW-1){1'b0}}, 1'b1};
+    end else if (adv) begin
+      state_addr2 <= state_addr1;
+      state_next_addr2 <= g1 == G - 1 ? state_addr1 : state_addr1 + 1'b1;
+    end
   /* verilator lint_on UNUSEDSIGNAL */
 
   wire [X_W-1:0]   x4 = `FPS_TAG_X(tag4);
@@ -1999,15 +2012,19 @@ module fps_census7_d128u32_6e9658_aggregator #(
       always @(posedge clk)
         if (adv) below_q <= cur[LANES_W-1 -: PATH_W];
       reg [PATH_W-1:0] minimum [0:K-1];
+      // The chain's previous minimum for S2, read in S1 (with the write of that step passed on).
+      reg [PATH_W-1:0] min2;
       fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_0), .cost(cost2), .has_pred(left_in2), .prev(first2 ? edge_l0 : cur),
         .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]),
-        .prev_min(first2 ? edge_min0 : minimum[chain2]), .path(path_0));
+        .prev_min(first2 ? edge_min0 : min2), .path(path_0));
       fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
         reduce (.clk(clk), .en(adv), .path(path_0), .group(`FPS_TAG_GROUP(tag_m)), .minimum(min_0));
       always @(posedge clk)
         if (adv && pixel_done_m) minimum[`FPS_TAG_CHAIN(tag_m)] <= min_0;
+      always @(posedge clk)
+        if (adv) min2 <= pixel_done_m && `FPS_TAG_CHAIN(tag_m) == chain1 ? min_0 : minimum[chain1];
       if (STRIPS != 0) begin : strip_edge
         reg [LANES_W-1:0] last_q;
         reg [PATH_W-1:0]  last_min_q;
@@ -2058,10 +2075,14 @@ module fps_census7_d128u32_6e9658_aggregator #(
       reg [PATH_W-1:0] minimum [0:K-1];
       always @(posedge clk)
         if (adv && last_group2) minimum[chain2] <= above_min2;
+      // The chain's kept minimum for S2, read in S1 (with the write of that step passed on).
+      reg [PATH_W-1:0] min2;
+      always @(posedge clk)
+        if (adv) min2 <= last_group2 && chain2 == chain1 ? above_min2 : minimum[chain1];
       fps_census7_d128u32_6e9658_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
         .clk(clk), .en(adv), .p1(p1), .p2(p2_45), .cost(cost2), .has_pred(left_in2 && above_in2),
         .prev(first2 ? edge_a45 : cur), .prev_below(first_group2 ? ONES : below_q),
-        .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : minimum[chain2]),
+        .prev_above(last_group2 ? ONES : nxt[PATH_W-1:0]), .prev_min(first2 ? edge_a45_min : min2),
         .path(path_45));
       fps_census7_d128u32_6e9658_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))
