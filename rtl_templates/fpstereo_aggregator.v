@@ -218,12 +218,14 @@ module fpstereo_aggregator #(
         end
       end
     end
-  wire [X_W-1:0] x_local0 = ka * SEGMENT + ja;
-  wire [X_W-1:0] x0 = X_FIRST + x_local0;
-  // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
+  // The step's pixel, a register fed like the read address.
+  reg [X_W-1:0] x0;
+  always @(posedge clk)
+    if (restart) x0 <= X_FIRST;
+    else if (step) x0 <= X_FIRST + ka_a * SEGMENT + ja_a;
+  // Chain ka's row is ta - CHAIN_BASE - ka: negative before the first frame's row 0, the previous
+  // frame's once wrapped (the difference plus the frame's height).
   wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
-  wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
-  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   // (row-time - CHAIN_BASE - ka) modulo the output RAMs' rows, kept non-negative
   localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
@@ -242,15 +244,41 @@ module fpstereo_aggregator #(
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
+  // With a cost lead the tag is finished in the lead's first step: S0 registers the row's
+  // difference with what decides it (the frame's height, whether the rows have wrapped, whether
+  // the pixel's column is in the frame), so that no path runs from the counters through the
+  // difference, the wrap's sum and the height's compare (logic depth, docs/timing.md).
+  localparam ROW_IN_W = 1 + (Y_W + 1) + 1 + Y_W;
+  localparam REST_W = X_W + G_W + K_W + OUT_ROW_W;
+  wire [ROW_IN_W+REST_W-1:0] tag_parts0 = {agg_on && x0 < frame_width, lagged0, wrapped, frame_height,
+                                           x0, ga, chain_slot0, out_slot0};
+  wire [ROW_IN_W+REST_W-1:0] tag_parts;
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
-  wire [TAG_W-1:0] tag_led;
+  wire [TAG_W-1:0] tag_first, tag_led;
   generate
     if (COST_LEAD > 1) begin : lead
-      fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
-        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+      fpstereo_delay #(.WIDTH(ROW_IN_W + REST_W), .DEPTH(1), .RESET(1)) tag_start (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_parts0), .out(tag_parts));
     end else begin : no_lead
-      assign tag_led = tag0;
+      assign tag_parts = tag_parts0;
+    end
+  endgenerate
+  wire         column_in = tag_parts[ROW_IN_W+REST_W-1];
+  wire [Y_W:0] lagged = tag_parts[ROW_IN_W+REST_W-2 -: Y_W+1];
+  wire         rows_wrapped = tag_parts[REST_W+Y_W];
+  wire [Y_W-1:0] height = tag_parts[REST_W+Y_W-1 -: Y_W];
+  // The row, and whether it lies in the frame: a negative difference is the previous frame's row
+  // (its sum with the height, always below it) once wrapped, a non-negative one is below the height.
+  wire [Y_W:0] wrapped_row = lagged + {1'b0, height};
+  wire [Y_W:0] row = rows_wrapped && lagged[Y_W] ? wrapped_row : lagged;
+  wire active = column_in && (lagged[Y_W] ? rows_wrapped && !wrapped_row[Y_W] : lagged[Y_W-1:0] < height);
+  assign tag_first = {active, tag_parts[REST_W-1 -: X_W], row, tag_parts[G_W+K_W+OUT_ROW_W-1:0]};
+  generate
+    if (COST_LEAD > 2) begin : lead_rest
+      fpstereo_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 2), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_first), .out(tag_led));
+    end else begin : no_lead_rest
+      assign tag_led = tag_first;
     end
   endgenerate
   always @(posedge clk)

@@ -16,8 +16,6 @@ module fpstereo_code_reorder #(
   parameter ROW_W = 1,
   parameter AW = 7,
   parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter SIGNED_Y_W = 8,
   parameter MIN_DISP = 0,
   parameter EXTRA_W = 0,
   parameter EXTRA_LAT = 2
@@ -25,13 +23,12 @@ module fpstereo_code_reorder #(
   input  wire                   clk,
   input  wire                   adv,
   input  wire                   shift,
-  input  wire [X_W-1:0]         frame_width,
-  input  wire [Y_W-1:0]         frame_height,
   input  wire [ENTRY_W-1:0]     base_entry,
   input  wire [ENTRY_W-1:0]     match_entry,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [ROW_W-1:0]       transform_slot,
+  // whether transform_x and its row lie in the frame (fpstereo_front_end)
+  input  wire                   transform_in_frame,
   /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
@@ -41,7 +38,7 @@ module fpstereo_code_reorder #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2 || MIN_DISP < 0) begin : invalid
+    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || MIN_DISP < 0) begin : invalid
       fpstereo_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
     end
   endgenerate
@@ -54,15 +51,12 @@ module fpstereo_code_reorder #(
       assign match_now = match_entry;
     end
   endgenerate
-  wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
-  wire in_image = {1'b0, transform_x} < width_x && transform_y >= 0 && transform_y < height_y;
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
   /* verilator lint_off WIDTH */
   wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
   /* verilator lint_on WIDTH */
   fpstereo_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
-    .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
+    .clk(clk), .we(shift && transform_in_frame), .waddr(waddr), .wdata({match_now, base_entry}),
     .re(adv), .raddr(raddr), .rdata(q));
   generate
     if (EXTRA_W > 0) begin : extras
@@ -71,7 +65,7 @@ module fpstereo_code_reorder #(
       reg [POSITION_W-1:0] held;
       wire [POSITION_W-1:0] at;
       always @(posedge clk)
-        if (shift) held <= {in_image, transform_slot, transform_x};
+        if (shift) held <= {transform_in_frame, transform_slot, transform_x};
       fpstereo_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
         .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
       /* verilator lint_off WIDTH */

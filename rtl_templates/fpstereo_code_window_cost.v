@@ -107,10 +107,10 @@ module fpstereo_code_window_cost #(
   wire [SHD_K-1:0] code_newest_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) code_bounds (
-    .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid),
+    .clk(clk), .x(codes_x), .y(codes_y), .width(width_x), .height(height_y), .row_valid(code_row_valid),
     .col_valid(code_col_valid));
   fpstereo_window_bounds #(.SIDE(SHD_K), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) code_newest_bounds (
-    .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows),
+    .clk(clk), .x(codes_x), .y(code_newest_y), .width(width_x), .height(height_y), .row_valid(code_newest_rows),
     .col_valid(code_newest_unused_columns));
   wire [SHD_K-1:0] code_newest_row_valid = code_newest_in_row ? code_newest_rows : {SHD_K{1'b0}};
   wire [SHD_K*SHD_K*CODE_W-1:0] base_masked;

@@ -67,7 +67,9 @@ module fpstereo_front_end #(
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
   output reg  signed [SIGNED_Y_W-1:0] transform_y,
-  output reg  [COST_ROW_W-1:0]    transform_slot
+  output reg  [COST_ROW_W-1:0]    transform_slot,
+  // whether that position lies in the frame (its slot's first pixel and its row)
+  output reg                    transform_in_frame
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -260,10 +262,10 @@ module fpstereo_front_end #(
   wire [X_W-1:0] centre_pixel = centre_x << LOG_P;
   /* verilator lint_on WIDTH */
   fpstereo_window_bounds #(.SIDE(N), .COLS(N + P - 1), .COL_LAG(R), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
-    .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .clk(clk), .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
   fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
-    .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
+    .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
@@ -273,6 +275,18 @@ module fpstereo_front_end #(
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
       newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
+    end
+  // Whether the transform's position lies in the frame, registered a shift ahead with it, so that
+  // the code writes' enable starts from a register (logic depth, docs/timing.md). Cleared by a
+  // restart: the windows of the first shifts lie above the image.
+  reg window_in_frame;
+  always @(posedge clk)
+    if (restart) begin
+      window_in_frame <= 1'b0;
+      transform_in_frame <= 1'b0;
+    end else if (shift) begin
+      window_in_frame <= {1'b0, centre_pixel} < width_x && centre_y >= 0 && centre_y < height_y;
+      transform_in_frame <= window_in_frame;
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;

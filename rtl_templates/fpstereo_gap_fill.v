@@ -1,15 +1,21 @@
 `resetall
 `default_nettype none
 // Gap interpolation (docs/semantics.md, section 7), one row behind its input. Each input event
-// brings the word of (x, y); the stage stores row y and, in the same event, emits its result for
-// (x, y - 1), so the caller sends one more (dummy) row after the image. Every maximal run of invalid
-// words in a row is filled with the smaller of the two valid words around it, or with the one there
-// is at a row end; a row without valid words stays invalid.
-//   Writing row y: each word is stored with the start of the invalid run it belongs to; when a run
-//   ends, its right neighbour (or "none" at the row end) is stored under the run's start.
-//   Reading row y - 1: the left neighbour is the last valid word read; the right one is fetched
-//   by the run start stored with the word. Two rows of each (ping-pong by row parity, counted
-//   from the rows' first words so that it alternates across back-to-back frames too).
+// brings the P words of slot x of row y (pixels x * P + q, word q in bits q * WORD_W; P = 1: a
+// pixel); the stage stores row y and, in the same event, emits its result for slot x of row y - 1,
+// so the caller sends one more (dummy) row after the image. Every maximal run of invalid words in a
+// row is filled with the smaller of the two valid words around it, or with the one there is at a
+// row end; a row without valid words stays invalid.
+//   Writing row y: each word is stored with the first pixel of the invalid run it belongs to. A run
+//   that ends in a later slot than its first pixel's (its slots read the word that ends it from a
+//   RAM) has that word stored under its first pixel when it ends; as a slot's first run is the only
+//   one that can have begun in an earlier slot, that is one write a slot. The run that reaches the
+//   row's end (there is no word after it) is kept in a register per row parity instead.
+//   Reading row y - 1: the left neighbour is the last valid word read before (in the slot, or the
+//   register `left`); the right one is the next valid word of the slot, or, for the slot's last run,
+//   the word stored under its first pixel (none for the row end's run). Two rows of each (ping-pong
+//   by row parity, counted from the rows' first words so that it alternates across back-to-back
+//   frames too).
 // Once wrapped (back-to-back frames), the next frame's row 0 brings the result of this frame's
 // last row, in place of the dummy row.
 // Latency: the result for (x, y - 1) leaves 4 adv-steps after the event of (x, y): the first
@@ -20,40 +26,47 @@ module fpstereo_gap_fill #(
   parameter W = 64,
   // word: disparity bits with the invalid flag on top
   parameter WORD_W = 8,
+  // width of a pixel's x (and of a slot's), of a row
   parameter X_W = 7,
-  parameter Y_W = 6
+  parameter Y_W = 6,
+  // words a slot: 1, 2 or 4 (W a multiple of P)
+  parameter P = 1
 ) (
   input  wire              clk,
   input  wire              restart,
   input  wire              adv,
   // the frame's size
   input  wire [Y_W-1:0]    frame_height,
-  // the frame's last column and row, registers of the core (the frame's size holds while it runs)
+  // the frame's last slot and row, registers of the core (the frame's size holds while it runs)
   input  wire [X_W-1:0]    frame_last_x,
   input  wire [Y_W-1:0]    frame_last_y,
   input  wire              wrapped,
   input  wire              in_event,
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
-  input  wire [WORD_W-1:0] in_word,
+  input  wire [P*WORD_W-1:0] in_word,
   output reg               out_event,
   output reg  [X_W-1:0]    out_x,
   output reg  [Y_W-1:0]    out_y,
-  output reg  [WORD_W-1:0] out_word
+  output reg  [P*WORD_W-1:0] out_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (W < 1 || W >= (1 << X_W) || WORD_W < 2) begin : invalid
-      fpstereo_invalid_parameters_gap_fill_needs_X_W_holding_W_and_WORD_W_at_least_2 failed ();
+    if (W < 1 || W >= (1 << X_W) || WORD_W < 2 || (P != 1 && P != 2 && P != 4) || W % P != 0) begin : invalid
+      fpstereo_invalid_parameters_gap_fill_needs_X_W_holding_W_WORD_W_at_least_2_and_W_a_multiple_of_P failed ();
     end
   endgenerate
-  localparam ADDR_W = $clog2(2 * W);
+  localparam LOG_P = $clog2(P);
+  localparam SLOTS = W / P;
+  localparam SLOT_AW = $clog2(2 * SLOTS);
+  localparam PIXEL_AW = $clog2(2 * W);
+  localparam CELL_W = P * WORD_W + X_W;  // a slot's words and its last run's first pixel
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
   // ---- Stage 0: the event and what its position is.
   reg              event0, writing0, reading0, first0, last0;
   reg  [X_W-1:0]   x0;
   reg  [Y_W-1:0]   y_above0;  // the row read: in_y - 1, or the frame's last row above row 0
-  reg  [WORD_W-1:0] word0;
+  reg  [P*WORD_W-1:0] word0;
   // Only the event flags take restart: the words and positions beside them matter only with an
   // event, and their enables stay free of restart's logic (depth, docs/timing.md).
   always @(posedge clk)
@@ -75,10 +88,35 @@ module fpstereo_gap_fill #(
       word0 <= in_word;
     end
 
-  function [ADDR_W-1:0] address(input parity, input [X_W-1:0] x);
-    // verilator lint_off WIDTH
-    address = parity * W + x;
-    // verilator lint_on WIDTH
+  // verilator lint_off WIDTH
+  function [SLOT_AW-1:0] slot_address(input parity, input [X_W-1:0] x);
+    slot_address = parity * SLOTS + x;
+  endfunction
+  function [PIXEL_AW-1:0] pixel_address(input parity, input [X_W-1:0] pixel);
+    pixel_address = parity * W + pixel;
+  endfunction
+  // pixel q of slot x: x * P + q (below W)
+  function [X_W-1:0] pixel_of(input [X_W-1:0] x, input integer q);
+    pixel_of = (x << LOG_P) | q;
+  endfunction
+  // verilator lint_on WIDTH
+  // The first valid word of words from .. P - 1, and the last valid one of words 0 .. upto - 1
+  // after `prior` (INVALID: none).
+  function [WORD_W-1:0] first_valid(input [P*WORD_W-1:0] words, input integer from);
+    integer i;
+    begin
+      first_valid = INVALID;
+      for (i = P - 1; i >= 0; i = i - 1)
+        if (i >= from && !words[i*WORD_W + WORD_W - 1]) first_valid = words[i*WORD_W +: WORD_W];
+    end
+  endfunction
+  function [WORD_W-1:0] last_valid(input [WORD_W-1:0] prior, input [P*WORD_W-1:0] words, input integer upto);
+    integer i;
+    begin
+      last_valid = prior;
+      for (i = 0; i < P; i = i + 1)
+        if (i < upto && !words[i*WORD_W + WORD_W - 1]) last_valid = words[i*WORD_W +: WORD_W];
+    end
   endfunction
 
   // The row's half of the RAMs.
@@ -90,28 +128,51 @@ module fpstereo_gap_fill #(
 
   // ---- Writing row in_y.
   wire writing = writing0;
-  wire word_invalid = word0[WORD_W-1];
-  reg  run_open;  // the previous word of the row was invalid
+  reg  run_open;  // the previous slot's last word was invalid
   reg  [X_W-1:0] run_start;
   wire continues = run_open && !first0;
-  wire [X_W-1:0] start = continues ? run_start : x0;
+  wire [P-1:0] invalid0;
+  genvar q;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : write_word
+      assign invalid0[q] = word0[q*WORD_W + WORD_W - 1];
+    end
+  endgenerate
+  // The first pixel of the slot's last run (of interest where the last word is invalid): the pixel
+  // after the last valid word, or the start of the run open from the slot before.
+  function [X_W-1:0] last_run_start(input [X_W-1:0] open_start, input [P-1:0] invalids, input [X_W-1:0] x);
+    integer i;
+    begin
+      last_run_start = open_start;
+      for (i = 1; i < P; i = i + 1)
+        if (!invalids[i-1]) last_run_start = pixel_of(x, i);
+    end
+  endfunction
+  wire [X_W-1:0] last_start = last_run_start(continues ? run_start : pixel_of(x0, 0), invalid0, x0);
   always @(posedge clk)
     if (restart) run_open <= 1'b0;
     else if (adv && writing) begin
-      run_open <= word_invalid;
-      run_start <= start;
+      run_open <= invalid0[P-1];
+      run_start <= last_start;
     end
-  // Right neighbour of a run, stored under its start: the valid word that ends it, or invalid.
-  wire side_we = adv && writing && (word_invalid ? last0 : continues);
-  wire [ADDR_W-1:0] side_waddr = address(parity, word_invalid ? start : run_start);
+  // The run open from the slot before ends at the slot's first valid word: stored under its start.
+  wire side_we = adv && writing && continues && !(&invalid0);
+  // The run that reaches the row's end, per row parity (its start; open: there is one).
+  reg [1:0] tail_open;
+  reg [2*X_W-1:0] tail_start;
+  always @(posedge clk)
+    if (adv && writing && last0) begin
+      tail_open[parity] <= invalid0[P-1];
+      tail_start[parity*X_W +: X_W] <= last_start;
+    end
 
-  // ---- Reading row in_y - 1 (stage 1: the stored word; stage 2: the run's right neighbour).
+  // ---- Reading row in_y - 1 (stage 1: the stored words; stage 2: the last run's right neighbour).
   wire reading = reading0;
-  wire [WORD_W+X_W-1:0] stored;
-  fpstereo_ram_sdp #(.WIDTH(WORD_W + X_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) words (
-    .clk(clk), .we(adv && writing), .waddr(address(parity, x0)), .wdata({word0, start}),
-    .re(adv), .raddr(address(!parity, x0)), .rdata(stored));
-  reg           event1, first1;  // first1: x1 is the row's first column
+  wire [CELL_W-1:0] stored;
+  fpstereo_ram_sdp #(.WIDTH(CELL_W), .DEPTH(2 * SLOTS), .ADDR_W(SLOT_AW)) words (
+    .clk(clk), .we(adv && writing), .waddr(slot_address(parity, x0)), .wdata({word0, last_start}),
+    .re(adv), .raddr(slot_address(!parity, x0)), .rdata(stored));
+  reg           event1, first1;  // first1: x1 is the row's first slot
   reg [X_W-1:0] x1;
   reg [Y_W-1:0] y1;
   reg           parity1;
@@ -125,20 +186,35 @@ module fpstereo_gap_fill #(
       y1 <= y_above0;
       parity1 <= !parity;
     end
-  wire [WORD_W-1:0] word1 = stored[WORD_W+X_W-1 -: WORD_W];
-  wire [X_W-1:0]    start1 = stored[X_W-1:0];
+  wire [P*WORD_W-1:0] word1 = stored[CELL_W-1:X_W];
+  wire [X_W-1:0]    start1 = stored[X_W-1:0];  // the slot's last run's
   wire [WORD_W-1:0] right2;
-  fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(ADDR_W)) right_neighbours (
-    .clk(clk), .we(side_we), .waddr(side_waddr), .wdata(word_invalid ? INVALID : word0),
-    .re(adv), .raddr(address(parity1, start1)), .rdata(right2));
+  fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(PIXEL_AW)) right_neighbours (
+    .clk(clk), .we(side_we), .waddr(pixel_address(parity, run_start)), .wdata(first_valid(word0, 0)),
+    .re(adv), .raddr(pixel_address(parity1, start1)), .rdata(right2));
+  // Whether the slot's last run is the row end's (no right neighbour).
+  reg to_end2;
+  always @(posedge clk)
+    if (adv) to_end2 <= tail_open[parity1] && start1 == tail_start[parity1*X_W +: X_W];
 
+  // Each word's nearest valid words in the slot: to its left (or before the slot, `left`) and to
+  // its right (INVALID: none in the slot).
   reg  [WORD_W-1:0] left;  // last valid word of the row read so far (invalid: none yet)
   wire [WORD_W-1:0] left_before = first1 ? INVALID : left;
   reg               event2;
   reg  [X_W-1:0]    x2;
   reg  [Y_W-1:0]    y2;
-  reg  [WORD_W-1:0] word2, left2;
-  // left is read only behind a row's first column (left_before), so no restart needs to clear it.
+  reg  [P*WORD_W-1:0] word2, left2, near2;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : read_word
+      always @(posedge clk)
+        if (adv) begin
+          left2[q*WORD_W +: WORD_W] <= last_valid(left_before, word1, q);
+          near2[q*WORD_W +: WORD_W] <= first_valid(word1, q + 1);
+        end
+    end
+  endgenerate
+  // left is read only behind a row's first slot (left_before), so no restart needs to clear it.
   always @(posedge clk)
     if (restart) event2 <= 1'b0;
     else if (adv) event2 <= event1;
@@ -147,14 +223,23 @@ module fpstereo_gap_fill #(
       x2 <= x1;
       y2 <= y1;
       word2 <= word1;
-      left2 <= left_before;
-      if (event1) left <= word1[WORD_W-1] ? left_before : word1;
+      if (event1) left <= last_valid(left_before, word1, P);
     end
 
-  // ---- Stage 3: the result.
-  wire left_ok = !left2[WORD_W-1], right_ok = !right2[WORD_W-1];
-  wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right2 < left2 ? right2 : left2)
-                         : left_ok ? left2 : right2;
+  // ---- Stage 3: the results.
+  wire [WORD_W-1:0] far = to_end2 ? INVALID : right2;  // the slot's last run's right neighbour
+  wire [P*WORD_W-1:0] results;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : result
+      wire [WORD_W-1:0] word = word2[q*WORD_W +: WORD_W], left_word = left2[q*WORD_W +: WORD_W];
+      wire [WORD_W-1:0] near = near2[q*WORD_W +: WORD_W];
+      wire [WORD_W-1:0] right_word = near[WORD_W-1] ? far : near;
+      wire left_ok = !left_word[WORD_W-1], right_ok = !right_word[WORD_W-1];
+      wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right_word < left_word ? right_word : left_word)
+                               : left_ok ? left_word : right_word;
+      assign results[q*WORD_W +: WORD_W] = word[WORD_W-1] ? filled : word;
+    end
+  endgenerate
   always @(posedge clk)
     if (restart) out_event <= 1'b0;
     else if (adv) out_event <= event2;
@@ -162,7 +247,7 @@ module fpstereo_gap_fill #(
     if (adv) begin
       out_x <= x2;
       out_y <= y2;
-      out_word <= word2[WORD_W-1] ? filled : word2;
+      out_word <= results;
     end
 endmodule
 `resetall

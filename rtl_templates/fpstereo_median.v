@@ -87,26 +87,23 @@ module fpstereo_median #(
   wire [M-1:0] row_valid;
   wire [M+P-2:0] col_valid;
   fpstereo_window_bounds #(.SIDE(M), .COLS(M + P - 1), .COL_LAG(RM), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
-    .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+    .clk(clk), .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid),
+    .col_valid(col_valid));
   wire [P*WORD_W-1:0] selected;
-  genvar q, i;
+  genvar q;
   generate
     for (q = 0; q < P; q = q + 1) begin : pixel
-      // window q's M x M words, row by row
       wire [M*M*WORD_W-1:0] words;
-      for (i = 0; i < M; i = i + 1) begin : row
-        assign words[i*M*WORD_W +: M*WORD_W] = window[(i*COLS + q)*WORD_W +: M*WORD_W];
-      end
+      fpstereo_window_cut #(.N(M), .COLS(COLS), .WORD_W(WORD_W), .Q(q)) cut (.array(window), .window(words));
       fpstereo_median_select #(.M(M), .WORD_W(WORD_W)) select (
         .clk(clk), .en(adv), .window(words), .row_valid(row_valid), .col_valid(col_valid[q +: M]),
         .median(selected[q*WORD_W +: WORD_W]));
     end
   endgenerate
-  /* verilator lint_off UNUSEDSIGNAL */  // the array's columns right of the last window (COLS > M + P - 1)
-  wire unused_columns = ^window;
-  /* verilator lint_on UNUSEDSIGNAL */
   // The centre's coordinates travel as long as the selection takes.
-  wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  // (the rows with events, a register: the frame size holds while a frame runs)
+  reg signed [SIGNED_Y_W-1:0] event_rows_y;
+  always @(posedge clk) event_rows_y <= height_y + EXTRA_ROWS;
   wire in_image = {1'b0, median_pixel} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
   wire [SIGNED_Y_W-1:0] median_row = median_y;

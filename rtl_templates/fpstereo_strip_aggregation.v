@@ -14,8 +14,9 @@
 // ({match, base}, HAMMING: census codes, else ranks) and its own fpstereo_chain_cost computes
 // the costs, the strips handing their match rings on as their rows move right. With RAM (and
 // CODES) the entries come from fpstereo_strip_code_reorder instead, written in raster order a
-// slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS), and each
-// strip's RAM holds (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
+// slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS; code_extra:
+// adaptive P2's penalties, a slot and EXTRA_LAT steps later), and each strip's RAM holds
+// (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
 // go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
 // check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), with CONFIDENCE the confidence
 // (fpstereo_confidence, from fpstereo_wta_unique's two best sums: UNIQUE must be set), and its
@@ -71,6 +72,9 @@ module fpstereo_strip_aggregation #(
   parameter RAM = 0,
   parameter SLOT_ROWS = 10,
   parameter SLOT_W = 4,
+  // with RAM and EXTRA_W: the steps adaptive P2's penalties come after their slot's entries (the
+  // code writes wait as long, fpstereo_strip_code_reorder)
+  parameter EXTRA_LAT = 1,
   parameter OUTPUT = 0,
   // the output words' disparity width; the winner's (whole pixels) is WTA_DISP_W
   parameter DISP_W = 4,
@@ -82,8 +86,12 @@ module fpstereo_strip_aggregation #(
   parameter SUBPIXEL_BITS = 0,
   parameter EQUIANGULAR = 1,
   parameter WTA_WORD_LAG = 1,
+  // fpstereo_subpixel's latency (0 without it): the confidence waits as long for the words
+  parameter SUBPIXEL_LAT = 0,
   // 1: each word leaves with its pixel's 8-bit confidence above it
-  parameter CONFIDENCE = 0
+  parameter CONFIDENCE = 0,
+  // with OUTPUT: rows read after the frame's (gap interpolation's, fpstereo_strip_disparity_reorder)
+  parameter EXTRA_ROWS = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -103,7 +111,8 @@ module fpstereo_strip_aggregation #(
   input  wire                  code_we,
   input  wire [X_W-1:0]        code_slot,
   input  wire [SLOT_W-1:0]     code_row,
-  input  wire [P*(2*ENTRY_W+EXTRA_W)-1:0] code_data,
+  input  wire [P*2*ENTRY_W-1:0] code_data,
+  input  wire [P*(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] code_extra,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [P*UF*SUM_W-1:0] sums,
   output wire [P-1:0]          sums_active,
@@ -147,10 +156,11 @@ module fpstereo_strip_aggregation #(
       if (CODES == 0) begin : invalid_ram
         fpstereo_invalid_parameters_strip_aggregation_RAM_needs_CODES failed ();
       end
-      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(Q_W),
-                                    .SLOT_ROWS(SLOT_ROWS), .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
+      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(2 * ENTRY_W),
+                                    .EXTRA_W(EXTRA_W), .EXTRA_LAT(EXTRA_LAT), .SLOT_ROWS(SLOT_ROWS),
+                                    .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
         .clk(clk), .adv(adv), .we(code_we), .wslot(code_slot), .wrow(code_row), .wdata(code_data),
-        .raddr(cost_raddr), .q(entries));
+        .extra(code_extra), .raddr(cost_raddr), .q(entries));
     end else begin : from_port
       assign entries = cost_q;
     end
@@ -278,7 +288,7 @@ module fpstereo_strip_aggregation #(
           wire [DISP_W:0] word;
           // The sub-pixel fit, when there, holds the words its latency after the winner's sums.
           fpstereo_confidence #(.SUM_W(SUM_W), .DATA_W(DATA_W),
-                                .IN_DELAY(SUBPIXEL_BITS != 0 ? SUBPIXEL_BITS + 6 : 0), .LAT(10)) divider (
+                                .IN_DELAY(SUBPIXEL_LAT), .LAT(10)) divider (
             .clk(clk), .restart(restart), .adv(adv), .best(wta_best[p*SUM_W +: SUM_W]),
             .second(wta_second[p*SUM_W +: SUM_W]),
             .data_in({out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W],
@@ -314,7 +324,7 @@ module fpstereo_strip_aggregation #(
         assign out_word = wta_word;
       end
       fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(WORD_W - 1), .X_W(X_W),
-                                         .Y_W(Y_W), .SLOT_W(OUT_ROW_W)) disparities (
+                                         .Y_W(Y_W), .SLOT_W(OUT_ROW_W), .EXTRA_ROWS(EXTRA_ROWS)) disparities (
         .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
         .frame_height(frame_height), .active(rated_active), .x(rated_x), .slot(rated_slot), .word(rated_word),
         .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));

@@ -11,12 +11,17 @@
 // is a constant modulus of it. A write reaches its RAM a clock after its inputs: each strip
 // registers whether it is its own, its row's first word and the slot's word within the row, so
 // that neither the frame's bounds (in we) nor the modulus lie on a path with the address' sum.
+// With EXTRA_W, each pixel's word holds EXTRA_W more bits above its entry (adaptive P2's
+// penalties, which leave fpstereo_adaptive_p2 a slot and EXTRA_LAT steps after the entries): the
+// writes wait as long, so that each word holds its own pixel's (uf = dmax: every step is a slot's).
 module fpstereo_strip_code_reorder #(
   parameter P = 2,
   parameter K = 5,
   // pixels of a strip (K * SEGMENT, a multiple of P)
   parameter STRIP_PIXELS = 20,
   parameter ENTRY_W = 24,
+  parameter EXTRA_W = 0,
+  parameter EXTRA_LAT = 1,
   parameter SLOT_ROWS = 10,
   parameter SLOT_W = 4,
   // width of the write's slot (pixel / P) and of each strip's read address
@@ -29,22 +34,52 @@ module fpstereo_strip_code_reorder #(
   input  wire [X_W-1:0]     wslot,
   input  wire [SLOT_W-1:0]  wrow,
   input  wire [P*ENTRY_W-1:0] wdata,
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  input  wire [P*(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
+  /* verilator lint_on UNUSEDSIGNAL */
   // strip s: its row slot * STRIP_PIXELS + its pixel within the strip
   input  wire [P*AW-1:0]    raddr,
-  output wire [P*ENTRY_W-1:0] q
+  output wire [P*(ENTRY_W+EXTRA_W)-1:0] q
 );
   localparam WORDS = STRIP_PIXELS / P;  // a strip's words per row
+  localparam PIXEL_W = ENTRY_W + EXTRA_W;  // a pixel's part of a word
   localparam LOG_P = $clog2(P);
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * WORDS > (1 << X_W) || SLOT_ROWS > (1 << SLOT_W) ||
-        (1 << AW) < P * K * STRIP_PIXELS) begin : invalid
-      fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_or_widths failed ();
+        (1 << AW) < P * K * STRIP_PIXELS || (EXTRA_W > 0 && EXTRA_LAT < 1)) begin : invalid
+      fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_widths_or_EXTRA_LAT failed ();
     end
   endgenerate
-  reg [P*ENTRY_W-1:0] write_data;  // the strips' writes a clock later (below)
-  always @(posedge clk) write_data <= wdata;
-  genvar s;
+  // The write as it reaches the strips' registers: at once, or with EXTRA_W after the penalties.
+  wire              we_in;
+  wire [X_W-1:0]    wslot_in;
+  wire [SLOT_W-1:0] wrow_in;
+  wire [P*PIXEL_W-1:0] wdata_in;
+  genvar s, i;
+  generate
+    if (EXTRA_W > 0) begin : wait_for_extra
+      localparam HELD_W = 1 + X_W + SLOT_W + P * ENTRY_W;
+      reg  [HELD_W-1:0] held;
+      wire [HELD_W-1:0] later;
+      always @(posedge clk)
+        if (adv) held <= {we, wslot, wrow, wdata};
+      fpstereo_delay #(.WIDTH(HELD_W), .DEPTH(EXTRA_LAT)) extra_wait (
+        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(later));
+      assign we_in = adv && later[HELD_W-1];
+      assign {wslot_in, wrow_in} = later[HELD_W-2 -: X_W+SLOT_W];
+      for (i = 0; i < P; i = i + 1) begin : pixel
+        assign wdata_in[i*PIXEL_W +: PIXEL_W] = {extra[i*EXTRA_W +: EXTRA_W], later[i*ENTRY_W +: ENTRY_W]};
+      end
+    end else begin : at_once
+      assign we_in = we;
+      assign wslot_in = wslot;
+      assign wrow_in = wrow;
+      assign wdata_in = wdata;
+    end
+  endgenerate
+  reg [P*PIXEL_W-1:0] write_data;  // the strips' writes a clock later (below)
+  always @(posedge clk) write_data <= wdata_in;
   generate
     for (s = 0; s < P; s = s + 1) begin : strip
       localparam ROWS = (s + 1) * K;
@@ -57,32 +92,32 @@ module fpstereo_strip_code_reorder #(
       localparam [X_W:0] FIRST = FIRST_I[X_W:0], AFTER = AFTER_I[X_W:0];
       wire mine;
       if (s == 0) begin : first_strip
-        assign mine = {1'b0, wslot} < AFTER;
+        assign mine = {1'b0, wslot_in} < AFTER;
       end else begin : later_strip
-        assign mine = {1'b0, wslot} >= FIRST && {1'b0, wslot} < AFTER;
+        assign mine = {1'b0, wslot_in} >= FIRST && {1'b0, wslot_in} < AFTER;
       end
       // The address is a product of narrow values and constants, cut to the RAM's address width.
       /* verilator lint_off WIDTH */
-      wire [RAM_AW-1:0] row_first = (wrow % ROWS) * WORDS;
-      wire [RAM_AW-1:0] word_in_row = wslot - FIRST;
+      wire [RAM_AW-1:0] row_first = (wrow_in % ROWS) * WORDS;
+      wire [RAM_AW-1:0] word_in_row = wslot_in - FIRST;
       wire [AW-1:0] at = raddr[s*AW +: AW];
       wire [RAM_AW-1:0] word_addr = at >> LOG_P;
       /* verilator lint_on WIDTH */
       reg write = 1'b0;
       reg [RAM_AW-1:0] write_first, write_word;
       always @(posedge clk) begin
-        write <= we && mine;
+        write <= we_in && mine;
         write_first <= row_first;
         write_word <= word_in_row;
       end
-      wire [P*ENTRY_W-1:0] word;
-      fpstereo_ram_sdp #(.WIDTH(P*ENTRY_W), .DEPTH(DEPTH), .ADDR_W(RAM_AW)) ram (
+      wire [P*PIXEL_W-1:0] word;
+      fpstereo_ram_sdp #(.WIDTH(P*PIXEL_W), .DEPTH(DEPTH), .ADDR_W(RAM_AW)) ram (
         .clk(clk), .we(write), .waddr(write_first + write_word), .wdata(write_data), .re(adv), .raddr(word_addr),
         .rdata(word));
       reg [LOG_P-1:0] pick;
       always @(posedge clk)
         if (adv) pick <= at[LOG_P-1:0];
-      assign q[s*ENTRY_W +: ENTRY_W] = word[pick*ENTRY_W +: ENTRY_W];
+      assign q[s*PIXEL_W +: PIXEL_W] = word[pick*PIXEL_W +: PIXEL_W];
     end
   endgenerate
 endmodule

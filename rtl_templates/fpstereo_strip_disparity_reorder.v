@@ -10,7 +10,8 @@
 // strip's RAM holds (P - s) * K + 1 rows, and it and the output keep the row's slot modulo that,
 // each a counter. The read stream as fpstereo_disparity_reorder's: read_done in the step after each
 // slot's read, read_event where the slot holds pixels of the frame, its slot read_x (pixels read_x
-// * P + q) and row, and the P words; rows below the frame and bubble slots read invalid words.
+// * P + q) and row, and the P words; rows below the frame and bubble slots read invalid words, and
+// EXTRA_ROWS rows more are read (invalid words) for gap interpolation, one row behind.
 module fpstereo_strip_disparity_reorder #(
   parameter P = 2,
   parameter K = 5,
@@ -20,7 +21,8 @@ module fpstereo_strip_disparity_reorder #(
   // width of a pixel's x (and of a slot's), of a row, and of the strips' row slots
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter SLOT_W = 5
+  parameter SLOT_W = 5,
+  parameter EXTRA_ROWS = 0
 ) (
   input  wire               clk,
   input  wire               restart,
@@ -80,9 +82,13 @@ module fpstereo_strip_disparity_reorder #(
   always @(posedge clk)
     if (restart) so <= {X_W{1'b0}};
     else if (adv && out_on) so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
+  // (the rows with events, a register: the frame size holds while a frame runs)
+  reg [Y_W-1:0] event_rows;
+  always @(posedge clk) event_rows <= frame_height + EXTRA_ROWS;
   /* verilator lint_off WIDTH */
-  wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && to < frame_height;
+  wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && to < event_rows;
   /* verilator lint_on WIDTH */
+  wire read_valid = read_now && to < frame_height;
   reg [STRIP_W-1:0] strip_q;
   reg read_was_valid;
   always @(posedge clk)
@@ -93,7 +99,7 @@ module fpstereo_strip_disparity_reorder #(
     end else if (adv) begin
       read_done <= out_on;
       read_event <= read_now;
-      read_was_valid <= read_now;
+      read_was_valid <= read_valid;
       read_x <= so;
       read_y <= to;
       strip_q <= strip_of;

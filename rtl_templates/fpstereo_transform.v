@@ -3,7 +3,8 @@
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
 // centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
 // window arrays are COLS columns wide and hold P windows side by side (fpstereo_front_end):
-// window q is columns q .. q + N - 1, its code in bits q * CODE_W of the outputs.
+// window q is columns q .. q + N - 1 (fpstereo_window_cut), its code in bits q * CODE_W of the
+// outputs.
 module fpstereo_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
@@ -15,10 +16,8 @@ module fpstereo_transform #(
 ) (
   input  wire                clk,
   input  wire                shift,
-  /* verilator lint_off UNUSEDSIGNAL */  // the arrays' columns right of the last window (COLS > N + P - 1)
   input  wire [N*COLS*8-1:0] window_left,
   input  wire [N*COLS*8-1:0] window_right,
-  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [N-1:0]        row_valid,
   input  wire [N+P-2:0]      col_valid,
   output reg  [P*CODE_W-1:0] code_base,
@@ -37,15 +36,12 @@ module fpstereo_transform #(
     end
   endgenerate
   wire [P*CODE_W-1:0] code_left, code_right;
-  genvar q, i;
+  genvar q;
   generate
     for (q = 0; q < P; q = q + 1) begin : pixel
-      // window q's N x N pixels, row by row
       wire [N*N*8-1:0] left, right;
-      for (i = 0; i < N; i = i + 1) begin : row
-        assign left[i*N*8 +: N*8] = window_left[(i*COLS + q)*8 +: N*8];
-        assign right[i*N*8 +: N*8] = window_right[(i*COLS + q)*8 +: N*8];
-      end
+      fpstereo_window_cut #(.N(N), .COLS(COLS), .Q(q)) left_cut (.array(window_left), .window(left));
+      fpstereo_window_cut #(.N(N), .COLS(COLS), .Q(q)) right_cut (.array(window_right), .window(right));
       wire [N-1:0] cols = col_valid[q +: N];
       if (RANK) begin : rank
         fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),

@@ -4,6 +4,10 @@
 // image (docs/semantics.md, section 1: outside, a window reads zeros). COLS and COL_LAG widen the
 // columns: column v is image column x + v - COL_LAG (the P windows of a front end that takes P
 // pixels a slot, centred on x .. x + P - 1: COLS = SIDE + P - 1).
+// The bounds' limits (the frame size plus each column's and row's offset) are registers: the frame
+// size holds while a frame runs (the settings), so the compares with x and y start from registers
+// and no adder lies on their paths (logic depth, docs/timing.md). They follow a new size a clock
+// later, long before a frame's first window centre (R rows behind its input) lies in the image.
 module fpstereo_window_bounds #(
   parameter SIDE = 5,
   parameter COLS = SIDE,
@@ -12,6 +16,7 @@ module fpstereo_window_bounds #(
   // signed row width
   parameter SIGNED_Y_W = 8
 ) (
+  input  wire                   clk,
   input  wire [X_W-1:0]         x,
   input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
@@ -31,21 +36,24 @@ module fpstereo_window_bounds #(
   localparam LAG = SIDE / 2;
 
   // Window column v is image column x + v - COL_LAG, inside where COL_LAG - v <= x < width +
-  // COL_LAG - v; row v likewise with LAG: the constants go to the frame-size side, so that no adder
-  // lies on the path from x or y.
+  // COL_LAG - v (the limit, a register); row v likewise with LAG.
   genvar v;
   generate
     for (v = 0; v < COLS; v = v + 1) begin : column
       localparam signed [31:0] OFFSET = COL_LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
       wire signed [X_W+2:0] at = $signed({3'b000, x});
-      assign col_valid[v] = at >= OFFSET_X && at < $signed({2'b00, width}) + OFFSET_X;
+      reg signed [X_W+2:0] limit;
+      always @(posedge clk) limit <= $signed({2'b00, width}) + OFFSET_X;
+      assign col_valid[v] = at >= OFFSET_X && at < limit;
     end
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      reg signed [SIGNED_Y_W:0] limit;
+      always @(posedge clk) limit <= $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < limit;
     end
   endgenerate
 endmodule

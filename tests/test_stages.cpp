@@ -46,12 +46,13 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.gap_interpolation = true;
+  beats.cost = CostFunction::Sad;
   out.push_back(beats);
   // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,
-  // the confidence, adaptive P2, the fused cost, min-disp and the median).
+  // the confidence, adaptive P2, the fused cost, min-disp, the median and gap interpolation).
   StereoConfig strips = beats;
-  strips.gap_interpolation = false;
+  strips.cost = CostFunction::Census;
+  strips.gap_interpolation = true;
   strips.confidence = true;
   strips.p2_adapt = 4;
   strips.fused_weight = 4;

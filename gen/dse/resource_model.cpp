@@ -311,13 +311,14 @@ double speckle_registers(const rtl::RtlDesign& d) {
 }
 
 // fpstereo_lr_check's two register steps (position, words, the match side's disparity and the
-// base disparity's two bounds) and fpstereo_gap_fill's four (position, word, the row's last valid
-// word; the first step's four position flags).
+// base disparity's two bounds) and fpstereo_gap_fill's four (position, a slot's words, the row's
+// last valid word; the first step's four position flags; with strips the words' nearest valid
+// words in the slot).
 double check_and_gap_registers(const rtl::RtlDesign& d) {
   const double position = 1.0 + d.x_bits + d.y_bits, word = d.widths.output_word;
   const double check =
       d.cfg.lr != LrCheck::None ? 2 * (position + 1) + 3 * word + d.widths.disparity + 2 * (d.widths.disparity + 2) : 0.0;
-  const double gap = d.cfg.gap_interpolation ? 4 * position + 3 * word + 4 : 0.0;
+  const double gap = d.cfg.gap_interpolation ? 4 * position + (4 * d.strips - 1) * word + 4 : 0.0;
   return check + gap;
 }
 
@@ -388,7 +389,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           // The right view's output register and its stream's handshake (Dm exists for the check).
           c.right_view ? 3.0 * (w.disparity + 1) : 0.0,
           // fpstereo_gap_fill: the row's words and their positions (its RAMs are block RAM).
-          c.gap_interpolation ? double(w.output_word + d.x_bits) : 0.0,
+          c.gap_interpolation ? double(w.output_word * d.strips + d.x_bits) : 0.0,
           // The read multiplexers of the RAMs whose depth is split over several cells.
           memory_read_mux_bits(d),
           // the FF terms: register bits (see above)

@@ -291,8 +291,11 @@ module fps_census7_d128u32_6e9658_sgm_core (
   wire [6:0] row_valid;
   wire [6:0] col_valid;
   wire [10:0] transform_x;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire signed [10:0] transform_y;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [1:0] transform_slot;
+  wire transform_in_frame;
   /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
   wire [6:0] newest_row_valid;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -306,7 +309,7 @@ module fps_census7_d128u32_6e9658_sgm_core (
     .in_left(in_left), .in_right(in_right), .group(group), .slot_end(slot_end), .shift(shift),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
     .newest_row_valid(newest_row_valid), .transform_x(transform_x), .transform_y(transform_y),
-    .transform_slot(transform_slot));
+    .transform_slot(transform_slot), .transform_in_frame(transform_in_frame));
   wire [47:0] code_base;
   wire [47:0] code_match;
   fps_census7_d128u32_6e9658_transform #(
@@ -322,12 +325,11 @@ module fps_census7_d128u32_6e9658_sgm_core (
   wire code_penalties;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e9658_code_reorder #(
-    .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(3), .ROW_W(2), .AW(12), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
-    .MIN_DISP(0)
+    .ROW_SLOTS(1242), .ENTRY_W(48), .ROWS(3), .ROW_W(2), .AW(12), .X_W(11), .MIN_DISP(0)
   ) cost_reorder (
-    .clk(clk), .adv(adv), .shift(shift), .frame_width(frame_width), .frame_height(frame_height),
-    .base_entry(code_base), .match_entry(code_match), .transform_x(transform_x), .transform_y(transform_y),
-    .transform_slot(transform_slot), .extra(1'b0), .raddr(cost_raddr), .q(code_q), .extra_q(code_penalties));
+    .clk(clk), .adv(adv), .shift(shift), .base_entry(code_base), .match_entry(code_match),
+    .transform_x(transform_x), .transform_slot(transform_slot), .transform_in_frame(transform_in_frame),
+    .extra(1'b0), .raddr(cost_raddr), .q(code_q), .extra_q(code_penalties));
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 14931;
@@ -1091,7 +1093,9 @@ module fps_census7_d128u32_6e9658_front_end #(
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
   output reg  signed [SIGNED_Y_W-1:0] transform_y,
-  output reg  [COST_ROW_W-1:0]    transform_slot
+  output reg  [COST_ROW_W-1:0]    transform_slot,
+  // whether that position lies in the frame (its slot's first pixel and its row)
+  output reg                    transform_in_frame
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1284,10 +1288,10 @@ module fps_census7_d128u32_6e9658_front_end #(
   wire [X_W-1:0] centre_pixel = centre_x << LOG_P;
   /* verilator lint_on WIDTH */
   fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .COLS(N + P - 1), .COL_LAG(R), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
-    .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .clk(clk), .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
   fps_census7_d128u32_6e9658_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
-    .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
+    .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
@@ -1297,6 +1301,18 @@ module fps_census7_d128u32_6e9658_front_end #(
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
       newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
+    end
+  // Whether the transform's position lies in the frame, registered a shift ahead with it, so that
+  // the code writes' enable starts from a register (logic depth, docs/timing.md). Cleared by a
+  // restart: the windows of the first shifts lie above the image.
+  reg window_in_frame;
+  always @(posedge clk)
+    if (restart) begin
+      window_in_frame <= 1'b0;
+      transform_in_frame <= 1'b0;
+    end else if (shift) begin
+      window_in_frame <= {1'b0, centre_pixel} < width_x && centre_y >= 0 && centre_y < height_y;
+      transform_in_frame <= window_in_frame;
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
@@ -1309,7 +1325,8 @@ endmodule
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
 // centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
 // window arrays are COLS columns wide and hold P windows side by side (fps_census7_d128u32_6e9658_front_end):
-// window q is columns q .. q + N - 1, its code in bits q * CODE_W of the outputs.
+// window q is columns q .. q + N - 1 (fps_census7_d128u32_6e9658_window_cut), its code in bits q * CODE_W of the
+// outputs.
 module fps_census7_d128u32_6e9658_transform #(
   parameter N = 5,
   // 1: rank transform; 0: census
@@ -1321,10 +1338,8 @@ module fps_census7_d128u32_6e9658_transform #(
 ) (
   input  wire                clk,
   input  wire                shift,
-  /* verilator lint_off UNUSEDSIGNAL */  // the arrays' columns right of the last window (COLS > N + P - 1)
   input  wire [N*COLS*8-1:0] window_left,
   input  wire [N*COLS*8-1:0] window_right,
-  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [N-1:0]        row_valid,
   input  wire [N+P-2:0]      col_valid,
   output reg  [P*CODE_W-1:0] code_base,
@@ -1343,15 +1358,12 @@ module fps_census7_d128u32_6e9658_transform #(
     end
   endgenerate
   wire [P*CODE_W-1:0] code_left, code_right;
-  genvar q, i;
+  genvar q;
   generate
     for (q = 0; q < P; q = q + 1) begin : pixel
-      // window q's N x N pixels, row by row
       wire [N*N*8-1:0] left, right;
-      for (i = 0; i < N; i = i + 1) begin : row
-        assign left[i*N*8 +: N*8] = window_left[(i*COLS + q)*8 +: N*8];
-        assign right[i*N*8 +: N*8] = window_right[(i*COLS + q)*8 +: N*8];
-      end
+      fps_census7_d128u32_6e9658_window_cut #(.N(N), .COLS(COLS), .Q(q)) left_cut (.array(window_left), .window(left));
+      fps_census7_d128u32_6e9658_window_cut #(.N(N), .COLS(COLS), .Q(q)) right_cut (.array(window_right), .window(right));
       wire [N-1:0] cols = col_valid[q +: N];
       if (RANK) begin : rank
         fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),
@@ -1392,8 +1404,6 @@ module fps_census7_d128u32_6e9658_code_reorder #(
   parameter ROW_W = 1,
   parameter AW = 7,
   parameter X_W = 7,
-  parameter Y_W = 6,
-  parameter SIGNED_Y_W = 8,
   parameter MIN_DISP = 0,
   parameter EXTRA_W = 0,
   parameter EXTRA_LAT = 2
@@ -1401,13 +1411,12 @@ module fps_census7_d128u32_6e9658_code_reorder #(
   input  wire                   clk,
   input  wire                   adv,
   input  wire                   shift,
-  input  wire [X_W-1:0]         frame_width,
-  input  wire [Y_W-1:0]         frame_height,
   input  wire [ENTRY_W-1:0]     base_entry,
   input  wire [ENTRY_W-1:0]     match_entry,
   input  wire [X_W-1:0]         transform_x,
-  input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [ROW_W-1:0]       transform_slot,
+  // whether transform_x and its row lie in the frame (fps_census7_d128u32_6e9658_front_end)
+  input  wire                   transform_in_frame,
   /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
@@ -1417,7 +1426,7 @@ module fps_census7_d128u32_6e9658_code_reorder #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || SIGNED_Y_W < Y_W + 2 || MIN_DISP < 0) begin : invalid
+    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || MIN_DISP < 0) begin : invalid
       fps_census7_d128u32_6e9658_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
     end
   endgenerate
@@ -1430,15 +1439,12 @@ module fps_census7_d128u32_6e9658_code_reorder #(
       assign match_now = match_entry;
     end
   endgenerate
-  wire [X_W:0] width_x = {1'b0, frame_width};
-  wire signed [SIGNED_Y_W-1:0] height_y = $signed({2'b00, frame_height});
-  wire in_image = {1'b0, transform_x} < width_x && transform_y >= 0 && transform_y < height_y;
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
   /* verilator lint_off WIDTH */
   wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
   /* verilator lint_on WIDTH */
   fps_census7_d128u32_6e9658_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
-    .clk(clk), .we(shift && in_image), .waddr(waddr), .wdata({match_now, base_entry}),
+    .clk(clk), .we(shift && transform_in_frame), .waddr(waddr), .wdata({match_now, base_entry}),
     .re(adv), .raddr(raddr), .rdata(q));
   generate
     if (EXTRA_W > 0) begin : extras
@@ -1447,7 +1453,7 @@ module fps_census7_d128u32_6e9658_code_reorder #(
       reg [POSITION_W-1:0] held;
       wire [POSITION_W-1:0] at;
       always @(posedge clk)
-        if (shift) held <= {in_image, transform_slot, transform_x};
+        if (shift) held <= {transform_in_frame, transform_slot, transform_x};
       fps_census7_d128u32_6e9658_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
         .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
       /* verilator lint_off WIDTH */
@@ -1821,12 +1827,14 @@ module fps_census7_d128u32_6e9658_aggregator #(
         end
       end
     end
-  wire [X_W-1:0] x_local0 = ka * SEGMENT + ja;
-  wire [X_W-1:0] x0 = X_FIRST + x_local0;
-  // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
+  // The step's pixel, a register fed like the read address.
+  reg [X_W-1:0] x0;
+  always @(posedge clk)
+    if (restart) x0 <= X_FIRST;
+    else if (step) x0 <= X_FIRST + ka_a * SEGMENT + ja_a;
+  // Chain ka's row is ta - CHAIN_BASE - ka: negative before the first frame's row 0, the previous
+  // frame's once wrapped (the difference plus the frame's height).
   wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
-  wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
-  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   // (row-time - CHAIN_BASE - ka) modulo the output RAMs' rows, kept non-negative
   localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
@@ -1845,15 +1853,41 @@ module fps_census7_d128u32_6e9658_aggregator #(
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
+  // With a cost lead the tag is finished in the lead's first step: S0 registers the row's
+  // difference with what decides it (the frame's height, whether the rows have wrapped, whether
+  // the pixel's column is in the frame), so that no path runs from the counters through the
+  // difference, the wrap's sum and the height's compare (logic depth, docs/timing.md).
+  localparam ROW_IN_W = 1 + (Y_W + 1) + 1 + Y_W;
+  localparam REST_W = X_W + G_W + K_W + OUT_ROW_W;
+  wire [ROW_IN_W+REST_W-1:0] tag_parts0 = {agg_on && x0 < frame_width, lagged0, wrapped, frame_height,
+                                           x0, ga, chain_slot0, out_slot0};
+  wire [ROW_IN_W+REST_W-1:0] tag_parts;
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
-  wire [TAG_W-1:0] tag_led;
+  wire [TAG_W-1:0] tag_first, tag_led;
   generate
     if (COST_LEAD > 1) begin : lead
-      fps_census7_d128u32_6e9658_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
-        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(ROW_IN_W + REST_W), .DEPTH(1), .RESET(1)) tag_start (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_parts0), .out(tag_parts));
     end else begin : no_lead
-      assign tag_led = tag0;
+      assign tag_parts = tag_parts0;
+    end
+  endgenerate
+  wire         column_in = tag_parts[ROW_IN_W+REST_W-1];
+  wire [Y_W:0] lagged = tag_parts[ROW_IN_W+REST_W-2 -: Y_W+1];
+  wire         rows_wrapped = tag_parts[REST_W+Y_W];
+  wire [Y_W-1:0] height = tag_parts[REST_W+Y_W-1 -: Y_W];
+  // The row, and whether it lies in the frame: a negative difference is the previous frame's row
+  // (its sum with the height, always below it) once wrapped, a non-negative one is below the height.
+  wire [Y_W:0] wrapped_row = lagged + {1'b0, height};
+  wire [Y_W:0] row = rows_wrapped && lagged[Y_W] ? wrapped_row : lagged;
+  wire active = column_in && (lagged[Y_W] ? rows_wrapped && !wrapped_row[Y_W] : lagged[Y_W-1:0] < height);
+  assign tag_first = {active, tag_parts[REST_W-1 -: X_W], row, tag_parts[G_W+K_W+OUT_ROW_W-1:0]};
+  generate
+    if (COST_LEAD > 2) begin : lead_rest
+      fps_census7_d128u32_6e9658_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 2), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_first), .out(tag_led));
+    end else begin : no_lead_rest
+      assign tag_led = tag_first;
     end
   endgenerate
   always @(posedge clk)
@@ -2442,26 +2476,23 @@ module fps_census7_d128u32_6e9658_median #(
   wire [M-1:0] row_valid;
   wire [M+P-2:0] col_valid;
   fps_census7_d128u32_6e9658_window_bounds #(.SIDE(M), .COLS(M + P - 1), .COL_LAG(RM), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
-    .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid), .col_valid(col_valid));
+    .clk(clk), .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid),
+    .col_valid(col_valid));
   wire [P*WORD_W-1:0] selected;
-  genvar q, i;
+  genvar q;
   generate
     for (q = 0; q < P; q = q + 1) begin : pixel
-      // window q's M x M words, row by row
       wire [M*M*WORD_W-1:0] words;
-      for (i = 0; i < M; i = i + 1) begin : row
-        assign words[i*M*WORD_W +: M*WORD_W] = window[(i*COLS + q)*WORD_W +: M*WORD_W];
-      end
+      fps_census7_d128u32_6e9658_window_cut #(.N(M), .COLS(COLS), .WORD_W(WORD_W), .Q(q)) cut (.array(window), .window(words));
       fps_census7_d128u32_6e9658_median_select #(.M(M), .WORD_W(WORD_W)) select (
         .clk(clk), .en(adv), .window(words), .row_valid(row_valid), .col_valid(col_valid[q +: M]),
         .median(selected[q*WORD_W +: WORD_W]));
     end
   endgenerate
-  /* verilator lint_off UNUSEDSIGNAL */  // the array's columns right of the last window (COLS > M + P - 1)
-  wire unused_columns = ^window;
-  /* verilator lint_on UNUSEDSIGNAL */
   // The centre's coordinates travel as long as the selection takes.
-  wire signed [SIGNED_Y_W-1:0] event_rows_y = height_y + EXTRA_ROWS;
+  // (the rows with events, a register: the frame size holds while a frame runs)
+  reg signed [SIGNED_Y_W-1:0] event_rows_y;
+  always @(posedge clk) event_rows_y <= height_y + EXTRA_ROWS;
   wire in_image = {1'b0, median_pixel} < width_x && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
   wire [SIGNED_Y_W-1:0] median_row = median_y;
@@ -2668,6 +2699,10 @@ endmodule
 // image (docs/semantics.md, section 1: outside, a window reads zeros). COLS and COL_LAG widen the
 // columns: column v is image column x + v - COL_LAG (the P windows of a front end that takes P
 // pixels a slot, centred on x .. x + P - 1: COLS = SIDE + P - 1).
+// The bounds' limits (the frame size plus each column's and row's offset) are registers: the frame
+// size holds while a frame runs (the settings), so the compares with x and y start from registers
+// and no adder lies on their paths (logic depth, docs/timing.md). They follow a new size a clock
+// later, long before a frame's first window centre (R rows behind its input) lies in the image.
 module fps_census7_d128u32_6e9658_window_bounds #(
   parameter SIDE = 5,
   parameter COLS = SIDE,
@@ -2676,6 +2711,7 @@ module fps_census7_d128u32_6e9658_window_bounds #(
   // signed row width
   parameter SIGNED_Y_W = 8
 ) (
+  input  wire                   clk,
   input  wire [X_W-1:0]         x,
   input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
@@ -2695,21 +2731,55 @@ module fps_census7_d128u32_6e9658_window_bounds #(
   localparam LAG = SIDE / 2;
 
   // Window column v is image column x + v - COL_LAG, inside where COL_LAG - v <= x < width +
-  // COL_LAG - v; row v likewise with LAG: the constants go to the frame-size side, so that no adder
-  // lies on the path from x or y.
+  // COL_LAG - v (the limit, a register); row v likewise with LAG.
   genvar v;
   generate
     for (v = 0; v < COLS; v = v + 1) begin : column
       localparam signed [31:0] OFFSET = COL_LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
       wire signed [X_W+2:0] at = $signed({3'b000, x});
-      assign col_valid[v] = at >= OFFSET_X && at < $signed({2'b00, width}) + OFFSET_X;
+      reg signed [X_W+2:0] limit;
+      always @(posedge clk) limit <= $signed({2'b00, width}) + OFFSET_X;
+      assign col_valid[v] = at >= OFFSET_X && at < limit;
     end
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      reg signed [SIGNED_Y_W:0] limit;
+      always @(posedge clk) limit <= $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < limit;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Pixel Q's N x N window out of an array that holds the P windows of a slot side by side
+// (fps_census7_d128u32_6e9658_front_end, fps_census7_d128u32_6e9658_median: COLS columns of WORD_W bits a row): columns Q .. Q + N - 1
+// of each of its N rows, row by row.
+module fps_census7_d128u32_6e9658_window_cut #(
+  parameter N = 5,
+  parameter COLS = 5,
+  parameter WORD_W = 8,
+  parameter Q = 0
+) (
+  /* verilator lint_off UNUSEDSIGNAL */  // the other pixels' columns
+  input  wire [N*COLS*WORD_W-1:0] array,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [N*N*WORD_W-1:0]    window
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if (N < 1 || Q < 0 || Q + N > COLS) begin : invalid
+      fps_census7_d128u32_6e9658_invalid_parameters_window_cut_columns_Q_to_Q_plus_N_outside_COLS failed ();
+    end
+  endgenerate
+  genvar i;
+  generate
+    for (i = 0; i < N; i = i + 1) begin : row
+      assign window[i*N*WORD_W +: N*WORD_W] = array[(i*COLS + Q)*WORD_W +: N*WORD_W];
     end
   endgenerate
 endmodule

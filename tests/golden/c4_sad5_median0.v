@@ -291,6 +291,9 @@ module fps_sad5_d128u32_baf239_sgm_core (
   wire [10:0] transform_x;
   wire signed [10:0] transform_y;
   wire [1:0] transform_slot;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+  wire transform_in_frame;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [4:0] newest_row_valid;
   fps_sad5_d128u32_baf239_front_end #(
     .N(5), .ROW_SLOTS(1242), .G(4), .COST_ROWS(4), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
@@ -302,7 +305,7 @@ module fps_sad5_d128u32_baf239_sgm_core (
     .in_left(in_left), .in_right(in_right), .group(group), .slot_end(slot_end), .shift(shift),
     .window_left(window_left), .window_right(window_right), .row_valid(row_valid), .col_valid(col_valid),
     .newest_row_valid(newest_row_valid), .transform_x(transform_x), .transform_y(transform_y),
-    .transform_slot(transform_slot));
+    .transform_slot(transform_slot), .transform_in_frame(transform_in_frame));
 
   // Cost stage: the centre whose costs the lanes compute, and UF costs per step.
   wire [10:0] history_x;
@@ -1107,7 +1110,9 @@ module fps_sad5_d128u32_baf239_front_end #(
   output wire [N-1:0]           newest_row_valid,
   output reg  [X_W-1:0]         transform_x,
   output reg  signed [SIGNED_Y_W-1:0] transform_y,
-  output reg  [COST_ROW_W-1:0]    transform_slot
+  output reg  [COST_ROW_W-1:0]    transform_slot,
+  // whether that position lies in the frame (its slot's first pixel and its row)
+  output reg                    transform_in_frame
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1300,10 +1305,10 @@ module fps_sad5_d128u32_baf239_front_end #(
   wire [X_W-1:0] centre_pixel = centre_x << LOG_P;
   /* verilator lint_on WIDTH */
   fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .COLS(N + P - 1), .COL_LAG(R), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
-    .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .clk(clk), .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
     .col_valid(centre_columns));
   fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
-    .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
+    .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
@@ -1313,6 +1318,18 @@ module fps_sad5_d128u32_baf239_front_end #(
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
       newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
+    end
+  // Whether the transform's position lies in the frame, registered a shift ahead with it, so that
+  // the code writes' enable starts from a register (logic depth, docs/timing.md). Cleared by a
+  // restart: the windows of the first shifts lie above the image.
+  reg window_in_frame;
+  always @(posedge clk)
+    if (restart) begin
+      window_in_frame <= 1'b0;
+      transform_in_frame <= 1'b0;
+    end else if (shift) begin
+      window_in_frame <= {1'b0, centre_pixel} < width_x && centre_y >= 0 && centre_y < height_y;
+      transform_in_frame <= window_in_frame;
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
@@ -1889,12 +1906,14 @@ module fps_sad5_d128u32_baf239_aggregator #(
         end
       end
     end
-  wire [X_W-1:0] x_local0 = ka * SEGMENT + ja;
-  wire [X_W-1:0] x0 = X_FIRST + x_local0;
-  // Chain ka's row: negative before the first frame's row 0, the previous frame's once wrapped.
+  // The step's pixel, a register fed like the read address.
+  reg [X_W-1:0] x0;
+  always @(posedge clk)
+    if (restart) x0 <= X_FIRST;
+    else if (step) x0 <= X_FIRST + ka_a * SEGMENT + ja_a;
+  // Chain ka's row is ta - CHAIN_BASE - ka: negative before the first frame's row 0, the previous
+  // frame's once wrapped (the difference plus the frame's height).
   wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
-  wire [Y_W:0]   row0 = wrapped && lagged0[Y_W] ? lagged0 + {1'b0, frame_height} : lagged0;
-  wire           active0 = agg_on && !row0[Y_W] && row0 < {1'b0, frame_height} && x0 < frame_width;
   // (row-time - CHAIN_BASE - ka) modulo the output RAMs' rows, kept non-negative
   localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
@@ -1913,15 +1932,41 @@ module fps_sad5_d128u32_baf239_aggregator #(
   // Tags travel with the data: S0 -> S1 -> S2 (the lanes' inputs) -> S3 -> S4 (path costs)
   // -> S5 (sums). Where the cost word takes COST_LEAD > 1 steps, the tag waits as long before S1.
   localparam TAG_W = 1 + X_W + (Y_W + 1) + G_W + K_W + OUT_ROW_W;
-  wire [TAG_W-1:0] tag0 = {active0, x0, row0, ga, chain_slot0, out_slot0};
+  // With a cost lead the tag is finished in the lead's first step: S0 registers the row's
+  // difference with what decides it (the frame's height, whether the rows have wrapped, whether
+  // the pixel's column is in the frame), so that no path runs from the counters through the
+  // difference, the wrap's sum and the height's compare (logic depth, docs/timing.md).
+  localparam ROW_IN_W = 1 + (Y_W + 1) + 1 + Y_W;
+  localparam REST_W = X_W + G_W + K_W + OUT_ROW_W;
+  wire [ROW_IN_W+REST_W-1:0] tag_parts0 = {agg_on && x0 < frame_width, lagged0, wrapped, frame_height,
+                                           x0, ga, chain_slot0, out_slot0};
+  wire [ROW_IN_W+REST_W-1:0] tag_parts;
   reg  [TAG_W-1:0] tag1, tag2, tag3, tag4, tag5;
-  wire [TAG_W-1:0] tag_led;
+  wire [TAG_W-1:0] tag_first, tag_led;
   generate
     if (COST_LEAD > 1) begin : lead
-      fps_sad5_d128u32_baf239_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 1), .RESET(1)) tag_lead (
-        .clk(clk), .rst(restart), .en(adv), .in(tag0), .out(tag_led));
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(ROW_IN_W + REST_W), .DEPTH(1), .RESET(1)) tag_start (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_parts0), .out(tag_parts));
     end else begin : no_lead
-      assign tag_led = tag0;
+      assign tag_parts = tag_parts0;
+    end
+  endgenerate
+  wire         column_in = tag_parts[ROW_IN_W+REST_W-1];
+  wire [Y_W:0] lagged = tag_parts[ROW_IN_W+REST_W-2 -: Y_W+1];
+  wire         rows_wrapped = tag_parts[REST_W+Y_W];
+  wire [Y_W-1:0] height = tag_parts[REST_W+Y_W-1 -: Y_W];
+  // The row, and whether it lies in the frame: a negative difference is the previous frame's row
+  // (its sum with the height, always below it) once wrapped, a non-negative one is below the height.
+  wire [Y_W:0] wrapped_row = lagged + {1'b0, height};
+  wire [Y_W:0] row = rows_wrapped && lagged[Y_W] ? wrapped_row : lagged;
+  wire active = column_in && (lagged[Y_W] ? rows_wrapped && !wrapped_row[Y_W] : lagged[Y_W-1:0] < height);
+  assign tag_first = {active, tag_parts[REST_W-1 -: X_W], row, tag_parts[G_W+K_W+OUT_ROW_W-1:0]};
+  generate
+    if (COST_LEAD > 2) begin : lead_rest
+      fps_sad5_d128u32_baf239_delay #(.WIDTH(TAG_W), .DEPTH(COST_LEAD - 2), .RESET(1)) tag_lead (
+        .clk(clk), .rst(restart), .en(adv), .in(tag_first), .out(tag_led));
+    end else begin : no_lead_rest
+      assign tag_led = tag_first;
     end
   endgenerate
   always @(posedge clk)
@@ -2766,6 +2811,10 @@ endmodule
 // image (docs/semantics.md, section 1: outside, a window reads zeros). COLS and COL_LAG widen the
 // columns: column v is image column x + v - COL_LAG (the P windows of a front end that takes P
 // pixels a slot, centred on x .. x + P - 1: COLS = SIDE + P - 1).
+// The bounds' limits (the frame size plus each column's and row's offset) are registers: the frame
+// size holds while a frame runs (the settings), so the compares with x and y start from registers
+// and no adder lies on their paths (logic depth, docs/timing.md). They follow a new size a clock
+// later, long before a frame's first window centre (R rows behind its input) lies in the image.
 module fps_sad5_d128u32_baf239_window_bounds #(
   parameter SIDE = 5,
   parameter COLS = SIDE,
@@ -2774,6 +2823,7 @@ module fps_sad5_d128u32_baf239_window_bounds #(
   // signed row width
   parameter SIGNED_Y_W = 8
 ) (
+  input  wire                   clk,
   input  wire [X_W-1:0]         x,
   input  wire signed [SIGNED_Y_W-1:0] y,
   input  wire [X_W:0]           width,
@@ -2793,21 +2843,24 @@ module fps_sad5_d128u32_baf239_window_bounds #(
   localparam LAG = SIDE / 2;
 
   // Window column v is image column x + v - COL_LAG, inside where COL_LAG - v <= x < width +
-  // COL_LAG - v; row v likewise with LAG: the constants go to the frame-size side, so that no adder
-  // lies on the path from x or y.
+  // COL_LAG - v (the limit, a register); row v likewise with LAG.
   genvar v;
   generate
     for (v = 0; v < COLS; v = v + 1) begin : column
       localparam signed [31:0] OFFSET = COL_LAG - v;
       localparam signed [X_W+2:0] OFFSET_X = OFFSET[X_W+2:0];
       wire signed [X_W+2:0] at = $signed({3'b000, x});
-      assign col_valid[v] = at >= OFFSET_X && at < $signed({2'b00, width}) + OFFSET_X;
+      reg signed [X_W+2:0] limit;
+      always @(posedge clk) limit <= $signed({2'b00, width}) + OFFSET_X;
+      assign col_valid[v] = at >= OFFSET_X && at < limit;
     end
     for (v = 0; v < SIDE; v = v + 1) begin : position
       localparam signed [31:0] OFFSET = LAG - v;
       localparam signed [SIGNED_Y_W:0] OFFSET_Y = OFFSET[SIGNED_Y_W:0];
       wire signed [SIGNED_Y_W:0]  row = $signed({y[SIGNED_Y_W-1], y});
-      assign row_valid[v] = row >= OFFSET_Y && row < $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      reg signed [SIGNED_Y_W:0] limit;
+      always @(posedge clk) limit <= $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
+      assign row_valid[v] = row >= OFFSET_Y && row < limit;
     end
   endgenerate
 endmodule

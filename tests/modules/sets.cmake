@@ -80,6 +80,14 @@ modtb_set(speckle speckle_w17_s13_r0 TOP fpstereo_speckle SOURCES fpstereo_speck
           PARAMS W=17 S=13 R=0 WORD_W=12)
 modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckle.v fpstereo_ram_sdp.v fpstereo_ram_tdp.v
           PARAMS W=24 S=1 R=1 WORD_W=6)
+# Gap interpolation at one, two and four words a slot (docs/ppc-hardware.md): run-time widths of
+# whole slots up to W.
+modtb_set(gap_fill gap_fill_w16_p1 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+          PARAMS W=16 WORD_W=8 X_W=5 Y_W=6 P=1)
+modtb_set(gap_fill gap_fill_w24_p2 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+          PARAMS W=24 WORD_W=9 X_W=5 Y_W=6 P=2)
+modtb_set(gap_fill gap_fill_w32_p4 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+          PARAMS W=32 WORD_W=6 X_W=6 Y_W=6 P=4)
 # Strips of aggregation (docs/ppc-hardware.md): two strips of one chain's latency; four, the last
 # one narrower than the others; two at uf 32 (K = 6) with the 0 and 135-degree paths only.
 set(MODTB_STRIP_SOURCES fpstereo_strip_aggregation.v fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v

@@ -80,16 +80,15 @@ class CostStage : public Stage {
     }
     // With strips, one per pixel of the slot, on its window; cost_penalties holds pixel q's at
     // q * penalty_bits.
-    std::string all;
+    const auto pixel_net = [](int q) { return fmt::format("cost_penalties_{}", q); };
     for (int q = 0; q < d.strips; ++q) {
-      const std::string net = fmt::format("cost_penalties_{}", q);
-      core.wire(net, d.penalty_bits);
+      core.wire(pixel_net(q), d.penalty_bits);
       core.instance("fpstereo_adaptive_p2", fmt::format("adaptive_p2_{}", q), parameters,
-                    {{"window", strip_window(d, "window_left", q)}, {"penalties", net}});
-      all = net + (q ? ", " : "") + all;
+                    {{"window", strip_window(d, core, "window_left", q, "adaptive_p2")}, {"penalties", pixel_net(q)}});
     }
     core.wire("cost_penalties", int64_t(d.strips) * d.penalty_bits);
-    core.logic(fmt::format("  assign cost_penalties = {{{}}};\n", all), {"cost_penalties"});
+    core.logic(fmt::format("  assign cost_penalties = {};\n", concat_high_to_low(d.strips, pixel_net)),
+               {"cost_penalties"});
   }
 
   // The fused cost's features of the base and match windows' centres, registered with the codes;
@@ -106,33 +105,34 @@ class CostStage : public Stage {
       core.instance("fpstereo_fused_features", "fused_features", parameters);
       return;
     }
-    std::string bases, matches;
+    const auto base = [](int q) { return fmt::format("feature_base_{}", q); };
+    const auto match = [](int q) { return fmt::format("feature_match_{}", q); };
     for (int q = 0; q < P; ++q) {
-      const std::string base = fmt::format("feature_base_{}", q), match = fmt::format("feature_match_{}", q);
-      core.wire(base, bits);
-      core.wire(match, bits);
+      core.wire(base(q), bits);
+      core.wire(match(q), bits);
       core.instance("fpstereo_fused_features", fmt::format("fused_features_{}", q), parameters,
-                    {{"window_left", strip_window(d, "window_left", q)},
-                     {"window_right", strip_window(d, "window_right", q)},
-                     {"col_valid", fmt::format("col_valid[{}:{}]", q + c.window - 1, q)},
-                     {"feature_base", base},
-                     {"feature_match", match}});
-      bases = base + (q ? ", " : "") + bases;
-      matches = match + (q ? ", " : "") + matches;
+                    {{"window_left", strip_window(d, core, "window_left", q, "fused")},
+                     {"window_right", strip_window(d, core, "window_right", q, "fused")},
+                     {"col_valid", bit_field("col_valid", q, c.window)},
+                     {"feature_base", base(q)},
+                     {"feature_match", match(q)}});
     }
-    core.logic(fmt::format("  assign feature_base = {{{}}};\n  assign feature_match = {{{}}};\n", bases, matches),
+    core.logic(fmt::format("  assign feature_base = {};\n  assign feature_match = {};\n", concat_high_to_low(P, base),
+                           concat_high_to_low(P, match)),
                {"feature_base", "feature_match"});
   }
 
-  // With strips, pixel q's N x N window in the front end's arrays (columns q to q + N - 1, as
-  // fpstereo_transform cuts them).
-  static std::string strip_window(const RtlDesign& d, const std::string& array, int q) {
-    const int n = d.cfg.window, cols = window_columns(d);
-    std::string window;
-    for (int i = n; i-- > 0;)
-      window += fmt::format("{}{}[{}:{}]", i + 1 < n ? ", " : "", array, (int64_t(i) * cols + q + n) * 8 - 1,
-                            (int64_t(i) * cols + q) * 8);
-    return "{" + window + "}";
+  // With strips, pixel q's N x N window out of one of the front end's arrays (fpstereo_window_cut,
+  // as fpstereo_transform takes it), in a net `<user>_<array>_<q>`. Returns the net.
+  static std::string strip_window(const RtlDesign& d, CoreBuilder& core, const std::string& array, int q,
+                                  const std::string& user) {
+    const int n = d.cfg.window;
+    const std::string net = fmt::format("{}_{}_{}", user, array, q);
+    core.wire(net, int64_t(n) * n * 8);
+    core.instance("fpstereo_window_cut", net + "_cut",
+                  {{"N", num(n)}, {"COLS", num(window_columns(d))}, {"Q", num(q)}},
+                  {{"array", array}, {"window", net}});
+    return net;
   }
 
   // The raster cost stage of the cost function: the centre it holds and its lanes' costs.

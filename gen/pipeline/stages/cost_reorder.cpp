@@ -83,8 +83,6 @@ class CostReorderStage : public Stage {
                               {"ROW_W", num(d.cost_row_bits)},
                               {"AW", num(d.cost_addr_bits)},
                               {"X_W", num(d.x_bits)},
-                              {"Y_W", num(d.y_bits)},
-                              {"SIGNED_Y_W", num(d.signed_y_bits)},
                               {"MIN_DISP", num(d.cfg.min_disp)}} +
                       penalties,
                   {{"base_entry", fused ? "{feature_base, code_base}" : "code_base"},
@@ -98,76 +96,42 @@ class CostReorderStage : public Stage {
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
-    const int P = d.strips, entry_bits = d.code_entry_bits, extra = d.penalty_bits;
+    const int P = d.strips, entry_bits = d.code_entry_bits;
     core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
     // A pixel's entry is its code, with the fused cost its feature above it.
     std::string base = "code_base", match = "code_match";
     if (d.cfg.fused_weight != 0) {
       const int code_bits = std::max(1, d.widths.code), feature_bits = d.widths.fused_feature;
-      std::string bases, matches;
-      for (int q = P; q-- > 0;) {
-        const std::string sep = q ? ", " : "";
-        const auto slice = [&](const char* net, int bits) {
-          return fmt::format("{}[{}:{}]", net, (q + 1) * bits - 1, q * bits);
-        };
-        bases += slice("feature_base", feature_bits) + ", " + slice("code_base", code_bits) + sep;
-        matches += slice("feature_match", feature_bits) + ", " + slice("code_match", code_bits) + sep;
-      }
+      const auto entries = [&](const char* features, const char* codes) {
+        return concat_high_to_low(P, [&](int q) {
+          return bit_field(features, int64_t(q) * feature_bits, feature_bits) + ", " +
+                 bit_field(codes, int64_t(q) * code_bits, code_bits);
+        });
+      };
       core.wire("entry_base", int64_t(P) * entry_bits);
       core.wire("entry_match", int64_t(P) * entry_bits);
-      core.logic(fmt::format("  assign entry_base = {{{}}};\n  assign entry_match = {{{}}};\n", bases, matches),
+      core.logic(fmt::format("  assign entry_base = {};\n  assign entry_match = {};\n",
+                             entries("feature_base", "code_base"), entries("feature_match", "code_match")),
                  {"entry_base", "entry_match"});
       base = "entry_base";
       match = "entry_match";
     }
     match = strip_match_entries(d, core, match);
-    const std::string in_frame = fmt::format(
-        "{{transform_x[{}:0], {}'d0}} < frame_width && transform_y >= 0 && transform_y < $signed({{2'b00, frame_height}})",
-        d.x_bits - 1 - clog2(P), clog2(P));
     core.wire("code_we", 1);
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
-    core.wire("code_data", int64_t(2 * entry_bits + extra) * P);
-    // Pixel q's word: {its penalties (adaptive P2), its match entry, its base entry}, the entries
-    // from nets that hold a slot's P entries from bit `lsb` on.
-    auto entries = [&](const std::string& matches, int64_t match_lsb, const std::string& bases, int64_t base_lsb) {
-      std::string data;
-      for (int q = P; q-- > 0;) {
-        const int64_t lo = int64_t(q) * entry_bits, hi = lo + entry_bits - 1;
-        data += fmt::format("{}{}{}[{}:{}], {}[{}:{}]", q + 1 < P ? ", " : "",
-                            extra ? fmt::format("cost_penalties[{}:{}], ", (q + 1) * extra - 1, q * extra) : "",
-                            matches, match_lsb + hi, match_lsb + lo, bases, base_lsb + hi, base_lsb + lo);
-      }
-      return "{" + data + "}";
-    };
-    if (extra == 0) {
-      core.logic(fmt::format("  assign code_we = shift && {};\n"
-                             "  assign code_slot = transform_x;\n"
-                             "  assign code_row = transform_slot;\n"
-                             "  assign code_data = {};\n",
-                             in_frame, entries(match, 0, base, 0)),
-                 {"code_we", "code_slot", "code_row", "code_data"});
-      return;
-    }
-    // Adaptive P2's penalties leave fpstereo_adaptive_p2 a slot and LAT steps after the codes
-    // (fpstereo_code_reorder's penalty RAM waits as long): the writes wait with them, so that
-    // each word holds its pixel's. code_held: {in the frame, slot, row slot, match entries, base
-    // entries}.
-    const int64_t codes = int64_t(P) * entry_bits, held = 1 + d.x_bits + d.cost_row_bits + 2 * codes;
-    core.logic(fmt::format("  reg [{}:0] code_held;\n"
-                           "  always @(posedge clk)\n"
-                           "    if (shift) code_held <= {{{}, transform_x, transform_slot, {}, {}}};\n",
-                           held - 1, in_frame, match, base),
-               {}, {{"code_held", held}});
-    core.wire("code_later", held);
-    core.instance("fpstereo_delay", "code_wait", {{"WIDTH", num(held)}, {"DEPTH", num(d.cost_latency)}, {"RESET", "0"}},
-                  {{"rst", "1'b0"}, {"en", "adv"}, {"in", "code_held"}, {"out", "code_later"}});
-    core.logic(fmt::format("  assign code_we = adv && code_later[{}];\n"
-                           "  assign code_slot = code_later[{}:{}];\n"
-                           "  assign code_row = code_later[{}:{}];\n"
+    core.wire("code_data", int64_t(2 * entry_bits) * P);
+    // Pixel q's entries: {its match entry, its base entry}. Adaptive P2's penalties go beside them
+    // (code_extra): fpstereo_strip_code_reorder waits for them.
+    const std::string data = concat_high_to_low(P, [&](int q) {
+      return bit_field(match, int64_t(q) * entry_bits, entry_bits) + ", " +
+             bit_field(base, int64_t(q) * entry_bits, entry_bits);
+    });
+    core.logic(fmt::format("  assign code_we = shift && transform_in_frame;\n"
+                           "  assign code_slot = transform_x;\n"
+                           "  assign code_row = transform_slot;\n"
                            "  assign code_data = {};\n",
-                           held - 1, held - 2, held - 1 - d.x_bits, held - 2 - d.x_bits, 2 * codes,
-                           entries("code_later", codes, "code_later", 0)),
+                           data),
                {"code_we", "code_slot", "code_row", "code_data"});
   }
 

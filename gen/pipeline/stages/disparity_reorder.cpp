@@ -63,13 +63,10 @@ class DisparityReorderStage : public Stage {
     const int P = d.strips, word = d.reorder_word_bits, entry = d.reorder_ram_bits;
     core.wire(kStripConfidentWords, int64_t(P) * entry);
     core.wire("read_confidence", int64_t(P) * kConfidenceBits);
-    std::string words, confidences;
-    for (int q = P - 1; q >= 0; --q) {
-      const std::string sep = q ? ", " : "";
-      words += fmt::format("{}[{}:{}]{}", kStripConfidentWords, q * entry + word - 1, q * entry, sep);
-      confidences += fmt::format("{}[{}:{}]{}", kStripConfidentWords, (q + 1) * entry - 1, q * entry + word, sep);
-    }
-    core.logic(fmt::format("  assign read_word = {{{}}};\n  assign read_confidence = {{{}}};\n", words, confidences),
+    const auto words = concat_high_to_low(P, [&](int q) { return bit_field(kStripConfidentWords, q * entry, word); });
+    const auto confidences = concat_high_to_low(
+        P, [&](int q) { return bit_field(kStripConfidentWords, q * entry + word, entry - word); });
+    core.logic(fmt::format("  assign read_word = {};\n  assign read_confidence = {};\n", words, confidences),
                {"read_word", "read_confidence"});
   }
 

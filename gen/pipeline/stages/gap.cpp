@@ -1,4 +1,4 @@
-// Gap interpolation (fpstereo_gap_fill), one row behind its input.
+// Gap interpolation (fpstereo_gap_fill), one row behind its input; with strips a slot's P words a step.
 #include <fmt/core.h>
 
 #include "hls_text.hpp"
@@ -13,8 +13,11 @@ class GapStage : public Stage {
   std::string title() const override { return "gap interpolation"; }
   std::vector<std::string> knobs() const override { return {"gap-interp"}; }
   Latency latency(const Geometry&) const override { return {1, 0, 4}; }
+  // Two rows of the slots' words with their last runs' first pixels, and of the runs' right
+  // neighbours by first pixel.
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    return {{"core.gap.words.mem", 2 * int64_t(g.cfg.width), g.widths.output_word + g.x_bits},
+    return {{"core.gap.words.mem", 2 * int64_t(g.cfg.width) / g.strips,
+             int64_t(g.strips) * g.widths.output_word + g.x_bits},
             {"core.gap.right_neighbours.mem", 2 * int64_t(g.cfg.width), g.widths.output_word}};
   }
 
@@ -22,12 +25,13 @@ class GapStage : public Stage {
     const PixelStream in = streams.pixels;
     const PixelStream& out = streams.pixels = {"", "gap_event", "gap_x", "gap_y", "gap_word"};
     core.text("\n  // Gap interpolation.\n");
-    stream_wires(core, d, out);
+    stream_wires(core, d, out, d.widths.output_word * d.strips);
     core.instance("fpstereo_gap_fill", "gap",
                   {{"W", num(d.cfg.width)},
                    {"WORD_W", num(d.widths.output_word)},
                    {"X_W", num(d.x_bits)},
-                   {"Y_W", num(d.y_bits)}},
+                   {"Y_W", num(d.y_bits)},
+                   {"P", num(d.strips)}},
                   Connections{{"in_event", in.event}} + stream_connections(in, out));
   }
 

@@ -70,6 +70,16 @@ std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::strin
 int window_centre_lag(const Geometry& g) { return (g.window_radius + g.strips - 1) / g.strips; }
 int window_columns(const Geometry& g) { return g.strips * (1 + window_centre_lag(g)) + g.window_radius; }
 
+std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
+  return fmt::format("{}[{}:{}]", net, lsb + bits - 1, lsb);
+}
+
+std::string concat_high_to_low(int count, const std::function<std::string(int)>& part) {
+  std::string fields;
+  for (int i = count; i-- > 0;) fields += part(i) + (i ? ", " : "");
+  return "{" + fields + "}";
+}
+
 Connections aggregator_parameters(const RtlDesign& g) {
   const StereoConfig& c = g.cfg;
   return {{"W", num(c.width)},

@@ -3,6 +3,8 @@
 // side's), the output registers (the disparity's and the right view's).
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,12 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
 // side by side, pixel q's in columns q to q + N - 1).
 int window_centre_lag(const Geometry& g);
 int window_columns(const Geometry& g);
+
+// `net`'s field of `bits` bits from bit `lsb`: "net[lsb + bits - 1:lsb]".
+std::string bit_field(const std::string& net, int64_t lsb, int64_t bits);
+// "{part(count - 1), ..., part(0)}": fields side by side, part(0) in the lowest bits (with strips,
+// a slot's P pixels' nets, pixel 0 lowest).
+std::string concat_high_to_low(int count, const std::function<std::string(int)>& part);
 
 // With strips and the confidence, the strips' disparity RAMs' words, each with its confidence
 // above it, as fpstereo_strip_aggregation reads them (the disparity reorder stage splits them).

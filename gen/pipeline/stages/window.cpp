@@ -41,6 +41,7 @@ class WindowStage : public Stage {
     core.wire("transform_x", d.x_bits);
     core.wire("transform_y", d.signed_y_bits, true);
     core.wire("transform_slot", d.cost_row_bits);
+    core.wire("transform_in_frame", 1);
     core.wire("newest_row_valid", n);  // the SAD and ZSAD costs' mask
     core.instance("fpstereo_front_end", "front_end",
                   {{"N", num(n)},
