@@ -6,11 +6,11 @@
 // so the caller sends one more (dummy) row after the image. Every maximal run of invalid words in a
 // row is filled with the smaller of the two valid words around it, or with the one there is at a
 // row end; a row without valid words stays invalid.
-//   Writing row y: each word is stored with the first pixel of the invalid run it belongs to. A run
-//   that ends in a later slot than its first pixel's (its slots read the word that ends it from a
-//   RAM) has that word stored under its first pixel when it ends; as a slot's first run is the only
-//   one that can have begun in an earlier slot, that is one write a slot. The run that reaches the
-//   row's end (there is no word after it) is kept in a register per row parity instead.
+//   Writing row y: each slot's words are stored with the first pixel of the slot's last invalid
+//   run. A run that ends in a later slot than its first pixel's (its slots read the word that ends
+//   it from a RAM) has that word stored under its first pixel when it ends; as a slot's first run is
+//   the only one that can have begun in an earlier slot, that is one write a slot. The run that
+//   reaches the row's end (there is no word after it) is kept in a register per row parity instead.
 //   Reading row y - 1: the left neighbour is the last valid word read before (in the slot, or the
 //   register `left`); the right one is the next valid word of the slot, or, for the slot's last run,
 //   the word stored under its first pixel (none for the row end's run). Two rows of each (ping-pong

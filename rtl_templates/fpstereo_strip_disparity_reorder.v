@@ -84,6 +84,7 @@ module fpstereo_strip_disparity_reorder #(
     else if (adv && out_on) so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
   // The rows with events: the frame's, or with EXTRA_ROWS a register (the frame size holds while
   // a frame runs) that adds them.
+  wire in_frame_rows = to < frame_height;
   wire in_rows;
   generate
     if (EXTRA_ROWS != 0) begin : extra_rows
@@ -91,13 +92,13 @@ module fpstereo_strip_disparity_reorder #(
       always @(posedge clk) event_rows <= frame_height + EXTRA_ROWS;
       assign in_rows = to < event_rows;
     end else begin : frame_rows
-      assign in_rows = to < frame_height;
+      assign in_rows = in_frame_rows;
     end
   endgenerate
   /* verilator lint_off WIDTH */
   wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && in_rows;
   /* verilator lint_on WIDTH */
-  wire read_valid = read_now && to < frame_height;
+  wire read_valid = read_now && in_frame_rows;
   reg [STRIP_W-1:0] strip_q;
   reg read_was_valid;
   always @(posedge clk)

@@ -1302,17 +1302,19 @@ module fps_census7_d128u32_6e9658_front_end #(
       col_valid_q <= centre_columns;
       newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
     end
-  // Whether the transform's position lies in the frame, registered a shift ahead with it, so that
-  // the code writes' enable starts from a register (logic depth, docs/timing.md). Cleared by a
-  // restart: the windows of the first shifts lie above the image.
-  reg window_in_frame;
+  // Whether the transform's position lies in the frame: its window's centre row and its slot's
+  // first column are inside, which the window's registered bounds already say (row and column R),
+  // so the code writes' enable starts from registers (logic depth, docs/timing.md). A restart
+  // clears it for two shifts: the first one's bounds are not yet its window's, and the windows of
+  // the first shifts lie above the image anyway.
+  reg window_fresh;
   always @(posedge clk)
     if (restart) begin
-      window_in_frame <= 1'b0;
+      window_fresh <= 1'b1;
       transform_in_frame <= 1'b0;
     end else if (shift) begin
-      window_in_frame <= {1'b0, centre_pixel} < width_x && centre_y >= 0 && centre_y < height_y;
-      transform_in_frame <= window_in_frame;
+      window_fresh <= 1'b0;
+      transform_in_frame <= !window_fresh && row_valid_q[R] && col_valid_q[R];
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;

@@ -1354,17 +1354,19 @@ module fps_census7_d128u32_79bc18_front_end #(
       col_valid_q <= centre_columns;
       newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
     end
-  // Whether the transform's position lies in the frame, registered a shift ahead with it, so that
-  // the code writes' enable starts from a register (logic depth, docs/timing.md). Cleared by a
-  // restart: the windows of the first shifts lie above the image.
-  reg window_in_frame;
+  // Whether the transform's position lies in the frame: its window's centre row and its slot's
+  // first column are inside, which the window's registered bounds already say (row and column R),
+  // so the code writes' enable starts from registers (logic depth, docs/timing.md). A restart
+  // clears it for two shifts: the first one's bounds are not yet its window's, and the windows of
+  // the first shifts lie above the image anyway.
+  reg window_fresh;
   always @(posedge clk)
     if (restart) begin
-      window_in_frame <= 1'b0;
+      window_fresh <= 1'b1;
       transform_in_frame <= 1'b0;
     end else if (shift) begin
-      window_in_frame <= {1'b0, centre_pixel} < width_x && centre_y >= 0 && centre_y < height_y;
-      transform_in_frame <= window_in_frame;
+      window_fresh <= 1'b0;
+      transform_in_frame <= !window_fresh && row_valid_q[R] && col_valid_q[R];
     end
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
@@ -2879,11 +2881,11 @@ endmodule
 // so the caller sends one more (dummy) row after the image. Every maximal run of invalid words in a
 // row is filled with the smaller of the two valid words around it, or with the one there is at a
 // row end; a row without valid words stays invalid.
-//   Writing row y: each word is stored with the first pixel of the invalid run it belongs to. A run
-//   that ends in a later slot than its first pixel's (its slots read the word that ends it from a
-//   RAM) has that word stored under its first pixel when it ends; as a slot's first run is the only
-//   one that can have begun in an earlier slot, that is one write a slot. The run that reaches the
-//   row's end (there is no word after it) is kept in a register per row parity instead.
+//   Writing row y: each slot's words are stored with the first pixel of the slot's last invalid
+//   run. A run that ends in a later slot than its first pixel's (its slots read the word that ends
+//   it from a RAM) has that word stored under its first pixel when it ends; as a slot's first run is
+//   the only one that can have begun in an earlier slot, that is one write a slot. The run that
+//   reaches the row's end (there is no word after it) is kept in a register per row parity instead.
 //   Reading row y - 1: the left neighbour is the last valid word read before (in the slot, or the
 //   register `left`); the right one is the next valid word of the slot, or, for the slot's last run,
 //   the word stored under its first pixel (none for the row end's run). Two rows of each (ping-pong
