@@ -116,13 +116,14 @@ module fpstereo_median #(
     .out({done_m, x_m, y_m}));
   always @(posedge clk)
     if (restart) out_event <= 1'b0;
-    else if (adv) begin
-      out_event <= done_m;
+    else if (adv) out_event <= done_m;
+  // The pixel's position and its median, without a reset (their enable is adv alone: logic
+  // depth).
+  always @(posedge clk)
+    if (adv) begin
       out_x <= x_m;
       out_y <= y_m;
+      out_word <= selected;
     end
-  // One more register holds the word of the pixel in out_x / out_y.
-  always @(posedge clk)
-    if (adv) out_word <= selected;
 endmodule
 `resetall

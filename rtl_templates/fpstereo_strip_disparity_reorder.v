@@ -56,48 +56,76 @@ module fpstereo_strip_disparity_reorder #(
   endgenerate
 
   // The output's raster order: slot so of row to, a slot a step from out_on on, over row-times of
-  // STRIP_PIXELS steps (K * SEGMENT, the aggregation's).
-  localparam integer LAST_I = STRIP_PIXELS - 1;
-  localparam [X_W-1:0] LAST_SLOT = LAST_I[X_W-1:0];
+  // STRIP_PIXELS steps (K * SEGMENT, the aggregation's). The compares that decide a step are
+  // registers set a step ahead (so that adv's and the frame size's paths end in one gate): whether
+  // so is the row-time's last slot, and whether so lies in the frame's width.
+  localparam integer BEFORE_LAST_I = STRIP_PIXELS - 2;
+  localparam [X_W-1:0] BEFORE_LAST_SLOT = BEFORE_LAST_I[X_W-1:0];
+  wire step = adv && out_on;
   reg  [X_W-1:0] so;
+  reg  so_last;
   wire [Y_W-1:0] to;
-  wire row_ends = adv && out_on && so == LAST_SLOT;
+  wire to_last;
+  wire row_ends = step && so_last;
+  always @(posedge clk)
+    if (restart) begin
+      so <= {X_W{1'b0}};
+      so_last <= 1'b0;  // STRIP_PIXELS >= 2
+    end else if (step) begin
+      so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
+      so_last <= !row_ends && so == BEFORE_LAST_SLOT;
+    end
   // The strip of slot so and the slot within it, counters (no division by WORDS).
-  localparam integer LAST_WORD_I = WORDS - 1;
-  localparam [X_W-1:0] LAST_WORD = LAST_WORD_I[X_W-1:0];
+  localparam integer BEFORE_LAST_WORD_I = WORDS - 2;
+  localparam [X_W-1:0] BEFORE_LAST_WORD = BEFORE_LAST_WORD_I[X_W-1:0];
   reg [STRIP_W-1:0] strip_of;
   reg [X_W-1:0] in_strip;
+  reg in_strip_last;  // in_strip == WORDS - 1
   always @(posedge clk)
     if (restart || row_ends) begin
       strip_of <= {STRIP_W{1'b0}};
       in_strip <= {X_W{1'b0}};
-    end else if (adv && out_on) begin
-      if (in_strip == LAST_WORD) strip_of <= strip_of + 1'b1;
-      in_strip <= in_strip == LAST_WORD ? {X_W{1'b0}} : in_strip + 1'b1;
+      in_strip_last <= WORDS == 1;
+    end else if (step) begin
+      if (in_strip_last) strip_of <= strip_of + 1'b1;
+      in_strip <= in_strip_last ? {X_W{1'b0}} : in_strip + 1'b1;
+      in_strip_last <= WORDS == 1 || (!in_strip_last && in_strip == BEFORE_LAST_WORD);
     end
-  /* verilator lint_off PINCONNECTEMPTY */
   fpstereo_frame_row #(.Y_W(Y_W)) output_row (
-    .clk(clk), .restart(restart), .next(row_ends), .wrap(overlap), .height(frame_height), .row(to), .last());
-  /* verilator lint_on PINCONNECTEMPTY */
+    .clk(clk), .restart(restart), .next(row_ends), .wrap(overlap), .height(frame_height), .row(to), .last(to_last));
+  // Whether so lies in the frame's width: from slot 0 of each row (frames are at least P wide) to
+  // the width's last slot, a register (the frame size holds while a frame runs).
+  reg [X_W-1:0] last_width_slot;
+  always @(posedge clk) last_width_slot <= (frame_width >> LOG_P) - 1'b1;
+  reg in_width;
   always @(posedge clk)
-    if (restart) so <= {X_W{1'b0}};
-    else if (adv && out_on) so <= row_ends ? {X_W{1'b0}} : so + 1'b1;
-  // The rows with events: the frame's, or with EXTRA_ROWS a register (the frame size holds while
-  // a frame runs) that adds them.
-  wire in_frame_rows = to < frame_height;
+    if (restart || row_ends) in_width <= 1'b1;
+    else if (step && so == last_width_slot) in_width <= 1'b0;
+  // Whether row to lies in the frame, and in the rows with events (the frame's, and EXTRA_ROWS more
+  // for gap interpolation), as flags that follow the row counter: a wrap returns to row 0, the
+  // frame's last row leaves the frame, and with EXTRA_ROWS the row before the events' end
+  // (compared while the row-time runs: a row-time is STRIP_PIXELS >= 3 steps) leaves the events.
+  wire wraps = overlap && to_last;
+  reg  in_frame_rows;
+  always @(posedge clk)
+    if (restart) in_frame_rows <= 1'b1;
+    else if (row_ends) in_frame_rows <= wraps || (in_frame_rows && !to_last);
   wire in_rows;
   generate
     if (EXTRA_ROWS != 0) begin : extra_rows
-      reg [Y_W-1:0] event_rows;
-      always @(posedge clk) event_rows <= frame_height + EXTRA_ROWS;
-      assign in_rows = to < event_rows;
+      reg [Y_W-1:0] last_event_row;
+      always @(posedge clk) last_event_row <= frame_height + (EXTRA_ROWS - 1);
+      reg at_last_event_row, in_event_rows;
+      always @(posedge clk) at_last_event_row <= to == last_event_row;
+      always @(posedge clk)
+        if (restart) in_event_rows <= 1'b1;
+        else if (row_ends) in_event_rows <= wraps || (in_event_rows && !at_last_event_row);
+      assign in_rows = in_event_rows;
     end else begin : frame_rows
       assign in_rows = in_frame_rows;
     end
   endgenerate
-  /* verilator lint_off WIDTH */
-  wire read_now = out_on && ({so, {LOG_P{1'b0}}} < {1'b0, frame_width}) && in_rows;
-  /* verilator lint_on WIDTH */
+  wire read_now = out_on && in_width && in_rows;
   wire read_valid = read_now && in_frame_rows;
   reg [STRIP_W-1:0] strip_q;
   reg read_was_valid;
@@ -110,6 +138,10 @@ module fpstereo_strip_disparity_reorder #(
       read_done <= out_on;
       read_event <= read_now;
       read_was_valid <= read_valid;
+    end
+  // The read's position, without a reset (their enable is adv alone: logic depth).
+  always @(posedge clk)
+    if (adv) begin
       read_x <= so;
       read_y <= to;
       strip_q <= strip_of;

@@ -1207,14 +1207,24 @@ module fps_sad5_d128u32_baf239_front_end #(
     end
   // The hold: armed in the step before the last row's last slot (G = 1: every step is a slot),
   // while the frame may be followed; it lasts FOLLOW_WAIT cycles, whether the frame comes or not,
-  // so that every frame takes the same time. Registers only, as adv depends on it.
-  reg armed;
+  // so that every frame takes the same time. hold is itself a register, as adv and through it the
+  // restart depend on it (logic depth): it is set where armed is (never while armed, so once a
+  // slot) and clears after FOLLOW_WAIT cycles, which waited counts.
+  reg armed, hold_q;
   reg [1:0] waited;
-  localparam [1:0] WAIT = FOLLOW_WAIT;
+  localparam [1:0] WAIT_LAST = FOLLOW_WAIT - 1;
+  wire arm = FOLLOW_WAIT != 0 && si == SLOT_BEFORE_LAST && at_last_row && overlap && row_in && !closed;
   always @(posedge clk)
-    if (restart) armed <= 1'b0;
-    else if (adv) armed <= FOLLOW_WAIT != 0 && si == SLOT_BEFORE_LAST && at_last_row && overlap && row_in && !closed;
-  assign hold = armed && waited != WAIT;
+    if (restart) begin
+      armed <= 1'b0;
+      hold_q <= 1'b0;
+    end else if (adv) begin
+      armed <= arm;
+      hold_q <= arm && !armed;
+    end else begin
+      hold_q <= hold_q && waited != WAIT_LAST;
+    end
+  assign hold = hold_q;
   always @(posedge clk)
     if (restart || !armed) waited <= 2'd0;
     else if (hold) waited <= waited + 1'b1;
@@ -1294,22 +1304,49 @@ module fps_sad5_d128u32_baf239_front_end #(
   // The bounds of the window that forms in this shift are registered with its position, so that
   // the compares with the frame size and the transform lie in different steps. Its rows' bounds
   // are those of one of the two counted rows.
-  // The columns' bounds are those of the P windows side by side, centred on the slot's first pixel
-  // and the P - 1 after it.
-  wire [N+P-2:0] centre_columns;
   wire [N-1:0] newest_rows, prev_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the first
-  wire [N-1:0] prev_unused_columns;
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the counters below
+  wire [N-1:0] newest_unused_columns, prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
-  /* verilator lint_off WIDTH */  // the slot's first pixel, slot * P (below 2^X_W)
-  wire [X_W-1:0] centre_pixel = centre_x << LOG_P;
-  /* verilator lint_on WIDTH */
-  fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .COLS(N + P - 1), .COL_LAG(R), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
-    .clk(clk), .x(centre_pixel), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
-    .col_valid(centre_columns));
+  fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
+    .clk(clk), .x(centre_x), .y(newest_y), .width(width_x), .height(height_y), .row_valid(newest_rows),
+    .col_valid(newest_unused_columns));
   fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) prev_bounds (
     .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
+  // The columns' bounds: those of the P windows side by side, centred on the slot's first pixel
+  // x = centre_x * P and the P - 1 after it. Column v is image column x + v - R. Each bound is
+  // a compare of a counter with a constant, not of two counters (abc9 maps those as ripple chains
+  // of 7 LUTs at 4K widths: logic depth, docs/timing.md): x + v - R >= 0 is centre_x >= ceil((R -
+  // v) / P), and x + v - R < width is slots_left >= (v - R) / P (rounded down, as a floor), where
+  // slots_left = width / P - 1 - centre_x is a counter of its own (width is a multiple of P).
+  // It starts at the restart from the width itself (which holds from then on), returns to width /
+  // P - 1 where centre_x returns to 0, and counts down as centre_x counts up.
+  localparam LEFT_W = X_W + 2;
+  localparam integer CENTRE_START_LEFT_I = CENTRE_START_I + 1;
+  localparam [LEFT_W-1:0] CENTRE_START_LEFT = CENTRE_START_LEFT_I[LEFT_W-1:0];
+  reg  signed [LEFT_W-1:0] slots_left, width_slots_left;
+  wire [LEFT_W-1:0] width_slots = {2'b00, frame_width >> LOG_P};
+  always @(posedge clk) width_slots_left <= $signed(width_slots - 1'b1);
+  always @(posedge clk)
+    if (restart) slots_left <= $signed(width_slots - CENTRE_START_LEFT);
+    else if (shift) slots_left <= centre_x == LAST_SLOT ? width_slots_left : slots_left - 1'b1;
+  wire [N+P-2:0] centre_columns;
+  genvar v;
+  generate
+    for (v = 0; v < N + P - 1; v = v + 1) begin : column
+      // floor((v - R) / P) and ceil((R - v) / P) as integers of either sign
+      localparam integer ABOVE = v - R >= 0 ? (v - R) / P : -((R - v + P - 1) / P);
+      localparam integer FIRST = R - v > 0 ? (R - v + P - 1) / P : 0;
+      localparam signed [LEFT_W-1:0] ABOVE_LEFT = ABOVE[LEFT_W-1:0];
+      localparam [X_W-1:0] FIRST_X = FIRST[X_W-1:0];
+      if (FIRST != 0) begin : left_edge
+        assign centre_columns[v] = centre_x >= FIRST_X && slots_left >= ABOVE_LEFT;
+      end else begin : inside_left
+        assign centre_columns[v] = slots_left >= ABOVE_LEFT;
+      end
+    end
+  endgenerate
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
   reg [N+P-2:0] col_valid_q;
