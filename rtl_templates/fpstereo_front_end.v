@@ -262,7 +262,7 @@ module fpstereo_front_end #(
   // the compares with the frame size and the transform lie in different steps. Its rows' bounds
   // are those of one of the two counted rows.
   wire [N-1:0] newest_rows, prev_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the counters below
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from fpstereo_slot_columns below
   wire [N-1:0] newest_unused_columns, prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fpstereo_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
@@ -272,38 +272,11 @@ module fpstereo_front_end #(
     .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   // The columns' bounds: those of the P windows side by side, centred on the slot's first pixel
-  // x = centre_x * P and the P - 1 after it. Column v is image column x + v - R. Each bound is
-  // a compare of a counter with a constant, not of two counters (abc9 maps those as ripple chains
-  // of 7 LUTs at 4K widths: logic depth, docs/timing.md): x + v - R >= 0 is centre_x >= ceil((R -
-  // v) / P), and x + v - R < width is slots_left >= (v - R) / P (rounded down, as a floor), where
-  // slots_left = width / P - 1 - centre_x is a counter of its own (width is a multiple of P).
-  // It starts at the restart from the width itself (which holds from then on), returns to width /
-  // P - 1 where centre_x returns to 0, and counts down as centre_x counts up.
-  localparam LEFT_W = X_W + 2;
-  localparam integer CENTRE_START_LEFT_I = CENTRE_START_I + 1;
-  localparam [LEFT_W-1:0] CENTRE_START_LEFT = CENTRE_START_LEFT_I[LEFT_W-1:0];
-  reg  signed [LEFT_W-1:0] slots_left, width_slots_left;
-  wire [LEFT_W-1:0] width_slots = {2'b00, frame_width >> LOG_P};
-  always @(posedge clk) width_slots_left <= $signed(width_slots - 1'b1);
-  always @(posedge clk)
-    if (restart) slots_left <= $signed(width_slots - CENTRE_START_LEFT);
-    else if (shift) slots_left <= centre_x == LAST_SLOT ? width_slots_left : slots_left - 1'b1;
+  // x = centre_x * P and the P - 1 after it, from a counter of the slots left in the width.
   wire [N+P-2:0] centre_columns;
-  genvar v;
-  generate
-    for (v = 0; v < N + P - 1; v = v + 1) begin : column
-      // floor((v - R) / P) and ceil((R - v) / P) as integers of either sign
-      localparam integer ABOVE = v - R >= 0 ? (v - R) / P : -((R - v + P - 1) / P);
-      localparam integer FIRST = R - v > 0 ? (R - v + P - 1) / P : 0;
-      localparam signed [LEFT_W-1:0] ABOVE_LEFT = ABOVE[LEFT_W-1:0];
-      localparam [X_W-1:0] FIRST_X = FIRST[X_W-1:0];
-      if (FIRST != 0) begin : left_edge
-        assign centre_columns[v] = centre_x >= FIRST_X && slots_left >= ABOVE_LEFT;
-      end else begin : inside_left
-        assign centre_columns[v] = slots_left >= ABOVE_LEFT;
-      end
-    end
-  endgenerate
+  fpstereo_slot_columns #(.COLS(N + P - 1), .LAG(R), .P(P), .X_W(X_W), .START(CENTRE_START_I)) columns (
+    .clk(clk), .restart(restart), .shift(shift), .to_first(centre_x == LAST_SLOT), .frame_width(frame_width),
+    .x(centre_x), .col_valid(centre_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
   reg [N+P-2:0] col_valid_q;
@@ -311,7 +284,8 @@ module fpstereo_front_end #(
     if (shift) begin
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
-      newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
+      // (col_in: the input slot lies inside the width, a register)
+      newest_row_valid_q <= col_in ? newest_rows : {N{1'b0}};
     end
   // Whether the transform's position lies in the frame: its window's centre row and its slot's
   // first column are inside, which the window's registered bounds already say (row and column R),

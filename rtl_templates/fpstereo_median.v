@@ -50,7 +50,6 @@ module fpstereo_median #(
   endgenerate
   localparam RM = M / 2;
   localparam WORD_W = DISP_W + 1;
-  localparam LOG_P = $clog2(P);
   localparam integer LAST_SLOT_I = ROW_SLOTS - 1;
   localparam [X_W-1:0] LAST_SLOT = LAST_SLOT_I[X_W-1:0];
   wire [X_W:0] width_x = {1'b0, frame_width};
@@ -80,14 +79,21 @@ module fpstereo_median #(
       median_x <= centre_x;
       median_y <= centre_y;
     end
-  // The P windows' columns' bounds side by side, from the slot's first pixel.
-  /* verilator lint_off WIDTH */  // slot * P, below 2^X_W
-  wire [X_W-1:0] median_pixel = median_x << LOG_P;
-  /* verilator lint_on WIDTH */
+  // The P windows' rows' and columns' bounds side by side, from the slot's first pixel; the
+  // columns' from a counter of the slots left in the width (no restart: the centres before its
+  // first return to slot 0 lie above the image).
+  localparam integer LAG_I = CENTRE_LAG;
+  localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   wire [M-1:0] row_valid;
   wire [M+P-2:0] col_valid;
-  fpstereo_window_bounds #(.SIDE(M), .COLS(M + P - 1), .COL_LAG(RM), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
-    .clk(clk), .x(median_pixel), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid),
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [M-1:0] unused_columns;
+  /* verilator lint_on UNUSEDSIGNAL */
+  fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
+    .clk(clk), .x(median_x), .y(median_y), .width(width_x), .height(height_y), .row_valid(row_valid),
+    .col_valid(unused_columns));
+  fpstereo_slot_columns #(.COLS(M + P - 1), .LAG(RM), .P(P), .X_W(X_W)) columns (
+    .clk(clk), .restart(1'b0), .shift(shift), .to_first(in_x == LAG_X), .frame_width(frame_width), .x(median_x),
     .col_valid(col_valid));
   wire [P*WORD_W-1:0] selected;
   genvar q;
@@ -104,7 +110,8 @@ module fpstereo_median #(
   // (the rows with events, a register: the frame size holds while a frame runs)
   reg signed [SIGNED_Y_W-1:0] event_rows_y;
   always @(posedge clk) event_rows_y <= height_y + EXTRA_ROWS;
-  wire in_image = {1'b0, median_pixel} < width_x && median_y >= 0 && median_y < event_rows_y;
+  // (column RM is the slot's first pixel)
+  wire in_image = col_valid[RM] && median_y >= 0 && median_y < event_rows_y;
   /* verilator lint_off UNUSEDSIGNAL */  // the top bits are 0 whenever in_image
   wire [SIGNED_Y_W-1:0] median_row = median_y;
   /* verilator lint_on UNUSEDSIGNAL */

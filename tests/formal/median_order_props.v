@@ -28,6 +28,8 @@
 // formal-probe: probe_median_x median.median_x
 // formal-probe: probe_median_y median.median_y
 // formal-probe: probe_line median.median_delay.line
+// formal-probe: probe_slots_left median.columns.slots_left
+// formal-probe: probe_width_slots_left median.columns.width_slots_left
 module median_order_props #(
   parameter EXTRA_ROWS = `MEDIAN_EXTRA_ROWS,
   parameter X_W = 2
@@ -75,6 +77,7 @@ module median_order_props #(
   (* keep *) wire [Y_W-1:0]         probe_row, probe_before_last;
   (* keep *) wire signed [SY_W-1:0] probe_median_y;
   (* keep *) wire [ENTRY_W*DEPTH-1:0] probe_line;
+  (* keep *) wire [X_W+1:0]         probe_slots_left, probe_width_slots_left;
 
   wire past_valid, past_rst;
   formal_start run_start (.clk(clk), .rst(restart), .past_valid(past_valid), .past_rst(past_rst));
@@ -215,6 +218,39 @@ module median_order_props #(
       assert(probe_slot < ROW_SLOTS && probe_before_last == frame_height - 2'd2);
       assert(probe_last == (probe_row == frame_height - 1'b1));
       if (overlap) assert({5'd0, probe_row} < height);
+    end
+
+  // ---- The median's column counter (fpstereo_slot_columns, no restart): from the centre's first
+  // return to slot 0 (the slot read is the centre's lag, 1) on, slots_left = width - 1 - median_x;
+  // before it, the one centre taken lies above the image. The walk: median_x is the centre of the
+  // last slot shifted in, and the next slot read follows it.
+  reg           shifted, returned;
+  reg [X_W-1:0] last_x;
+  always @(posedge clk)
+    if (restart) {shifted, returned} <= 2'b00;
+    else if (adv && read_done) begin
+      shifted <= 1'b1;
+      if (read_x == 1) returned <= 1'b1;
+      last_x <= read_x;
+    end
+  function [X_W-1:0] slot_after(input [X_W-1:0] sx);
+    slot_after = sx == ROW_SLOTS - 1 ? {X_W{1'b0}} : sx + 1'b1;
+  endfunction
+  wire [X_W+1:0] slots_left = {2'b00, frame_width} - 1'b1 - {2'b00, probe_median_x};
+  wire [X_W:0]   last_centre = centre_col(last_x);
+  always @*
+    if (check) begin
+      assert(probe_width_slots_left == {2'b00, frame_width} - 1'b1);
+      if (shifted) begin
+        assert(last_x < ROW_SLOTS && {1'b0, probe_median_x} == last_centre);
+        if (read_done) assert(read_x == slot_after(last_x));
+        assert(probe_slot == (read_done ? slot_after(slot_after(last_x)) : slot_after(last_x)));
+        if (!returned) assert(last_x == 0 && probe_row == 0 && !reader_wrapped && probe_median_y == -RM - 1);
+      end
+      // (none yet: the reader is at row 0's first slot, or has read it and not yet shifted it in)
+      if (!shifted) assert(!probe_fresh && probe_row == 0 && !reader_wrapped &&
+                           (probe_slot == 0 ? !read_done : probe_slot == 1 && !probe_group && read_done && read_x == 0));
+      if (returned) assert(shifted && probe_slots_left == slots_left);
     end
 `endif
 endmodule

@@ -1305,7 +1305,7 @@ module fps_sad5_d128u32_baf239_front_end #(
   // the compares with the frame size and the transform lie in different steps. Its rows' bounds
   // are those of one of the two counted rows.
   wire [N-1:0] newest_rows, prev_rows;
-  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from the counters below
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from fps_sad5_d128u32_baf239_slot_columns below
   wire [N-1:0] newest_unused_columns, prev_unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_baf239_window_bounds #(.SIDE(N), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) window_bounds (
@@ -1315,38 +1315,11 @@ module fps_sad5_d128u32_baf239_front_end #(
     .clk(clk), .x(centre_x), .y(newest_prev_y), .width(width_x), .height(height_y), .row_valid(prev_rows),
     .col_valid(prev_unused_columns));
   // The columns' bounds: those of the P windows side by side, centred on the slot's first pixel
-  // x = centre_x * P and the P - 1 after it. Column v is image column x + v - R. Each bound is
-  // a compare of a counter with a constant, not of two counters (abc9 maps those as ripple chains
-  // of 7 LUTs at 4K widths: logic depth, docs/timing.md): x + v - R >= 0 is centre_x >= ceil((R -
-  // v) / P), and x + v - R < width is slots_left >= (v - R) / P (rounded down, as a floor), where
-  // slots_left = width / P - 1 - centre_x is a counter of its own (width is a multiple of P).
-  // It starts at the restart from the width itself (which holds from then on), returns to width /
-  // P - 1 where centre_x returns to 0, and counts down as centre_x counts up.
-  localparam LEFT_W = X_W + 2;
-  localparam integer CENTRE_START_LEFT_I = CENTRE_START_I + 1;
-  localparam [LEFT_W-1:0] CENTRE_START_LEFT = CENTRE_START_LEFT_I[LEFT_W-1:0];
-  reg  signed [LEFT_W-1:0] slots_left, width_slots_left;
-  wire [LEFT_W-1:0] width_slots = {2'b00, frame_width >> LOG_P};
-  always @(posedge clk) width_slots_left <= $signed(width_slots - 1'b1);
-  always @(posedge clk)
-    if (restart) slots_left <= $signed(width_slots - CENTRE_START_LEFT);
-    else if (shift) slots_left <= centre_x == LAST_SLOT ? width_slots_left : slots_left - 1'b1;
+  // x = centre_x * P and the P - 1 after it, from a counter of the slots left in the width.
   wire [N+P-2:0] centre_columns;
-  genvar v;
-  generate
-    for (v = 0; v < N + P - 1; v = v + 1) begin : column
-      // floor((v - R) / P) and ceil((R - v) / P) as integers of either sign
-      localparam integer ABOVE = v - R >= 0 ? (v - R) / P : -((R - v + P - 1) / P);
-      localparam integer FIRST = R - v > 0 ? (R - v + P - 1) / P : 0;
-      localparam signed [LEFT_W-1:0] ABOVE_LEFT = ABOVE[LEFT_W-1:0];
-      localparam [X_W-1:0] FIRST_X = FIRST[X_W-1:0];
-      if (FIRST != 0) begin : left_edge
-        assign centre_columns[v] = centre_x >= FIRST_X && slots_left >= ABOVE_LEFT;
-      end else begin : inside_left
-        assign centre_columns[v] = slots_left >= ABOVE_LEFT;
-      end
-    end
-  endgenerate
+  fps_sad5_d128u32_baf239_slot_columns #(.COLS(N + P - 1), .LAG(R), .P(P), .X_W(X_W), .START(CENTRE_START_I)) columns (
+    .clk(clk), .restart(restart), .shift(shift), .to_first(centre_x == LAST_SLOT), .frame_width(frame_width),
+    .x(centre_x), .col_valid(centre_columns));
   wire [N-1:0] centre_rows = borrow ? prev_rows : newest_rows;
   reg [N-1:0] row_valid_q, newest_row_valid_q;
   reg [N+P-2:0] col_valid_q;
@@ -1354,7 +1327,8 @@ module fps_sad5_d128u32_baf239_front_end #(
     if (shift) begin
       row_valid_q <= centre_rows;
       col_valid_q <= centre_columns;
-      newest_row_valid_q <= ({1'b0, si} << LOG_P) < width_x ? newest_rows : {N{1'b0}};
+      // (col_in: the input slot lies inside the width, a register)
+      newest_row_valid_q <= col_in ? newest_rows : {N{1'b0}};
     end
   // Whether the transform's position lies in the frame: its window's centre row and its slot's
   // first column are inside, which the window's registered bounds already say (row and column R),
@@ -2900,6 +2874,71 @@ module fps_sad5_d128u32_baf239_window_bounds #(
       reg signed [SIGNED_Y_W:0] limit;
       always @(posedge clk) limit <= $signed({height[SIGNED_Y_W-1], height}) + OFFSET_Y;
       assign row_valid[v] = row >= OFFSET_Y && row < limit;
+    end
+  endgenerate
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// Which columns of the P windows centred on a slot's P pixels lie inside the frame's width: column
+// v is image column x * P + v - LAG, for the slot x (the width a multiple of P). Each bound is a
+// compare of a counter with a constant, not of two counters: abc9 maps a compare of two 12-bit
+// counters as a ripple of LUT5s that the project's logic depth counts as 7 (docs/timing.md, large
+// frames). x + v - LAG >= 0 is x >= ceil((LAG - v) / P), and x * P + v - LAG < width is slots_left
+// >= floor((v - LAG) / P), where slots_left = width / P - 1 - x is a counter of its own: it
+// follows the shifts that move x, back to width / P - 1 with the one that takes x to slot 0
+// (`to_first`) and one down with every other, as x counts up. A restart sets it for x = START;
+// without one it is right from the first return to slot 0 on.
+module fps_sad5_d128u32_baf239_slot_columns #(
+  parameter COLS = 5,
+  parameter LAG = 2,
+  parameter P = 1,
+  parameter X_W = 7,
+  parameter START = 0
+) (
+  input  wire            clk,
+  input  wire            restart,
+  input  wire            shift,
+  input  wire            to_first,
+  input  wire [X_W-1:0]  frame_width,
+  // the slot, a register that moves with the shifts
+  input  wire [X_W-1:0]  x,
+  output wire [COLS-1:0] col_valid
+);
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if ((P != 1 && P != 2 && P != 4) || COLS < 1 || LAG < 0 || LAG >= COLS || START < 0 ||
+        START >= (1 << X_W)) begin : invalid
+      fps_sad5_d128u32_baf239_invalid_parameters_slot_columns_P_LAG_or_START_out_of_range failed ();
+    end
+  endgenerate
+  localparam LOG_P = $clog2(P);
+  // slots_left lies between -2^X_W and 2^X_W
+  localparam LEFT_W = X_W + 2;
+  localparam integer START_LEFT_I = START + 1;
+  localparam [LEFT_W-1:0] START_LEFT = START_LEFT_I[LEFT_W-1:0];
+  wire [LEFT_W-1:0] width_slots = {2'b00, frame_width >> LOG_P};
+  // (a register: the frame size holds while a frame runs)
+  reg  signed [LEFT_W-1:0] width_slots_left;
+  always @(posedge clk) width_slots_left <= $signed(width_slots - 1'b1);
+  reg  signed [LEFT_W-1:0] slots_left;
+  always @(posedge clk)
+    if (restart) slots_left <= $signed(width_slots - START_LEFT);
+    else if (shift) slots_left <= to_first ? width_slots_left : slots_left - 1'b1;
+  genvar v;
+  generate
+    for (v = 0; v < COLS; v = v + 1) begin : column
+      // floor((v - LAG) / P) and ceil((LAG - v) / P) as integers of either sign
+      localparam integer ABOVE = v - LAG >= 0 ? (v - LAG) / P : -((LAG - v + P - 1) / P);
+      localparam integer FIRST = LAG - v > 0 ? (LAG - v + P - 1) / P : 0;
+      localparam signed [LEFT_W-1:0] ABOVE_LEFT = ABOVE[LEFT_W-1:0];
+      localparam [X_W-1:0] FIRST_X = FIRST[X_W-1:0];
+      if (FIRST != 0) begin : left_edge
+        assign col_valid[v] = x >= FIRST_X && slots_left >= ABOVE_LEFT;
+      end else begin : inside_left
+        assign col_valid[v] = slots_left >= ABOVE_LEFT;
+      end
     end
   endgenerate
 endmodule

@@ -1,4 +1,4 @@
-// fpstereo_front_end (with fpstereo_window, fpstereo_window_bounds and their counters): the window
+// fpstereo_front_end (with fpstereo_window, fpstereo_window_bounds, fpstereo_slot_columns and their counters): the window
 // stage at P pixels a slot, G = 1, frames that run alone. Reference, from the module's header: step
 // n (a cycle with adv high, counted from the restart) is slot n mod ROW_SLOTS of row-time
 // n / ROW_SLOTS; it takes the P pixels of that slot and row (in_due) while both lie in the frame.

@@ -37,19 +37,19 @@ modtb_set(window window_n3_p4_s6 TOP fpstereo_window SOURCES fpstereo_window.v f
 modtb_set(window window_n5_p4_s3 TOP fpstereo_window SOURCES fpstereo_window.v fpstereo_ram_sdp.v
           PARAMS N=5 WORD_W=8 P=4 ROW_SLOTS=3 ADDR_W=2)
 # The window stage at P pixels a slot (G = 1), lone frames.
-modtb_set(front_end front_end_n5_p1 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v
+modtb_set(front_end front_end_n5_p1 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v fpstereo_slot_columns.v
           fpstereo_raster_counter.v fpstereo_frame_row.v
           PARAMS N=5 ROW_SLOTS=12 G=1 COST_ROWS=3 COST_ROW_W=2 X_W=4 Y_W=5 SIGNED_Y_W=7 G_W=1 P=1)
-modtb_set(front_end front_end_n7_p2 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v
+modtb_set(front_end front_end_n7_p2 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v fpstereo_slot_columns.v
           fpstereo_raster_counter.v fpstereo_frame_row.v
           PARAMS N=7 ROW_SLOTS=10 G=1 COST_ROWS=4 COST_ROW_W=2 X_W=5 Y_W=5 SIGNED_Y_W=7 G_W=1 P=2)
-modtb_set(front_end front_end_n5_p2 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v
+modtb_set(front_end front_end_n5_p2 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v fpstereo_slot_columns.v
           fpstereo_raster_counter.v fpstereo_frame_row.v
           PARAMS N=5 ROW_SLOTS=7 G=1 COST_ROWS=2 COST_ROW_W=1 X_W=4 Y_W=5 SIGNED_Y_W=7 G_W=1 P=2)
-modtb_set(front_end front_end_n5_p4 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v
+modtb_set(front_end front_end_n5_p4 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v fpstereo_slot_columns.v
           fpstereo_raster_counter.v fpstereo_frame_row.v
           PARAMS N=5 ROW_SLOTS=6 G=1 COST_ROWS=5 COST_ROW_W=3 X_W=5 Y_W=5 SIGNED_Y_W=7 G_W=1 P=4)
-modtb_set(front_end front_end_n3_p4 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v
+modtb_set(front_end front_end_n3_p4 TOP fpstereo_front_end SOURCES fpstereo_front_end.v fpstereo_window.v fpstereo_ram_sdp.v fpstereo_window_bounds.v fpstereo_slot_columns.v
           fpstereo_raster_counter.v fpstereo_frame_row.v
           PARAMS N=3 ROW_SLOTS=5 G=1 COST_ROWS=2 COST_ROW_W=1 X_W=5 Y_W=5 SIGNED_Y_W=7 G_W=1 P=4)
 modtb_set(path_lanes path_lanes_uf4 TOP fpstereo_path_lanes SOURCES fpstereo_path_lanes.v
