@@ -86,7 +86,7 @@ module fpstereo_median #(
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   wire [M-1:0] row_valid;
   wire [M+P-2:0] col_valid;
-  /* verilator lint_off UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from fpstereo_slot_columns
   wire [M-1:0] unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fpstereo_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (

@@ -2488,7 +2488,7 @@ module fps_census7_d128u32_6e9658_median #(
   localparam [X_W-1:0] LAG_X = LAG_I[X_W-1:0];
   wire [M-1:0] row_valid;
   wire [M+P-2:0] col_valid;
-  /* verilator lint_off UNUSEDSIGNAL */
+  /* verilator lint_off UNUSEDSIGNAL */  // the columns' bounds come from fps_census7_d128u32_6e9658_slot_columns
   wire [M-1:0] unused_columns;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e9658_window_bounds #(.SIDE(M), .X_W(X_W), .SIGNED_Y_W(SIGNED_Y_W)) bounds (
