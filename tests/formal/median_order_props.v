@@ -245,7 +245,8 @@ module median_order_props #(
         assert(last_x < ROW_SLOTS && {1'b0, probe_median_x} == last_centre);
         if (read_done) assert(read_x == slot_after(last_x));
         assert(probe_slot == (read_done ? slot_after(slot_after(last_x)) : slot_after(last_x)));
-        if (!returned) assert(last_x == 0 && probe_row == 0 && !reader_wrapped && probe_median_y == -RM - 1);
+        if (!returned)
+          assert(last_x == 0 && probe_row == 0 && !reader_wrapped && probe_median_y == -RM - 1);
       end
       // (none yet: the reader is at row 0's first slot, or has read it and not yet shifted it in)
       if (!shifted) assert(!probe_fresh && probe_row == 0 && !reader_wrapped &&
