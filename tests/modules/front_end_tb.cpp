@@ -1,7 +1,8 @@
 // fpstereo_front_end (with fpstereo_window, fpstereo_window_bounds, fpstereo_slot_columns and
 // their counters): the window stage at P pixels a slot, G = 1, frames that run alone. Reference,
 // from the module's header: step n (a cycle with adv high, counted from the restart) is slot n mod
-// ROW_SLOTS of row-time n / ROW_SLOTS; it takes the P pixels of that slot and row (in_due) while both lie in the frame.
+// ROW_SLOTS of row-time n / ROW_SLOTS; it takes the P pixels of that slot and row (in_due) while
+// both lie in the frame.
 // The windows that form in step n are centred on the P pixels of the slot CENTRE_LAG steps back
 // (m = n - CENTRE_LAG: slot m mod ROW_SLOTS, row floor(m / ROW_SLOTS) - N / 2); window q is
 // columns q .. q + N - 1 of the arrays. Checked after every step: in_due before it; the rows' and
