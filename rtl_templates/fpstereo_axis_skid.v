@@ -42,10 +42,10 @@ module fpstereo_axis_skid #(
         data_q  <= s_data;
         valid_q <= s_valid;
       end
-    end else if (s_valid && !skid_valid_q) begin
-      skid_q       <= s_data;
-      skid_valid_q <= 1'b1;
-    end
+    end else if (s_valid && !skid_valid_q) skid_valid_q <= 1'b1;
   end
+  // The skid register follows the input while empty, so that its enable is not m_ready's.
+  always @(posedge clk)
+    if (!skid_valid_q) skid_q <= s_data;
 endmodule
 `resetall

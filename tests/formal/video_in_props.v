@@ -19,6 +19,7 @@
 // formal-probe: probe_first dut.first
 // formal-probe: probe_row_end dut.row_end
 // formal-probe: probe_last_row dut.last_row
+// formal-probe: probe_frame_end dut.frame_end
 // formal-probe: probe_done dut.done
 module video_in_props (
   input wire       clk,
@@ -50,7 +51,7 @@ module video_in_props (
   (* keep *) wire [1:0] probe_state;
   (* keep *) wire [X_W-1:0] probe_x;
   (* keep *) wire [Y_W-1:0] probe_y;
-  (* keep *) wire           probe_first, probe_row_end, probe_last_row, probe_done;
+  (* keep *) wire           probe_first, probe_row_end, probe_last_row, probe_frame_end, probe_done;
 
   wire past_valid, past_rst;
   formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
@@ -109,6 +110,7 @@ module video_in_props (
         // the unit's position is the frame's
         assert(probe_x == x && probe_y == y && x < w && y < h);
         assert(probe_first == (x == 0 && y == 0) && probe_row_end == row_last && probe_last_row == (y == h - 1'b1));
+        assert(probe_frame_end == frame_last);
       end
       assert(in_frame == (probe_state != 2'd0 && !probe_done) && probe_state != 2'd3);
     end

@@ -495,11 +495,11 @@ module fps_census7_d128u32_6e9658_axis_skid #(
         data_q  <= s_data;
         valid_q <= s_valid;
       end
-    end else if (s_valid && !skid_valid_q) begin
-      skid_q       <= s_data;
-      skid_valid_q <= 1'b1;
-    end
+    end else if (s_valid && !skid_valid_q) skid_valid_q <= 1'b1;
   end
+  // The skid register follows the input while empty, so that its enable is not m_ready's.
+  always @(posedge clk)
+    if (!skid_valid_q) skid_q <= s_data;
 endmodule
 `resetall
 
@@ -832,11 +832,10 @@ module fps_census7_d128u32_6e9658_video_in #(
   wire right_user = right[DATA_W+1], right_last = right[DATA_W];
   wire both = left_valid && right_valid;
   // Flags of the pixel at (x, y), kept as registers so that no compare with the frame size lies
-  // on the path from the streams to the core.
-  reg  first, row_end, last_row;
+  // on the path from the streams to the core (frame_end too: row_end && last_row, registered).
+  reg  first, row_end, last_row, frame_end;
   localparam [X_W-1:0] TWO_X = 2;
   localparam [Y_W-1:0] TWO_Y = 2;
-  wire frame_end = row_end && last_row;
   wire flags_match = left_user == first && right_user == first && left_last == row_end && right_last == row_end;
 
   // SEEK: a stream's beat that starts no frame is skipped; a frame starts on both streams at once.
@@ -920,6 +919,8 @@ module fps_census7_d128u32_6e9658_video_in #(
     end
   end
 
+  // The flags of the next pixel in the row (a row's end keeps last_row until the row changes).
+  wire next_row_end = !row_end && x == frame_width - TWO_X;
   always @(posedge clk)
     if (rst || core_start) begin
       x <= 0;
@@ -927,10 +928,12 @@ module fps_census7_d128u32_6e9658_video_in #(
       first <= 1'b1;
       row_end <= 1'b0;
       last_row <= 1'b0;
+      frame_end <= 1'b0;
     end else if (in_take) begin
       x <= row_end ? {X_W{1'b0}} : x + 1'b1;
       first <= 1'b0;
-      row_end <= !row_end && x == frame_width - TWO_X;
+      row_end <= next_row_end;
+      frame_end <= next_row_end && last_row;
       if (row_end) begin
         y <= y + 1'b1;
         last_row <= y == frame_height - TWO_Y;
