@@ -16,6 +16,10 @@
 // continues the row the strip to the left has just finished: the head takes that strip's ring
 // (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
 // captured at the same slot, which comes K steps earlier there).
+// Below MIN_DISP 0 a pixel's match entry is pixel x - MIN_DISP's, right of it, and a row's first
+// pixel needs the match pixels left of that one too: the first strip's head takes them from
+// prefix (PREFIX = min(-MIN_DISP, DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1) as
+// it begins a row; the lanes mask x - MIN_DISP - d >= the width as well.
 module fpstereo_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -37,7 +41,9 @@ module fpstereo_chain_cost #(
   // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
   parameter EXTRA_W = 0,
   // 1: a strip with one to its left, whose ring continues its rows
-  parameter FROM_LEFT = 0
+  parameter FROM_LEFT = 0,
+  // the match entries a row begins with below MIN_DISP 0 (the first strip's; else 0)
+  parameter PREFIX = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -48,6 +54,10 @@ module fpstereo_chain_cost #(
   input  wire [X_W-1:0]        frame_width,
   // the pixel's entry, in S1
   input  wire [2*ENTRY_W-1:0]  entry,
+  // below MIN_DISP 0, the row's first match entries (PREFIX), with the row's first entry
+  /* verilator lint_off UNUSEDSIGNAL */  // without PREFIX
+  input  wire [(PREFIX > 0 ? PREFIX : 1)*ENTRY_W-1:0] prefix,
+  /* verilator lint_on UNUSEDSIGNAL */
   /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
@@ -61,8 +71,12 @@ module fpstereo_chain_cost #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
-      fpstereo_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
+    if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fpstereo_invalid_parameters_chain_cost_needs_K_2_or_more_and_DMAX_a_multiple_of_UF failed ();
+    end
+    // below MIN_DISP 0 the first strip's rows begin with a prefix, which the others continue
+    if (PREFIX != (FROM_LEFT != 0 || MIN_DISP >= 0 ? 0 : -MIN_DISP < DMAX - 1 ? -MIN_DISP : DMAX - 1)) begin : invalid_prefix
+      fpstereo_invalid_parameters_chain_cost_PREFIX_is_not_the_first_strips_min_of_minus_MIN_DISP_and_DMAX_1 failed ();
     end
     if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip
       fpstereo_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
@@ -73,6 +87,7 @@ module fpstereo_chain_cost #(
   localparam TURN = UF % DMAX;
   localparam SHIFT = (UF - 1) % DMAX;
   localparam RING_W = DMAX * ENTRY_W;
+  localparam PREFIX_N = PREFIX > 0 ? PREFIX : 1;  // the prefix port's entries
   reg [RING_W-1:0] head;
   // the rings waiting for their chain, the next one at index 0, each with its turn completed
   reg [(K-1)*RING_W-1:0] waiting;
@@ -102,8 +117,9 @@ module fpstereo_chain_cost #(
       else begin
         head[0 +: ENTRY_W] <= match_in;
         for (p = 1; p < DMAX; p = p + 1)
-          head[p*ENTRY_W +: ENTRY_W] <= first1 ? kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
-                                                       : next_ring[(p-1)*ENTRY_W +: ENTRY_W];
+          head[p*ENTRY_W +: ENTRY_W] <= !first1 ? next_ring[(p-1)*ENTRY_W +: ENTRY_W]
+                                      : p <= PREFIX ? prefix[((p-1) % PREFIX_N)*ENTRY_W +: ENTRY_W]
+                                      : kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W];
         base_held <= base_in;
       end
     end

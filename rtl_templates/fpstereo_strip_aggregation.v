@@ -15,7 +15,9 @@
 // the costs, the strips handing their match rings on as their rows move right. With RAM (and
 // CODES) the entries come from fpstereo_strip_code_reorder instead, written in raster order a
 // slot of P pixels a step (code_we, code_slot, code_row: the row modulo SLOT_ROWS; code_extra:
-// adaptive P2's penalties, a slot and EXTRA_LAT steps later), and each strip's RAM holds
+// adaptive P2's penalties, a slot and EXTRA_LAT steps later; below MIN_DISP 0, code_prefix: the
+// first match entries of the row whose first pixel strip 0 reads next, fpstereo_chain_cost's
+// prefix), and each strip's RAM holds
 // (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
 // go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
 // check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), with CONFIDENCE the confidence
@@ -113,6 +115,8 @@ module fpstereo_strip_aggregation #(
   input  wire [SLOT_W-1:0]     code_row,
   input  wire [P*2*ENTRY_W-1:0] code_data,
   input  wire [P*(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] code_extra,
+  // (PREFIX entries, below; at least one)
+  input  wire [(CODES != 0 && MIN_DISP < 0 ? (-MIN_DISP < UF - 1 ? -MIN_DISP : UF - 1) : 1)*ENTRY_W-1:0] code_prefix,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire [P*UF*SUM_W-1:0] sums,
   output wire [P-1:0]          sums_active,
@@ -147,6 +151,11 @@ module fpstereo_strip_aggregation #(
   localparam NP = PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2;
   localparam PENALTIES = EXTRA_W != 0 ? NP : 0;
   localparam RING_W = UF * ENTRY_W;
+  // below MIN_DISP 0 a row's first pixel needs the match pixels left of its own match pixel
+  /* verilator lint_off UNUSEDPARAM */  // without CODES
+  localparam PREFIX = CODES == 0 || MIN_DISP >= 0 ? 0 : -MIN_DISP < UF - 1 ? -MIN_DISP : UF - 1;
+  localparam PREFIX_N = PREFIX > 0 ? PREFIX : 1;  // code_prefix's entries
+  /* verilator lint_on UNUSEDPARAM */
   // With RAM, the strips' code entries from their RAMs (a step after each address); else cost_q.
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM
   wire [P*Q_W-1:0] entries;
@@ -204,9 +213,10 @@ module fpstereo_strip_aggregation #(
         fpstereo_chain_cost #(.HAMMING(HAMMING), .CODE_W(CODE_W), .DMAX(UF), .UF(UF), .K(K), .COST_W(COST_W),
                               .COST_MAX(COST_MAX), .X_W(X_W), .G_W(1), .MIN_DISP(MIN_DISP), .WEIGHT(WEIGHT),
                               .TRUNC(TRUNC), .FEATURE_W(FEATURE_W), .GRADIENT(GRADIENT), .LANES_LAT(LANES_LAT),
-                              .LAT(CHAIN_LAT), .ENTRY_W(ENTRY_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0)) chain_cost (
+                              .LAT(CHAIN_LAT), .ENTRY_W(ENTRY_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0),
+                              .PREFIX(p == 0 ? PREFIX : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
-          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*ENTRY_W]),
+          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*ENTRY_W]), .prefix(code_prefix[(p == 0 ? PREFIX_N : 1)*ENTRY_W-1:0]),
           .extra(penalties_in), .costs(costs[UF*COST_W-1:0]), .extra_out(penalties),
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */

@@ -62,6 +62,9 @@ std::vector<StereoConfig> covering_configs() {
   strips.ppc = 4;
   strips.width = 128;
   out.push_back(strips);
+  // ... and below min-disp 0 (the base entries' wait, strip 0's prefix of match entries).
+  strips.min_disp = -5;
+  out.push_back(strips);
   return out;
 }
 

@@ -359,8 +359,9 @@ module fps_census7_d128u32_6e9658_sgm_core (
     .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
-    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .extra(1'b0),
-    .costs(chain_costs), .extra_out(chain_penalties), .ring_in(chain_ring), .ring_out(chain_ring));
+    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .prefix(48'd0),
+    .extra(1'b0), .costs(chain_costs), .extra_out(chain_penalties), .ring_in(chain_ring),
+    .ring_out(chain_ring));
   wire [527:0] agg_edge;
   wire [263:0] agg_edge135;
   fps_census7_d128u32_6e9658_aggregator #(
@@ -1503,6 +1504,10 @@ endmodule
 // continues the row the strip to the left has just finished: the head takes that strip's ring
 // (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
 // captured at the same slot, which comes K steps earlier there).
+// Below MIN_DISP 0 a pixel's match entry is pixel x - MIN_DISP's, right of it, and a row's first
+// pixel needs the match pixels left of that one too: the first strip's head takes them from
+// prefix (PREFIX = min(-MIN_DISP, DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1) as
+// it begins a row; the lanes mask x - MIN_DISP - d >= the width as well.
 module fps_census7_d128u32_6e9658_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,
@@ -1524,7 +1529,9 @@ module fps_census7_d128u32_6e9658_chain_cost #(
   // bits read beside the entry (adaptive P2's penalties), which leave with the pixel's costs
   parameter EXTRA_W = 0,
   // 1: a strip with one to its left, whose ring continues its rows
-  parameter FROM_LEFT = 0
+  parameter FROM_LEFT = 0,
+  // the match entries a row begins with below MIN_DISP 0 (the first strip's; else 0)
+  parameter PREFIX = 0
 ) (
   input  wire                  clk,
   input  wire                  adv,
@@ -1535,6 +1542,10 @@ module fps_census7_d128u32_6e9658_chain_cost #(
   input  wire [X_W-1:0]        frame_width,
   // the pixel's entry, in S1
   input  wire [2*ENTRY_W-1:0]  entry,
+  // below MIN_DISP 0, the row's first match entries (PREFIX), with the row's first entry
+  /* verilator lint_off UNUSEDSIGNAL */  // without PREFIX
+  input  wire [(PREFIX > 0 ? PREFIX : 1)*ENTRY_W-1:0] prefix,
+  /* verilator lint_on UNUSEDSIGNAL */
   /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
   input  wire [(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra,
   /* verilator lint_on UNUSEDSIGNAL */
@@ -1548,8 +1559,12 @@ module fps_census7_d128u32_6e9658_chain_cost #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0 || MIN_DISP < 0) begin : invalid
-      fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_needs_K_2_or_more_DMAX_a_multiple_of_UF_and_MIN_DISP_0_or_more failed ();
+    if (K < 2 || UF < 1 || DMAX % (UF > 0 ? UF : 1) != 0) begin : invalid
+      fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_needs_K_2_or_more_and_DMAX_a_multiple_of_UF failed ();
+    end
+    // below MIN_DISP 0 the first strip's rows begin with a prefix, which the others continue
+    if (PREFIX != (FROM_LEFT != 0 || MIN_DISP >= 0 ? 0 : -MIN_DISP < DMAX - 1 ? -MIN_DISP : DMAX - 1)) begin : invalid_prefix
+      fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_PREFIX_is_not_the_first_strips_min_of_minus_MIN_DISP_and_DMAX_1 failed ();
     end
     if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip
       fps_census7_d128u32_6e9658_invalid_parameters_chain_cost_strips_need_UF_equal_to_DMAX failed ();
@@ -1560,6 +1575,7 @@ module fps_census7_d128u32_6e9658_chain_cost #(
   localparam TURN = UF % DMAX;
   localparam SHIFT = (UF - 1) % DMAX;
   localparam RING_W = DMAX * ENTRY_W;
+  localparam PREFIX_N = PREFIX > 0 ? PREFIX : 1;  // the prefix port's entries
   reg [RING_W-1:0] head;
   // the rings waiting for their chain, the next one at index 0, each with its turn completed
   reg [(K-1)*RING_W-1:0] waiting;
@@ -1589,8 +1605,9 @@ module fps_census7_d128u32_6e9658_chain_cost #(
       else begin
         head[0 +: ENTRY_W] <= match_in;
         for (p = 1; p < DMAX; p = p + 1)
-          head[p*ENTRY_W +: ENTRY_W] <= first1 ? kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W]
-                                                       : next_ring[(p-1)*ENTRY_W +: ENTRY_W];
+          head[p*ENTRY_W +: ENTRY_W] <= !first1 ? next_ring[(p-1)*ENTRY_W +: ENTRY_W]
+                                      : p <= PREFIX ? prefix[((p-1) % PREFIX_N)*ENTRY_W +: ENTRY_W]
+                                      : kept[((p + SHIFT) % DMAX)*ENTRY_W +: ENTRY_W];
         base_held <= base_in;
       end
     end

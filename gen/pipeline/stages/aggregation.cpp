@@ -138,7 +138,6 @@ class AggregationStage : public Stage {
                                   {"EXTRA_W", num(d.penalty_bits)}},
                   {{"cost_raddr", "strip_raddr"},
                    {"cost_q", fmt::format("{}'d0", P * (2 * d.code_entry_bits + d.penalty_bits))},
-                   {"code_extra", d.penalty_bits != 0 ? "cost_penalties" : fmt::format("{}'d0", P)},
                    {"sums", "strip_sums"},
                    {"sums_active", "strip_active"},
                    {"sums_x", "strip_x"},
@@ -184,6 +183,7 @@ class AggregationStage : public Stage {
                    {"x", fmt::format("cost_schedule[{}:{}]", first - 1, x_lsb)},
                    {"row_time_first", fmt::format("cost_schedule[{}]", first)},
                    {"entry", "code_q"},
+                   {"prefix", fmt::format("{}'d0", d.code_entry_bits)},  // min-disp 0 or more
                    {"extra", penalties ? "code_penalties" : "1'b0"},
                    {"costs", "chain_costs"},
                    {"extra_out", "chain_penalties"},

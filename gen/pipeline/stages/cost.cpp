@@ -26,7 +26,7 @@ class CostStage : public Stage {
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
   // fpstereo_cost_history); the lanes take their register stages (with the fused cost, the term's).
   Latency latency(const Geometry& g) const override {
-    const Latency wait = base_wait(g.cfg);
+    const Latency wait = base_wait(g);
     return {wait.rows, 1 + wait.slots, g.cost_latency};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
@@ -41,8 +41,8 @@ class CostStage : public Stage {
       m.push_back({"core.cost.with_features.match_features.line_buffer.mem", g.row_slots, feature_bits});
     }
     // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2).
-    if (g.cfg.p2_adapt != 0 && base_wait(g.cfg).rows > 0)
-      m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(g.cfg).rows * g.row_slots, 4 * 8});
+    if (g.cfg.p2_adapt != 0 && base_wait(g).rows > 0)
+      m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(g).rows * g.row_slots, 4 * 8});
     return m;
   }
 
@@ -68,8 +68,8 @@ class CostStage : public Stage {
                                     {"NP", num(c.path_count())},
                                     {"GAIN", num(c.p2_adapt)},
                                     {"PATH_W", num(w.path_cost)},
-                                    {"WAIT_SLOTS", num(base_wait(c).slots)},
-                                    {"WAIT_ROWS", num(base_wait(c).rows)},
+                                    {"WAIT_SLOTS", num(base_wait(d).slots)},
+                                    {"WAIT_ROWS", num(base_wait(d).rows)},
                                     {"ROW_SLOTS", num(d.row_slots)},
                                     {"LAT", num(d.cost_latency)}};
     if (d.strips == 1) {
@@ -216,11 +216,13 @@ class CostStage : public Stage {
   }
 
  private:
-  // What the base waits beside the match ring (adaptive P2's steps wait as long).
-  Latency base_wait(const StereoConfig& c) const {
+  // What the base waits beside the match ring (adaptive P2's steps wait as long). Where the
+  // reorder holds codes, a negative min-disp's wait is the cost reorder stage's.
+  Latency base_wait(const Geometry& g) const {
+    const StereoConfig& c = g.cfg;
     const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
     const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
-    return {rs, wait + std::max(0, -c.min_disp), 0};
+    return {rs, wait + (g.reorders_codes ? 0 : std::max(0, -c.min_disp)), 0};
   }
 
   CostFunction cost_;  // SHD over a 1 x 1 window is census

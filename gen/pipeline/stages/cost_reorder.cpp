@@ -16,8 +16,16 @@ class CostReorderStage : public Stage {
   std::string title() const override { return "cost reorder"; }
   std::vector<std::string> knobs() const override { return {"uf"}; }
   // Written, then read; in strips a write reaches its strip's RAM a clock later
-  // (fpstereo_strip_code_reorder registers it).
-  Latency latency(const Geometry& g) const override { return {0, 0, g.strips > 1 ? 2 : 1}; }
+  // (fpstereo_strip_code_reorder registers it), and below min-disp 0 a slot's entries are
+  // written when its match pixels are there, base_wait_slots later.
+  Latency latency(const Geometry& g) const override {
+    return g.strips > 1 ? Latency{0, base_wait_slots(g), 2} : Latency{0, 0, 1};
+  }
+  // Below min-disp 0 a pixel's match pixel x - min_disp lies right of it: in strips its slot's
+  // entries wait for the slots that hold the match pixels.
+  static int base_wait_slots(const Geometry& g) {
+    return g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
+  }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) {
       // Strip s's code RAM: (s + 1) * K rows of R / P words, a slot's P entries each.
@@ -116,32 +124,97 @@ class CostReorderStage : public Stage {
       base = "entry_base";
       match = "entry_match";
     }
-    match = strip_match_entries(d, core, match);
+    const std::string turned = strip_match_entries(d, core, match);
     core.wire("code_we", 1);
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
     core.wire("code_data", int64_t(2 * entry_bits) * P);
+    core.wire("code_extra", int64_t(P) * std::max(1, d.penalty_bits));
+    core.wire("code_prefix", int64_t(std::max(1, prefix_entries(d))) * entry_bits);
+    std::string write = "{shift && transform_in_frame, transform_x, transform_slot}";
+    std::string extra = d.penalty_bits != 0 ? "cost_penalties" : fmt::format("{}'d0", P);
+    if (const int wait = base_wait_slots(d); wait > 0) {
+      // The base entries, where and whether to write them, and the penalties (which follow them
+      // EXTRA_LAT steps later) wait for the match pixels; the wait carries a frame's last slots
+      // into the next frame's first (or the drain's), so it has no reset.
+      const int64_t held_bits = 1 + d.x_bits + d.cost_row_bits + int64_t(P) * entry_bits;
+      core.wire("base_write", held_bits);
+      core.instance("fpstereo_delay", "base_wait", {{"WIDTH", num(held_bits)}, {"DEPTH", num(wait)}, {"RESET", "0"}},
+                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", "{transform_in_frame, transform_x, transform_slot, " + base + "}"},
+                     {"out", "base_write"}});
+      core.wire("base_late", int64_t(P) * entry_bits);
+      core.logic(fmt::format("  assign base_late = base_write[{}:0];\n", int64_t(P) * entry_bits - 1), {"base_late"});
+      write = fmt::format("{{shift && base_write[{}], base_write[{}:{}]}}", held_bits - 1, held_bits - 2,
+                          int64_t(P) * entry_bits);
+      base = "base_late";
+      if (d.penalty_bits != 0) {
+        core.wire("penalties_late", int64_t(P) * d.penalty_bits);
+        core.instance("fpstereo_delay", "penalty_wait",
+                      {{"WIDTH", num(int64_t(P) * d.penalty_bits)}, {"DEPTH", num(wait)}, {"RESET", "0"}},
+                      {{"rst", "1'b0"}, {"en", "shift"}, {"in", "cost_penalties"}, {"out", "penalties_late"}});
+        extra = "penalties_late";
+      }
+    }
     // Pixel q's entries: {its match entry, its base entry}. Adaptive P2's penalties go beside them
     // (code_extra): fpstereo_strip_code_reorder waits for them.
     const std::string data = concat_high_to_low(P, [&](int q) {
-      return bit_field(match, int64_t(q) * entry_bits, entry_bits) + ", " +
-             bit_field(base, int64_t(q) * entry_bits, entry_bits);
+      return bit_field(turned, int64_t(q) * entry_bits, entry_bits) + ", " + bit_field(base, int64_t(q) * entry_bits, entry_bits);
     });
-    core.logic(fmt::format("  assign code_we = shift && transform_in_frame;\n"
-                           "  assign code_slot = transform_x;\n"
-                           "  assign code_row = transform_slot;\n"
-                           "  assign code_data = {};\n",
-                           data),
-               {"code_we", "code_slot", "code_row", "code_data"});
+    core.logic(fmt::format("  assign {{code_we, code_slot, code_row}} = {};\n"
+                           "  assign code_data = {};\n"
+                           "  assign code_extra = {};\n",
+                           write, data, extra),
+               {"code_we", "code_slot", "code_row", "code_data", "code_extra"});
+    prefix(d, core, match);
+  }
+
+  // Below min-disp 0, the match entries a row's first pixel needs left of its own match pixel
+  // -min_disp: pixels -min_disp - p for p = 1 .. min(-min_disp, dmax - 1) (fpstereo_chain_cost's
+  // PREFIX).
+  static int prefix_entries(const Geometry& g) {
+    return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
+  }
+
+  // The prefix, taken from the row's match slots as they pass and held from the slot whose entries
+  // are written with the row's first (slot base_wait_slots) until the next row's, so that strip 0
+  // reads it when it begins the row.
+  static void prefix(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
+    const int n = prefix_entries(d), P = d.strips, entry_bits = d.code_entry_bits;
+    if (n == 0) {
+      core.logic(fmt::format("  assign code_prefix = {}'d0;\n", entry_bits), {"code_prefix"});
+      return;
+    }
+    // Match pixels first .. a - 1, kept in that order (prefix_pixels), held in the reverse.
+    const int a = -d.cfg.min_disp, first = a - n;
+    const int64_t bits = int64_t(n) * entry_bits;
+    std::string text = fmt::format("  // Match pixels {} to {} of the row as they pass, then held for strip 0.\n"
+                                   "  reg [{}:0] prefix_pixels;\n  reg [{}:0] prefix_held;\n"
+                                   "  always @(posedge clk)\n    if (shift) begin\n",
+                                   first, a - 1, bits - 1, bits - 1);
+    for (int slot = first / P; slot <= (a - 1) / P; ++slot) {
+      const int from = std::max(first, slot * P), to = std::min(a - 1, slot * P + P - 1);  // its pixels
+      text += fmt::format("      if (transform_x == {}'d{}) prefix_pixels[{}:{}] <= {}[{}:{}];\n", d.x_bits, slot,
+                          int64_t(to - first + 1) * entry_bits - 1, int64_t(from - first) * entry_bits, match,
+                          int64_t(to - slot * P + 1) * entry_bits - 1, int64_t(from - slot * P) * entry_bits);
+    }
+    // Entry i: match pixel a - 1 - i.
+    const std::string held = concat_high_to_low(
+        n, [&](int i) { return bit_field("prefix_pixels", int64_t(a - 1 - i - first) * entry_bits, entry_bits); });
+    text += fmt::format("      if (transform_x == {}'d{}) prefix_held <= {};\n    end\n"
+                        "  assign code_prefix = prefix_held;\n",
+                        d.x_bits, base_wait_slots(d), held);
+    core.logic(text, {"code_prefix"}, {{"prefix_pixels", bits}, {"prefix_held", bits}});
   }
 
   // The match entries that go beside the base entries: pixel x's word holds the match pixel
   // x - min_disp's entry (fpstereo_code_reorder's match_wait), a slot's P entries (the net
-  // `match`) m / P slots late and turned by m mod P pixels across two slots. Returns the net.
+  // `match`) m / P slots late and turned by m mod P pixels across two slots; below 0, the base
+  // entries wait ceil(-m / P) slots (base_wait_slots) and the match entries are turned by what
+  // that wait leaves over. Returns the net.
   static std::string strip_match_entries(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
     const int P = d.strips, m = d.cfg.min_disp, entry_bits = d.code_entry_bits;
     if (m == 0) return match;
-    const int slots = m / P, turn = m % P;
+    const int slots = m > 0 ? m / P : 0, turn = m > 0 ? m % P : base_wait_slots(d) * P + m;
     const int64_t bits = int64_t(P) * entry_bits;
     std::string late = match;
     if (slots > 0) {
