@@ -157,9 +157,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
   g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
   g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
-  // Below min-disp 0 a row's first pixel needs a prefix of match entries, which only strips give
-  // (fpstereo_chain_cost's PREFIX).
-  g.reorders_codes = point_cost && cfg.lr != LrCheck::Lr2 && (cfg.min_disp >= 0 || g.strips > 1);
+  g.reorders_codes = point_cost && cfg.lr != LrCheck::Lr2;
   if (g.reorders_codes) {
     g.code_entry_bits = std::max(1, g.widths.code) + (cfg.fused_weight != 0 ? g.widths.fused_feature : 0);
     g.cost_lead = 2 + g.cost_latency;

@@ -332,6 +332,8 @@ module fps_census7_d128u32_79bc18_sgm_core (
     .clk(clk), .adv(adv), .shift(shift), .base_entry(code_base), .match_entry(code_match),
     .transform_x(transform_x), .transform_slot(transform_slot), .transform_in_frame(transform_in_frame),
     .extra(1'b0), .raddr(cost_raddr), .q(code_q), .extra_q(code_penalties));
+  wire [47:0] code_prefix;
+  assign code_prefix = 48'd0;
 
   // Aggregation in K interleaved chains, from step AGG_START.
   localparam AGG_START = 14931;
@@ -356,10 +358,10 @@ module fps_census7_d128u32_79bc18_sgm_core (
   wire [6143:0] chain_ring;
   fps_census7_d128u32_79bc18_chain_cost #(
     .HAMMING(1), .CODE_W(48), .DMAX(128), .UF(32), .K(3), .COST_W(6), .COST_MAX(48), .X_W(11), .G_W(2),
-    .MIN_DISP(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
+    .MIN_DISP(0), .PREFIX(0), .LANES_LAT(2), .LAT(2), .ENTRY_W(48)
   ) chain_cost (
     .clk(clk), .adv(adv), .group(cost_schedule[1:0]), .x(cost_schedule[12:2]),
-    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .prefix(48'd0),
+    .row_time_first(cost_schedule[13]), .frame_width(frame_width), .entry(code_q), .prefix(code_prefix),
     .extra(1'b0), .costs(chain_costs), .extra_out(chain_penalties), .ring_in(chain_ring),
     .ring_out(chain_ring));
   wire [527:0] agg_edge;
@@ -1461,7 +1463,10 @@ endmodule
 // pixel's entries, written in raster order as the transform delivers them and read in the
 // aggregation's chain order, where fps_census7_d128u32_79bc18_chain_cost computes the costs. The entry at (row, x)
 // is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
-// a match history then serves d = 0 .. DMAX - 1 from its newest entry back). Rows outside the
+// a match history then serves d = 0 .. DMAX - 1 from its newest entry back; below MIN_DISP 0 the
+// base entries and where they go wait -MIN_DISP slots instead, the penalties as long, and the
+// aggregation reads that much later; a row's first match entries, left of its first pixel's,
+// come to fps_census7_d128u32_79bc18_chain_cost as its prefix). Rows outside the
 // image are never written, so only valid rows' slots (row mod ROWS) matter. With EXTRA_W above 0
 // (adaptive P2's penalties, which leave fps_census7_d128u32_79bc18_adaptive_p2 with the costs the raster stage
 // would compute: a slot and EXTRA_LAT steps after the codes) a second RAM holds them per pixel,
@@ -1475,7 +1480,11 @@ module fps_census7_d128u32_79bc18_code_reorder #(
   parameter X_W = 7,
   parameter MIN_DISP = 0,
   parameter EXTRA_W = 0,
-  parameter EXTRA_LAT = 2
+  parameter EXTRA_LAT = 2,
+  // steps per slot (dmax / uf), with EXTRA_W below MIN_DISP 0
+  /* verilator lint_off UNUSEDPARAM */
+  parameter STEPS = 1
+  /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -1495,11 +1504,13 @@ module fps_census7_d128u32_79bc18_code_reorder #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W) || MIN_DISP < 0) begin : invalid
-      fps_census7_d128u32_79bc18_invalid_parameters_code_reorder_widths_too_narrow_or_MIN_DISP_below_0 failed ();
+    if (AW < $clog2(ROWS * ROW_SLOTS) || ROWS > (1 << ROW_W) || ROW_SLOTS - 1 >= (1 << X_W)) begin : invalid
+      fps_census7_d128u32_79bc18_invalid_parameters_code_reorder_widths_too_narrow failed ();
     end
   endgenerate
-  wire [ENTRY_W-1:0] match_now;
+  localparam POSITION_W = 1 + ROW_W + X_W;  // {in frame, row slot, x}
+  wire [ENTRY_W-1:0] match_now, base_now;
+  wire [POSITION_W-1:0] write_at;
   generate
     if (MIN_DISP > 0) begin : match_late
       fps_census7_d128u32_79bc18_delay #(.WIDTH(ENTRY_W), .DEPTH(MIN_DISP)) match_wait (
@@ -1507,29 +1518,46 @@ module fps_census7_d128u32_79bc18_code_reorder #(
     end else begin : match_in_time
       assign match_now = match_entry;
     end
+    if (MIN_DISP < 0) begin : base_late
+      // No reset: the wait carries a frame's last pixels into what follows it.
+      fps_census7_d128u32_79bc18_delay #(.WIDTH(POSITION_W + ENTRY_W), .DEPTH(-MIN_DISP), .RESET(0)) base_wait (
+        .clk(clk), .rst(1'b0), .en(shift), .in({transform_in_frame, transform_slot, transform_x, base_entry}),
+        .out({write_at, base_now}));
+    end else begin : base_in_time
+      assign write_at = {transform_in_frame, transform_slot, transform_x};
+      assign base_now = base_entry;
+    end
   endgenerate
   // The address is a product of narrow counters and constants, cut to the RAM's address width.
   /* verilator lint_off WIDTH */
-  wire [AW-1:0] waddr = transform_slot * ROW_SLOTS + transform_x;
+  wire [AW-1:0] waddr = write_at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + write_at[X_W-1:0];
   /* verilator lint_on WIDTH */
   fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(2*ENTRY_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) code_ram (
-    .clk(clk), .we(shift && transform_in_frame), .waddr(waddr), .wdata({match_now, base_entry}),
+    .clk(clk), .we(shift && write_at[POSITION_W-1]), .waddr(waddr), .wdata({match_now, base_now}),
     .re(adv), .raddr(raddr), .rdata(q));
   generate
     if (EXTRA_W > 0) begin : extras
-      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps.
-      localparam POSITION_W = 1 + ROW_W + X_W;
+      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps; below
+      // MIN_DISP 0 the write waits as the base entries do, -MIN_DISP slots of STEPS steps.
       reg [POSITION_W-1:0] held;
-      wire [POSITION_W-1:0] at;
+      wire [POSITION_W-1:0] at_now, at;
+      wire [EXTRA_W-1:0] extra_at;
       always @(posedge clk)
         if (shift) held <= {transform_in_frame, transform_slot, transform_x};
       fps_census7_d128u32_79bc18_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
-        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
+        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at_now));
+      if (MIN_DISP < 0) begin : extra_late
+        fps_census7_d128u32_79bc18_delay #(.WIDTH(POSITION_W + EXTRA_W), .DEPTH(-MIN_DISP * STEPS), .RESET(0)) extra_wait (
+          .clk(clk), .rst(1'b0), .en(adv), .in({at_now, extra}), .out({at, extra_at}));
+      end else begin : extra_in_time
+        assign at = at_now;
+        assign extra_at = extra;
+      end
       /* verilator lint_off WIDTH */
       wire [AW-1:0] extra_waddr = at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + at[X_W-1:0];
       /* verilator lint_on WIDTH */
       fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
-        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra),
+        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra_at),
         .re(adv), .raddr(raddr), .rdata(extra_q));
     end else begin : no_extras
       assign extra_q = 1'b0;

@@ -162,6 +162,7 @@ class AggregationStage : public Stage {
                               {"X_W", num(d.x_bits)},
                               {"G_W", num(d.group_bits)},
                               {"MIN_DISP", num(c.min_disp)},
+                              {"PREFIX", num(chain_prefix_entries(d))},
                               {"LANES_LAT", num(d.cost_lanes_latency)},
                               {"LAT", num(d.cost_latency)},
                               {"ENTRY_W", num(d.code_entry_bits)}};
@@ -183,7 +184,7 @@ class AggregationStage : public Stage {
                    {"x", fmt::format("cost_schedule[{}:{}]", first - 1, x_lsb)},
                    {"row_time_first", fmt::format("cost_schedule[{}]", first)},
                    {"entry", "code_q"},
-                   {"prefix", fmt::format("{}'d0", d.code_entry_bits)},  // min-disp 0 or more
+                   {"prefix", "code_prefix"},
                    {"extra", penalties ? "code_penalties" : "1'b0"},
                    {"costs", "chain_costs"},
                    {"extra_out", "chain_penalties"},

@@ -19,10 +19,11 @@ class CostReorderStage : public Stage {
   // (fpstereo_strip_code_reorder registers it), and below min-disp 0 a slot's entries are
   // written when its match pixels are there, base_wait_slots later.
   Latency latency(const Geometry& g) const override {
-    return g.strips > 1 ? Latency{0, base_wait_slots(g), 2} : Latency{0, 0, 1};
+    if (!g.reorders_codes) return {0, 0, 1};
+    return {0, base_wait_slots(g), g.strips > 1 ? 2 : 1};
   }
-  // Below min-disp 0 a pixel's match pixel x - min_disp lies right of it: in strips its slot's
-  // entries wait for the slots that hold the match pixels.
+  // Below min-disp 0 a pixel's match pixel x - min_disp lies right of it: its slot's entries wait
+  // for the slots that hold the match pixels.
   static int base_wait_slots(const Geometry& g) {
     return g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
   }
@@ -77,12 +78,19 @@ class CostReorderStage : public Stage {
   // above), in the RAM's one word per pixel.
   static void code_reorder(const RtlDesign& d, CoreBuilder& core) {
     const bool fused = d.cfg.fused_weight != 0;
+    std::string match = "code_match";
+    if (fused) {
+      core.wire("entry_match", d.code_entry_bits);
+      core.logic("  assign entry_match = {feature_match, code_match};\n", {"entry_match"});
+      match = "entry_match";
+    }
     core.text("\n  // Code reorder RAM: each pixel's base and match entries, in chain order out.\n");
     core.wire("cost_raddr", d.cost_addr_bits);
     core.wire("code_q", 2 * d.code_entry_bits);
     // Adaptive P2's penalties, in a RAM of their own, written as they leave with the raster costs.
     Connections penalties;
-    if (d.penalty_bits != 0) penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}};
+    if (d.penalty_bits != 0)
+      penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}, {"STEPS", num(d.groups)}};
     core.wire("code_penalties", std::max(1, d.penalty_bits));
     core.instance("fpstereo_code_reorder", "cost_reorder",
                   Connections{{"ROW_SLOTS", num(d.row_slots)},
@@ -94,11 +102,12 @@ class CostReorderStage : public Stage {
                               {"MIN_DISP", num(d.cfg.min_disp)}} +
                       penalties,
                   {{"base_entry", fused ? "{feature_base, code_base}" : "code_base"},
-                   {"match_entry", fused ? "{feature_match, code_match}" : "code_match"},
+                   {"match_entry", match},
                    {"extra", d.penalty_bits != 0 ? "cost_penalties" : "1'b0"},
                    {"raddr", "cost_raddr"},
                    {"q", "code_q"},
                    {"extra_q", "code_penalties"}});
+    prefix(d, core, match);
   }
 
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
@@ -130,7 +139,6 @@ class CostReorderStage : public Stage {
     core.wire("code_row", d.cost_row_bits);
     core.wire("code_data", int64_t(2 * entry_bits) * P);
     core.wire("code_extra", int64_t(P) * std::max(1, d.penalty_bits));
-    core.wire("code_prefix", int64_t(std::max(1, prefix_entries(d))) * entry_bits);
     std::string write = "{shift && transform_in_frame, transform_x, transform_slot}";
     std::string extra = d.penalty_bits != 0 ? "cost_penalties" : fmt::format("{}'d0", P);
     if (const int wait = base_wait_slots(d); wait > 0) {
@@ -168,18 +176,12 @@ class CostReorderStage : public Stage {
     prefix(d, core, match);
   }
 
-  // Below min-disp 0, the match entries a row's first pixel needs left of its own match pixel
-  // -min_disp: pixels -min_disp - p for p = 1 .. min(-min_disp, dmax - 1) (fpstereo_chain_cost's
-  // PREFIX).
-  static int prefix_entries(const Geometry& g) {
-    return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
-  }
-
   // The prefix, taken from the row's match slots as they pass and held from the slot whose entries
-  // are written with the row's first (slot base_wait_slots) until the next row's, so that strip 0
-  // reads it when it begins the row.
+  // are written with the row's first (slot base_wait_slots) until the next row's, so that the chain
+  // that begins the row (in strips, strip 0's) reads it then.
   static void prefix(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
-    const int n = prefix_entries(d), P = d.strips, entry_bits = d.code_entry_bits;
+    const int n = chain_prefix_entries(d), P = d.strips, entry_bits = d.code_entry_bits;
+    core.wire("code_prefix", int64_t(std::max(1, n)) * entry_bits);
     if (n == 0) {
       core.logic(fmt::format("  assign code_prefix = {}'d0;\n", entry_bits), {"code_prefix"});
       return;
@@ -187,7 +189,7 @@ class CostReorderStage : public Stage {
     // Match pixels first .. a - 1, kept in that order (prefix_pixels), held in the reverse.
     const int a = -d.cfg.min_disp, first = a - n;
     const int64_t bits = int64_t(n) * entry_bits;
-    std::string text = fmt::format("  // Match pixels {} to {} of the row as they pass, then held for strip 0.\n"
+    std::string text = fmt::format("  // Match pixels {} to {} of the row as they pass, then held for the first chain.\n"
                                    "  reg [{}:0] prefix_pixels;\n  reg [{}:0] prefix_held;\n"
                                    "  always @(posedge clk)\n    if (shift) begin\n",
                                    first, a - 1, bits - 1, bits - 1);

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
 namespace fpstereo::rtl {
 
 void start_flag(CoreBuilder& core, const RtlDesign& d, const Stage& stage, const std::string& flag) {
@@ -73,6 +75,8 @@ int window_columns(const Geometry& g) { return g.strips * (1 + window_centre_lag
 std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
   return fmt::format("{}[{}:{}]", net, lsb + bits - 1, lsb);
 }
+
+int chain_prefix_entries(const Geometry& g) { return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1); }
 
 std::string concat_high_to_low(int count, const std::function<std::string(int)>& part) {
   std::string fields;
