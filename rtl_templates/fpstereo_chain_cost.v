@@ -75,7 +75,8 @@ module fpstereo_chain_cost #(
       fpstereo_invalid_parameters_chain_cost_needs_K_2_or_more_and_DMAX_a_multiple_of_UF failed ();
     end
     // below MIN_DISP 0 the first strip's rows begin with a prefix, which the others continue
-    if (PREFIX != (FROM_LEFT != 0 || MIN_DISP >= 0 ? 0 : -MIN_DISP < DMAX - 1 ? -MIN_DISP : DMAX - 1)) begin : invalid_prefix
+    if (PREFIX != (FROM_LEFT != 0 || MIN_DISP >= 0 ? 0 : -MIN_DISP < DMAX - 1 ? -MIN_DISP : DMAX - 1))
+    begin : invalid_prefix
       fpstereo_invalid_parameters_chain_cost_PREFIX_is_not_the_first_strips_min_of_minus_MIN_DISP_and_DMAX_1 failed ();
     end
     if (FROM_LEFT != 0 && UF != DMAX) begin : invalid_strip

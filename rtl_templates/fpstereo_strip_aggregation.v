@@ -216,7 +216,8 @@ module fpstereo_strip_aggregation #(
                               .LAT(CHAIN_LAT), .ENTRY_W(ENTRY_W), .EXTRA_W(EXTRA_W), .FROM_LEFT(p > 0 ? 1 : 0),
                               .PREFIX(p == 0 ? PREFIX : 0)) chain_cost (
           .clk(clk), .adv(adv), .group(schedule[0]), .x(schedule[X_W:1]), .row_time_first(schedule[X_W+1]),
-          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*ENTRY_W]), .prefix(code_prefix[(p == 0 ? PREFIX_N : 1)*ENTRY_W-1:0]),
+          .frame_width(frame_width), .entry(entries[p*Q_W +: 2*ENTRY_W]),
+          .prefix(code_prefix[(p == 0 ? PREFIX_N : 1)*ENTRY_W-1:0]),
           .extra(penalties_in), .costs(costs[UF*COST_W-1:0]), .extra_out(penalties),
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */

@@ -148,7 +148,9 @@ class CostReorderStage : public Stage {
       const int64_t held_bits = 1 + d.x_bits + d.cost_row_bits + int64_t(P) * entry_bits;
       core.wire("base_write", held_bits);
       core.instance("fpstereo_delay", "base_wait", {{"WIDTH", num(held_bits)}, {"DEPTH", num(wait)}, {"RESET", "0"}},
-                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", "{transform_in_frame, transform_x, transform_slot, " + base + "}"},
+                    {{"rst", "1'b0"},
+                     {"en", "shift"},
+                     {"in", "{transform_in_frame, transform_x, transform_slot, " + base + "}"},
                      {"out", "base_write"}});
       core.wire("base_late", int64_t(P) * entry_bits);
       core.logic(fmt::format("  assign base_late = base_write[{}:0];\n", int64_t(P) * entry_bits - 1), {"base_late"});
@@ -166,7 +168,8 @@ class CostReorderStage : public Stage {
     // Pixel q's entries: {its match entry, its base entry}. Adaptive P2's penalties go beside them
     // (code_extra): fpstereo_strip_code_reorder waits for them.
     const std::string data = concat_high_to_low(P, [&](int q) {
-      return bit_field(turned, int64_t(q) * entry_bits, entry_bits) + ", " + bit_field(base, int64_t(q) * entry_bits, entry_bits);
+      return bit_field(turned, int64_t(q) * entry_bits, entry_bits) + ", " +
+             bit_field(base, int64_t(q) * entry_bits, entry_bits);
     });
     core.logic(fmt::format("  assign {{code_we, code_slot, code_row}} = {};\n"
                            "  assign code_data = {};\n"
@@ -189,7 +192,7 @@ class CostReorderStage : public Stage {
     // Match pixels first .. a - 1, kept in that order (prefix_pixels), held in the reverse.
     const int a = -d.cfg.min_disp, first = a - n;
     const int64_t bits = int64_t(n) * entry_bits;
-    std::string text = fmt::format("  // Match pixels {} to {} of the row as they pass, then held for the first chain.\n"
+    std::string text = fmt::format("  // The row's match pixels {} to {}, held for its first pixel.\n"
                                    "  reg [{}:0] prefix_pixels;\n  reg [{}:0] prefix_held;\n"
                                    "  always @(posedge clk)\n    if (shift) begin\n",
                                    first, a - 1, bits - 1, bits - 1);

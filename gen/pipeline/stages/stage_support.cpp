@@ -76,7 +76,9 @@ std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
   return fmt::format("{}[{}:{}]", net, lsb + bits - 1, lsb);
 }
 
-int chain_prefix_entries(const Geometry& g) { return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1); }
+int chain_prefix_entries(const Geometry& g) {
+  return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
+}
 
 std::string concat_high_to_low(int count, const std::function<std::string(int)>& part) {
   std::string fields;
