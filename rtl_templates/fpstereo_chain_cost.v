@@ -17,9 +17,10 @@
 // (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
 // captured at the same slot, which comes K steps earlier there).
 // Below MIN_DISP 0 a pixel's match entry is pixel x - MIN_DISP's, right of it, and a row's first
-// pixel needs the match pixels left of that one too: the first strip's head takes them from
-// prefix (PREFIX = min(-MIN_DISP, DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1) as
-// it begins a row; the lanes mask x - MIN_DISP - d >= the width as well.
+// pixel needs the match pixels left of that one too: the head that begins the row (without
+// FROM_LEFT: the only strip or the first) takes them from prefix (PREFIX = min(-MIN_DISP,
+// DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1); the lanes mask x - MIN_DISP - d
+// >= the width as well.
 module fpstereo_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,

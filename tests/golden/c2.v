@@ -687,9 +687,16 @@ module fps_census7_d128u32_6e9658_control #(
       frame_lr_threshold <= rst ? LR_THRESHOLD_INIT[3:0] : lr_threshold_q;
     end
 
-  always @(posedge clk)
-    settings_held <= !write && !request && width_q == frame_width && height_q == frame_height && p1_q == frame_p1 &&
-                     p2_q == frame_p2 && uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
+  // The compare of the written settings with the frame's is a register of its own (it lags them a
+  // cycle, so a write keeps settings_held low a cycle longer: request_q), so that the AXI4-Lite
+  // handshake (write) meets only its result.
+  reg settings_same, request_q;
+  always @(posedge clk) begin
+    settings_same <= width_q == frame_width && height_q == frame_height && p1_q == frame_p1 && p2_q == frame_p2 &&
+                     uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
+    request_q <= !rst && request;
+    settings_held <= !write && !request && !request_q && settings_same;
+  end
 
   // ---- Counters (wrap at 2^32).
   always @(posedge clk)
@@ -1533,9 +1540,10 @@ endmodule
 // (ring_in) instead of keeping its own, and hands its own to the strip to the right (ring_out,
 // captured at the same slot, which comes K steps earlier there).
 // Below MIN_DISP 0 a pixel's match entry is pixel x - MIN_DISP's, right of it, and a row's first
-// pixel needs the match pixels left of that one too: the first strip's head takes them from
-// prefix (PREFIX = min(-MIN_DISP, DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1) as
-// it begins a row; the lanes mask x - MIN_DISP - d >= the width as well.
+// pixel needs the match pixels left of that one too: the head that begins the row (without
+// FROM_LEFT: the only strip or the first) takes them from prefix (PREFIX = min(-MIN_DISP,
+// DMAX - 1) entries, match pixel -MIN_DISP - p at entry p - 1); the lanes mask x - MIN_DISP - d
+// >= the width as well.
 module fps_census7_d128u32_6e9658_chain_cost #(
   parameter HAMMING = 1,
   parameter CODE_W = 24,

@@ -701,9 +701,16 @@ module fps_sad5_d128u32_baf239_control #(
       frame_lr_threshold <= rst ? LR_THRESHOLD_INIT[3:0] : lr_threshold_q;
     end
 
-  always @(posedge clk)
-    settings_held <= !write && !request && width_q == frame_width && height_q == frame_height && p1_q == frame_p1 &&
-                     p2_q == frame_p2 && uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
+  // The compare of the written settings with the frame's is a register of its own (it lags them a
+  // cycle, so a write keeps settings_held low a cycle longer: request_q), so that the AXI4-Lite
+  // handshake (write) meets only its result.
+  reg settings_same, request_q;
+  always @(posedge clk) begin
+    settings_same <= width_q == frame_width && height_q == frame_height && p1_q == frame_p1 && p2_q == frame_p2 &&
+                     uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
+    request_q <= !rst && request;
+    settings_held <= !write && !request && !request_q && settings_same;
+  end
 
   // ---- Counters (wrap at 2^32).
   always @(posedge clk)
