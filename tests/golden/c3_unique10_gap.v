@@ -981,7 +981,7 @@ module fps_census7_d128u32_79bc18_video_in #(
     end
   end
 
-  // The flags of the next pixel in the row (a row's end keeps last_row until the row changes).
+  // Whether the next pixel ends its row (in the last row, the frame).
   wire next_row_end = !row_end && x == frame_width - TWO_X;
   always @(posedge clk)
     if (rst || core_start) begin

@@ -36,8 +36,8 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
 int window_centre_lag(const Geometry& g);
 int window_columns(const Geometry& g);
 
-// Below min-disp m = 0 the match entries a row's first pixel needs left of its own match pixel -m:
-// min(-m, dmax - 1) of them, fpstereo_chain_cost's PREFIX (the cost reorder stage holds them).
+// With min-disp m below 0, the match entries a row's first pixel needs left of its own match pixel
+// -m: min(-m, dmax - 1) of them, fpstereo_chain_cost's PREFIX (the cost reorder stage holds them).
 int chain_prefix_entries(const Geometry& g);
 
 // `net`'s field of `bits` bits from bit `lsb`: "net[lsb + bits - 1:lsb]".
