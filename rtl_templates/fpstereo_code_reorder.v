@@ -5,8 +5,8 @@
 // aggregation's chain order, where fpstereo_chain_cost computes the costs. The entry at (row, x)
 // is the base pixel x's and the match pixel x - MIN_DISP's (the match entries wait MIN_DISP slots:
 // a match history then serves d = 0 .. DMAX - 1 from its newest entry back; below MIN_DISP 0 the
-// base entries and where they go wait -MIN_DISP slots instead, the penalties as long, and the
-// aggregation reads that much later; a row's first match entries, left of its first pixel's,
+// base entries and where they go wait -MIN_DISP slots instead, and the aggregation reads that
+// much later; a row's first match entries, left of its first pixel's,
 // come to fpstereo_chain_cost as its prefix). Rows outside the
 // image are never written, so only valid rows' slots (row mod ROWS) matter. With EXTRA_W above 0
 // (adaptive P2's penalties, which leave fpstereo_adaptive_p2 with the costs the raster stage
@@ -21,11 +21,7 @@ module fpstereo_code_reorder #(
   parameter X_W = 7,
   parameter MIN_DISP = 0,
   parameter EXTRA_W = 0,
-  parameter EXTRA_LAT = 2,
-  // steps per slot (dmax / uf), with EXTRA_W below MIN_DISP 0
-  /* verilator lint_off UNUSEDPARAM */
-  parameter STEPS = 1
-  /* verilator lint_on UNUSEDPARAM */
+  parameter EXTRA_LAT = 2
 ) (
   input  wire                   clk,
   input  wire                   adv,
@@ -78,27 +74,21 @@ module fpstereo_code_reorder #(
     .re(adv), .raddr(raddr), .rdata(q));
   generate
     if (EXTRA_W > 0) begin : extras
-      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps; below
-      // MIN_DISP 0 the write waits as the base entries do, -MIN_DISP slots of STEPS steps.
+      // The position as the raster cost stage holds it (a slot), then EXTRA_LAT steps. Below
+      // MIN_DISP 0 the penalties need not wait with the base entries (they pair with nothing):
+      // written up to -MIN_DISP slots before their entries, they still find their slot read,
+      // as the RAM's rows leave a row-time's ROW_SLOTS >= DMAX - MIN_DISP slots of slack.
       reg [POSITION_W-1:0] held;
-      wire [POSITION_W-1:0] at_now, at;
-      wire [EXTRA_W-1:0] extra_at;
+      wire [POSITION_W-1:0] at;
       always @(posedge clk)
         if (shift) held <= {transform_in_frame, transform_slot, transform_x};
       fpstereo_delay #(.WIDTH(POSITION_W), .DEPTH(EXTRA_LAT)) extra_position (
-        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at_now));
-      if (MIN_DISP < 0) begin : extra_late
-        fpstereo_delay #(.WIDTH(POSITION_W + EXTRA_W), .DEPTH(-MIN_DISP * STEPS), .RESET(0)) extra_wait (
-          .clk(clk), .rst(1'b0), .en(adv), .in({at_now, extra}), .out({at, extra_at}));
-      end else begin : extra_in_time
-        assign at = at_now;
-        assign extra_at = extra;
-      end
+        .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(at));
       /* verilator lint_off WIDTH */
       wire [AW-1:0] extra_waddr = at[ROW_W+X_W-1 -: ROW_W] * ROW_SLOTS + at[X_W-1:0];
       /* verilator lint_on WIDTH */
       fpstereo_ram_sdp #(.WIDTH(EXTRA_W), .DEPTH(ROWS * ROW_SLOTS), .ADDR_W(AW)) extra_ram (
-        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra_at),
+        .clk(clk), .we(adv && at[POSITION_W-1]), .waddr(extra_waddr), .wdata(extra),
         .re(adv), .raddr(raddr), .rdata(extra_q));
     end else begin : no_extras
       assign extra_q = 1'b0;

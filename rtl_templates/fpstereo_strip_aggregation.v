@@ -77,6 +77,9 @@ module fpstereo_strip_aggregation #(
   // with RAM and EXTRA_W: the steps adaptive P2's penalties come after their slot's entries (the
   // code writes wait as long, fpstereo_strip_code_reorder)
   parameter EXTRA_LAT = 1,
+  // with RAM: the slots a slot's base entries wait for their match pixels below MIN_DISP 0
+  // (fpstereo_strip_code_reorder)
+  parameter BASE_WAIT = 0,
   parameter OUTPUT = 0,
   // the output words' disparity width; the winner's (whole pixels) is WTA_DISP_W
   parameter DISP_W = 4,
@@ -166,7 +169,8 @@ module fpstereo_strip_aggregation #(
         fpstereo_invalid_parameters_strip_aggregation_RAM_needs_CODES failed ();
       end
       fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(2 * ENTRY_W),
-                                    .EXTRA_W(EXTRA_W), .EXTRA_LAT(EXTRA_LAT), .SLOT_ROWS(SLOT_ROWS),
+                                    .EXTRA_W(EXTRA_W), .EXTRA_LAT(EXTRA_LAT), .BASE_WAIT(BASE_WAIT),
+                                    .SLOT_ROWS(SLOT_ROWS),
                                     .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
         .clk(clk), .adv(adv), .we(code_we), .wslot(code_slot), .wrow(code_row), .wdata(code_data),
         .extra(code_extra), .raddr(cost_raddr), .q(entries));

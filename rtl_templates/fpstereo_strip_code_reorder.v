@@ -14,6 +14,10 @@
 // With EXTRA_W, each pixel's word holds EXTRA_W more bits above its entry (adaptive P2's
 // penalties, which leave fpstereo_adaptive_p2 a slot and EXTRA_LAT steps after the entries): the
 // writes wait as long, so that each word holds its own pixel's (uf = dmax: every step is a slot's).
+// With BASE_WAIT (min-disp below 0, where a pixel's match pixel lies right of it) a slot's base
+// entries (each pixel's low ENTRY_W / 2 bits), whether and where they are written and their
+// penalties wait BASE_WAIT slots for the slots of their match pixels, whose entries come on time
+// (the generator turns them to meet the base entries).
 module fpstereo_strip_code_reorder #(
   parameter P = 2,
   parameter K = 5,
@@ -22,6 +26,8 @@ module fpstereo_strip_code_reorder #(
   parameter ENTRY_W = 24,
   parameter EXTRA_W = 0,
   parameter EXTRA_LAT = 1,
+  // slots the base entries wait (ceil(-min-disp / P) below min-disp 0, else 0)
+  parameter BASE_WAIT = 0,
   parameter SLOT_ROWS = 10,
   parameter SLOT_W = 4,
   // width of the write's slot (pixel / P) and of each strip's read address
@@ -47,8 +53,47 @@ module fpstereo_strip_code_reorder #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * WORDS > (1 << X_W) || SLOT_ROWS > (1 << SLOT_W) ||
-        (1 << AW) < P * K * STRIP_PIXELS || (EXTRA_W > 0 && EXTRA_LAT < 1)) begin : invalid
-      fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_widths_or_EXTRA_LAT failed ();
+        (1 << AW) < P * K * STRIP_PIXELS || (EXTRA_W > 0 && EXTRA_LAT < 1) || BASE_WAIT < 0 ||
+        ENTRY_W % 2 != 0) begin : invalid
+      fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_widths_EXTRA_LAT_or_BASE_WAIT failed ();
+    end
+  endgenerate
+  // The write with its base entries as they meet their match entries: at once, or BASE_WAIT slots
+  // later. No reset: the wait carries a frame's last slots into the next frame's first.
+  wire              we_met;
+  wire [X_W-1:0]    wslot_met;
+  wire [SLOT_W-1:0] wrow_met;
+  wire [P*ENTRY_W-1:0] wdata_met;
+  /* verilator lint_off UNUSEDSIGNAL */  // without EXTRA_W
+  wire [P*(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] extra_met;
+  /* verilator lint_on UNUSEDSIGNAL */
+  genvar s, i;
+  generate
+    if (BASE_WAIT > 0) begin : base_late
+      localparam BASE_W = ENTRY_W / 2;
+      localparam LATE_W = 1 + X_W + SLOT_W + P * BASE_W;
+      wire [P*BASE_W-1:0] bases, bases_late;
+      wire [LATE_W-1:0] late;
+      for (i = 0; i < P; i = i + 1) begin : pixel
+        assign bases[i*BASE_W +: BASE_W] = wdata[i*ENTRY_W +: BASE_W];
+        assign wdata_met[i*ENTRY_W +: ENTRY_W] = {wdata[i*ENTRY_W+BASE_W +: BASE_W], bases_late[i*BASE_W +: BASE_W]};
+      end
+      fpstereo_delay #(.WIDTH(LATE_W), .DEPTH(BASE_WAIT), .RESET(0)) base_wait (
+        .clk(clk), .rst(1'b0), .en(adv), .in({we, wslot, wrow, bases}), .out(late));
+      assign we_met = adv && late[LATE_W-1];
+      assign {wslot_met, wrow_met, bases_late} = late[LATE_W-2:0];
+      if (EXTRA_W > 0) begin : penalties_late
+        fpstereo_delay #(.WIDTH(P * EXTRA_W), .DEPTH(BASE_WAIT), .RESET(0)) penalty_wait (
+          .clk(clk), .rst(1'b0), .en(adv), .in(extra), .out(extra_met));
+      end else begin : no_penalties
+        assign extra_met = extra;
+      end
+    end else begin : base_in_time
+      assign we_met = we;
+      assign wslot_met = wslot;
+      assign wrow_met = wrow;
+      assign wdata_met = wdata;
+      assign extra_met = extra;
     end
   endgenerate
   // The write as it reaches the strips' registers: at once, or with EXTRA_W after the penalties.
@@ -56,26 +101,25 @@ module fpstereo_strip_code_reorder #(
   wire [X_W-1:0]    wslot_in;
   wire [SLOT_W-1:0] wrow_in;
   wire [P*PIXEL_W-1:0] wdata_in;
-  genvar s, i;
   generate
     if (EXTRA_W > 0) begin : wait_for_extra
       localparam HELD_W = 1 + X_W + SLOT_W + P * ENTRY_W;
       reg  [HELD_W-1:0] held;
       wire [HELD_W-1:0] later;
       always @(posedge clk)
-        if (adv) held <= {we, wslot, wrow, wdata};
+        if (adv) held <= {we_met, wslot_met, wrow_met, wdata_met};
       fpstereo_delay #(.WIDTH(HELD_W), .DEPTH(EXTRA_LAT)) extra_wait (
         .clk(clk), .rst(1'b0), .en(adv), .in(held), .out(later));
       assign we_in = adv && later[HELD_W-1];
       assign {wslot_in, wrow_in} = later[HELD_W-2 -: X_W+SLOT_W];
       for (i = 0; i < P; i = i + 1) begin : pixel
-        assign wdata_in[i*PIXEL_W +: PIXEL_W] = {extra[i*EXTRA_W +: EXTRA_W], later[i*ENTRY_W +: ENTRY_W]};
+        assign wdata_in[i*PIXEL_W +: PIXEL_W] = {extra_met[i*EXTRA_W +: EXTRA_W], later[i*ENTRY_W +: ENTRY_W]};
       end
     end else begin : at_once
-      assign we_in = we;
-      assign wslot_in = wslot;
-      assign wrow_in = wrow;
-      assign wdata_in = wdata;
+      assign we_in = we_met;
+      assign wslot_in = wslot_met;
+      assign wrow_in = wrow_met;
+      assign wdata_in = wdata_met;
     end
   endgenerate
   reg [P*PIXEL_W-1:0] write_data;  // the strips' writes a clock later (below)

@@ -50,8 +50,8 @@ void check_hardware_rules(const StereoConfig& cfg) {
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
 // configuration: so far census and rank costs with the paths' sums straight to the winner (with
 // the uniqueness check or not, the sub-pixel fit or not, the confidence or not, adaptive P2 or
-// not, the fused cost or not, min-disp 0 or more) and, through the median and gap interpolation
-// or not, out (no check, speckle filter or negative min-disp). Elsewhere ppc > 1 converts beats to
+// not, the fused cost or not, any min-disp) and, through the median and gap interpolation or not,
+// out (no left-right check, right view or speckle filter). Elsewhere ppc > 1 converts beats to
 // pixels around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
   return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && c.lr == LrCheck::None &&

@@ -121,6 +121,7 @@ class AggregationStage : public Stage {
                                   {"SLOT_ROWS", num(d.slot_rows)},
                                   {"SLOT_W", num(d.cost_row_bits)},
                                   {"EXTRA_LAT", num(d.cost_latency)},
+                                  {"BASE_WAIT", num(code_base_wait_slots(d))},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},

@@ -17,15 +17,10 @@ class CostReorderStage : public Stage {
   std::vector<std::string> knobs() const override { return {"uf"}; }
   // Written, then read; in strips a write reaches its strip's RAM a clock later
   // (fpstereo_strip_code_reorder registers it), and below min-disp 0 a slot's entries are
-  // written when its match pixels are there, base_wait_slots later.
+  // written when its match pixels are there, code_base_wait_slots later.
   Latency latency(const Geometry& g) const override {
     if (!g.reorders_codes) return {0, 0, 1};
-    return {0, base_wait_slots(g), g.strips > 1 ? 2 : 1};
-  }
-  // Below min-disp 0 a pixel's match pixel x - min_disp lies right of it: its slot's entries wait
-  // for the slots that hold the match pixels.
-  static int base_wait_slots(const Geometry& g) {
-    return g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
+    return {0, code_base_wait_slots(g), g.strips > 1 ? 2 : 1};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) {
@@ -90,7 +85,7 @@ class CostReorderStage : public Stage {
     // Adaptive P2's penalties, in a RAM of their own, written as they leave with the raster costs.
     Connections penalties;
     if (d.penalty_bits != 0)
-      penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}, {"STEPS", num(d.groups)}};
+      penalties = {{"EXTRA_W", num(d.penalty_bits)}, {"EXTRA_LAT", num(d.cost_latency)}};
     core.wire("code_penalties", std::max(1, d.penalty_bits));
     core.instance("fpstereo_code_reorder", "cost_reorder",
                   Connections{{"ROW_SLOTS", num(d.row_slots)},
@@ -139,32 +134,10 @@ class CostReorderStage : public Stage {
     core.wire("code_row", d.cost_row_bits);
     core.wire("code_data", int64_t(2 * entry_bits) * P);
     core.wire("code_extra", int64_t(P) * std::max(1, d.penalty_bits));
-    std::string write = "{shift && transform_in_frame, transform_x, transform_slot}";
-    std::string extra = d.penalty_bits != 0 ? "cost_penalties" : fmt::format("{}'d0", P);
-    if (const int wait = base_wait_slots(d); wait > 0) {
-      // The base entries, where and whether to write them, and the penalties (which follow them
-      // EXTRA_LAT steps later) wait for the match pixels; the wait carries a frame's last slots
-      // into the next frame's first (or the drain's), so it has no reset.
-      const int64_t held_bits = 1 + d.x_bits + d.cost_row_bits + int64_t(P) * entry_bits;
-      core.wire("base_write", held_bits);
-      core.instance("fpstereo_delay", "base_wait", {{"WIDTH", num(held_bits)}, {"DEPTH", num(wait)}, {"RESET", "0"}},
-                    {{"rst", "1'b0"},
-                     {"en", "shift"},
-                     {"in", "{transform_in_frame, transform_x, transform_slot, " + base + "}"},
-                     {"out", "base_write"}});
-      core.wire("base_late", int64_t(P) * entry_bits);
-      core.logic(fmt::format("  assign base_late = base_write[{}:0];\n", int64_t(P) * entry_bits - 1), {"base_late"});
-      write = fmt::format("{{shift && base_write[{}], base_write[{}:{}]}}", held_bits - 1, held_bits - 2,
-                          int64_t(P) * entry_bits);
-      base = "base_late";
-      if (d.penalty_bits != 0) {
-        core.wire("penalties_late", int64_t(P) * d.penalty_bits);
-        core.instance("fpstereo_delay", "penalty_wait",
-                      {{"WIDTH", num(int64_t(P) * d.penalty_bits)}, {"DEPTH", num(wait)}, {"RESET", "0"}},
-                      {{"rst", "1'b0"}, {"en", "shift"}, {"in", "cost_penalties"}, {"out", "penalties_late"}});
-        extra = "penalties_late";
-      }
-    }
+    // Below min-disp 0 the base entries wait for their match pixels in fpstereo_strip_code_reorder
+    // (its BASE_WAIT); the match entries are turned to meet them (strip_match_entries).
+    const std::string write = "{shift && transform_in_frame, transform_x, transform_slot}";
+    const std::string extra = d.penalty_bits != 0 ? "cost_penalties" : fmt::format("{}'d0", P);
     // Pixel q's entries: {its match entry, its base entry}. Adaptive P2's penalties go beside them
     // (code_extra): fpstereo_strip_code_reorder waits for them.
     const std::string data = concat_high_to_low(P, [&](int q) {
@@ -180,8 +153,8 @@ class CostReorderStage : public Stage {
   }
 
   // The prefix, taken from the row's match slots as they pass and held from the slot whose entries
-  // are written with the row's first (slot base_wait_slots) until the next row's, so that the chain
-  // that begins the row (in strips, strip 0's) reads it then.
+  // are written with the row's first (slot code_base_wait_slots) until the next row's, so that the
+  // chain that begins the row (in strips, strip 0's) reads it then.
   static void prefix(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
     const int n = chain_prefix_entries(d), P = d.strips, entry_bits = d.code_entry_bits;
     core.wire("code_prefix", int64_t(std::max(1, n)) * entry_bits);
@@ -207,19 +180,19 @@ class CostReorderStage : public Stage {
         n, [&](int i) { return bit_field("prefix_pixels", int64_t(a - 1 - i - first) * entry_bits, entry_bits); });
     text += fmt::format("      if (transform_x == {}'d{}) prefix_held <= {};\n    end\n"
                         "  assign code_prefix = prefix_held;\n",
-                        d.x_bits, base_wait_slots(d), held);
+                        d.x_bits, code_base_wait_slots(d), held);
     core.logic(text, {"code_prefix"}, {{"prefix_pixels", bits}, {"prefix_held", bits}});
   }
 
   // The match entries that go beside the base entries: pixel x's word holds the match pixel
   // x - min_disp's entry (fpstereo_code_reorder's match_wait), a slot's P entries (the net
   // `match`) m / P slots late and turned by m mod P pixels across two slots; below 0, the base
-  // entries wait ceil(-m / P) slots (base_wait_slots) and the match entries are turned by what
+  // entries wait ceil(-m / P) slots (code_base_wait_slots) and the match entries are turned by what
   // that wait leaves over. Returns the net.
   static std::string strip_match_entries(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
     const int P = d.strips, m = d.cfg.min_disp, entry_bits = d.code_entry_bits;
     if (m == 0) return match;
-    const int slots = m > 0 ? m / P : 0, turn = m > 0 ? m % P : base_wait_slots(d) * P + m;
+    const int slots = m > 0 ? m / P : 0, turn = m > 0 ? m % P : code_base_wait_slots(d) * P + m;
     const int64_t bits = int64_t(P) * entry_bits;
     std::string late = match;
     if (slots > 0) {

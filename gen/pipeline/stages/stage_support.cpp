@@ -76,6 +76,10 @@ std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
   return fmt::format("{}[{}:{}]", net, lsb + bits - 1, lsb);
 }
 
+int code_base_wait_slots(const Geometry& g) {
+  return !g.reorders_codes || g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
+}
+
 int chain_prefix_entries(const Geometry& g) {
   return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
 }

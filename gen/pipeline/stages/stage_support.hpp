@@ -36,6 +36,12 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
 int window_centre_lag(const Geometry& g);
 int window_columns(const Geometry& g);
 
+// With min-disp m below 0 and a code reorder, the slots a slot's base entries (where they go, their
+// penalties) wait for the slots holding their match pixels x - m: ceil(-m / P), fpstereo_code_reorder's
+// -MIN_DISP at P = 1 and fpstereo_strip_code_reorder's BASE_WAIT; the aggregation reads that much
+// later. 0 otherwise.
+int code_base_wait_slots(const Geometry& g);
+
 // With min-disp m below 0, the match entries a row's first pixel needs left of its own match pixel
 // -m: min(-m, dmax - 1) of them, fpstereo_chain_cost's PREFIX (the cost reorder stage holds them).
 int chain_prefix_entries(const Geometry& g);
