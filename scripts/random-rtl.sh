@@ -3,17 +3,24 @@
 # connections of the wrong width (scripts/port-widths.sh: iverilog -g2005 and Yosys hierarchy
 # -check, no warning), linted with `verilator --lint-only -Wall` and verified bit-exact in
 # Verilator (scripts/verify-rtl.sh) on a small frame with idle cycles and backpressure.
-#   scripts/random-rtl.sh [--build-dir B] SEED [COUNT]
+#   scripts/random-rtl.sh [--build-dir B] [--tb-opt N] SEED [COUNT]
 # COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
 # invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
 # configuration with its flags, so a failure can be repeated with verify-rtl.sh alone (or, for a
-# port width, fpstereo-rtl -o DIR and port-widths.sh DIR). Exits 1 if any configuration fails.
+# port width, fpstereo-rtl -o DIR and port-widths.sh DIR). --tb-opt goes to verify-rtl.sh. Exits
+# 1 if any configuration fails.
 set -euo pipefail
 fail() { echo "random-rtl: $*" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
 if [ "${1:-}" = --build-dir ]; then
   build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
+  shift 2
+fi
+tb_opt=2
+if [ "${1:-}" = --tb-opt ]; then
+  [[ "${2:-}" =~ ^[0-3]$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2 or 3"
+  tb_opt=$2
   shift 2
 fi
 seed=${1:-}
@@ -84,7 +91,8 @@ for ((i = 0; i < count; ++i)); do
   pick 3 16 256
   bench=(--levels "$REPLY" --idle 0.3 --backpressure 0.3 --seed $((RANDOM + 1)))
   log=$("$root/scripts/port-widths.sh" "$work/rtl" 2>&1 &&
-        "$root/scripts/verify-rtl.sh" --build-dir "$build" "${flags[@]}" -- "${bench[@]}" 2>&1) && result=PASS ||
+        "$root/scripts/verify-rtl.sh" --build-dir "$build" --tb-opt "$tb_opt" "${flags[@]}" -- "${bench[@]}" 2>&1) &&
+    result=PASS ||
     { result=FAIL; failed=1; }
   echo "random-rtl seed $seed #$i: $result: scripts/verify-rtl.sh ${flags[*]} -- ${bench[*]}"
   [ $result = PASS ] || echo "$log" | tail -20

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Generates the RTL for one configuration, lints it, builds its Verilator test bench and runs it.
-#   scripts/verify-rtl.sh [--build-dir B] [config flags] [-- test bench args]
-#   scripts/verify-rtl.sh [--build-dir B] --rtl-dir DIR [-- test bench args]
+#   scripts/verify-rtl.sh [--build-dir B] [--tb-opt N] [config flags] [-- test bench args]
+#   scripts/verify-rtl.sh [--build-dir B] [--tb-opt N] --rtl-dir DIR [-- test bench args]
 # B (default: build in the repository) must hold a built fpstereo-rtl. Everything goes to
 # B/rtl/<hash of the config flags>/{rtl,tb}. With --rtl-dir, DIR holds a design already
 # generated with fpstereo-rtl -o DIR (perhaps altered since, as tests/rtl_timing_check.cmake
 # does): it is linted and verified as it is, and the test bench goes to B/rtl/<hash of DIR>/tb.
+# --tb-opt N (0 to 3, default 2) compiles the bench and its Verilated model with -ON: the test
+# suite's small frames take 1 (half the build, most of a test's time), long runs 2.
 # Exits with the test bench's status (0 pass, 1 mismatch, protocol, register or timing error,
 # 2 bad input, 3 timeout), the generator's status if it fails (2 for a bad configuration), or 1
 # when linting or building fails.
@@ -14,12 +16,15 @@ fail() { echo "verify-rtl: $*" >&2; exit 1; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
 rtl_dir=
+tb_opt=2
 config_flags=()
 tb_args=()
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
                  shift 2 ;;
+    --tb-opt) [[ "${2:-}" =~ ^[0-3]$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2 or 3"
+              tb_opt=$2; shift 2 ;;
     --rtl-dir) rtl_dir=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--rtl-dir '${2:-}': no such directory"
                shift 2 ;;
     --) shift; tb_args=("$@"); break ;;
@@ -59,9 +64,10 @@ fi
 lint=$(cd "$rtl" && verilator --lint-only -Wall -f filelist.f 2>&1) || { echo "$lint" >&2; fail "lint failed in $rtl"; }
 
 # 3. Configure (once) and build the test bench, showing the log only when it fails.
-if [ ! -f "$tb/CMakeCache.txt" ]; then
+#    A bench built at another --tb-opt is configured again (and rebuilt).
+if ! grep -qx -- "FPSTEREO_TB_OPT:STRING=-O$tb_opt" "$tb/CMakeCache.txt" 2>/dev/null; then
   cmake -S "$root/verilator_tb" -B "$tb" -G Ninja -DRTL_DIR="$rtl" -DFPSTEREO_BUILD_DIR="$build" \
-    -DFPSTEREO_SOURCE_DIR="$root" >"$work/configure.log" 2>&1 ||
+    -DFPSTEREO_SOURCE_DIR="$root" -DFPSTEREO_TB_OPT="-O$tb_opt" >"$work/configure.log" 2>&1 ||
     { cat "$work/configure.log" >&2; rm -rf "$tb"; fail "configuring the test bench failed"; }
 fi
 cmake --build "$tb" -j "$(nproc)" >"$work/build.log" 2>&1 ||
