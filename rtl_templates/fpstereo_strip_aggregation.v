@@ -96,7 +96,11 @@ module fpstereo_strip_aggregation #(
   // 1: each word leaves with its pixel's 8-bit confidence above it
   parameter CONFIDENCE = 0,
   // with OUTPUT: rows read after the frame's (gap interpolation's, fpstereo_strip_disparity_reorder)
-  parameter EXTRA_ROWS = 0
+  parameter EXTRA_ROWS = 0,
+  // 1: LR1's match side per strip (fpstereo_lr1_match, its state handed from strip to strip), its
+  // completed pixels and row ends out per strip; LR1_AW the completed writes' address width
+  parameter LR1 = 0,
+  parameter LR1_AW = 8
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -135,7 +139,15 @@ module fpstereo_strip_aggregation #(
   output wire                  read_event,
   output wire [X_W-1:0]        read_x,
   output wire [Y_W-1:0]        read_y,
-  output wire [P*(DISP_W+1+8*CONFIDENCE)-1:0] read_word
+  output wire [P*(DISP_W+1+8*CONFIDENCE)-1:0] read_word,
+  // with LR1, strip p's: Dm of the match pixel x - MIN_DISP - (UF - 1) of its pixel x, written at
+  // slot * ROW_SLOTS + x - p * ROW_SLOTS; and at the row's last pixel the row end's UF words
+  output wire [P-1:0]          lr1_we,
+  output wire [P*LR1_AW-1:0]   lr1_waddr,
+  output wire [P*WTA_DISP_W-1:0] lr1_wdata,
+  output wire [P-1:0]          lr1_end_we,
+  output wire [P*OUT_ROW_W-1:0] lr1_end_waddr,
+  output wire [P*UF*WTA_DISP_W-1:0] lr1_end_wdata
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -248,6 +260,35 @@ module fpstereo_strip_aggregation #(
           .edge_in(edge_right[p*2*EDGE_W +: 2*EDGE_W]), .edge135_in(edge_left[(p+1)*EDGE_W +: EDGE_W]),
           .edge_out(edge_right[(p+1)*2*EDGE_W +: 2*EDGE_W]), .edge135_out(edge_left[p*EDGE_W +: EDGE_W]));
       /* verilator lint_on PINCONNECTEMPTY */
+    end
+  endgenerate
+  generate
+    if (LR1 != 0) begin : lr1_match_side
+      localparam LR1_EDGE_W = UF * (SUM_W + WTA_DISP_W);
+      /* verilator lint_off UNUSEDSIGNAL */  // the last strip's edge goes nowhere
+      wire [(P+1)*LR1_EDGE_W-1:0] lr1_edges;  // lr1_edges[p]: from strip p - 1 to strip p
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign lr1_edges[0 +: LR1_EDGE_W] = 0;
+      for (p = 0; p < P; p = p + 1) begin : lr1_of_strip
+        fpstereo_lr1_match #(.K(K), .G(1), .UF(UF), .DMAX(UF), .ROW_SLOTS(ROW_SLOTS), .SUM_W(SUM_W),
+                             .DISP_W(WTA_DISP_W), .OUT_ROW_W(OUT_ROW_W), .DISP_AW(LR1_AW), .END_AW(OUT_ROW_W),
+                             .X_W(X_W), .G_W(1), .K_W(K_W), .MIN_DISP(MIN_DISP), .STRIPS(1),
+                             .X_BASE(p * ROW_SLOTS)) lr1_match (
+          .clk(clk), .adv(adv), .frame_width(frame_width), .sums(sums[p*UF*SUM_W +: UF*SUM_W]),
+          .active(sums_active[p]), .x(sums_x[p*X_W +: X_W]), .group(1'b0), .chain(sums_chain[p*K_W +: K_W]),
+          .slot(sums_slot[p*OUT_ROW_W +: OUT_ROW_W]), .completed_we(lr1_we[p]),
+          .completed_waddr(lr1_waddr[p*LR1_AW +: LR1_AW]), .completed_wdata(lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W]),
+          .row_end_we(lr1_end_we[p]), .row_end_waddr(lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W]),
+          .row_end_wdata(lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]),
+          .edge_in(lr1_edges[p*LR1_EDGE_W +: LR1_EDGE_W]), .edge_out(lr1_edges[(p+1)*LR1_EDGE_W +: LR1_EDGE_W]));
+      end
+    end else begin : no_lr1
+      assign lr1_we = 0;
+      assign lr1_waddr = 0;
+      assign lr1_wdata = 0;
+      assign lr1_end_we = 0;
+      assign lr1_end_waddr = 0;
+      assign lr1_end_wdata = 0;
     end
   endgenerate
   generate

@@ -385,6 +385,7 @@ module fps_census7_d128u32_79bc18_sgm_core (
   wire row_end_we;
   wire [4:0] row_end_waddr;
   wire [223:0] row_end_wdata;
+  wire [543:0] lr1_edge;
   fps_census7_d128u32_79bc18_lr1_match #(
     .K(3), .G(4), .UF(32), .DMAX(128), .ROW_SLOTS(1242), .SUM_W(10), .DISP_W(7), .OUT_ROW_W(3), .DISP_AW(13),
     .END_AW(5), .X_W(11), .G_W(2), .K_W(2), .MIN_DISP(0)
@@ -392,7 +393,7 @@ module fps_census7_d128u32_79bc18_sgm_core (
     .clk(clk), .adv(adv), .frame_width(frame_width), .sums(agg_sums), .active(agg_active), .x(agg_x),
     .group(agg_group), .chain(agg_chain), .slot(agg_slot), .completed_we(completed_we),
     .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .row_end_we(row_end_we),
-    .row_end_waddr(row_end_waddr), .row_end_wdata(row_end_wdata));
+    .row_end_waddr(row_end_waddr), .row_end_wdata(row_end_wdata), .edge_in(lr1_edge), .edge_out(lr1_edge));
 
   // Winner-take-all: the pixel's word in its last group's step.
   wire [1:0] winner_group;
@@ -2361,6 +2362,11 @@ endmodule
 // nothing to shift in: with m < 0 its match pixels start there). At e = DMAX - 1 a match pixel is
 // complete (completed_*, if it lies in the row); at the row's end the rest are (row_end_*, one
 // word of UF per group). The state follows the chains like the path costs do.
+// In strips (STRIPS, uf = dmax; docs/ppc-hardware.md, "The left-right check in strips") one
+// instance per strip: the strip's first pixel X_BASE continues the row from the state the strip to
+// its left had after its last pixel (edge_in, that strip's edge_out), and a completed match pixel
+// is written at the address of the base pixel that completes it, slot * ROW_SLOTS + x - X_BASE
+// (its match pixel is x - MIN_DISP - (DMAX - 1)), so that each strip writes its own RAM bank.
 module fps_census7_d128u32_79bc18_lr1_match #(
   parameter K = 2,
   parameter G = 4,
@@ -2375,7 +2381,10 @@ module fps_census7_d128u32_79bc18_lr1_match #(
   parameter X_W = 7,
   parameter G_W = 2,
   parameter K_W = 1,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  // 1: one strip of several, X_BASE its first pixel (G = 1)
+  parameter STRIPS = 0,
+  parameter X_BASE = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -2392,7 +2401,12 @@ module fps_census7_d128u32_79bc18_lr1_match #(
   output wire [DISP_W-1:0]    completed_wdata,
   output wire                 row_end_we,
   output wire [END_AW-1:0]    row_end_waddr,
-  output wire [UF*DISP_W-1:0] row_end_wdata
+  output wire [UF*DISP_W-1:0] row_end_wdata,
+  // with STRIPS: the state after the left strip's last pixel, and this strip's after its own
+  /* verilator lint_off UNUSEDSIGNAL */  // in the first strip, or without STRIPS
+  input  wire [UF*(SUM_W+DISP_W)-1:0] edge_in,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output reg  [UF*(SUM_W+DISP_W)-1:0] edge_out
 );
   localparam E_W = SUM_W + DISP_W;
   localparam STATE_DEPTH = K * G;
@@ -2403,17 +2417,28 @@ module fps_census7_d128u32_79bc18_lr1_match #(
     if (DMAX != G * UF) begin : invalid
       fps_census7_d128u32_79bc18_invalid_parameters_DMAX_is_not_G_times_UF failed ();
     end
+    if (STRIPS != 0 && (G != 1 || X_BASE < 0 || X_BASE >= (1 << X_W))) begin : invalid_strip
+      fps_census7_d128u32_79bc18_invalid_parameters_lr1_match_strips_need_G_1_and_X_BASE_within_X_W failed ();
+    end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
   wire [STATE_AW-1:0] entry_addr = chain * G + group;
-  wire [UF*E_W-1:0]   previous, updated;
+  wire [UF*E_W-1:0]   stored, previous, updated;
   /* verilator lint_off UNUSEDSIGNAL */  // one read port is enough here
-  wire [UF*E_W-1:0]   previous_unused;
+  wire [UF*E_W-1:0]   stored_unused;
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_79bc18_ram_async #(.WIDTH(UF*E_W), .DEPTH(STATE_DEPTH), .ADDR_W(STATE_AW)) entries (
     .clk(clk), .we(adv && active), .waddr(entry_addr), .wdata(updated),
-    .raddr_a(entry_addr), .rdata_a(previous), .raddr_b(entry_addr), .rdata_b(previous_unused));
+    .raddr_a(entry_addr), .rdata_a(stored), .raddr_b(entry_addr), .rdata_b(stored_unused));
+  localparam FROM_LEFT = STRIPS != 0 && X_BASE != 0;
+  localparam integer X_FIRST_I = X_BASE, X_LAST_I = X_BASE + ROW_SLOTS - 1;
+  localparam [X_W-1:0] X_FIRST = X_FIRST_I[X_W-1:0], X_LAST = X_LAST_I[X_W-1:0];
+  assign previous = FROM_LEFT && x == X_FIRST ? edge_in : stored;
+  // The strip's last pixel's state, for the next strip's first pixel K + 1 steps later (the
+  // last strip's goes nowhere).
+  always @(posedge clk)
+    if (adv && active && x == X_LAST) edge_out <= updated;
   reg [E_W-1:0] below_q;  // the previous group's last entry, before this pixel overwrote it
   always @(posedge clk)
     if (adv) below_q <= previous[UF*E_W-1 -: E_W];
@@ -2437,7 +2462,7 @@ module fps_census7_d128u32_79bc18_lr1_match #(
   wire completed_inside = x_ahead >= DMAX - 1 + BEHIND &&
                           (MIN_DISP >= -(DMAX - 1) || x_ahead < frame_width + (DMAX - 1));
   assign completed_we = adv && active && group == LAST_GROUP && completed_inside;
-  assign completed_waddr = slot * ROW_SLOTS + (x_ahead - (DMAX - 1 + BEHIND));
+  assign completed_waddr = slot * ROW_SLOTS + (STRIPS != 0 ? x - X_BASE : x_ahead - (DMAX - 1 + BEHIND));
   assign completed_wdata = updated[(UF-1)*E_W +: DISP_W];
   assign row_end_we = adv && active && x == frame_width - 1;
   assign row_end_waddr = slot * G + group;

@@ -118,6 +118,15 @@ modtb_set(strip_aggregation strip_aggregation_codes_p4 TOP fpstereo_strip_aggreg
           SOURCES ${MODTB_STRIP_CODES_SOURCES}
           PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 CODES=1 CODE_W=12
           COST_LEAD=4 ${MODTB_STRIP_COMMON})
+# ... with LR1's match side per strip: Dm of every match pixel, the state handed on at the edges.
+modtb_set(strip_aggregation strip_aggregation_lr1_p2 TOP fpstereo_strip_aggregation
+          SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_lr1_match.v
+          PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 CODES=1 CODE_W=12
+          COST_LEAD=4 LR1=1 LR1_AW=9 ${MODTB_STRIP_COMMON})
+modtb_set(strip_aggregation strip_aggregation_lr1_p4 TOP fpstereo_strip_aggregation
+          SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_lr1_match.v
+          PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 CODES=1 CODE_W=12
+          COST_LEAD=4 LR1=1 LR1_AW=9 ${MODTB_STRIP_COMMON})
 # The code entries through the strips' code RAMs, (p + 1) * K rows each, written a slot of P
 # pixels a step (the row slot modulo SLOT_ROWS, a multiple of every strip's rows).
 set(MODTB_STRIP_RAM_COMMON COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10 LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=4

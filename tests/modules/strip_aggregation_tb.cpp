@@ -14,7 +14,11 @@
 // multiple of P wide. With OUTPUT the sums go on through a winner-take-all per strip and the
 // strips' disparity RAMs, read in raster order a slot of P pixels a step from kOutLead row-times
 // after the aggregation's start: every pixel's word once, the lowest disparity of the least sum
-// (the sums themselves are not read there: their row slots wrap within the frame).
+// (the sums themselves are not read there: their row slots wrap within the frame). With LR1 each
+// strip's LR1 match side (fpstereo_lr1_match, its state handed on from strip to strip) writes Dm of
+// the match pixels its pixels complete and, at the row's last pixel, the row end: every match pixel
+// of every row once, against the argmin over d of the reference S(x' + d, d) (the lowest d of the
+// least), whatever strip completed it.
 #include <algorithm>
 #include <map>
 #include <string>
@@ -31,7 +35,8 @@ struct StripParams {
   int P = 2, W = 40, ROW_SLOTS = 20, K = 5, SEGMENT = 4, UF = 16, COST_W = 5, COST_MAX = 24, PATH_W = 8,
       SUM_W = 10, PATHS = 15, LEVELS_PER_STAGE = 2, PATH_TREE_LAT = 2, OUT_ROWS = 16, OUT_ROW_W = 4, COST_AW = 9,
       X_W = 6, Y_W = 5, K_W = 3, COST_ROWS = 16, COST_ROW_W = 4, COST_LEAD = 1, CODES = 0, HAMMING = 1, CODE_W = 8,
-      LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4, OUTPUT = 0, DISP_W = 4, WTA_TREE_LAT = 2;
+      LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4, OUTPUT = 0, DISP_W = 4, WTA_TREE_LAT = 2, LR1 = 0,
+      LR1_AW = 8;
 };
 
 // Steps from the first write of a frame's codes to the aggregation's start, with RAM: a write
@@ -146,6 +151,14 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     // Every row-time until the last strip has finished the last row, and the pipeline's tail.
     const long steps = p.OUTPUT != 0 ? out_start + long(height + 1) * R + 8 : long(height + p.P * p.K + 1) * R + 32;
     std::map<std::pair<int, int>, int> seen;  // (y, x) -> times
+    std::map<std::pair<int, int>, int> matched;  // with LR1: (y, x') -> times Dm(x') was written
+    // Dm(x'): the least S(x' + d, d) over the d <= e whose base pixel x' + d lies in the row.
+    const auto match_side = [&](int y, int xm, int e) {
+      int best = 0;
+      for (int d = 1; d <= e && xm + d < width; ++d)
+        if (want[size_t(y)][size_t(xm + d)][size_t(d)] < want[size_t(y)][size_t(xm + best)][size_t(best)]) best = d;
+      return best;
+    };
     std::vector<std::vector<int>> read_q(size_t(p.P), std::vector<int>(size_t(dmax), 0));
     std::vector<uint64_t> entry_q(size_t(p.P), 0);
     for (long step = 0; step < steps;) {
@@ -203,6 +216,31 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
                        modtb::get_bits(m.read_word, q * (p.DISP_W + 1), p.DISP_W + 1));
         }
       }
+      // LR1's writes of this step (combinational, from the sums' registers): a completed match
+      // pixel, or the row end's match pixels width - 1 - e.
+      for (int s = 0; s < p.P && p.LR1 != 0; ++s) {
+        if (modtb::get_bits(m.lr1_we, s, 1)) {
+          const uint64_t addr = modtb::get_bits(m.lr1_waddr, s * p.LR1_AW, p.LR1_AW);
+          const int y = int(addr / uint64_t(R)), xm = s * R + int(addr % uint64_t(R)) - (dmax - 1);
+          const std::string where = "strip " + std::to_string(s) + " Dm(" + std::to_string(xm) + ", " + std::to_string(y) + ")";
+          if (check.require(cycle, where + " lies in the frame", y < height && xm >= 0 && xm + dmax <= width)) {
+            ++matched[{y, xm}];
+            check.expect(cycle, where, uint64_t(match_side(y, xm, dmax - 1)),
+                         modtb::get_bits(m.lr1_wdata, s * p.DISP_W, p.DISP_W));
+          }
+        }
+        if (!modtb::get_bits(m.lr1_end_we, s, 1)) continue;
+        const int y = int(modtb::get_bits(m.lr1_end_waddr, s * p.OUT_ROW_W, p.OUT_ROW_W));
+        if (!check.require(cycle, "strip " + std::to_string(s) + " row end of row " + std::to_string(y) + " in the frame",
+                           y < height))
+          continue;
+        for (int e = 0; e < dmax; ++e) {
+          const int xm = width - 1 - e;
+          if (e < dmax - 1) ++matched[{y, xm}];  // e = dmax - 1 is the completed pixel's
+          check.expect(cycle, "strip " + std::to_string(s) + " row end Dm(" + std::to_string(xm) + ", " + std::to_string(y) + ")",
+                       uint64_t(match_side(y, xm, e)), modtb::get_bits(m.lr1_end_wdata, (s * dmax + e) * p.DISP_W, p.DISP_W));
+        }
+      }
       // The sums of this step (registers: they changed at the edge just taken). With OUTPUT the
       // strips' row slots are modulo fewer rows than the frame's, and the output stands for them.
       for (int s = 0; s < p.P && p.OUTPUT == 0; ++s) {
@@ -221,6 +259,11 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     }
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
+        if (p.LR1 != 0) {
+          const auto it = matched.find({y, x});
+          check.require(cycle, "Dm(" + std::to_string(x) + ", " + std::to_string(y) + ") written once",
+                        it != matched.end() && it->second == 1);
+        }
         if (p.OUTPUT == 0) {
           const auto it = seen.find({y, x});
           check.require(cycle, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") summed once",
@@ -234,7 +277,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     pixels += long(width) * height;
     ++frames;
   }
-  return check.finish(std::string(p.OUTPUT ? "codes through the strips' RAMs to the raster disparities, " : p.RAM ? "codes through the strips' RAMs, " : p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
+  return check.finish(std::string(p.LR1 ? "LR1's match side, " : "") + std::string(p.OUTPUT ? "codes through the strips' RAMs to the raster disparities, " : p.RAM ? "codes through the strips' RAMs, " : p.CODES ? "codes, " : "costs, ") + "P=" + std::to_string(p.P) + " K=" + std::to_string(p.K) + " strips of " + std::to_string(R) +
                       " W=" + std::to_string(p.W) + " dmax=" + std::to_string(dmax) + " paths " +
                       std::to_string(p.PATHS) +
                       (p.OUTPUT ? ": the winner of every pixel once, in raster order, against SGM; "

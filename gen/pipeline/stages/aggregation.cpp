@@ -104,6 +104,14 @@ class AggregationStage : public Stage {
     core.wire("strip_x", int64_t(P) * d.x_bits);
     core.wire("strip_chain", int64_t(P) * d.chain_bits);
     core.wire("strip_slot", int64_t(P) * d.out_row_bits);
+    // LR1's match side per strip (not in strips yet: docs/ppc-hardware.md, "The left-right check in
+    // strips"), its outputs unused.
+    core.wire("strip_lr1_we", P);
+    core.wire("strip_lr1_waddr", int64_t(P) * 8);
+    core.wire("strip_lr1_wdata", int64_t(P) * w.disparity);
+    core.wire("strip_lr1_end_we", P);
+    core.wire("strip_lr1_end_waddr", int64_t(P) * d.out_row_bits);
+    core.wire("strip_lr1_end_wdata", int64_t(P) * c.uf * w.disparity);
     // The aggregators' parameters but the groups (G = 1 in strips), and the strips' own.
     Connections parameters;
     for (const auto& p : aggregator_parameters(d))
@@ -145,7 +153,13 @@ class AggregationStage : public Stage {
                    {"sums_chain", "strip_chain"},
                    {"sums_slot", "strip_slot"},
                    {"uniqueness", c.uniqueness != 0 ? "uniqueness" : "7'd0"},
-                   {"read_word", c.confidence ? kStripConfidentWords : "read_word"}});
+                   {"read_word", c.confidence ? kStripConfidentWords : "read_word"},
+                   {"lr1_we", "strip_lr1_we"},
+                   {"lr1_waddr", "strip_lr1_waddr"},
+                   {"lr1_wdata", "strip_lr1_wdata"},
+                   {"lr1_end_we", "strip_lr1_end_we"},
+                   {"lr1_end_waddr", "strip_lr1_end_waddr"},
+                   {"lr1_end_wdata", "strip_lr1_end_wdata"}});
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).

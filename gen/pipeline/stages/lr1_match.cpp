@@ -31,6 +31,9 @@ class Lr1MatchStage : public Stage {
     core.wire("row_end_we", 1);
     core.wire("row_end_waddr", d.end_addr_bits);
     core.wire("row_end_wdata", c.uf * d.widths.disparity);
+    // One pixel a clock: no strips, no edge between them. edge_in, unread, takes the instance's
+    // own edge_out (as the chain cost's ring_in does: zeros that wide pass Verilator's limit).
+    core.wire("lr1_edge", int64_t(c.uf) * (d.widths.aggregated + d.widths.disparity));
     core.instance("fpstereo_lr1_match", "lr1_match",
                   {{"K", num(d.chains)},
                    {"G", num(d.groups)},
@@ -51,7 +54,9 @@ class Lr1MatchStage : public Stage {
                    {"x", "agg_x"},
                    {"group", "agg_group"},
                    {"chain", "agg_chain"},
-                   {"slot", "agg_slot"}});
+                   {"slot", "agg_slot"},
+                   {"edge_in", "lr1_edge"},
+                   {"edge_out", "lr1_edge"}});
   }
 
   // ---- HLS: select_base finds Dm from the base side's sums as they pass.
