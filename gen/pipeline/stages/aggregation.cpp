@@ -107,7 +107,7 @@ class AggregationStage : public Stage {
     // LR1's match side per strip (not in strips yet: docs/ppc-hardware.md, "The left-right check in
     // strips"), its outputs unused.
     core.wire("strip_lr1_we", P);
-    core.wire("strip_lr1_waddr", int64_t(P) * 8);
+    core.wire("strip_lr1_waddr", P);  // LR1_AW 1
     core.wire("strip_lr1_wdata", int64_t(P) * w.disparity);
     core.wire("strip_lr1_end_we", P);
     core.wire("strip_lr1_end_waddr", int64_t(P) * d.out_row_bits);
@@ -130,6 +130,8 @@ class AggregationStage : public Stage {
                                   {"SLOT_W", num(d.cost_row_bits)},
                                   {"EXTRA_LAT", num(d.cost_latency)},
                                   {"BASE_WAIT", num(code_base_wait_slots(d))},
+                                  {"LR1", "0"},
+                                  {"LR1_AW", "1"},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},
