@@ -100,7 +100,9 @@ module fpstereo_strip_aggregation #(
   // 1: LR1's match side per strip (fpstereo_lr1_match, its state handed from strip to strip), its
   // completed pixels and row ends out per strip; LR1_AW the completed writes' address width
   parameter LR1 = 0,
-  parameter LR1_AW = 8
+  parameter LR1_AW = 8,
+  // with OUTPUT: the steps LR1's writes wait, to land with the strips' disparity words
+  parameter LR1_LAG = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -134,6 +136,7 @@ module fpstereo_strip_aggregation #(
   /* verilator lint_off UNUSEDSIGNAL */  // without OUTPUT
   input  wire                  out_on,
   input  wire [6:0]            uniqueness,
+  input  wire [3:0]            lr_threshold,
   /* verilator lint_on UNUSEDSIGNAL */
   output wire                  read_done,
   output wire                  read_event,
@@ -270,17 +273,38 @@ module fpstereo_strip_aggregation #(
       /* verilator lint_on UNUSEDSIGNAL */
       assign lr1_edges[0 +: LR1_EDGE_W] = 0;
       for (p = 0; p < P; p = p + 1) begin : lr1_of_strip
+        localparam DATA_W = LR1_AW + WTA_DISP_W + OUT_ROW_W + UF * WTA_DISP_W;
+        wire                       we, end_we;
+        wire [LR1_AW-1:0]          waddr;
+        wire [WTA_DISP_W-1:0]      wdata;
+        wire [OUT_ROW_W-1:0]       end_waddr;
+        wire [UF*WTA_DISP_W-1:0]   end_wdata;
         fpstereo_lr1_match #(.K(K), .G(1), .UF(UF), .DMAX(UF), .ROW_SLOTS(ROW_SLOTS), .SUM_W(SUM_W),
                              .DISP_W(WTA_DISP_W), .OUT_ROW_W(OUT_ROW_W), .DISP_AW(LR1_AW), .END_AW(OUT_ROW_W),
                              .X_W(X_W), .G_W(1), .K_W(K_W), .MIN_DISP(MIN_DISP), .STRIPS(1),
                              .X_BASE(p * ROW_SLOTS)) lr1_match (
           .clk(clk), .adv(adv), .frame_width(frame_width), .sums(sums[p*UF*SUM_W +: UF*SUM_W]),
           .active(sums_active[p]), .x(sums_x[p*X_W +: X_W]), .group(1'b0), .chain(sums_chain[p*K_W +: K_W]),
-          .slot(sums_slot[p*OUT_ROW_W +: OUT_ROW_W]), .completed_we(lr1_we[p]),
-          .completed_waddr(lr1_waddr[p*LR1_AW +: LR1_AW]), .completed_wdata(lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W]),
-          .row_end_we(lr1_end_we[p]), .row_end_waddr(lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W]),
-          .row_end_wdata(lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]),
+          .slot(sums_slot[p*OUT_ROW_W +: OUT_ROW_W]), .completed_we(we), .completed_waddr(waddr),
+          .completed_wdata(wdata), .row_end_we(end_we), .row_end_waddr(end_waddr), .row_end_wdata(end_wdata),
           .edge_in(lr1_edges[p*LR1_EDGE_W +: LR1_EDGE_W]), .edge_out(lr1_edges[(p+1)*LR1_EDGE_W +: LR1_EDGE_W]));
+        if (LR1_LAG > 0) begin : lagged
+          wire [1:0] flags;
+          fpstereo_delay #(.WIDTH(2), .DEPTH(LR1_LAG), .RESET(1)) flag_lag (
+            .clk(clk), .rst(restart), .en(adv), .in({we, end_we}), .out(flags));
+          fpstereo_delay #(.WIDTH(DATA_W), .DEPTH(LR1_LAG)) data_lag (
+            .clk(clk), .rst(1'b0), .en(adv), .in({waddr, wdata, end_waddr, end_wdata}),
+            .out({lr1_waddr[p*LR1_AW +: LR1_AW], lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W],
+                  lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]}));
+          assign lr1_we[p] = adv && flags[1];
+          assign lr1_end_we[p] = adv && flags[0];
+        end else begin : at_once
+          assign lr1_we[p] = we;
+          assign lr1_end_we[p] = end_we;
+          assign {lr1_waddr[p*LR1_AW +: LR1_AW], lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W],
+                  lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]} =
+                 {waddr, wdata, end_waddr, end_wdata};
+        end
       end
     end else begin : no_lr1
       assign lr1_we = 0;
@@ -379,11 +403,38 @@ module fpstereo_strip_aggregation #(
         assign out_slot = wta_slot;
         assign out_word = wta_word;
       end
+      wire raster_done, raster_event;
+      wire [X_W-1:0] raster_x;
+      wire [Y_W-1:0] raster_y;
+      wire [P*WORD_W-1:0] raster_word;
+      /* verilator lint_off UNUSEDSIGNAL */  // without LR1
+      wire [P*OUT_ROW_W-1:0] raster_slots;
+      /* verilator lint_on UNUSEDSIGNAL */
       fpstereo_strip_disparity_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DISP_W(WORD_W - 1), .X_W(X_W),
                                          .Y_W(Y_W), .SLOT_W(OUT_ROW_W), .EXTRA_ROWS(EXTRA_ROWS)) disparities (
         .clk(clk), .restart(restart), .adv(adv), .out_on(out_on), .overlap(overlap), .frame_width(frame_width),
         .frame_height(frame_height), .active(rated_active), .x(rated_x), .slot(rated_slot), .word(rated_word),
-        .read_done(read_done), .read_event(read_event), .read_x(read_x), .read_y(read_y), .read_word(read_word));
+        .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
+        .read_word(raster_word), .read_slots(raster_slots));
+      if (LR1 != 0) begin : checked
+        if (CONFIDENCE != 0 || SUBPIXEL_BITS != 0) begin : invalid_lr1
+          fpstereo_invalid_parameters_strip_aggregation_LR1_output_without_confidence_or_subpixel_so_far failed ();
+        end
+        fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(DISP_W), .CAW(LR1_AW),
+                                  .SLOT_W(OUT_ROW_W), .X_W(X_W), .Y_W(Y_W), .MIN_DISP(MIN_DISP)) check (
+          .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
+          .completed_we(lr1_we), .completed_waddr(lr1_waddr), .completed_wdata(lr1_wdata),
+          .row_end_we(lr1_end_we), .row_end_waddr(lr1_end_waddr), .row_end_wdata(lr1_end_wdata),
+          .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
+          .read_slots(raster_slots), .read_word(raster_word), .checked_done(read_done), .checked_event(read_event),
+          .checked_x(read_x), .checked_y(read_y), .checked_word(read_word));
+      end else begin : unchecked
+        assign read_done = raster_done;
+        assign read_event = raster_event;
+        assign read_x = raster_x;
+        assign read_y = raster_y;
+        assign read_word = raster_word;
+      end
     end else begin : no_output
       assign read_done = 1'b0;
       assign read_event = 1'b0;

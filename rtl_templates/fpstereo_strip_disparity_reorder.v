@@ -41,7 +41,9 @@ module fpstereo_strip_disparity_reorder #(
   output reg                read_event,
   output reg  [X_W-1:0]     read_x,
   output reg  [Y_W-1:0]     read_y,
-  output wire [P*(DISP_W+1)-1:0] read_word
+  output wire [P*(DISP_W+1)-1:0] read_word,
+  // each strip's row slot of the read row (fpstereo_strip_lr_check's banks follow them)
+  output reg  [P*SLOT_W-1:0] read_slots
 );
   localparam WORDS = STRIP_PIXELS / P;  // a strip's slots per row
   localparam LOG_P = $clog2(P);
@@ -163,6 +165,8 @@ module fpstereo_strip_disparity_reorder #(
       always @(posedge clk)
         if (restart) out_slot <= {SLOT_W{1'b0}};
         else if (row_ends) out_slot <= out_slot == LAST_ROW ? {SLOT_W{1'b0}} : out_slot + 1'b1;
+      always @(posedge clk)
+        if (adv) read_slots[s*SLOT_W +: SLOT_W] <= out_slot;
       wire [X_W-1:0] wx = x[s*X_W +: X_W] - FIRST;
       /* verilator lint_off WIDTH */  // products of narrow values and constants, cut to the address
       wire [AW-1:0] waddr = slot[s*SLOT_W +: SLOT_W] * WORDS + (wx >> LOG_P);

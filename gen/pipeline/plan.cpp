@@ -50,12 +50,16 @@ void check_hardware_rules(const StereoConfig& cfg) {
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
 // configuration: so far census and rank costs with the paths' sums straight to the winner (with
 // the uniqueness check or not, the sub-pixel fit or not, the confidence or not, adaptive P2 or
-// not, the fused cost or not, any min-disp) and, through the median and gap interpolation or not,
-// out (no left-right check, right view or speckle filter). Elsewhere ppc > 1 converts beats to
-// pixels around the one-pixel core.
+// not, the fused cost or not, any min-disp), LR1 with whole disparities (no right view, confidence
+// or sub-pixel fit with it) and, through the median and gap interpolation or not, out (no LR2,
+// right view or speckle filter). Elsewhere ppc > 1 converts beats to pixels around the one-pixel
+// core.
 bool strip_options(const StereoConfig& c) {
-  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && c.lr == LrCheck::None &&
-         c.speckle_size == 0 && !c.right_view;
+  // LR1's check in strips takes whole disparities without their confidences so far.
+  const bool check = c.lr == LrCheck::None ||
+                     (c.lr == LrCheck::Lr1 && !c.right_view && !c.confidence && c.subpixel_bits == 0);
+  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && check &&
+         c.speckle_size == 0;
 }
 
 }  // namespace
@@ -141,7 +145,9 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
     // beat register, P - 1 pixels before the core takes the last: the wait is that much shorter.
     g.follow_wait = std::max(0, kFollowCycles - (cfg.ppc - 1) - (g.row_slots - cfg.width));
   }
-  g.lr_rows = cfg.lr == LrCheck::None ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
+  // In strips a row is read once every strip has finished it, its match side's Dm with it: the
+  // reads wait no rows more for the check.
+  g.lr_rows = cfg.lr == LrCheck::None || g.strips > 1 ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
   g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
   g.out_rows = g.chains + 1 + g.lr_rows;
   if (g.strips > 1) {

@@ -36,7 +36,7 @@ struct StripParams {
       SUM_W = 10, PATHS = 15, LEVELS_PER_STAGE = 2, PATH_TREE_LAT = 2, OUT_ROWS = 16, OUT_ROW_W = 4, COST_AW = 9,
       X_W = 6, Y_W = 5, K_W = 3, COST_ROWS = 16, COST_ROW_W = 4, COST_LEAD = 1, CODES = 0, HAMMING = 1, CODE_W = 8,
       LANES_LAT = 2, RAM = 0, SLOT_ROWS = 10, SLOT_W = 4, OUTPUT = 0, DISP_W = 4, WTA_TREE_LAT = 2, LR1 = 0,
-      LR1_AW = 8;
+      LR1_AW = 8, LR1_LAG = 0;
 };
 
 // Steps from the first write of a frame's codes to the aggregation's start, with RAM: a write
@@ -136,6 +136,8 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     m.frame_height = height;
     m.p1 = p1;
     m.p2 = p2;
+    const int threshold = int(rng.range(0, 3));
+    m.lr_threshold = uint32_t(threshold);
     m.overlap = 0;
     m.wrapped = 0;
     m.restart = 1;
@@ -211,14 +213,21 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
           if (!check.require(cycle, where + " lies in the frame", y < height)) continue;
           ++read[{y, x}];
           const std::vector<int>& s = want[size_t(y)][size_t(x)];
-          const auto best = std::min_element(s.begin(), s.end()) - s.begin();
-          check.expect(cycle, where, uint64_t(best),
-                       modtb::get_bits(m.read_word, q * (p.DISP_W + 1), p.DISP_W + 1));
+          const int best = int(std::min_element(s.begin(), s.end()) - s.begin());
+          uint64_t expected = uint64_t(best);
+          if (p.LR1 != 0) {
+            // The left-right check: x' = x - D in the row and |D - Dm(x')| <= the threshold, Dm
+            // over the d whose base pixel x' + d lies in the row.
+            const int xm = x - best;
+            const bool passes = xm >= 0 && std::abs(best - match_side(y, xm, std::min(dmax - 1, width - 1 - xm))) <= threshold;
+            expected = passes ? expected : uint64_t(1) << p.DISP_W;
+          }
+          check.expect(cycle, where, expected, modtb::get_bits(m.read_word, q * (p.DISP_W + 1), p.DISP_W + 1));
         }
       }
       // LR1's writes of this step (combinational, from the sums' registers): a completed match
       // pixel, or the row end's match pixels width - 1 - e.
-      for (int s = 0; s < p.P && p.LR1 != 0; ++s) {
+      for (int s = 0; s < p.P && p.LR1 != 0 && p.OUTPUT == 0; ++s) {
         if (modtb::get_bits(m.lr1_we, s, 1)) {
           const uint64_t addr = modtb::get_bits(m.lr1_waddr, s * p.LR1_AW, p.LR1_AW);
           const int y = int(addr / uint64_t(R)), xm = s * R + int(addr % uint64_t(R)) - (dmax - 1);
@@ -259,7 +268,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
     }
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
-        if (p.LR1 != 0) {
+        if (p.LR1 != 0 && p.OUTPUT == 0) {
           const auto it = matched.find({y, x});
           check.require(cycle, "Dm(" + std::to_string(x) + ", " + std::to_string(y) + ") written once",
                         it != matched.end() && it->second == 1);

@@ -41,6 +41,22 @@ class AggregationStage : public Stage {
         m.push_back({"core.aggregation.output_order.disparities.strip[" + std::to_string(s) + "].bank[" +
                          std::to_string(q) + "].ram.mem",
                      (int64_t(g.strips - s) * g.chains + 1) * words, g.widths.output_word});
+    if (g.cfg.lr == LrCheck::Lr1) {
+      // LR1 per strip: its match state (K words); the check's banks, each word's copy of every
+      // strip's completed pixels ((P - s) * K + 1 rows of R) and of the row ends (P * K + 1 rows).
+      const int64_t state_bits = int64_t(g.cfg.uf) * (g.widths.aggregated + g.widths.disparity);
+      for (int s = 0; s < g.strips; ++s)
+        m.push_back({"core.aggregation.lr1_match_side.lr1_of_strip[" + std::to_string(s) + "].lr1_match.entries.mem",
+                     g.chains, state_bits, false});
+      const std::string check = "core.aggregation.output_order.checked.check.word[";
+      for (int q = 0; q < g.strips; ++q) {
+        for (int s = 0; s < g.strips; ++s)
+          m.push_back({check + std::to_string(q) + "].bank_of_strip[" + std::to_string(s) + "].completed.mem",
+                       (int64_t(g.strips - s) * g.chains + 1) * g.row_slots, g.widths.disparity});
+        m.push_back({check + std::to_string(q) + "].row_end.mem", int64_t(g.strips) * g.chains + 1,
+                     int64_t(g.cfg.uf) * g.widths.disparity});
+      }
+    }
     return m;
   }
 
@@ -104,10 +120,13 @@ class AggregationStage : public Stage {
     core.wire("strip_x", int64_t(P) * d.x_bits);
     core.wire("strip_chain", int64_t(P) * d.chain_bits);
     core.wire("strip_slot", int64_t(P) * d.out_row_bits);
-    // LR1's match side per strip (not in strips yet: docs/ppc-hardware.md, "The left-right check in
-    // strips"), its outputs unused.
+    // With LR1 its match side per strip and the check, inside fpstereo_strip_aggregation
+    // (docs/ppc-hardware.md, "The left-right check in strips"); the match side's writes, which the
+    // check takes there, are not read here. Strip 0's completed pixels take the most address bits.
+    const bool lr1 = c.lr == LrCheck::Lr1;
+    const int lr1_bits = lr1 ? clog2((int64_t(P) * d.chains + 1) * d.row_slots) : 1;
     core.wire("strip_lr1_we", P);
-    core.wire("strip_lr1_waddr", P);  // LR1_AW 1
+    core.wire("strip_lr1_waddr", int64_t(P) * lr1_bits);
     core.wire("strip_lr1_wdata", int64_t(P) * w.disparity);
     core.wire("strip_lr1_end_we", P);
     core.wire("strip_lr1_end_waddr", int64_t(P) * d.out_row_bits);
@@ -130,8 +149,9 @@ class AggregationStage : public Stage {
                                   {"SLOT_W", num(d.cost_row_bits)},
                                   {"EXTRA_LAT", num(d.cost_latency)},
                                   {"BASE_WAIT", num(code_base_wait_slots(d))},
-                                  {"LR1", "0"},
-                                  {"LR1_AW", "1"},
+                                  {"LR1", lr1 ? "1" : "0"},
+                                  {"LR1_AW", num(lr1_bits)},
+                                  {"LR1_LAG", num(d.wta_word_lag)},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},
@@ -155,6 +175,7 @@ class AggregationStage : public Stage {
                    {"sums_chain", "strip_chain"},
                    {"sums_slot", "strip_slot"},
                    {"uniqueness", c.uniqueness != 0 ? "uniqueness" : "7'd0"},
+                   {"lr_threshold", lr1 ? "lr_threshold" : "4'd0"},
                    {"read_word", c.confidence ? kStripConfidentWords : "read_word"},
                    {"lr1_we", "strip_lr1_we"},
                    {"lr1_waddr", "strip_lr1_waddr"},

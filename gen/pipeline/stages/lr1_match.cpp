@@ -18,11 +18,13 @@ class Lr1MatchStage : public Stage {
   std::vector<std::string> knobs() const override { return {"lr", "min-disp"}; }
   Latency latency(const Geometry&) const override { return {}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
+    if (g.strips > 1) return {};  // in strips, the aggregation stage's (fpstereo_strip_aggregation)
     return {{"core.lr1_match.entries.mem", int64_t(g.chains) * g.groups,
              int64_t(g.cfg.uf) * (g.widths.aggregated + g.widths.disparity), false}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    if (d.strips > 1) return;  // in strips, one per strip in the aggregation stage's module
     const StereoConfig& c = d.cfg;
     core.text("\n  // LR1 match side: Dm(x') from the base side's sums.\n");
     core.wire("completed_we", 1);

@@ -18,6 +18,7 @@ class LrCheckStage : public Stage {
   std::vector<std::string> knobs() const override { return {"lr", "lr-threshold", "min-disp"}; }
   Latency latency(const Geometry&) const override { return {0, 0, 3}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
+    if (g.strips > 1) return {};  // in strips, the aggregation stage's (fpstereo_strip_lr_check)
     // One lookup of Dm for the check; with the right view a second one for Dm(x).
     std::vector<StageMemory> out;
     for (const std::string lookup : {"lookup", "right_view.lookup"}) {
@@ -32,6 +33,9 @@ class LrCheckStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    // In strips fpstereo_strip_aggregation checks the words before they leave it, in the same
+    // three steps (this stage's latency).
+    if (d.strips > 1) return;
     const StereoConfig& c = d.cfg;
     const PixelStream in = streams.pixels;
     const PixelStream& out = streams.pixels = {"checked_done", "checked_event", "checked_x", "checked_y", "checked_word"};

@@ -1,0 +1,199 @@
+`resetall
+`default_nettype none
+// The left-right check (docs/semantics.md, section 5) over P strips of a row at P words a slot
+// (docs/ppc-hardware.md, "The left-right check in strips"): fpstereo_lr_check's three steps for
+// each of a slot's P words. Strip b's LR1 match side (fpstereo_lr1_match with STRIPS) writes the
+// Dm it completes at the completing pixel's place in the strip, row slot * STRIP_PIXELS + x -
+// b * STRIP_PIXELS, its row slots modulo (P - b) * K + 1 (the strip's disparity RAM's), and the
+// strip holding the row's last pixel its row end. Word q of the read slot looks Dm(x') up, x' =
+// x - MIN_DISP - D: from the bank of the strip that completed x' (its completing pixel x - D +
+// DMAX - 1) or from the row end; so each word has a copy of every strip's bank and of the row-end
+// RAM, and reads every bank at once, choosing a step later. read_slots are the strips' row slots
+// of the read row (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax.
+module fpstereo_strip_lr_check #(
+  parameter P = 2,
+  parameter K = 5,
+  parameter STRIP_PIXELS = 20,
+  parameter DMAX = 16,
+  parameter DISP_W = 4,
+  // width of a completed write's address (strip 0's: (P * K + 1) * STRIP_PIXELS words)
+  parameter CAW = 9,
+  parameter SLOT_W = 5,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter MIN_DISP = 0
+) (
+  input  wire                   clk,
+  input  wire                   restart,
+  input  wire                   adv,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [3:0]             lr_threshold,
+  input  wire [P-1:0]           completed_we,
+  /* verilator lint_off UNUSEDSIGNAL */  // the strips right of 0 have fewer rows: their top bits
+  input  wire [P*CAW-1:0]       completed_waddr,
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  wire [P*DISP_W-1:0]    completed_wdata,
+  input  wire [P-1:0]           row_end_we,
+  input  wire [P*SLOT_W-1:0]    row_end_waddr,
+  input  wire [P*DMAX*DISP_W-1:0] row_end_wdata,
+  // the read stream (fpstereo_strip_disparity_reorder): slot read_x, pixels read_x * P + q
+  input  wire                   read_done,
+  input  wire                   read_event,
+  input  wire [X_W-1:0]         read_x,
+  input  wire [Y_W-1:0]         read_y,
+  input  wire [P*SLOT_W-1:0]    read_slots,
+  input  wire [P*(DISP_W+1)-1:0] read_word,
+  output reg                    checked_done,
+  output reg                    checked_event,
+  output reg  [X_W-1:0]         checked_x,
+  output reg  [Y_W-1:0]         checked_y,
+  output wire [P*(DISP_W+1)-1:0] checked_word
+);
+  localparam R = STRIP_PIXELS;
+  localparam LOG_P = $clog2(P);
+  localparam B_W = P > 1 ? $clog2(P) : 1;
+  localparam END_ROWS = P * K + 1;  // strip 0's rows, the most
+  localparam END_AW = $clog2(END_ROWS);
+  localparam LANE_W = $clog2(DMAX);
+  localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
+  localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
+  localparam P_W = X_W + 10;
+  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
+  generate
+    if ((P != 2 && P != 4) || R % P != 0 || (1 << CAW) < END_ROWS * R || END_ROWS > (1 << SLOT_W) ||
+        (1 << DISP_W) < DMAX) begin : invalid
+      fpstereo_invalid_parameters_strip_lr_check_P_STRIP_PIXELS_or_widths failed ();
+    end
+  endgenerate
+  // The strip that writes the row ends: the one holding the frame's last pixel (a register: the
+  // frame size holds while a frame runs).
+  wire [P-1:0] reaches;  // reaches[s]: the frame's last pixel lies in strip s or right of it
+  genvar q, b;
+  generate
+    for (b = 0; b < P; b = b + 1) begin : strip_reach
+      localparam integer FIRST_I = b * R;
+      localparam [P_W-1:0] FIRST = FIRST_I[P_W-1:0];
+      assign reaches[b] = {{(P_W-X_W){1'b0}}, frame_width} > FIRST;
+    end
+  endgenerate
+  reg [B_W-1:0] end_strip;
+  integer s;
+  always @(posedge clk) begin
+    end_strip <= {B_W{1'b0}};
+    for (s = 1; s < P; s = s + 1)
+      if (reaches[s]) end_strip <= s[B_W-1:0];
+  end
+  // The row-end write: the writing strip's, whichever it is.
+  reg              end_we;
+  reg [END_AW-1:0] end_waddr;
+  reg [DMAX*DISP_W-1:0] end_wdata;
+  always @* begin
+    end_we = 1'b0;
+    end_waddr = {END_AW{1'b0}};
+    end_wdata = {DMAX*DISP_W{1'b0}};
+    for (s = 0; s < P; s = s + 1)
+      if (row_end_we[s]) begin
+        end_we = 1'b1;
+        end_waddr = row_end_waddr[s*SLOT_W +: END_AW];
+        end_wdata = row_end_wdata[s*DMAX*DISP_W +: DMAX*DISP_W];
+      end
+  end
+  // Positions and disparities against the frame's width and constants: the compares widen them.
+  // verilator lint_off WIDTH
+  wire [END_AW-1:0] end_slot = read_slots[end_strip*SLOT_W +: SLOT_W];
+  wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
+  // Second step's stream (the RAMs' outputs are there), third's (Dm registered), fourth: checked.
+  reg            done_c, event_c, done_q, event_q;
+  reg [X_W-1:0]  x_c, x_q;
+  reg [Y_W-1:0]  y_c, y_q;
+  always @(posedge clk)
+    if (restart) begin
+      done_c <= 1'b0;
+      event_c <= 1'b0;
+      done_q <= 1'b0;
+      event_q <= 1'b0;
+      checked_done <= 1'b0;
+      checked_event <= 1'b0;
+    end else if (adv) begin
+      done_c <= read_done;
+      event_c <= read_event;
+      done_q <= done_c;
+      event_q <= event_c;
+      checked_done <= done_q;
+      checked_event <= event_q;
+    end
+  always @(posedge clk)
+    if (adv) begin
+      x_c <= read_x;
+      y_c <= read_y;
+      x_q <= x_c;
+      y_q <= y_c;
+      checked_x <= x_q;
+      checked_y <= y_q;
+    end
+  generate
+    for (q = 0; q < P; q = q + 1) begin : word
+      localparam [LOG_P-1:0] Q = q;
+      wire [DISP_W:0] w = read_word[q*(DISP_W+1) +: DISP_W+1];
+      wire [DISP_W-1:0] d = w[DISP_W-1:0];
+      wire [P_W-1:0] x_ahead = {read_x, Q} + AHEAD;
+      wire [P_W-1:0] d_behind = d + BEHIND;
+      wire outside = w[DISP_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+      wire [P_W-1:0] xm_behind = x_ahead - d;  // x' + BEHIND
+      // x' from the row end where its completing pixel x - D + DMAX - 1 lies right of the row
+      wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
+      wire [LANE_W-1:0] from_end = last_ahead - xm_behind;  // the row-end lane, where it is one
+      wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
+                  (MIN_DISP < -(DMAX - 1) && xm_behind + (DMAX - 1) < AHEAD);
+      wire [P_W-1:0] completing = {read_x, Q} + (DMAX - 1) - d;  // x - D + DMAX - 1
+      // its strip: the last whose first pixel it reaches
+      reg [B_W-1:0] bank;
+      integer t;
+      always @* begin
+        bank = {B_W{1'b0}};
+        for (t = 1; t < P; t = t + 1)
+          if (completing >= t * R) bank = t[B_W-1:0];
+      end
+      wire [P*DISP_W-1:0] banks_q;
+      for (b = 0; b < P; b = b + 1) begin : bank_of_strip
+        localparam ROWS = (P - b) * K + 1;
+        localparam AW = $clog2(ROWS * R);
+        wire [AW-1:0] raddr = read_slots[b*SLOT_W +: SLOT_W] * R + (completing - b * R);
+        fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(ROWS * R), .ADDR_W(AW)) completed (
+          .clk(clk), .we(completed_we[b]), .waddr(completed_waddr[b*CAW +: AW]),
+          .wdata(completed_wdata[b*DISP_W +: DISP_W]), .re(adv), .raddr(raddr), .rdata(banks_q[b*DISP_W +: DISP_W]));
+      end
+      wire [DMAX*DISP_W-1:0] end_q;
+      fpstereo_ram_sdp #(.WIDTH(DMAX*DISP_W), .DEPTH(END_ROWS), .ADDR_W(END_AW)) row_end (
+        .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata), .re(adv), .raddr(end_slot), .rdata(end_q));
+      reg [B_W-1:0]    bank_c;
+      reg [LANE_W-1:0] lane_c;
+      reg              from_row_end_c, none_c, outside_c, outside_q;
+      reg [DISP_W:0]   word_c, word_q, checked_q;
+      reg [DISP_W-1:0] dm_q;
+      reg signed [DISP_W+1:0] db_high_q, db_low_q;
+      wire [DISP_W-1:0] dm = none_c ? {DISP_W{1'b0}} : from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] :
+                             banks_q[bank_c * DISP_W +: DISP_W];
+      wire signed [DISP_W+1:0] dm_signed = $signed({2'b00, dm_q});
+      always @(posedge clk)
+        if (adv) begin
+          bank_c <= bank;
+          lane_c <= from_end;
+          from_row_end_c <= from_row_end;
+          none_c <= none;
+          outside_c <= outside;
+          word_c <= w;
+          dm_q <= dm;
+          outside_q <= outside_c;
+          word_q <= word_c;
+          db_high_q <= $signed({2'b00, word_c[DISP_W-1:0]}) + $signed({2'b00, lr_threshold});
+          db_low_q <= $signed({2'b00, word_c[DISP_W-1:0]}) - $signed({2'b00, lr_threshold});
+          checked_q <= (outside_q || dm_signed > db_high_q || dm_signed < db_low_q) ? INVALID_WORD : word_q;
+        end
+      assign checked_word[q*(DISP_W+1) +: DISP_W+1] = checked_q;
+    end
+  endgenerate
+  // verilator lint_on WIDTH
+endmodule
+`resetall
