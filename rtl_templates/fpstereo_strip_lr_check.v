@@ -9,7 +9,10 @@
 // x - MIN_DISP - D: from the bank of the strip that completed x' (its completing pixel x - D +
 // DMAX - 1) or from the row end; so each word has a copy of every strip's bank and of the row-end
 // RAM, and reads every bank at once, choosing a step later. read_slots are the strips' row slots
-// of the read row (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax.
+// of the read row (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax. The read
+// stream is registered first (its words come from the disparity RAMs' read multiplexer, and the
+// bank addresses are sums of them), so the check takes four steps where the one-pixel check takes
+// three.
 module fpstereo_strip_lr_check #(
   parameter P = 2,
   parameter K = 5,
@@ -66,6 +69,27 @@ module fpstereo_strip_lr_check #(
       fpstereo_invalid_parameters_strip_lr_check_P_STRIP_PIXELS_or_widths failed ();
     end
   endgenerate
+  // The read stream, registered (step 0).
+  reg                   in_done, in_event;
+  reg [X_W-1:0]         in_x;
+  reg [Y_W-1:0]         in_y;
+  reg [P*SLOT_W-1:0]    in_slots;
+  reg [P*(DISP_W+1)-1:0] in_word;
+  always @(posedge clk)
+    if (restart) begin
+      in_done <= 1'b0;
+      in_event <= 1'b0;
+    end else if (adv) begin
+      in_done <= read_done;
+      in_event <= read_event;
+    end
+  always @(posedge clk)
+    if (adv) begin
+      in_x <= read_x;
+      in_y <= read_y;
+      in_slots <= read_slots;
+      in_word <= read_word;
+    end
   // The strip that writes the row ends: the one holding the frame's last pixel (a register: the
   // frame size holds while a frame runs).
   wire [P-1:0] reaches;  // reaches[s]: the frame's last pixel lies in strip s or right of it
@@ -101,7 +125,7 @@ module fpstereo_strip_lr_check #(
   end
   // Positions and disparities against the frame's width and constants: the compares widen them.
   // verilator lint_off WIDTH
-  wire [END_AW-1:0] end_slot = read_slots[end_strip*SLOT_W +: SLOT_W];
+  wire [END_AW-1:0] end_slot = in_slots[end_strip*SLOT_W +: SLOT_W];
   wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
   // Second step's stream (the RAMs' outputs are there), third's (Dm registered), fourth: checked.
   reg            done_c, event_c, done_q, event_q;
@@ -116,8 +140,8 @@ module fpstereo_strip_lr_check #(
       checked_done <= 1'b0;
       checked_event <= 1'b0;
     end else if (adv) begin
-      done_c <= read_done;
-      event_c <= read_event;
+      done_c <= in_done;
+      event_c <= in_event;
       done_q <= done_c;
       event_q <= event_c;
       checked_done <= done_q;
@@ -125,8 +149,8 @@ module fpstereo_strip_lr_check #(
     end
   always @(posedge clk)
     if (adv) begin
-      x_c <= read_x;
-      y_c <= read_y;
+      x_c <= in_x;
+      y_c <= in_y;
       x_q <= x_c;
       y_q <= y_c;
       checked_x <= x_q;
@@ -135,9 +159,9 @@ module fpstereo_strip_lr_check #(
   generate
     for (q = 0; q < P; q = q + 1) begin : word
       localparam [LOG_P-1:0] Q = q;
-      wire [DISP_W:0] w = read_word[q*(DISP_W+1) +: DISP_W+1];
+      wire [DISP_W:0] w = in_word[q*(DISP_W+1) +: DISP_W+1];
       wire [DISP_W-1:0] d = w[DISP_W-1:0];
-      wire [P_W-1:0] x_ahead = {read_x, Q} + AHEAD;
+      wire [P_W-1:0] x_ahead = {in_x, Q} + AHEAD;
       wire [P_W-1:0] d_behind = d + BEHIND;
       wire outside = w[DISP_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
       wire [P_W-1:0] xm_behind = x_ahead - d;  // x' + BEHIND
@@ -146,7 +170,7 @@ module fpstereo_strip_lr_check #(
       wire [LANE_W-1:0] from_end = last_ahead - xm_behind;  // the row-end lane, where it is one
       wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
                   (MIN_DISP < -(DMAX - 1) && xm_behind + (DMAX - 1) < AHEAD);
-      wire [P_W-1:0] completing = {read_x, Q} + (DMAX - 1) - d;  // x - D + DMAX - 1
+      wire [P_W-1:0] completing = {in_x, Q} + (DMAX - 1) - d;  // x - D + DMAX - 1
       // its strip: the last whose first pixel it reaches
       reg [B_W-1:0] bank;
       integer t;
@@ -159,7 +183,7 @@ module fpstereo_strip_lr_check #(
       for (b = 0; b < P; b = b + 1) begin : bank_of_strip
         localparam ROWS = (P - b) * K + 1;
         localparam AW = $clog2(ROWS * R);
-        wire [AW-1:0] raddr = read_slots[b*SLOT_W +: SLOT_W] * R + (completing - b * R);
+        wire [AW-1:0] raddr = in_slots[b*SLOT_W +: SLOT_W] * R + (completing - b * R);
         fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(ROWS * R), .ADDR_W(AW)) completed (
           .clk(clk), .we(completed_we[b]), .waddr(completed_waddr[b*CAW +: AW]),
           .wdata(completed_wdata[b*DISP_W +: DISP_W]), .re(adv), .raddr(raddr), .rdata(banks_q[b*DISP_W +: DISP_W]));

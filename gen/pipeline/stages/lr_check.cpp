@@ -16,7 +16,8 @@ class LrCheckStage : public Stage {
   explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
   std::string title() const override { return "left-right check"; }
   std::vector<std::string> knobs() const override { return {"lr", "lr-threshold", "min-disp"}; }
-  Latency latency(const Geometry&) const override { return {0, 0, 3}; }
+  // In strips fpstereo_strip_lr_check registers the read stream first: a step more.
+  Latency latency(const Geometry& g) const override { return {0, 0, g.strips > 1 ? 4 : 3}; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) return {};  // in strips, the aggregation stage's (fpstereo_strip_lr_check)
     // One lookup of Dm for the check; with the right view a second one for Dm(x).
@@ -33,8 +34,8 @@ class LrCheckStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
-    // In strips fpstereo_strip_aggregation checks the words before they leave it, in the same
-    // three steps (this stage's latency).
+    // In strips fpstereo_strip_aggregation checks the words before they leave it, in this
+    // stage's latency.
     if (d.strips > 1) return;
     const StereoConfig& c = d.cfg;
     const PixelStream in = streams.pixels;
