@@ -1,8 +1,8 @@
 `resetall
 `default_nettype none
 // The left-right check (docs/semantics.md, section 5) over P strips of a row at P words a slot
-// (docs/ppc-hardware.md, "The left-right check in strips"): fpstereo_lr_check's three steps for
-// each of a slot's P words. Strip b's LR1 match side (fpstereo_lr1_match with STRIPS) writes the
+// (docs/ppc-hardware.md, "The left-right check in strips"): fpstereo_lr_check's check for each of
+// a slot's P words. Strip b's LR1 match side (fpstereo_lr1_match with STRIPS) writes the
 // Dm it completes at the completing pixel's place in the strip, row slot * STRIP_PIXELS + x -
 // b * STRIP_PIXELS, its row slots modulo (P - b) * K + 1 (the strip's disparity RAM's), and the
 // strip holding the row's last pixel its row end. Word q of the read slot looks Dm(x') up, x' =
@@ -127,7 +127,7 @@ module fpstereo_strip_lr_check #(
   // verilator lint_off WIDTH
   wire [END_AW-1:0] end_slot = in_slots[end_strip*SLOT_W +: SLOT_W];
   wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
-  // Second step's stream (the RAMs' outputs are there), third's (Dm registered), fourth: checked.
+  // The stream of the step the RAMs' outputs are there (_c), of Dm registered (_q), checked.
   reg            done_c, event_c, done_q, event_q;
   reg [X_W-1:0]  x_c, x_q;
   reg [Y_W-1:0]  y_c, y_q;
