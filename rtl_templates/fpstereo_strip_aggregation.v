@@ -101,7 +101,8 @@ module fpstereo_strip_aggregation #(
   // completed pixels and row ends out per strip; LR1_AW the completed writes' address width
   parameter LR1 = 0,
   parameter LR1_AW = 8,
-  // with OUTPUT: the steps LR1's writes wait, to land with the strips' disparity words
+  // with OUTPUT: the steps LR1's writes wait, to land with the strips' disparity words (the
+  // winner's, the fit's and the confidence's latencies)
   parameter LR1_LAG = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
@@ -350,29 +351,32 @@ module fpstereo_strip_aggregation #(
         end
         /* verilator lint_on PINCONNECTEMPTY */
       end
-      // The words the disparity RAMs take: the winner's, or refined by the sub-pixel fit.
+      // The words the disparity RAMs take: the winner's, or refined by the sub-pixel fit; with
+      // LR1 the refined word carries the whole D below it for the check, {invalid, refined, D}.
+      localparam WHOLE_W = LR1 != 0 && SUBPIXEL_BITS != 0 ? WTA_DISP_W : 0;
+      localparam FIT_W = DISP_W + 1 + WHOLE_W;
       wire [P-1:0] out_active;
       wire [P*X_W-1:0] out_x;
       wire [P*OUT_ROW_W-1:0] out_slot;
-      wire [P*(DISP_W+1)-1:0] out_word;
+      wire [P*FIT_W-1:0] out_word;
       // ... and with CONFIDENCE after the division, with their confidences above them.
-      localparam WORD_W = DISP_W + 1 + 8 * CONFIDENCE;
+      localparam WORD_W = FIT_W + 8 * CONFIDENCE;
       wire [P-1:0] rated_active;
       wire [P*X_W-1:0] rated_x;
       wire [P*OUT_ROW_W-1:0] rated_slot;
       wire [P*WORD_W-1:0] rated_word;
       for (p = 0; p < P; p = p + 1) begin : confidence_of_strip
         if (CONFIDENCE != 0) begin : divided
-          localparam DATA_W = 1 + X_W + OUT_ROW_W + DISP_W + 1;
+          localparam DATA_W = 1 + X_W + OUT_ROW_W + FIT_W;
           wire [7:0] confidence;
-          wire [DISP_W:0] word;
+          wire [FIT_W-1:0] word;
           // The sub-pixel fit, when there, holds the words its latency after the winner's sums.
           fpstereo_confidence #(.SUM_W(SUM_W), .DATA_W(DATA_W),
                                 .IN_DELAY(SUBPIXEL_LAT), .LAT(10)) divider (
             .clk(clk), .restart(restart), .adv(adv), .best(wta_best[p*SUM_W +: SUM_W]),
             .second(wta_second[p*SUM_W +: SUM_W]),
             .data_in({out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W],
-                      out_word[p*(DISP_W+1) +: DISP_W+1]}),
+                      out_word[p*FIT_W +: FIT_W]}),
             .data_out({rated_active[p], rated_x[p*X_W +: X_W], rated_slot[p*OUT_ROW_W +: OUT_ROW_W], word}),
             .confidence(confidence));
           assign rated_word[p*WORD_W +: WORD_W] = {confidence, word};
@@ -380,19 +384,29 @@ module fpstereo_strip_aggregation #(
           assign rated_active[p] = out_active[p];
           assign rated_x[p*X_W +: X_W] = out_x[p*X_W +: X_W];
           assign rated_slot[p*OUT_ROW_W +: OUT_ROW_W] = out_slot[p*OUT_ROW_W +: OUT_ROW_W];
-          assign rated_word[p*WORD_W +: WORD_W] = out_word[p*(DISP_W+1) +: DISP_W+1];
+          assign rated_word[p*WORD_W +: WORD_W] = out_word[p*FIT_W +: FIT_W];
         end
       end
       if (SUBPIXEL_BITS != 0) begin : refined
         for (p = 0; p < P; p = p + 1) begin : fit_of_strip
+          // with LR1 the whole D travels in the fit's tag, below the tag's fields
+          wire [TAG_W-1:0] tag = {wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]};
+          wire [TAG_W+WHOLE_W-1:0] tag_in, tag_out;
+          if (WHOLE_W > 0) begin : carried
+            assign tag_in = {tag, wta_word[p*(WTA_DISP_W+1) +: WHOLE_W]};
+            assign out_word[p*FIT_W +: WHOLE_W] = tag_out[0 +: WHOLE_W];
+          end else begin : alone
+            assign tag_in = tag;
+          end
           fpstereo_subpixel #(.UF(UF), .G(1), .SUM_W(SUM_W), .DMAX(UF), .DISP_W(WTA_DISP_W),
                               .K(SUBPIXEL_BITS), .EQUIANGULAR(EQUIANGULAR), .OUT_W(DISP_W),
-                              .WTA_WORD_LAG(WTA_WORD_LAG), .TAG_W(TAG_W)) fit (
+                              .WTA_WORD_LAG(WTA_WORD_LAG), .TAG_W(TAG_W + WHOLE_W)) fit (
             .clk(clk), .restart(restart), .adv(adv), .sums(sums[p*UF*SUM_W +: UF*SUM_W]),
-            .tag({wta_active[p], wta_x[p*X_W +: X_W], wta_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
+            .tag(tag_in),
             .word(wta_word[p*(WTA_DISP_W+1) +: WTA_DISP_W+1]),
-            .tag_out({out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W]}),
-            .word_out(out_word[p*(DISP_W+1) +: DISP_W+1]));
+            .tag_out(tag_out),
+            .word_out(out_word[p*FIT_W + WHOLE_W +: DISP_W+1]));
+          assign {out_active[p], out_x[p*X_W +: X_W], out_slot[p*OUT_ROW_W +: OUT_ROW_W]} = tag_out[WHOLE_W +: TAG_W];
         end
       end else begin : whole
         if (WTA_DISP_W != DISP_W) begin : invalid_widths
@@ -417,10 +431,8 @@ module fpstereo_strip_aggregation #(
         .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
         .read_word(raster_word), .read_slots(raster_slots));
       if (LR1 != 0) begin : checked
-        if (CONFIDENCE != 0 || SUBPIXEL_BITS != 0) begin : invalid_lr1
-          fpstereo_invalid_parameters_strip_aggregation_LR1_output_without_confidence_or_subpixel_so_far failed ();
-        end
-        fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(DISP_W), .CAW(LR1_AW),
+        fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(WTA_DISP_W),
+                                  .REFINED_W(SUBPIXEL_BITS != 0 ? DISP_W : 0), .CARRY_W(8 * CONFIDENCE), .CAW(LR1_AW),
                                   .SLOT_W(OUT_ROW_W), .X_W(X_W), .Y_W(Y_W), .MIN_DISP(MIN_DISP)) check (
           .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
           .completed_we(lr1_we), .completed_waddr(lr1_waddr), .completed_wdata(lr1_wdata),

@@ -12,13 +12,19 @@
 // of the read row (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax. The read
 // stream is registered first (its words come from the disparity RAMs' read multiplexer, and the
 // bank addresses are sums of them), so the check takes four steps where the one-pixel check takes
-// three.
+// three. As in fpstereo_lr_check, a read word with REFINED_W > 0 carries the refined disparity
+// above the whole D, which the check uses, and leaves as {invalid, refined}; CARRY_W bits above
+// the invalid flag (the confidence) pass unchanged.
 module fpstereo_strip_lr_check #(
   parameter P = 2,
   parameter K = 5,
   parameter STRIP_PIXELS = 20,
   parameter DMAX = 16,
   parameter DISP_W = 4,
+  // bits of the refined disparity carried above D in a read word, 0 without sub-pixel output
+  parameter REFINED_W = 0,
+  // bits carried above a word's invalid flag, unchecked (the confidence)
+  parameter CARRY_W = 0,
   // width of a completed write's address (strip 0's: (P * K + 1) * STRIP_PIXELS words)
   parameter CAW = 9,
   parameter SLOT_W = 5,
@@ -45,12 +51,12 @@ module fpstereo_strip_lr_check #(
   input  wire [X_W-1:0]         read_x,
   input  wire [Y_W-1:0]         read_y,
   input  wire [P*SLOT_W-1:0]    read_slots,
-  input  wire [P*(DISP_W+1)-1:0] read_word,
+  input  wire [P*(CARRY_W+1+REFINED_W+DISP_W)-1:0] read_word,
   output reg                    checked_done,
   output reg                    checked_event,
   output reg  [X_W-1:0]         checked_x,
   output reg  [Y_W-1:0]         checked_y,
-  output wire [P*(DISP_W+1)-1:0] checked_word
+  output wire [P*(CARRY_W+1+(REFINED_W > 0 ? REFINED_W : DISP_W))-1:0] checked_word
 );
   localparam R = STRIP_PIXELS;
   localparam LOG_P = $clog2(P);
@@ -61,7 +67,11 @@ module fpstereo_strip_lr_check #(
   localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
   localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   localparam P_W = X_W + 10;
-  localparam [DISP_W:0] INVALID_WORD = {1'b1, {DISP_W{1'b0}}};
+  localparam IN_W = CARRY_W + 1 + REFINED_W + DISP_W;  // a read word: {carried, invalid, refined, D}
+  localparam INVALID_BIT = REFINED_W + DISP_W;
+  localparam OUT_W = REFINED_W > 0 ? REFINED_W : DISP_W;
+  localparam CHECKED_W = CARRY_W + 1 + OUT_W;  // a checked word: {carried, invalid, refined or D}
+  localparam [OUT_W:0] INVALID_WORD = {1'b1, {OUT_W{1'b0}}};
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || R % P != 0 || (1 << CAW) < END_ROWS * R || END_ROWS > (1 << SLOT_W) ||
@@ -74,7 +84,7 @@ module fpstereo_strip_lr_check #(
   reg [X_W-1:0]         in_x;
   reg [Y_W-1:0]         in_y;
   reg [P*SLOT_W-1:0]    in_slots;
-  reg [P*(DISP_W+1)-1:0] in_word;
+  reg [P*IN_W-1:0]      in_word;
   always @(posedge clk)
     if (restart) begin
       in_done <= 1'b0;
@@ -159,11 +169,11 @@ module fpstereo_strip_lr_check #(
   generate
     for (q = 0; q < P; q = q + 1) begin : word
       localparam [LOG_P-1:0] Q = q;
-      wire [DISP_W:0] w = in_word[q*(DISP_W+1) +: DISP_W+1];
+      wire [IN_W-1:0] w = in_word[q*IN_W +: IN_W];
       wire [DISP_W-1:0] d = w[DISP_W-1:0];
       wire [P_W-1:0] x_ahead = {in_x, Q} + AHEAD;
       wire [P_W-1:0] d_behind = d + BEHIND;
-      wire outside = w[DISP_W] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+      wire outside = w[INVALID_BIT] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
       wire [P_W-1:0] xm_behind = x_ahead - d;  // x' + BEHIND
       // x' from the row end where its completing pixel x - D + DMAX - 1 lies right of the row
       wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
@@ -194,7 +204,8 @@ module fpstereo_strip_lr_check #(
       reg [B_W-1:0]    bank_c;
       reg [LANE_W-1:0] lane_c;
       reg              from_row_end_c, none_c, outside_c, outside_q;
-      reg [DISP_W:0]   word_c, word_q, checked_q;
+      reg [IN_W-1:0]   word_c, word_q;
+      reg [CHECKED_W-1:0] checked_q;
       reg [DISP_W-1:0] dm_q;
       reg signed [DISP_W+1:0] db_high_q, db_low_q;
       wire [DISP_W-1:0] dm = none_c ? {DISP_W{1'b0}} : from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] :
@@ -213,9 +224,12 @@ module fpstereo_strip_lr_check #(
           word_q <= word_c;
           db_high_q <= $signed({2'b00, word_c[DISP_W-1:0]}) + $signed({2'b00, lr_threshold});
           db_low_q <= $signed({2'b00, word_c[DISP_W-1:0]}) - $signed({2'b00, lr_threshold});
-          checked_q <= (outside_q || dm_signed > db_high_q || dm_signed < db_low_q) ? INVALID_WORD : word_q;
+          // the carried bits shifted down to 0 and up above the checked word (none if CARRY_W is 0)
+          checked_q <= ((word_q >> (INVALID_BIT + 1)) << (OUT_W + 1)) |
+                       ((outside_q || dm_signed > db_high_q || dm_signed < db_low_q) ? INVALID_WORD
+                                                                                     : {word_q[INVALID_BIT], word_q[INVALID_BIT-1 -: OUT_W]});
         end
-      assign checked_word[q*(DISP_W+1) +: DISP_W+1] = checked_q;
+      assign checked_word[q*CHECKED_W +: CHECKED_W] = checked_q;
     end
   endgenerate
   // verilator lint_on WIDTH

@@ -50,16 +50,12 @@ void check_hardware_rules(const StereoConfig& cfg) {
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
 // configuration: so far census and rank costs with the paths' sums straight to the winner (with
 // the uniqueness check or not, the sub-pixel fit or not, the confidence or not, adaptive P2 or
-// not, the fused cost or not, any min-disp), LR1 with whole disparities (no right view, confidence
-// or sub-pixel fit with it) and, through the median and gap interpolation or not, out (no LR2,
-// right view or speckle filter). Elsewhere ppc > 1 converts beats to pixels around the one-pixel
-// core.
+// not, the fused cost or not, any min-disp), LR1 and, through the median and gap interpolation
+// or not, out (no LR2, right view or speckle filter). Elsewhere ppc > 1 converts beats to pixels
+// around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
-  // LR1's check in strips takes whole disparities without their confidences so far.
-  const bool check = c.lr == LrCheck::None ||
-                     (c.lr == LrCheck::Lr1 && !c.right_view && !c.confidence && c.subpixel_bits == 0);
-  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) && check &&
-         c.speckle_size == 0;
+  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) &&
+         c.lr != LrCheck::Lr2 && !c.right_view && c.speckle_size == 0;
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct RtlOptions {
 
 // Bits of the confidence (0..255) that rides above each word from the winner-take-all on.
 constexpr int kConfidenceBits = 8;
+// The steps fpstereo_confidence divides in, its word waiting beside.
+constexpr int kConfidenceSteps = 10;
 
 // The clocks fpstereo_speckle takes a word (its first form): a slot of G >= 4 steps gives them.
 constexpr int kSpeckleClocksPerWord = 4;

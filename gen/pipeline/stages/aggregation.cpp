@@ -40,7 +40,7 @@ class AggregationStage : public Stage {
       for (int q = 0; q < g.strips; ++q)
         m.push_back({"core.aggregation.output_order.disparities.strip[" + std::to_string(s) + "].bank[" +
                          std::to_string(q) + "].ram.mem",
-                     (int64_t(g.strips - s) * g.chains + 1) * words, g.widths.output_word});
+                     (int64_t(g.strips - s) * g.chains + 1) * words, g.reorder_ram_bits});
     if (g.cfg.lr == LrCheck::Lr1) {
       // LR1 per strip: its match state (K words); the check's banks, each word's copy of every
       // strip's completed pixels ((P - s) * K + 1 rows of R) and of the row ends (P * K + 1 rows).
@@ -151,7 +151,8 @@ class AggregationStage : public Stage {
                                   {"BASE_WAIT", num(code_base_wait_slots(d))},
                                   {"LR1", lr1 ? "1" : "0"},
                                   {"LR1_AW", num(lr1_bits)},
-                                  {"LR1_LAG", num(d.wta_word_lag)},
+                                  {"LR1_LAG", num(d.wta_word_lag + d.subpixel_steps +
+                                                  (c.confidence ? kConfidenceSteps : 0))},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},

@@ -1,6 +1,6 @@
 // Confidence (fpstereo_confidence): each pixel's 255 (S2 - S1) / S2 from the winner-take-all's two
-// best sums, divided in kSteps steps while its word waits beside; it then travels above the word
-// through the disparity reorder RAM and, rows later, to the output (output.cpp).
+// best sums, divided in kConfidenceSteps while its word waits beside; it then travels above the
+// word through the disparity reorder RAM and, rows later, to the output (output.cpp).
 #include <fmt/core.h>
 
 #include "stage_list.hpp"
@@ -11,10 +11,9 @@ namespace {
 
 class ConfidenceStage : public Stage {
  public:
-  static constexpr int kSteps = 10;
   std::string title() const override { return "confidence"; }
   std::vector<std::string> knobs() const override { return {"confidence"}; }
-  Latency latency(const Geometry&) const override { return {0, 0, kSteps}; }
+  Latency latency(const Geometry&) const override { return {0, 0, kConfidenceSteps}; }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
     if (d.strips > 1) return;  // a divider per strip, in fpstereo_strip_aggregation
@@ -35,7 +34,7 @@ class ConfidenceStage : public Stage {
                   {{"SUM_W", num(d.widths.aggregated)},
                    {"DATA_W", num(data_bits)},
                    {"IN_DELAY", num(d.subpixel_steps)},
-                   {"LAT", num(kSteps)}},
+                   {"LAT", num(kConfidenceSteps)}},
                   {{"best", "winner_best"},
                    {"second", "winner_second"},
                    {"data_in", data(in)},

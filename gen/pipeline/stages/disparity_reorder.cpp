@@ -25,10 +25,11 @@ class DisparityReorderStage : public Stage {
     streams.pixels = {"read_done", "read_event", "read_x", "read_y", "read_word"};
     const bool confidence = d.cfg.confidence;
     if (d.strips > 1) {
-      // The strips' disparity RAMs are read in fpstereo_strip_aggregation, a slot's P words a step.
+      // The strips' disparity RAMs are read in fpstereo_strip_aggregation, a slot's P words a step
+      // (with LR1 checked there: without the whole D the check reads).
       core.text("\n  // The strips' disparity RAMs, read in raster order from step OUT_START.\n");
       start_flag(core, d, *this, "out_on");
-      stream_wires(core, d, streams.pixels, d.strips * d.reorder_word_bits);
+      stream_wires(core, d, streams.pixels, int64_t(d.strips) * d.widths.output_word);
       if (confidence) strip_confidences(core, d);
       return;
     }
@@ -60,7 +61,7 @@ class DisparityReorderStage : public Stage {
   // The strips' words with their confidences above them, split into the slot's words and its
   // confidences (pixel 0 lowest in each).
   static void strip_confidences(CoreBuilder& core, const RtlDesign& d) {
-    const int P = d.strips, word = d.reorder_word_bits, entry = d.reorder_ram_bits;
+    const int P = d.strips, word = d.widths.output_word, entry = word + kConfidenceBits;
     core.wire(kStripConfidentWords, int64_t(P) * entry);
     core.wire("read_confidence", int64_t(P) * kConfidenceBits);
     const auto words = concat_high_to_low(P, [&](int q) { return bit_field(kStripConfidentWords, q * entry, word); });
