@@ -103,7 +103,11 @@ module fpstereo_strip_aggregation #(
   parameter LR1_AW = 8,
   // with OUTPUT: the steps LR1's writes wait, to land with the strips' disparity words (the
   // winner's, the fit's and the confidence's latencies)
-  parameter LR1_LAG = 0
+  parameter LR1_LAG = 0,
+  // with LR1 and OUTPUT: the right view's Dm(x) beside each read word (right_word), the check
+  // VIEW_WAIT steps later (fpstereo_strip_lr_check)
+  parameter RIGHT_VIEW = 0,
+  parameter VIEW_WAIT = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -144,6 +148,7 @@ module fpstereo_strip_aggregation #(
   output wire [X_W-1:0]        read_x,
   output wire [Y_W-1:0]        read_y,
   output wire [P*(DISP_W+1+8*CONFIDENCE)-1:0] read_word,
+  output wire [P*WTA_DISP_W-1:0] right_word,
   // with LR1, strip p's: Dm of the match pixel x - MIN_DISP - (UF - 1) of its pixel x, written at
   // slot * ROW_SLOTS + x - p * ROW_SLOTS; and at the row's last pixel the row end's UF words
   output wire [P-1:0]          lr1_we,
@@ -163,6 +168,9 @@ module fpstereo_strip_aggregation #(
     end
     if (CONFIDENCE != 0 && (UNIQUE == 0 || CONFIDENCE != 1)) begin : invalid_CONFIDENCE
       fpstereo_invalid_parameters_strip_aggregation_CONFIDENCE_needs_UNIQUE failed ();
+    end
+    if (RIGHT_VIEW != 0 && (LR1 == 0 || OUTPUT == 0)) begin : invalid_RIGHT_VIEW
+      fpstereo_invalid_parameters_strip_aggregation_RIGHT_VIEW_needs_LR1_and_OUTPUT failed ();
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
@@ -433,19 +441,21 @@ module fpstereo_strip_aggregation #(
       if (LR1 != 0) begin : checked
         fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(WTA_DISP_W),
                                   .REFINED_W(SUBPIXEL_BITS != 0 ? DISP_W : 0), .CARRY_W(8 * CONFIDENCE), .CAW(LR1_AW),
+                                  .RIGHT_VIEW(RIGHT_VIEW), .VIEW_WAIT(VIEW_WAIT),
                                   .SLOT_W(OUT_ROW_W), .X_W(X_W), .Y_W(Y_W), .MIN_DISP(MIN_DISP)) check (
           .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
           .completed_we(lr1_we), .completed_waddr(lr1_waddr), .completed_wdata(lr1_wdata),
           .row_end_we(lr1_end_we), .row_end_waddr(lr1_end_waddr), .row_end_wdata(lr1_end_wdata),
           .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
           .read_slots(raster_slots), .read_word(raster_word), .checked_done(read_done), .checked_event(read_event),
-          .checked_x(read_x), .checked_y(read_y), .checked_word(read_word));
+          .checked_x(read_x), .checked_y(read_y), .checked_word(read_word), .right_word(right_word));
       end else begin : unchecked
         assign read_done = raster_done;
         assign read_event = raster_event;
         assign read_x = raster_x;
         assign read_y = raster_y;
         assign read_word = raster_word;
+        assign right_word = {(P*WTA_DISP_W){1'b0}};
       end
     end else begin : no_output
       assign read_done = 1'b0;
@@ -453,6 +463,7 @@ module fpstereo_strip_aggregation #(
       assign read_x = {X_W{1'b0}};
       assign read_y = {Y_W{1'b0}};
       assign read_word = {(P*(DISP_W+1+8*CONFIDENCE)){1'b0}};
+      assign right_word = {(P*WTA_DISP_W){1'b0}};
     end
   endgenerate
   /* verilator lint_off UNUSEDSIGNAL */  // the last strip's edge to the right, the first's to the left

@@ -6,15 +6,15 @@
 // Dm it completes at the completing pixel's place in the strip, row slot * STRIP_PIXELS + x -
 // b * STRIP_PIXELS, its row slots modulo (P - b) * K + 1 (the strip's disparity RAM's), and the
 // strip holding the row's last pixel its row end. Word q of the read slot looks Dm(x') up, x' =
-// x - MIN_DISP - D: from the bank of the strip that completed x' (its completing pixel x - D +
-// DMAX - 1) or from the row end; so each word has a copy of every strip's bank and of the row-end
-// RAM, and reads every bank at once, choosing a step later. read_slots are the strips' row slots
-// of the read row (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax. The read
-// stream is registered first (its words come from the disparity RAMs' read multiplexer, and the
-// bank addresses are sums of them), so the check takes four steps where the one-pixel check takes
-// three. As in fpstereo_lr_check, a read word with REFINED_W > 0 carries the refined disparity
+// x - MIN_DISP - D (fpstereo_strip_match_lookup: a copy of every strip's bank and of the row-end
+// RAM per word). read_slots are the strips' row slots of the read row
+// (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax. The read stream is
+// registered first (its words come from the disparity RAMs' read multiplexer, and the bank
+// addresses are sums of them), so the check takes four steps (and VIEW_WAIT) where the one-pixel
+// check takes three. As in fpstereo_lr_check, a read word with REFINED_W > 0 carries the refined disparity
 // above the whole D, which the check uses, and leaves as {invalid, refined}; CARRY_W bits above
-// the invalid flag (the confidence) pass unchanged.
+// the invalid flag (the confidence) pass unchanged. With RIGHT_VIEW each word also looks up
+// Dm(x) itself, which leaves beside the checked word (right_word, the right view's disparity).
 module fpstereo_strip_lr_check #(
   parameter P = 2,
   parameter K = 5,
@@ -30,7 +30,12 @@ module fpstereo_strip_lr_check #(
   parameter SLOT_W = 5,
   parameter X_W = 7,
   parameter Y_W = 6,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter RIGHT_VIEW = 0,
+  // steps the registered read stream waits before the lookups: with RIGHT_VIEW and MIN_DISP > 0,
+  // ceil(MIN_DISP / P), for Dm(x) is completed by x + MIN_DISP + DMAX - 1, MIN_DISP pixels
+  // further right than any pixel the check looks up from x
+  parameter VIEW_WAIT = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -56,14 +61,15 @@ module fpstereo_strip_lr_check #(
   output reg                    checked_event,
   output reg  [X_W-1:0]         checked_x,
   output reg  [Y_W-1:0]         checked_y,
-  output wire [P*(CARRY_W+1+(REFINED_W > 0 ? REFINED_W : DISP_W))-1:0] checked_word
+  output wire [P*(CARRY_W+1+(REFINED_W > 0 ? REFINED_W : DISP_W))-1:0] checked_word,
+  // with RIGHT_VIEW: Dm(checked_x * P + q) for each word q
+  output wire [P*DISP_W-1:0]    right_word
 );
   localparam R = STRIP_PIXELS;
   localparam LOG_P = $clog2(P);
   localparam B_W = P > 1 ? $clog2(P) : 1;
   localparam END_ROWS = P * K + 1;  // strip 0's rows, the most
   localparam END_AW = $clog2(END_ROWS);
-  localparam LANE_W = $clog2(DMAX);
   localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
   localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
   localparam P_W = X_W + 10;
@@ -79,27 +85,44 @@ module fpstereo_strip_lr_check #(
       fpstereo_invalid_parameters_strip_lr_check_P_STRIP_PIXELS_or_widths failed ();
     end
   endgenerate
-  // The read stream, registered (step 0).
-  reg                   in_done, in_event;
-  reg [X_W-1:0]         in_x;
-  reg [Y_W-1:0]         in_y;
-  reg [P*SLOT_W-1:0]    in_slots;
-  reg [P*IN_W-1:0]      in_word;
+  // The read stream, registered (step 0), and VIEW_WAIT steps later the lookups' (in_).
+  reg                   read_done_q, read_event_q;
+  reg [X_W-1:0]         read_x_q;
+  reg [Y_W-1:0]         read_y_q;
+  reg [P*SLOT_W-1:0]    read_slots_q;
+  reg [P*IN_W-1:0]      read_word_q;
   always @(posedge clk)
     if (restart) begin
-      in_done <= 1'b0;
-      in_event <= 1'b0;
+      read_done_q <= 1'b0;
+      read_event_q <= 1'b0;
     end else if (adv) begin
-      in_done <= read_done;
-      in_event <= read_event;
+      read_done_q <= read_done;
+      read_event_q <= read_event;
     end
   always @(posedge clk)
     if (adv) begin
-      in_x <= read_x;
-      in_y <= read_y;
-      in_slots <= read_slots;
-      in_word <= read_word;
+      read_x_q <= read_x;
+      read_y_q <= read_y;
+      read_slots_q <= read_slots;
+      read_word_q <= read_word;
     end
+  wire                  in_done, in_event;
+  wire [X_W-1:0]        in_x;
+  wire [Y_W-1:0]        in_y;
+  wire [P*SLOT_W-1:0]   in_slots;
+  wire [P*IN_W-1:0]     in_word;
+  generate
+    if (VIEW_WAIT > 0) begin : view_wait
+      fpstereo_delay #(.WIDTH(2), .DEPTH(VIEW_WAIT), .RESET(1)) flags (
+        .clk(clk), .rst(restart), .en(adv), .in({read_done_q, read_event_q}), .out({in_done, in_event}));
+      fpstereo_delay #(.WIDTH(X_W + Y_W + P * SLOT_W + P * IN_W), .DEPTH(VIEW_WAIT)) stream (
+        .clk(clk), .rst(1'b0), .en(adv), .in({read_x_q, read_y_q, read_slots_q, read_word_q}),
+        .out({in_x, in_y, in_slots, in_word}));
+    end else begin : at_once
+      assign {in_done, in_event, in_x, in_y, in_slots, in_word} =
+          {read_done_q, read_event_q, read_x_q, read_y_q, read_slots_q, read_word_q};
+    end
+  endgenerate
   // The strip that writes the row ends: the one holding the frame's last pixel (a register: the
   // frame size holds while a frame runs).
   wire [P-1:0] reaches;  // reaches[s]: the frame's last pixel lies in strip s or right of it
@@ -136,7 +159,6 @@ module fpstereo_strip_lr_check #(
   // Positions and disparities against the frame's width and constants: the compares widen them.
   // verilator lint_off WIDTH
   wire [END_AW-1:0] end_slot = in_slots[end_strip*SLOT_W +: SLOT_W];
-  wire [P_W-1:0] last_ahead = frame_width - 1 + AHEAD;
   // The stream of the step the RAMs' outputs are there (_c), of Dm registered (_q), checked.
   reg            done_c, event_c, done_q, event_q;
   reg [X_W-1:0]  x_c, x_q;
@@ -174,49 +196,22 @@ module fpstereo_strip_lr_check #(
       wire [P_W-1:0] x_ahead = {in_x, Q} + AHEAD;
       wire [P_W-1:0] d_behind = d + BEHIND;
       wire outside = w[INVALID_BIT] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
-      wire [P_W-1:0] xm_behind = x_ahead - d;  // x' + BEHIND
-      // x' from the row end where its completing pixel x - D + DMAX - 1 lies right of the row
-      wire from_row_end = xm_behind + (DMAX - 1) > last_ahead;
-      wire [LANE_W-1:0] from_end = last_ahead - xm_behind;  // the row-end lane, where it is one
-      wire none = (MIN_DISP > 0 && xm_behind > last_ahead) ||
-                  (MIN_DISP < -(DMAX - 1) && xm_behind + (DMAX - 1) < AHEAD);
-      wire [P_W-1:0] completing = {in_x, Q} + (DMAX - 1) - d;  // x - D + DMAX - 1
-      // its strip: the last whose first pixel it reaches
-      reg [B_W-1:0] bank;
-      integer t;
-      always @* begin
-        bank = {B_W{1'b0}};
-        for (t = 1; t < P; t = t + 1)
-          if (completing >= t * R) bank = t[B_W-1:0];
-      end
-      wire [P*DISP_W-1:0] banks_q;
-      for (b = 0; b < P; b = b + 1) begin : bank_of_strip
-        localparam ROWS = (P - b) * K + 1;
-        localparam AW = $clog2(ROWS * R);
-        wire [AW-1:0] raddr = in_slots[b*SLOT_W +: SLOT_W] * R + (completing - b * R);
-        fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(ROWS * R), .ADDR_W(AW)) completed (
-          .clk(clk), .we(completed_we[b]), .waddr(completed_waddr[b*CAW +: AW]),
-          .wdata(completed_wdata[b*DISP_W +: DISP_W]), .re(adv), .raddr(raddr), .rdata(banks_q[b*DISP_W +: DISP_W]));
-      end
-      wire [DMAX*DISP_W-1:0] end_q;
-      fpstereo_ram_sdp #(.WIDTH(DMAX*DISP_W), .DEPTH(END_ROWS), .ADDR_W(END_AW)) row_end (
-        .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata), .re(adv), .raddr(end_slot), .rdata(end_q));
-      reg [B_W-1:0]    bank_c;
-      reg [LANE_W-1:0] lane_c;
-      reg              from_row_end_c, none_c, outside_c, outside_q;
+      wire [DISP_W-1:0] dm;
+      fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
+                                    .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP)) lookup (
+        .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
+        .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
+        .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
+        .xm_behind(x_ahead - d),  // x' + BEHIND
+        .completing({in_x, Q} + (DMAX - 1) - d), .dm(dm));  // x - D + DMAX - 1
+      reg              outside_c, outside_q;
       reg [IN_W-1:0]   word_c, word_q;
       reg [CHECKED_W-1:0] checked_q;
       reg [DISP_W-1:0] dm_q;
       reg signed [DISP_W+1:0] db_high_q, db_low_q;
-      wire [DISP_W-1:0] dm = none_c ? {DISP_W{1'b0}} : from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] :
-                             banks_q[bank_c * DISP_W +: DISP_W];
       wire signed [DISP_W+1:0] dm_signed = $signed({2'b00, dm_q});
       always @(posedge clk)
         if (adv) begin
-          bank_c <= bank;
-          lane_c <= from_end;
-          from_row_end_c <= from_row_end;
-          none_c <= none;
           outside_c <= outside;
           word_c <= w;
           dm_q <= dm;
@@ -230,6 +225,25 @@ module fpstereo_strip_lr_check #(
                                                                                      : {word_q[INVALID_BIT], word_q[INVALID_BIT-1 -: OUT_W]});
         end
       assign checked_word[q*CHECKED_W +: CHECKED_W] = checked_q;
+      if (RIGHT_VIEW != 0) begin : right_view
+        // Dm(x): x' + BEHIND = x + BEHIND, completed by x + MIN_DISP + DMAX - 1
+        wire [DISP_W-1:0] dm_right;
+        fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
+                                      .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP)) lookup (
+          .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
+          .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
+          .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
+          .xm_behind({in_x, Q} + BEHIND), .completing({in_x, Q} + (MIN_DISP + DMAX - 1)), .dm(dm_right));
+        reg [DISP_W-1:0] dm_right_q, right_q;
+        always @(posedge clk)
+          if (adv) begin
+            dm_right_q <= dm_right;
+            right_q <= dm_right_q;
+          end
+        assign right_word[q*DISP_W +: DISP_W] = right_q;
+      end else begin : no_right_view
+        assign right_word[q*DISP_W +: DISP_W] = {DISP_W{1'b0}};
+      end
     end
   endgenerate
   // verilator lint_on WIDTH

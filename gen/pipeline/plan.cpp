@@ -50,12 +50,12 @@ void check_hardware_rules(const StereoConfig& cfg) {
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
 // configuration: so far census and rank costs with the paths' sums straight to the winner (with
 // the uniqueness check or not, the sub-pixel fit or not, the confidence or not, adaptive P2 or
-// not, the fused cost or not, any min-disp), LR1 and, through the median and gap interpolation
-// or not, out (no LR2, right view or speckle filter). Elsewhere ppc > 1 converts beats to pixels
-// around the one-pixel core.
+// not, the fused cost or not, any min-disp), LR1 with the right view or not and, through the
+// median and gap interpolation or not, out (no LR2 or speckle filter). Elsewhere ppc > 1 converts
+// beats to pixels around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
   return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) &&
-         c.lr != LrCheck::Lr2 && !c.right_view && c.speckle_size == 0;
+         c.lr != LrCheck::Lr2 && c.speckle_size == 0;
 }
 
 }  // namespace

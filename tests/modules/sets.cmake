@@ -154,13 +154,13 @@ modtb_set(strip_aggregation strip_aggregation_out_p4 TOP fpstereo_strip_aggregat
 # ... and with LR1 on to the left-right check at P words a slot (fpstereo_strip_lr_check: the
 # strips' completed pixels banked by strip, a copy per word).
 modtb_set(strip_aggregation strip_aggregation_lr1_out_p2 TOP fpstereo_strip_aggregation
-          SOURCES ${MODTB_STRIP_OUT_SOURCES} fpstereo_lr1_match.v fpstereo_strip_lr_check.v
+          SOURCES ${MODTB_STRIP_OUT_SOURCES} fpstereo_lr1_match.v fpstereo_strip_lr_check.v fpstereo_strip_match_lookup.v
           PARAMS P=2 W=40 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=6 COST_ROW_W=4
           SLOT_ROWS=10 SLOT_W=4 OUTPUT=1 DISP_W=4 WTA_TREE_LAT=2 COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10
           LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=4 COST_ROWS=16 Y_W=6 K_W=3 COST_AW=9 CODES=1 CODE_W=12
           COST_LEAD=4 RAM=1 LR1=1 LR1_AW=8 LR1_LAG=4)
 modtb_set(strip_aggregation strip_aggregation_lr1_out_p4 TOP fpstereo_strip_aggregation
-          SOURCES ${MODTB_STRIP_OUT_SOURCES} fpstereo_lr1_match.v fpstereo_strip_lr_check.v
+          SOURCES ${MODTB_STRIP_OUT_SOURCES} fpstereo_lr1_match.v fpstereo_strip_lr_check.v fpstereo_strip_match_lookup.v
           PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 COST_ROW_W=5
           SLOT_ROWS=60 SLOT_W=6 OUTPUT=1 DISP_W=4 WTA_TREE_LAT=2 COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10
           LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=5 COST_ROWS=16 Y_W=6 K_W=3 COST_AW=9 CODES=1 CODE_W=12

@@ -48,14 +48,17 @@ class AggregationStage : public Stage {
       for (int s = 0; s < g.strips; ++s)
         m.push_back({"core.aggregation.lr1_match_side.lr1_of_strip[" + std::to_string(s) + "].lr1_match.entries.mem",
                      g.chains, state_bits, false});
+      // With the right view each word looks Dm(x) up too, from copies of its own.
       const std::string check = "core.aggregation.output_order.checked.check.word[";
-      for (int q = 0; q < g.strips; ++q) {
-        for (int s = 0; s < g.strips; ++s)
-          m.push_back({check + std::to_string(q) + "].bank_of_strip[" + std::to_string(s) + "].completed.mem",
-                       (int64_t(g.strips - s) * g.chains + 1) * g.row_slots, g.widths.disparity});
-        m.push_back({check + std::to_string(q) + "].row_end.mem", int64_t(g.strips) * g.chains + 1,
-                     int64_t(g.cfg.uf) * g.widths.disparity});
-      }
+      for (int q = 0; q < g.strips; ++q)
+        for (const std::string lookup : {"].lookup.", "].right_view.lookup."}) {
+          if (lookup != "].lookup." && !g.cfg.right_view) break;
+          const std::string at = check + std::to_string(q) + lookup;
+          for (int s = 0; s < g.strips; ++s)
+            m.push_back({at + "bank_of_strip[" + std::to_string(s) + "].completed.mem",
+                         (int64_t(g.strips - s) * g.chains + 1) * g.row_slots, g.widths.disparity});
+          m.push_back({at + "row_end.mem", int64_t(g.strips) * g.chains + 1, int64_t(g.cfg.uf) * g.widths.disparity});
+        }
     }
     return m;
   }
@@ -131,6 +134,7 @@ class AggregationStage : public Stage {
     core.wire("strip_lr1_end_we", P);
     core.wire("strip_lr1_end_waddr", int64_t(P) * d.out_row_bits);
     core.wire("strip_lr1_end_wdata", int64_t(P) * c.uf * w.disparity);
+    core.wire("right_dm", int64_t(P) * w.disparity);  // the right view reads it
     // The aggregators' parameters but the groups (G = 1 in strips), and the strips' own.
     Connections parameters;
     for (const auto& p : aggregator_parameters(d))
@@ -153,6 +157,8 @@ class AggregationStage : public Stage {
                                   {"LR1_AW", num(lr1_bits)},
                                   {"LR1_LAG", num(d.wta_word_lag + d.subpixel_steps +
                                                   (c.confidence ? kConfidenceSteps : 0))},
+                                  {"RIGHT_VIEW", c.right_view ? "1" : "0"},
+                                  {"VIEW_WAIT", num(right_view_wait_slots(d))},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},
@@ -178,6 +184,7 @@ class AggregationStage : public Stage {
                    {"uniqueness", c.uniqueness != 0 ? "uniqueness" : "7'd0"},
                    {"lr_threshold", lr1 ? "lr_threshold" : "4'd0"},
                    {"read_word", c.confidence ? kStripConfidentWords : "read_word"},
+                   {"right_word", "right_dm"},
                    {"lr1_we", "strip_lr1_we"},
                    {"lr1_waddr", "strip_lr1_waddr"},
                    {"lr1_wdata", "strip_lr1_wdata"},

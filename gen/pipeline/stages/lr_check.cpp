@@ -16,8 +16,11 @@ class LrCheckStage : public Stage {
   explicit LrCheckStage(const StereoConfig& c) : row_end_(c.lr == LrCheck::Lr1) {}
   std::string title() const override { return "left-right check"; }
   std::vector<std::string> knobs() const override { return {"lr", "lr-threshold", "min-disp"}; }
-  // In strips fpstereo_strip_lr_check registers the read stream first: a step more.
-  Latency latency(const Geometry& g) const override { return {0, 0, g.strips > 1 ? 4 : 3}; }
+  // In strips fpstereo_strip_lr_check registers the read stream first: a step more, and with the
+  // right view above min-disp 0 its lookups wait.
+  Latency latency(const Geometry& g) const override {
+    return {0, 0, g.strips > 1 ? 4 + right_view_wait_slots(g) : 3};
+  }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) return {};  // in strips, the aggregation stage's (fpstereo_strip_lr_check)
     // One lookup of Dm for the check; with the right view a second one for Dm(x).

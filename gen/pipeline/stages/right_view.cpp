@@ -19,7 +19,7 @@ class RightViewStage : public Stage {
     const PixelStream& s = streams.pixels;
     core.text("\n  // Right view: Dm(x) registered, pushed to its own output in the next step.\n");
     if (d.cfg.median == 0 && !d.cfg.gap_interpolation) {
-      output_register(core, "view", s, s.event, "right_dm", d.widths.disparity);
+      output_register(core, "view", s, s.event, "right_dm", d.widths.disparity * d.strips);
       return;
     }
     // With a median or gap interpolation the stream runs rows past the frame (their lookahead):
@@ -34,7 +34,7 @@ class RightViewStage : public Stage {
                            s.event, s.x, s.y),
                {}, {{"view_beyond", 1}});
     output_register(core, "view", s, fmt::format("{} && {} < frame_height && !view_beyond", s.event, s.y), "right_dm",
-                    d.widths.disparity);
+                    d.widths.disparity * d.strips);
   }
   // ---- HLS: lr_check writes the right view's words; the pipeline's stream is named as the core's
   // output (output_streams).

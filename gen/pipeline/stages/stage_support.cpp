@@ -80,6 +80,10 @@ int code_base_wait_slots(const Geometry& g) {
   return !g.reorders_codes || g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
 }
 
+int right_view_wait_slots(const Geometry& g) {
+  return g.strips == 1 || !g.cfg.right_view || g.cfg.min_disp <= 0 ? 0 : (g.cfg.min_disp + g.strips - 1) / g.strips;
+}
+
 int chain_prefix_entries(const Geometry& g) {
   return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
 }

@@ -42,6 +42,11 @@ int window_columns(const Geometry& g);
 // later. 0 otherwise.
 int code_base_wait_slots(const Geometry& g);
 
+// In strips with the right view and min-disp m above 0, the slots the left-right check's lookups
+// wait (fpstereo_strip_lr_check's VIEW_WAIT): Dm(x) is completed m pixels further right than
+// anything the check looks up from x, so ceil(m / P). 0 otherwise.
+int right_view_wait_slots(const Geometry& g);
+
 // With min-disp m below 0, the match entries a row's first pixel needs left of its own match pixel
 // -m: min(-m, dmax - 1) of them, fpstereo_chain_cost's PREFIX (the cost reorder stage holds them).
 int chain_prefix_entries(const Geometry& g);
