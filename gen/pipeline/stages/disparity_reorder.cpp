@@ -26,7 +26,7 @@ class DisparityReorderStage : public Stage {
     const bool confidence = d.cfg.confidence;
     if (d.strips > 1) {
       // The strips' disparity RAMs are read in fpstereo_strip_aggregation, a slot's P words a step
-      // (with LR1 checked there: without the whole D the check reads).
+      // (with LR1 checked there, so the words leave without the whole D the check compares).
       core.text("\n  // The strips' disparity RAMs, read in raster order from step OUT_START.\n");
       start_flag(core, d, *this, "out_on");
       stream_wires(core, d, streams.pixels, int64_t(d.strips) * d.widths.output_word);
