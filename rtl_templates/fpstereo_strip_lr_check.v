@@ -57,10 +57,10 @@ module fpstereo_strip_lr_check #(
   input  wire [Y_W-1:0]         read_y,
   input  wire [P*SLOT_W-1:0]    read_slots,
   input  wire [P*(CARRY_W+1+REFINED_W+DISP_W)-1:0] read_word,
-  output reg                    checked_done,
-  output reg                    checked_event,
-  output reg  [X_W-1:0]         checked_x,
-  output reg  [Y_W-1:0]         checked_y,
+  output wire                   checked_done,
+  output wire                   checked_event,
+  output wire [X_W-1:0]         checked_x,
+  output wire [Y_W-1:0]         checked_y,
   output wire [P*(CARRY_W+1+(REFINED_W > 0 ? REFINED_W : DISP_W))-1:0] checked_word,
   // with RIGHT_VIEW: Dm(checked_x * P + q) for each word q
   output wire [P*DISP_W-1:0]    right_word
@@ -85,44 +85,17 @@ module fpstereo_strip_lr_check #(
       fpstereo_invalid_parameters_strip_lr_check_P_STRIP_PIXELS_or_widths failed ();
     end
   endgenerate
-  // The read stream, registered (step 0), and VIEW_WAIT steps later the lookups' (in_).
-  reg                   read_done_q, read_event_q;
-  reg [X_W-1:0]         read_x_q;
-  reg [Y_W-1:0]         read_y_q;
-  reg [P*SLOT_W-1:0]    read_slots_q;
-  reg [P*IN_W-1:0]      read_word_q;
-  always @(posedge clk)
-    if (restart) begin
-      read_done_q <= 1'b0;
-      read_event_q <= 1'b0;
-    end else if (adv) begin
-      read_done_q <= read_done;
-      read_event_q <= read_event;
-    end
-  always @(posedge clk)
-    if (adv) begin
-      read_x_q <= read_x;
-      read_y_q <= read_y;
-      read_slots_q <= read_slots;
-      read_word_q <= read_word;
-    end
+  // The read stream, registered (step 0) and VIEW_WAIT steps more: the lookups' (in_).
   wire                  in_done, in_event;
   wire [X_W-1:0]        in_x;
   wire [Y_W-1:0]        in_y;
   wire [P*SLOT_W-1:0]   in_slots;
   wire [P*IN_W-1:0]     in_word;
-  generate
-    if (VIEW_WAIT > 0) begin : view_wait
-      fpstereo_delay #(.WIDTH(2), .DEPTH(VIEW_WAIT), .RESET(1)) flags (
-        .clk(clk), .rst(restart), .en(adv), .in({read_done_q, read_event_q}), .out({in_done, in_event}));
-      fpstereo_delay #(.WIDTH(X_W + Y_W + P * SLOT_W + P * IN_W), .DEPTH(VIEW_WAIT)) stream (
-        .clk(clk), .rst(1'b0), .en(adv), .in({read_x_q, read_y_q, read_slots_q, read_word_q}),
-        .out({in_x, in_y, in_slots, in_word}));
-    end else begin : at_once
-      assign {in_done, in_event, in_x, in_y, in_slots, in_word} =
-          {read_done_q, read_event_q, read_x_q, read_y_q, read_slots_q, read_word_q};
-    end
-  endgenerate
+  fpstereo_delay #(.WIDTH(2), .DEPTH(1 + VIEW_WAIT), .RESET(1)) read_flags (
+    .clk(clk), .rst(restart), .en(adv), .in({read_done, read_event}), .out({in_done, in_event}));
+  fpstereo_delay #(.WIDTH(X_W + Y_W + P * SLOT_W + P * IN_W), .DEPTH(1 + VIEW_WAIT)) read_stream (
+    .clk(clk), .rst(1'b0), .en(adv), .in({read_x, read_y, read_slots, read_word}),
+    .out({in_x, in_y, in_slots, in_word}));
   // The strip that writes the row ends: the one holding the frame's last pixel (a register: the
   // frame size holds while a frame runs).
   wire [P-1:0] reaches;  // reaches[s]: the frame's last pixel lies in strip s or right of it
@@ -159,35 +132,12 @@ module fpstereo_strip_lr_check #(
   // Positions and disparities against the frame's width and constants: the compares widen them.
   // verilator lint_off WIDTH
   wire [END_AW-1:0] end_slot = in_slots[end_strip*SLOT_W +: SLOT_W];
-  // The stream of the step the RAMs' outputs are there (_c), of Dm registered (_q), checked.
-  reg            done_c, event_c, done_q, event_q;
-  reg [X_W-1:0]  x_c, x_q;
-  reg [Y_W-1:0]  y_c, y_q;
-  always @(posedge clk)
-    if (restart) begin
-      done_c <= 1'b0;
-      event_c <= 1'b0;
-      done_q <= 1'b0;
-      event_q <= 1'b0;
-      checked_done <= 1'b0;
-      checked_event <= 1'b0;
-    end else if (adv) begin
-      done_c <= in_done;
-      event_c <= in_event;
-      done_q <= done_c;
-      event_q <= event_c;
-      checked_done <= done_q;
-      checked_event <= event_q;
-    end
-  always @(posedge clk)
-    if (adv) begin
-      x_c <= in_x;
-      y_c <= in_y;
-      x_q <= x_c;
-      y_q <= y_c;
-      checked_x <= x_q;
-      checked_y <= y_q;
-    end
+  // The stream's tag beside the three steps of the words: the RAMs' outputs there, Dm
+  // registered, checked.
+  fpstereo_delay #(.WIDTH(2), .DEPTH(3), .RESET(1)) checked_flags (
+    .clk(clk), .rst(restart), .en(adv), .in({in_done, in_event}), .out({checked_done, checked_event}));
+  fpstereo_delay #(.WIDTH(X_W + Y_W), .DEPTH(3)) checked_tag (
+    .clk(clk), .rst(1'b0), .en(adv), .in({in_x, in_y}), .out({checked_x, checked_y}));
   generate
     for (q = 0; q < P; q = q + 1) begin : word
       localparam [LOG_P-1:0] Q = q;
