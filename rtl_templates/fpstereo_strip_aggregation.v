@@ -24,7 +24,9 @@
 // (fpstereo_confidence, from fpstereo_wta_unique's two best sums: UNIQUE must be set), and its
 // words to fpstereo_strip_disparity_reorder, read from out_on on in raster order a slot of P pixels
 // a step, each word with its confidence above it (the strips' OUT_ROWS are then (P - p) * K + 1
-// and the parameter is unused).
+// and the parameter is unused). With LR1 each strip's LR1 match side writes the Dm it completes
+// (dm_*); with MATCH_SIDE the module is LR2's match side instead (below), and with LR2 the check
+// takes that instance's writes (match_dm_*).
 module fpstereo_strip_aggregation #(
   parameter P = 2,
   parameter W = 64,
@@ -107,7 +109,17 @@ module fpstereo_strip_aggregation #(
   // with LR1 and OUTPUT: the right view's Dm(x) beside each read word (right_word), the check
   // VIEW_WAIT steps later (fpstereo_strip_lr_check)
   parameter RIGHT_VIEW = 0,
-  parameter VIEW_WAIT = 0
+  parameter VIEW_WAIT = 0,
+  // 1: LR2's match side (docs/ppc-hardware.md, "LR2 in strips"), without OUTPUT: the entries are
+  // the match image's ({base entry, match entry} swapped, MIN_DISP = -(min-disp + UF - 1)), so
+  // lane l holds the match side's index UF - 1 - l; each strip's winner over the lanes turned
+  // back (no uniqueness) is Dm(x') of its pixel x', written on dm_* at slot * ROW_SLOTS + x' -
+  // p * ROW_SLOTS DM_LAG (3 or more) steps after the winner, the row slots those of the base
+  // side's strip ((P - p) * K + 1 rows)
+  parameter MATCH_SIDE = 0,
+  parameter DM_LAG = 3,
+  // 1, with OUTPUT: LR2, whose check reads the match side's writes (match_dm_*) as LR1's
+  parameter LR2 = 0
   /* verilator lint_on UNUSEDPARAM */
 ) (
   input  wire                  clk,
@@ -151,12 +163,19 @@ module fpstereo_strip_aggregation #(
   output wire [P*WTA_DISP_W-1:0] right_word,
   // with LR1, strip p's: Dm of the match pixel x - MIN_DISP - (UF - 1) of its pixel x, written at
   // slot * ROW_SLOTS + x - p * ROW_SLOTS; and at the row's last pixel the row end's UF words
-  output wire [P-1:0]          lr1_we,
-  output wire [P*LR1_AW-1:0]   lr1_waddr,
-  output wire [P*WTA_DISP_W-1:0] lr1_wdata,
-  output wire [P-1:0]          lr1_end_we,
-  output wire [P*OUT_ROW_W-1:0] lr1_end_waddr,
-  output wire [P*UF*WTA_DISP_W-1:0] lr1_end_wdata
+  // (with MATCH_SIDE: Dm of its own pixels, no row end)
+  output wire [P-1:0]          dm_we,
+  output wire [P*LR1_AW-1:0]   dm_waddr,
+  output wire [P*WTA_DISP_W-1:0] dm_wdata,
+  output wire [P-1:0]          dm_end_we,
+  output wire [P*OUT_ROW_W-1:0] dm_end_waddr,
+  output wire [P*UF*WTA_DISP_W-1:0] dm_end_wdata,
+  // with LR2: the match side's dm_* writes
+  /* verilator lint_off UNUSEDSIGNAL */  // without LR2
+  input  wire [P-1:0]          match_dm_we,
+  input  wire [P*LR1_AW-1:0]   match_dm_waddr,
+  input  wire [P*WTA_DISP_W-1:0] match_dm_wdata
+  /* verilator lint_on UNUSEDSIGNAL */
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -169,8 +188,12 @@ module fpstereo_strip_aggregation #(
     if (CONFIDENCE != 0 && (UNIQUE == 0 || CONFIDENCE != 1)) begin : invalid_CONFIDENCE
       fpstereo_invalid_parameters_strip_aggregation_CONFIDENCE_needs_UNIQUE failed ();
     end
-    if (RIGHT_VIEW != 0 && (LR1 == 0 || OUTPUT == 0)) begin : invalid_RIGHT_VIEW
-      fpstereo_invalid_parameters_strip_aggregation_RIGHT_VIEW_needs_LR1_and_OUTPUT failed ();
+    if (RIGHT_VIEW != 0 && (LR1 + LR2 != 1 || OUTPUT == 0)) begin : invalid_RIGHT_VIEW
+      fpstereo_invalid_parameters_strip_aggregation_RIGHT_VIEW_needs_LR1_or_LR2_and_OUTPUT failed ();
+    end
+    if ((MATCH_SIDE != 0 && (OUTPUT != 0 || LR1 != 0 || LR2 != 0 || CODES == 0 || EXTRA_W != 0 || DM_LAG < 3)) ||
+        (LR2 != 0 && (OUTPUT == 0 || LR1 != 0))) begin : invalid_LR2
+      fpstereo_invalid_parameters_strip_aggregation_MATCH_SIDE_is_alone_with_CODES_LR2_needs_OUTPUT failed ();
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
@@ -210,7 +233,7 @@ module fpstereo_strip_aggregation #(
   wire [(P+1)*EDGE_W-1:0]   edge_left;   // edge_left[p]: from strip p + 1 to strip p
   assign edge_right[0 +: 2*EDGE_W] = 0;
   assign edge_left[P*EDGE_W +: EDGE_W] = 0;
-  genvar p;
+  genvar p, l;
   generate
     for (p = 0; p < P; p = p + 1) begin : strip
       wire on, wrapped_p;
@@ -257,7 +280,8 @@ module fpstereo_strip_aggregation #(
       fpstereo_aggregator #(.W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(1), .UF(UF),
                             .COST_W(COST_W), .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(SUM_W), .PATHS(PATHS),
                             .MATCH_SIDE(0), .PENALTIES(PENALTIES), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
-                            .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUTPUT != 0 ? (P - p) * K + 1 : OUT_ROWS),
+                            .PATH_TREE_LAT(PATH_TREE_LAT),
+                            .OUT_ROWS(OUTPUT != 0 || MATCH_SIDE != 0 ? (P - p) * K + 1 : OUT_ROWS),
                             .OUT_ROW_W(OUT_ROW_W),
                             .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(1), .K_W(K_W),
                             .COST_ROWS(RAM != 0 ? (p + 1) * K : COST_ROWS), .COST_ROW_W(COST_ROW_W),
@@ -303,25 +327,82 @@ module fpstereo_strip_aggregation #(
             .clk(clk), .rst(restart), .en(adv), .in({we, end_we}), .out(flags));
           fpstereo_delay #(.WIDTH(DATA_W), .DEPTH(LR1_LAG)) data_lag (
             .clk(clk), .rst(1'b0), .en(adv), .in({waddr, wdata, end_waddr, end_wdata}),
-            .out({lr1_waddr[p*LR1_AW +: LR1_AW], lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W],
-                  lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]}));
-          assign lr1_we[p] = adv && flags[1];
-          assign lr1_end_we[p] = adv && flags[0];
+            .out({dm_waddr[p*LR1_AW +: LR1_AW], dm_wdata[p*WTA_DISP_W +: WTA_DISP_W],
+                  dm_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], dm_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]}));
+          assign dm_we[p] = adv && flags[1];
+          assign dm_end_we[p] = adv && flags[0];
         end else begin : at_once
-          assign lr1_we[p] = we;
-          assign lr1_end_we[p] = end_we;
-          assign {lr1_waddr[p*LR1_AW +: LR1_AW], lr1_wdata[p*WTA_DISP_W +: WTA_DISP_W],
-                  lr1_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], lr1_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]} =
+          assign dm_we[p] = we;
+          assign dm_end_we[p] = end_we;
+          assign {dm_waddr[p*LR1_AW +: LR1_AW], dm_wdata[p*WTA_DISP_W +: WTA_DISP_W],
+                  dm_end_waddr[p*OUT_ROW_W +: OUT_ROW_W], dm_end_wdata[p*UF*WTA_DISP_W +: UF*WTA_DISP_W]} =
                  {waddr, wdata, end_waddr, end_wdata};
         end
       end
+    end else if (MATCH_SIDE != 0) begin : lr2_match_side
+      // Each strip's winner over its lanes turned back (lane l: index UF - 1 - l), its write's
+      // address in two steps (the row's first word, then the sum), and DM_LAG - 2 steps more.
+      localparam TAG_W = 1 + X_W + OUT_ROW_W;
+      localparam DATA_W = LR1_AW + WTA_DISP_W;
+      for (p = 0; p < P; p = p + 1) begin : winner_of_strip
+        wire [UF*SUM_W-1:0] turned;
+        for (l = 0; l < UF; l = l + 1) begin : lane
+          assign turned[l*SUM_W +: SUM_W] = sums[(p*UF + UF - 1 - l)*SUM_W +: SUM_W];
+        end
+        wire won;
+        wire [X_W-1:0] won_x;
+        wire [OUT_ROW_W-1:0] won_slot;
+        /* verilator lint_off UNUSEDSIGNAL */  // the never-set invalid flag
+        wire [WTA_DISP_W:0] won_word;
+        /* verilator lint_on UNUSEDSIGNAL */
+        /* verilator lint_off PINCONNECTEMPTY */
+        fpstereo_wta #(.UF(UF), .SUM_W(SUM_W), .DISP_W(WTA_DISP_W), .LANE_W(WTA_DISP_W), .G_W(1), .TAG_W(TAG_W),
+                       .LEVELS_PER_STAGE(WTA_LEVELS_PER_STAGE), .TREE_LAT(WTA_TREE_LAT)) wta (
+          .clk(clk), .restart(restart), .adv(adv), .sums(turned), .group(1'b0),
+          .tag({sums_active[p], sums_x[p*X_W +: X_W], sums_slot[p*OUT_ROW_W +: OUT_ROW_W]}), .group_out(),
+          .tag_out({won, won_x, won_slot}), .word(won_word));
+        /* verilator lint_on PINCONNECTEMPTY */
+        localparam integer X_BASE = p * ROW_SLOTS;
+        reg                  won_q = 1'b0, at_q = 1'b0;
+        reg [LR1_AW-1:0]     row_first_q, column_q, at_addr_q;
+        reg [WTA_DISP_W-1:0] dm_q, at_dm_q;
+        always @(posedge clk)
+          if (restart) begin
+            won_q <= 1'b0;
+            at_q <= 1'b0;
+          end else if (adv) begin
+            won_q <= won;
+            at_q <= won_q;
+          end
+        // The address is a product of narrow values and constants, cut to the address width.
+        /* verilator lint_off WIDTH */
+        always @(posedge clk)
+          if (adv) begin
+            row_first_q <= won_slot * ROW_SLOTS;
+            column_q <= won_x - X_BASE;
+            dm_q <= won_word[WTA_DISP_W-1:0];
+            at_addr_q <= row_first_q + column_q;
+            at_dm_q <= dm_q;
+          end
+        /* verilator lint_on WIDTH */
+        wire lagged_we;
+        fpstereo_delay #(.WIDTH(1), .DEPTH(DM_LAG - 2), .RESET(1)) flag_lag (
+          .clk(clk), .rst(restart), .en(adv), .in(at_q), .out(lagged_we));
+        fpstereo_delay #(.WIDTH(DATA_W), .DEPTH(DM_LAG - 2)) data_lag (
+          .clk(clk), .rst(1'b0), .en(adv), .in({at_addr_q, at_dm_q}),
+          .out({dm_waddr[p*LR1_AW +: LR1_AW], dm_wdata[p*WTA_DISP_W +: WTA_DISP_W]}));
+        assign dm_we[p] = adv && lagged_we;
+      end
+      assign dm_end_we = 0;
+      assign dm_end_waddr = 0;
+      assign dm_end_wdata = 0;
     end else begin : no_lr1
-      assign lr1_we = 0;
-      assign lr1_waddr = 0;
-      assign lr1_wdata = 0;
-      assign lr1_end_we = 0;
-      assign lr1_end_waddr = 0;
-      assign lr1_end_wdata = 0;
+      assign dm_we = 0;
+      assign dm_waddr = 0;
+      assign dm_wdata = 0;
+      assign dm_end_we = 0;
+      assign dm_end_waddr = 0;
+      assign dm_end_wdata = 0;
     end
   endgenerate
   generate
@@ -360,8 +441,8 @@ module fpstereo_strip_aggregation #(
         /* verilator lint_on PINCONNECTEMPTY */
       end
       // The words the disparity RAMs take: the winner's, or refined by the sub-pixel fit; with
-      // LR1 the refined word carries the whole D below it for the check, {invalid, refined, D}.
-      localparam WHOLE_W = LR1 != 0 && SUBPIXEL_BITS != 0 ? WTA_DISP_W : 0;
+      // LR1 or LR2 the refined word carries the whole D below it for the check, {invalid, refined, D}.
+      localparam WHOLE_W = (LR1 != 0 || LR2 != 0) && SUBPIXEL_BITS != 0 ? WTA_DISP_W : 0;
       localparam FIT_W = DISP_W + 1 + WHOLE_W;
       wire [P-1:0] out_active;
       wire [P*X_W-1:0] out_x;
@@ -438,14 +519,18 @@ module fpstereo_strip_aggregation #(
         .frame_height(frame_height), .active(rated_active), .x(rated_x), .slot(rated_slot), .word(rated_word),
         .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
         .read_word(raster_word), .read_slots(raster_slots));
-      if (LR1 != 0) begin : checked
-        fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(WTA_DISP_W),
+      if (LR1 != 0 || LR2 != 0) begin : checked
+        // LR2: the match side's writes, every match pixel's, no row ends
+        wire [P-1:0]            check_we = LR2 != 0 ? match_dm_we : dm_we;
+        wire [P*LR1_AW-1:0]     check_waddr = LR2 != 0 ? match_dm_waddr : dm_waddr;
+        wire [P*WTA_DISP_W-1:0] check_wdata = LR2 != 0 ? match_dm_wdata : dm_wdata;
+        fpstereo_strip_lr_check #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .DMAX(UF), .DISP_W(WTA_DISP_W), .LR2(LR2),
                                   .REFINED_W(SUBPIXEL_BITS != 0 ? DISP_W : 0), .CARRY_W(8 * CONFIDENCE), .CAW(LR1_AW),
                                   .RIGHT_VIEW(RIGHT_VIEW), .VIEW_WAIT(VIEW_WAIT),
                                   .SLOT_W(OUT_ROW_W), .X_W(X_W), .Y_W(Y_W), .MIN_DISP(MIN_DISP)) check (
           .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .lr_threshold(lr_threshold),
-          .completed_we(lr1_we), .completed_waddr(lr1_waddr), .completed_wdata(lr1_wdata),
-          .row_end_we(lr1_end_we), .row_end_waddr(lr1_end_waddr), .row_end_wdata(lr1_end_wdata),
+          .completed_we(check_we), .completed_waddr(check_waddr), .completed_wdata(check_wdata),
+          .row_end_we(dm_end_we), .row_end_waddr(dm_end_waddr), .row_end_wdata(dm_end_wdata),
           .read_done(raster_done), .read_event(raster_event), .read_x(raster_x), .read_y(raster_y),
           .read_slots(raster_slots), .read_word(raster_word), .checked_done(read_done), .checked_event(read_event),
           .checked_x(read_x), .checked_y(read_y), .checked_word(read_word), .right_word(right_word));

@@ -15,6 +15,8 @@
 // above the whole D, which the check uses, and leaves as {invalid, refined}; CARRY_W bits above
 // the invalid flag (the confidence) pass unchanged. With RIGHT_VIEW each word also looks up
 // Dm(x) itself, which leaves beside the checked word (right_word, the right view's disparity).
+// With LR2 the writes are LR2's match side's (fpstereo_strip_aggregation's MATCH_SIDE): strip b
+// writes Dm(x') of its own pixels x' at their places in the strip, and no row ends.
 module fpstereo_strip_lr_check #(
   parameter P = 2,
   parameter K = 5,
@@ -31,10 +33,13 @@ module fpstereo_strip_lr_check #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter MIN_DISP = 0,
+  // 1: the writes are LR2's match side's, each at its match pixel's place (no row ends)
+  parameter LR2 = 0,
   parameter RIGHT_VIEW = 0,
-  // steps the registered read stream waits before the lookups: with RIGHT_VIEW and MIN_DISP > 0,
-  // ceil(MIN_DISP / P), for Dm(x) is completed by x + MIN_DISP + DMAX - 1, MIN_DISP pixels
-  // further right than any pixel the check looks up from x
+  // steps the registered read stream waits before the lookups: with LR1, RIGHT_VIEW and
+  // MIN_DISP > 0, ceil(MIN_DISP / P), for Dm(x) is completed by x + MIN_DISP + DMAX - 1, MIN_DISP
+  // pixels further right than any pixel the check looks up from x; with LR2, the steps the match
+  // side's writes land after the base side's words
   parameter VIEW_WAIT = 0
 ) (
   input  wire                   clk,
@@ -148,12 +153,13 @@ module fpstereo_strip_lr_check #(
       wire outside = w[INVALID_BIT] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
       wire [DISP_W-1:0] dm;
       fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
-                                    .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP)) lookup (
+                                    .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
         .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
         .xm_behind(x_ahead - d),  // x' + BEHIND
-        .completing({in_x, Q} + (DMAX - 1) - d), .dm(dm));  // x - D + DMAX - 1
+        // LR1: x - D + DMAX - 1; LR2: x' = x - MIN_DISP - D
+        .completing(LR2 != 0 ? x_ahead - d_behind : {in_x, Q} + (DMAX - 1) - d), .dm(dm));
       reg              outside_c, outside_q;
       reg [IN_W-1:0]   word_c, word_q;
       reg [CHECKED_W-1:0] checked_q;
@@ -176,14 +182,15 @@ module fpstereo_strip_lr_check #(
         end
       assign checked_word[q*CHECKED_W +: CHECKED_W] = checked_q;
       if (RIGHT_VIEW != 0) begin : right_view
-        // Dm(x): x' + BEHIND = x + BEHIND, completed by x + MIN_DISP + DMAX - 1
+        // Dm(x): x' + BEHIND = x + BEHIND, completed by x + MIN_DISP + DMAX - 1 (LR2: at x)
         wire [DISP_W-1:0] dm_right;
         fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
-                                      .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP)) lookup (
+                                      .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
           .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
           .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
           .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
-          .xm_behind({in_x, Q} + BEHIND), .completing({in_x, Q} + (MIN_DISP + DMAX - 1)), .dm(dm_right));
+          .xm_behind({in_x, Q} + BEHIND),
+          .completing(LR2 != 0 ? {in_x, Q} : {in_x, Q} + (MIN_DISP + DMAX - 1)), .dm(dm_right));
         reg [DISP_W-1:0] dm_right_q, right_q;
         always @(posedge clk)
           if (adv) begin

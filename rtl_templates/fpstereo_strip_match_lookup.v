@@ -9,7 +9,9 @@
 // one holding the completing pixel picked in the second step. x' reads the row end where its
 // completing pixel lies right of the row (from the row-end RAM, P * K + 1 rows), and is 0 where
 // no base pixel of the row meets it. slots: the strips' row slots of the row read (row end:
-// end_slot, the strip's that wrote the row end).
+// end_slot, the strip's that wrote the row end). With LR2 the banks hold LR2's match side's Dm of
+// every match pixel at its own place (strip b: its pixels x', completing = x'), and there is no row
+// end.
 module fpstereo_strip_match_lookup #(
   parameter P = 2,
   parameter K = 5,
@@ -19,7 +21,8 @@ module fpstereo_strip_match_lookup #(
   parameter CAW = 9,
   parameter SLOT_W = 5,
   parameter X_W = 7,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter LR2 = 0
 ) (
   input  wire                 clk,
   input  wire                 adv,
@@ -29,13 +32,15 @@ module fpstereo_strip_match_lookup #(
   input  wire [P*CAW-1:0]     completed_waddr,
   /* verilator lint_on UNUSEDSIGNAL */
   input  wire [P*DISP_W-1:0]  completed_wdata,
-  // the row-end write, the writing strip's
+  // the row-end write, the writing strip's (unused with LR2)
+  /* verilator lint_off UNUSEDSIGNAL */
   input  wire                 end_we,
   input  wire [$clog2(P*K+1)-1:0] end_waddr,
   input  wire [DMAX*DISP_W-1:0] end_wdata,
   // first step
   input  wire [P*SLOT_W-1:0]  slots,
   input  wire [$clog2(P*K+1)-1:0] end_slot,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [X_W+9:0]       xm_behind,
   input  wire [X_W+9:0]       completing,
   // second step
@@ -77,8 +82,14 @@ module fpstereo_strip_match_lookup #(
     end
   endgenerate
   wire [DMAX*DISP_W-1:0] end_q;
-  fpstereo_ram_sdp #(.WIDTH(DMAX*DISP_W), .DEPTH(END_ROWS), .ADDR_W(END_AW)) row_end (
-    .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata), .re(adv), .raddr(end_slot), .rdata(end_q));
+  generate
+    if (LR2 == 0) begin : with_row_end
+      fpstereo_ram_sdp #(.WIDTH(DMAX*DISP_W), .DEPTH(END_ROWS), .ADDR_W(END_AW)) row_end (
+        .clk(clk), .we(end_we), .waddr(end_waddr), .wdata(end_wdata), .re(adv), .raddr(end_slot), .rdata(end_q));
+    end else begin : without_row_end
+      assign end_q = {DMAX*DISP_W{1'b0}};
+    end
+  endgenerate
   reg [B_W-1:0]    bank_c;
   reg [LANE_W-1:0] lane_c;
   reg              from_row_end_c, none_c;
@@ -86,8 +97,8 @@ module fpstereo_strip_match_lookup #(
     if (adv) begin
       bank_c <= bank;
       lane_c <= from_end;
-      from_row_end_c <= from_row_end;
-      none_c <= none;
+      from_row_end_c <= LR2 == 0 && from_row_end;
+      none_c <= LR2 == 0 && none;
     end
   assign dm = none_c ? {DISP_W{1'b0}} : from_row_end_c ? end_q[lane_c * DISP_W +: DISP_W] :
               banks_q[bank_c * DISP_W +: DISP_W];

@@ -3,8 +3,10 @@
 # connections of the wrong width (scripts/port-widths.sh: iverilog -g2005 and Yosys hierarchy
 # -check, no warning), linted with `verilator --lint-only -Wall` and verified bit-exact in
 # Verilator (scripts/verify-rtl.sh) on a small frame with idle cycles and backpressure.
-#   scripts/random-rtl.sh [--build-dir B] [--tb-opt N] SEED [COUNT]
-# COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
+#   scripts/random-rtl.sh [--build-dir B] [--tb-opt N] [--strips] SEED [COUNT]
+# --strips draws configurations whose core takes ppc pixels a clock in strips (census or rank,
+# uf = dmax, ppc 2 or 4, rows wide enough for the strips; docs/ppc-hardware.md), which the general
+# draw reaches rarely. COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
 # invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
 # configuration with its flags, so a failure can be repeated with verify-rtl.sh alone (or, for a
 # port width, fpstereo-rtl -o DIR and port-widths.sh DIR). --tb-opt goes to verify-rtl.sh. Exits
@@ -22,6 +24,11 @@ if [ "${1:-}" = --tb-opt ]; then
   [[ "${2:-}" =~ ^[0-3]$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2 or 3"
   tb_opt=$2
   shift 2
+fi
+strips=0
+if [ "${1:-}" = --strips ]; then
+  strips=1
+  shift
 fi
 seed=${1:-}
 count=${2:-1}
@@ -46,11 +53,19 @@ draw() {
   for d in 1 2 3 4 6 8 12 16 24 32 48 64; do (( dmax % d == 0 )) && divisors+=("$d"); done
   for p in 0 45 90 135; do (( RANDOM % 2 )) && paths+=("$p"); done
   [ ${#paths[@]} -gt 0 ] || { pick 0 45 90 135; paths=("$REPLY"); }
-  flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
-         --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 17 - 8)))
-  add --uf "${divisors[@]}"
-  local uf=$REPLY
-  add --cost census rank sad zsad shd
+  if (( strips )); then
+    # ppc strips of segments of 3 pixels at least: rows of 48 to 127 pixels, frames that follow on.
+    flags=(--width $((48 + RANDOM % 80)) --height $((10 + RANDOM % 17)) --dmax "$dmax" --uf "$dmax"
+           --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 41 - 20)))
+    local uf=$dmax
+    add --cost census rank
+  else
+    flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
+           --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 17 - 8)))
+    add --uf "${divisors[@]}"
+    local uf=$REPLY
+    add --cost census rank sad zsad shd
+  fi
   add --window 3 5 7
   add --shd-window 1 3 5
   add --p2-adapt 0 0 3 8
@@ -72,7 +87,9 @@ draw() {
     add --speckle-range 0 1 2
   fi
   # Pixels per beat need uf = dmax (a width that is not a whole number of beats is redrawn).
-  if (( uf == dmax )); then
+  if (( strips )); then
+    add --ppc 2 4
+  elif (( uf == dmax )); then
     add --ppc 1 2 4
   fi
 }

@@ -47,15 +47,18 @@ void check_hardware_rules(const StereoConfig& cfg) {
                       ": the 180-degree path is not in the hardware generators yet (the models have it); drop 180");
 }
 
+// LR2's match side in strips holds a row's prefix from the row's slot ceil((m + dmax - 1) / P)
+// (its min-disp is -(m + dmax - 1), lr2_match_min_disp), which must lie in the row: rows of
+// dmax + |m| + P - 1 pixels at least (not dmax + |m|).
+int lr2_strip_min_width(const StereoConfig& c) { return c.dmax + std::abs(c.min_disp) + c.ppc - 1; }
+
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
-// configuration: so far census and rank costs with the paths' sums straight to the winner (with
-// the uniqueness check or not, the sub-pixel fit or not, the confidence or not, adaptive P2 or
-// not, the fused cost or not, any min-disp), LR1 with the right view or not and, through the
-// median and gap interpolation or not, out (no LR2 or speckle filter). Elsewhere ppc > 1 converts
-// beats to pixels around the one-pixel core.
+// configuration: so far census and rank costs, with every option the hardware takes at ppc > 1
+// (not the speckle filter, which needs uf < dmax). Elsewhere ppc > 1 converts beats to pixels
+// around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
   return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) &&
-         c.lr != LrCheck::Lr2 && c.speckle_size == 0;
+         (c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c));
 }
 
 }  // namespace
@@ -72,7 +75,8 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.options = options;
   // The smallest run-time size the golden model accepts with this dmax (config.cpp, validate),
   // and a row that holds the whole search range (above).
-  g.min_width = std::max(8, cfg.dmax + std::abs(cfg.min_disp));
+  g.min_width = std::max(8, strip_options(cfg) && cfg.lr == LrCheck::Lr2 ? lr2_strip_min_width(cfg)
+                                                                          : cfg.dmax + std::abs(cfg.min_disp));
   g.min_width += (cfg.ppc - g.min_width % cfg.ppc) % cfg.ppc;  // rows are whole beats
   g.min_height = 4;
   g.widths = derive_widths(cfg);
@@ -159,7 +163,9 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
   g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
   g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
-  g.reorders_codes = point_cost && cfg.lr != LrCheck::Lr2;
+  // LR2's match side reads cost words at one pixel a clock (fpstereo_lr2_match's lane banks), and
+  // code entries of its own in strips.
+  g.reorders_codes = point_cost && (cfg.lr != LrCheck::Lr2 || g.strips > 1);
   if (g.reorders_codes) {
     g.code_entry_bits = std::max(1, g.widths.code) + (cfg.fused_weight != 0 ? g.widths.fused_feature : 0);
     g.cost_lead = 2 + g.cost_latency;

@@ -228,18 +228,18 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
       // LR1's writes of this step (combinational, from the sums' registers): a completed match
       // pixel, or the row end's match pixels width - 1 - e.
       for (int s = 0; s < p.P && p.LR1 != 0 && p.OUTPUT == 0; ++s) {
-        if (modtb::get_bits(m.lr1_we, s, 1)) {
-          const uint64_t addr = modtb::get_bits(m.lr1_waddr, s * p.LR1_AW, p.LR1_AW);
+        if (modtb::get_bits(m.dm_we, s, 1)) {
+          const uint64_t addr = modtb::get_bits(m.dm_waddr, s * p.LR1_AW, p.LR1_AW);
           const int y = int(addr / uint64_t(R)), xm = s * R + int(addr % uint64_t(R)) - (dmax - 1);
           const std::string where = "strip " + std::to_string(s) + " Dm(" + std::to_string(xm) + ", " + std::to_string(y) + ")";
           if (check.require(cycle, where + " lies in the frame", y < height && xm >= 0 && xm + dmax <= width)) {
             ++matched[{y, xm}];
             check.expect(cycle, where, uint64_t(match_side(y, xm, dmax - 1)),
-                         modtb::get_bits(m.lr1_wdata, s * p.DISP_W, p.DISP_W));
+                         modtb::get_bits(m.dm_wdata, s * p.DISP_W, p.DISP_W));
           }
         }
-        if (!modtb::get_bits(m.lr1_end_we, s, 1)) continue;
-        const int y = int(modtb::get_bits(m.lr1_end_waddr, s * p.OUT_ROW_W, p.OUT_ROW_W));
+        if (!modtb::get_bits(m.dm_end_we, s, 1)) continue;
+        const int y = int(modtb::get_bits(m.dm_end_waddr, s * p.OUT_ROW_W, p.OUT_ROW_W));
         if (!check.require(cycle, "strip " + std::to_string(s) + " row end of row " + std::to_string(y) + " in the frame",
                            y < height))
           continue;
@@ -247,7 +247,7 @@ int run_strip_aggregation(const char* name, const StripParams& p, const modtb::O
           const int xm = width - 1 - e;
           if (e < dmax - 1) ++matched[{y, xm}];  // e = dmax - 1 is the completed pixel's
           check.expect(cycle, "strip " + std::to_string(s) + " row end Dm(" + std::to_string(xm) + ", " + std::to_string(y) + ")",
-                       uint64_t(match_side(y, xm, e)), modtb::get_bits(m.lr1_end_wdata, (s * dmax + e) * p.DISP_W, p.DISP_W));
+                       uint64_t(match_side(y, xm, e)), modtb::get_bits(m.dm_end_wdata, (s * dmax + e) * p.DISP_W, p.DISP_W));
         }
       }
       // The sums of this step (registers: they changed at the edge just taken). With OUTPUT the

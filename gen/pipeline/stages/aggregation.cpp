@@ -41,25 +41,29 @@ class AggregationStage : public Stage {
         m.push_back({"core.aggregation.output_order.disparities.strip[" + std::to_string(s) + "].bank[" +
                          std::to_string(q) + "].ram.mem",
                      (int64_t(g.strips - s) * g.chains + 1) * words, g.reorder_ram_bits});
+    if (g.cfg.lr == LrCheck::None) return m;
     if (g.cfg.lr == LrCheck::Lr1) {
-      // LR1 per strip: its match state (K words); the check's banks, each word's copy of every
-      // strip's completed pixels ((P - s) * K + 1 rows of R) and of the row ends (P * K + 1 rows).
+      // LR1 per strip: its match state (K words).
       const int64_t state_bits = int64_t(g.cfg.uf) * (g.widths.aggregated + g.widths.disparity);
       for (int s = 0; s < g.strips; ++s)
         m.push_back({"core.aggregation.lr1_match_side.lr1_of_strip[" + std::to_string(s) + "].lr1_match.entries.mem",
                      g.chains, state_bits, false});
-      // With the right view each word looks Dm(x) up too, from copies of its own.
-      const std::string check = "core.aggregation.output_order.checked.check.word[";
-      for (int q = 0; q < g.strips; ++q)
-        for (const std::string lookup : {"].lookup.", "].right_view.lookup."}) {
-          if (lookup != "].lookup." && !g.cfg.right_view) break;
-          const std::string at = check + std::to_string(q) + lookup;
-          for (int s = 0; s < g.strips; ++s)
-            m.push_back({at + "bank_of_strip[" + std::to_string(s) + "].completed.mem",
-                         (int64_t(g.strips - s) * g.chains + 1) * g.row_slots, g.widths.disparity});
-          m.push_back({at + "row_end.mem", int64_t(g.strips) * g.chains + 1, int64_t(g.cfg.uf) * g.widths.disparity});
-        }
     }
+    // The check's banks: each word's copy of every strip's Dm ((P - s) * K + 1 rows of R), with
+    // LR1 of the row ends too (P * K + 1 rows). With the right view each word looks Dm(x) up
+    // too, from copies of its own.
+    const std::string check = "core.aggregation.output_order.checked.check.word[";
+    for (int q = 0; q < g.strips; ++q)
+      for (const std::string lookup : {"].lookup.", "].right_view.lookup."}) {
+        if (lookup != "].lookup." && !g.cfg.right_view) break;
+        const std::string at = check + std::to_string(q) + lookup;
+        for (int s = 0; s < g.strips; ++s)
+          m.push_back({at + "bank_of_strip[" + std::to_string(s) + "].completed.mem",
+                       (int64_t(g.strips - s) * g.chains + 1) * g.row_slots, g.widths.disparity});
+        if (g.cfg.lr == LrCheck::Lr1)
+          m.push_back({at + "with_row_end.row_end.mem", int64_t(g.strips) * g.chains + 1,
+                       int64_t(g.cfg.uf) * g.widths.disparity});
+      }
     return m;
   }
 
@@ -125,15 +129,16 @@ class AggregationStage : public Stage {
     core.wire("strip_slot", int64_t(P) * d.out_row_bits);
     // With LR1 its match side per strip and the check, inside fpstereo_strip_aggregation
     // (docs/ppc-hardware.md, "The left-right check in strips"); the match side's writes, which the
-    // check takes there, are not read here. Strip 0's completed pixels take the most address bits.
-    const bool lr1 = c.lr == LrCheck::Lr1;
-    const int lr1_bits = lr1 ? clog2((int64_t(P) * d.chains + 1) * d.row_slots) : 1;
-    core.wire("strip_lr1_we", P);
-    core.wire("strip_lr1_waddr", int64_t(P) * lr1_bits);
-    core.wire("strip_lr1_wdata", int64_t(P) * w.disparity);
-    core.wire("strip_lr1_end_we", P);
-    core.wire("strip_lr1_end_waddr", int64_t(P) * d.out_row_bits);
-    core.wire("strip_lr1_end_wdata", int64_t(P) * c.uf * w.disparity);
+    // check takes there, are not read here. With LR2 the check there takes the LR2 match stage's
+    // writes. Strip 0's Dm take the most address bits.
+    const bool lr1 = c.lr == LrCheck::Lr1, lr2 = c.lr == LrCheck::Lr2;
+    const int dm_bits = lr1 || lr2 ? clog2((int64_t(P) * d.chains + 1) * d.row_slots) : 1;
+    core.wire("strip_dm_we", P);
+    core.wire("strip_dm_waddr", int64_t(P) * dm_bits);
+    core.wire("strip_dm_wdata", int64_t(P) * w.disparity);
+    core.wire("strip_dm_end_we", P);
+    core.wire("strip_dm_end_waddr", int64_t(P) * d.out_row_bits);
+    core.wire("strip_dm_end_wdata", int64_t(P) * c.uf * w.disparity);
     core.wire("right_dm", int64_t(P) * w.disparity);  // the right view reads it
     // The aggregators' parameters but the groups (G = 1 in strips), and the strips' own.
     Connections parameters;
@@ -154,11 +159,12 @@ class AggregationStage : public Stage {
                                   {"EXTRA_LAT", num(d.cost_latency)},
                                   {"BASE_WAIT", num(code_base_wait_slots(d))},
                                   {"LR1", lr1 ? "1" : "0"},
-                                  {"LR1_AW", num(lr1_bits)},
+                                  {"LR2", lr2 ? "1" : "0"},
+                                  {"LR1_AW", num(dm_bits)},
                                   {"LR1_LAG", num(d.wta_word_lag + d.subpixel_steps +
                                                   (c.confidence ? kConfidenceSteps : 0))},
                                   {"RIGHT_VIEW", c.right_view ? "1" : "0"},
-                                  {"VIEW_WAIT", num(right_view_wait_slots(d))},
+                                  {"VIEW_WAIT", num(check_wait_slots(d))},
                                   {"OUTPUT", "1"},
                                   {"DISP_W", num(w.output_word - 1)},
                                   {"UNIQUE", unique ? "1" : "0"},
@@ -182,15 +188,18 @@ class AggregationStage : public Stage {
                    {"sums_chain", "strip_chain"},
                    {"sums_slot", "strip_slot"},
                    {"uniqueness", c.uniqueness != 0 ? "uniqueness" : "7'd0"},
-                   {"lr_threshold", lr1 ? "lr_threshold" : "4'd0"},
+                   {"lr_threshold", lr1 || lr2 ? "lr_threshold" : "4'd0"},
                    {"read_word", c.confidence ? kStripConfidentWords : "read_word"},
                    {"right_word", "right_dm"},
-                   {"lr1_we", "strip_lr1_we"},
-                   {"lr1_waddr", "strip_lr1_waddr"},
-                   {"lr1_wdata", "strip_lr1_wdata"},
-                   {"lr1_end_we", "strip_lr1_end_we"},
-                   {"lr1_end_waddr", "strip_lr1_end_waddr"},
-                   {"lr1_end_wdata", "strip_lr1_end_wdata"}});
+                   {"dm_we", "strip_dm_we"},
+                   {"dm_waddr", "strip_dm_waddr"},
+                   {"dm_wdata", "strip_dm_wdata"},
+                   {"dm_end_we", "strip_dm_end_we"},
+                   {"dm_end_waddr", "strip_dm_end_waddr"},
+                   {"dm_end_wdata", "strip_dm_end_wdata"},
+                   {"match_dm_we", lr2 ? "lr2_dm_we" : fmt::format("{}'d0", P)},
+                   {"match_dm_waddr", lr2 ? "lr2_dm_waddr" : fmt::format("{}'d0", int64_t(P) * dm_bits)},
+                   {"match_dm_wdata", lr2 ? "lr2_dm_wdata" : fmt::format("{}'d0", int64_t(P) * w.disparity)}});
   }
 
   // The costs of the code entries, in the order the aggregator reads them (fpstereo_chain_cost).

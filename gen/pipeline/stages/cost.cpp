@@ -25,9 +25,14 @@ class CostStage : public Stage {
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
   // fpstereo_cost_history); the lanes take their register stages (with the fused cost, the term's).
+  // In strips the costs follow the code RAMs (fpstereo_chain_cost), whose writes wait only for
+  // adaptive P2's penalties (fpstereo_strip_code_reorder's EXTRA_LAT): without them the lanes'
+  // steps are not waited for here. (A strip reads a slot's word up to the row-time's end; reads
+  // more than K steps behind the writes found a strip's last word overwritten where SEG = P: the
+  // fused cost's four steps did, at 64 x 24, dmax 16, ppc 4.)
   Latency latency(const Geometry& g) const override {
     const Latency wait = base_wait(g);
-    return {wait.rows, 1 + wait.slots, g.cost_latency};
+    return {wait.rows, 1 + wait.slots, g.strips > 1 && g.penalty_bits == 0 ? 0 : g.cost_latency};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (cost_ != CostFunction::Shd) return {};

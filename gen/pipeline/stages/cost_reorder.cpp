@@ -102,7 +102,7 @@ class CostReorderStage : public Stage {
                    {"raddr", "cost_raddr"},
                    {"q", "code_q"},
                    {"extra_q", "code_penalties"}});
-    prefix(d, core, match);
+    prefix(d, core, match, d.cfg.min_disp, "");
   }
 
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
@@ -128,7 +128,7 @@ class CostReorderStage : public Stage {
       base = "entry_base";
       match = "entry_match";
     }
-    const std::string turned = strip_match_entries(d, core, match);
+    const std::string turned = strip_match_entries(d, core, match, d.cfg.min_disp, "");
     core.wire("code_we", 1);
     core.wire("code_slot", d.x_bits);
     core.wire("code_row", d.cost_row_bits);
@@ -149,68 +149,87 @@ class CostReorderStage : public Stage {
                            "  assign code_extra = {};\n",
                            write, data, extra),
                {"code_we", "code_slot", "code_row", "code_data", "code_extra"});
-    prefix(d, core, match);
+    prefix(d, core, match, d.cfg.min_disp, "");
+    if (d.cfg.lr != LrCheck::Lr2) return;
+    // LR2's match side (the LR2 match stage): the same writes with base and match swapped, its
+    // min-disp lr2_match_min_disp, into RAMs of its own.
+    core.text("  // LR2's match side's code writes: base and match entries swapped.\n");
+    const int m = lr2_match_min_disp(d);
+    const std::string match_turned = strip_match_entries(d, core, base, m, "lr2_");
+    core.wire("lr2_code_data", int64_t(2 * entry_bits) * P);
+    core.logic(fmt::format("  assign lr2_code_data = {};\n", concat_high_to_low(P, [&](int q) {
+                             return bit_field(match_turned, int64_t(q) * entry_bits, entry_bits) + ", " +
+                                    bit_field(match, int64_t(q) * entry_bits, entry_bits);
+                           })),
+               {"lr2_code_data"});
+    prefix(d, core, base, m, "lr2_");
   }
 
   // The prefix, taken from the row's match slots as they pass and held from the slot whose entries
   // are written with the row's first (slot code_base_wait_slots) until the next row's, so that the
-  // chain that begins the row (in strips, strip 0's) reads it then.
-  static void prefix(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
-    const int n = chain_prefix_entries(d), P = d.strips, entry_bits = d.code_entry_bits;
-    core.wire("code_prefix", int64_t(std::max(1, n)) * entry_bits);
+  // chain that begins the row (in strips, strip 0's) reads it then. For min-disp m; its nets'
+  // names begin with `names` (LR2's match side: "lr2_").
+  static void prefix(const RtlDesign& d, CoreBuilder& core, const std::string& match, int m,
+                     const std::string& names) {
+    const int n = chain_prefix_entries(d, m), P = d.strips, entry_bits = d.code_entry_bits;
+    const std::string out = names + "code_prefix", pixels = names + "prefix_pixels", held = names + "prefix_held";
+    core.wire(out, int64_t(std::max(1, n)) * entry_bits);
     if (n == 0) {
-      core.logic(fmt::format("  assign code_prefix = {}'d0;\n", entry_bits), {"code_prefix"});
+      core.logic(fmt::format("  assign {} = {}'d0;\n", out, entry_bits), {out});
       return;
     }
     // Match pixels first .. a - 1, kept in that order (prefix_pixels), held in the reverse.
-    const int a = -d.cfg.min_disp, first = a - n;
+    const int a = -m, first = a - n;
     const int64_t bits = int64_t(n) * entry_bits;
     std::string text = fmt::format("  // The row's match pixels {} to {}, held for its first pixel.\n"
-                                   "  reg [{}:0] prefix_pixels;\n  reg [{}:0] prefix_held;\n"
+                                   "  reg [{}:0] {};\n  reg [{}:0] {};\n"
                                    "  always @(posedge clk)\n    if (shift) begin\n",
-                                   first, a - 1, bits - 1, bits - 1);
+                                   first, a - 1, bits - 1, pixels, bits - 1, held);
     for (int slot = first / P; slot <= (a - 1) / P; ++slot) {
       const int from = std::max(first, slot * P), to = std::min(a - 1, slot * P + P - 1);  // its pixels
-      text += fmt::format("      if (transform_x == {}'d{}) prefix_pixels[{}:{}] <= {}[{}:{}];\n", d.x_bits, slot,
+      text += fmt::format("      if (transform_x == {}'d{}) {}[{}:{}] <= {}[{}:{}];\n", d.x_bits, slot, pixels,
                           int64_t(to - first + 1) * entry_bits - 1, int64_t(from - first) * entry_bits, match,
                           int64_t(to - slot * P + 1) * entry_bits - 1, int64_t(from - slot * P) * entry_bits);
     }
     // Entry i: match pixel a - 1 - i.
-    const std::string held = concat_high_to_low(
-        n, [&](int i) { return bit_field("prefix_pixels", int64_t(a - 1 - i - first) * entry_bits, entry_bits); });
-    text += fmt::format("      if (transform_x == {}'d{}) prefix_held <= {};\n    end\n"
-                        "  assign code_prefix = prefix_held;\n",
-                        d.x_bits, code_base_wait_slots(d), held);
-    core.logic(text, {"code_prefix"}, {{"prefix_pixels", bits}, {"prefix_held", bits}});
+    const std::string entries = concat_high_to_low(
+        n, [&](int i) { return bit_field(pixels, int64_t(a - 1 - i - first) * entry_bits, entry_bits); });
+    text += fmt::format("      if (transform_x == {}'d{}) {} <= {};\n    end\n"
+                        "  assign {} = {};\n",
+                        d.x_bits, code_base_wait_slots(d, m), held, entries, out, held);
+    core.logic(text, {out}, {{pixels, bits}, {held, bits}});
   }
 
   // The match entries that go beside the base entries: pixel x's word holds the match pixel
-  // x - min_disp's entry (fpstereo_code_reorder's match_wait), a slot's P entries (the net
-  // `match`) m / P slots late and turned by m mod P pixels across two slots; below 0, the base
-  // entries wait ceil(-m / P) slots (code_base_wait_slots) and the match entries are turned by what
-  // that wait leaves over. Returns the net.
-  static std::string strip_match_entries(const RtlDesign& d, CoreBuilder& core, const std::string& match) {
-    const int P = d.strips, m = d.cfg.min_disp, entry_bits = d.code_entry_bits;
+  // x - m's entry (fpstereo_code_reorder's match_wait), a slot's P entries (the net `match`) m / P
+  // slots late and turned by m mod P pixels across two slots; below 0, the base entries wait
+  // ceil(-m / P) slots (code_base_wait_slots) and the match entries are turned by what that wait
+  // leaves over. The nets' names begin with `names`. Returns the net.
+  static std::string strip_match_entries(const RtlDesign& d, CoreBuilder& core, const std::string& match, int m,
+                                         const std::string& names) {
+    const int P = d.strips, entry_bits = d.code_entry_bits;
     if (m == 0) return match;
-    const int slots = m > 0 ? m / P : 0, turn = m > 0 ? m % P : code_base_wait_slots(d) * P + m;
+    const int slots = m > 0 ? m / P : 0, turn = m > 0 ? m % P : code_base_wait_slots(d, m) * P + m;
     const int64_t bits = int64_t(P) * entry_bits;
     std::string late = match;
     if (slots > 0) {
-      core.wire("match_late", bits);
-      core.instance("fpstereo_delay", "match_wait", {{"WIDTH", num(bits)}, {"DEPTH", num(slots)}, {"RESET", "0"}},
-                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", match}, {"out", "match_late"}});
-      late = "match_late";
+      late = names + "match_late";
+      core.wire(late, bits);
+      core.instance("fpstereo_delay", names + "match_wait",
+                    {{"WIDTH", num(bits)}, {"DEPTH", num(slots)}, {"RESET", "0"}},
+                    {{"rst", "1'b0"}, {"en", "shift"}, {"in", match}, {"out", late}});
     }
     if (turn == 0) return late;
     // Pixel q of the slot is pixel q - turn of the late slot, or of the slot before it.
-    core.wire("match_later", bits);
-    core.wire("match_turned", bits);
-    core.instance("fpstereo_delay", "match_turn", {{"WIDTH", num(bits)}, {"DEPTH", "1"}, {"RESET", "0"}},
-                  {{"rst", "1'b0"}, {"en", "shift"}, {"in", late}, {"out", "match_later"}});
-    core.logic(fmt::format("  assign match_turned = {{{}[{}:0], match_later[{}:{}]}};\n", late,
-                           (P - turn) * entry_bits - 1, bits - 1, (P - turn) * entry_bits),
-               {"match_turned"});
-    return "match_turned";
+    const std::string later = names + "match_later", turned = names + "match_turned";
+    core.wire(later, bits);
+    core.wire(turned, bits);
+    core.instance("fpstereo_delay", names + "match_turn", {{"WIDTH", num(bits)}, {"DEPTH", "1"}, {"RESET", "0"}},
+                  {{"rst", "1'b0"}, {"en", "shift"}, {"in", late}, {"out", later}});
+    core.logic(fmt::format("  assign {} = {{{}[{}:0], {}[{}:{}]}};\n", turned, late, (P - turn) * entry_bits - 1,
+                           later, bits - 1, (P - turn) * entry_bits),
+               {turned});
+    return turned;
   }
 
   // ---- HLS: aggregate's to_chain_order.

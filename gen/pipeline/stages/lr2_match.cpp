@@ -1,6 +1,8 @@
 // LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all
 // (fpstereo_lr2_match), dmax + 2 slots behind the base side's aggregation (its costs need base
-// pixels up to x' + m + dmax - 1, so a positive min-disp m adds m).
+// pixels up to x' + m + dmax - 1, so a positive min-disp m adds m). In strips, a second
+// fpstereo_strip_aggregation over the match image's code entries (docs/ppc-hardware.md, "LR2 in
+// strips"), whose winners go to the base side's check.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -19,11 +21,25 @@ class Lr2MatchStage : public Stage {
   std::vector<std::string> knobs() const override { return {"lr", "paths", "p1", "p2", "min-disp"}; }
   std::string start_parameter() const override { return "MATCH_START"; }
   Latency latency(const Geometry&) const override { return {}; }
+  // In strips the match side's schedule starts lr2_schedule_lead after the base side's.
   Latency start_offset(const Geometry& g) const override {
+    if (g.strips > 1) return {0, 0, lr2_schedule_lead(g)};
     return {0, g.cfg.dmax + 2 + std::max(0, g.cfg.min_disp), 0};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     std::vector<StageMemory> out;
+    if (g.strips > 1) {
+      // As the base side's: each strip's code RAM and aggregator (fpstereo_strip_aggregation).
+      const int64_t words = g.row_slots / g.strips;
+      for (int s = 0; s < g.strips; ++s) {
+        out.push_back({"core.lr2_match.code_ram.codes.strip[" + std::to_string(s) + "].ram.mem",
+                       int64_t(s + 1) * g.chains * words, 2 * int64_t(g.code_entry_bits) * g.strips});
+        const int pixels = std::min(g.row_slots, g.cfg.width - s * g.row_slots);
+        for (auto& m : aggregator_memories(g, "core.lr2_match.strip[" + std::to_string(s) + "].aggregation", pixels))
+          out.push_back(m);
+      }
+      return out;
+    }
     for (int l = 0; l < g.cfg.uf; ++l)
       out.push_back({fmt::format("core.lr2_match.bank[{}].costs_of_lane.mem", l), g.cost_depth(), g.widths.cost});
     for (auto& m : aggregator_memories(g, "core.lr2_match.match_aggregation")) out.push_back(m);
@@ -31,6 +47,7 @@ class Lr2MatchStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) const override {
+    if (d.strips > 1) return strips_verilog(d, core);
     const StereoConfig& c = d.cfg;
     core.text("\n  // LR2 match side: second cost volume, aggregation and winner-take-all.\n");
     start_flag(core, d, *this, "match_on");
@@ -44,6 +61,81 @@ class Lr2MatchStage : public Stage {
                                                          {"DISP_AW", num(d.disp_addr_bits)},
                                                          {"LANE_W", num(d.lane_bits)},
                                                          {"MIN_DISP", num(c.min_disp)}});
+  }
+
+  // In strips: the code entries with base and match swapped (the cost reorder stage's lr2_code_*),
+  // their strips' aggregation at min-disp lr2_match_min_disp, and each strip's winner written as
+  // Dm(x') (lr2_dm_*) for the check in the aggregation stage's fpstereo_strip_aggregation.
+  static void strips_verilog(const RtlDesign& d, CoreBuilder& core) {
+    const StereoConfig& c = d.cfg;
+    const Widths& w = d.widths;
+    const int P = d.strips;
+    core.text("\n  // LR2 match side in strips: the match image's code entries, aggregated, their winners.\n");
+    start_flag(core, d, Lr2MatchStage(), "match_on");
+    // What the match side leaves but its writes: read nowhere.
+    const int dm_bits = clog2((int64_t(P) * d.chains + 1) * d.row_slots);
+    const std::vector<std::pair<std::string, int64_t>> unread = {
+        {"raddr", int64_t(P) * d.cost_addr_bits},
+        {"sums", int64_t(P) * c.uf * w.aggregated},
+        {"sums_active", P},
+        {"sums_x", int64_t(P) * d.x_bits},
+        {"sums_chain", int64_t(P) * d.chain_bits},
+        {"sums_slot", int64_t(P) * d.out_row_bits},
+        {"read_done", 1},
+        {"read_event", 1},
+        {"read_x", d.x_bits},
+        {"read_y", d.y_bits},
+        {"read_word", int64_t(P) * (w.disparity + 1)},
+        {"right_word", int64_t(P) * w.disparity},
+        {"dm_end_we", P},
+        {"dm_end_waddr", int64_t(P) * d.out_row_bits},
+        {"dm_end_wdata", int64_t(P) * c.uf * w.disparity}};
+    Connections ports;
+    for (const auto& [port, bits] : unread) {
+      core.wire("lr2_" + port, bits);
+      ports.push_back({port == "raddr" ? "cost_raddr" : port, "lr2_" + port});
+    }
+    core.wire("lr2_dm_we", P);
+    core.wire("lr2_dm_waddr", int64_t(P) * dm_bits);
+    core.wire("lr2_dm_wdata", int64_t(P) * w.disparity);
+    Connections parameters;
+    for (const auto& p : aggregator_parameters(d))
+      if (p.first != "G" && p.first != "G_W") parameters.push_back(p);
+    core.instance("fpstereo_strip_aggregation", "lr2_match",
+                  Connections{{"P", num(P)}} + parameters + fused_cost_parameters(d) +
+                      Connections{{"CODES", "1"},
+                                  {"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
+                                  {"CODE_W", num(std::max(1, w.code))},
+                                  {"ENTRY_W", num(d.code_entry_bits)},
+                                  {"LANES_LAT", num(d.cost_lanes_latency)},
+                                  {"CHAIN_LAT", num(d.cost_latency)},
+                                  {"COST_LEAD", num(d.cost_lead)},
+                                  {"RAM", "1"},
+                                  {"SLOT_ROWS", num(d.slot_rows)},
+                                  {"SLOT_W", num(d.cost_row_bits)},
+                                  {"BASE_WAIT", num(code_base_wait_slots(d, lr2_match_min_disp(d)))},
+                                  {"MIN_DISP", num(lr2_match_min_disp(d))},
+                                  {"LR1_AW", num(dm_bits)},
+                                  {"DISP_W", num(w.disparity)},
+                                  {"WTA_DISP_W", num(w.disparity)},
+                                  {"WTA_LEVELS_PER_STAGE", num(d.levels_per_stage)},
+                                  {"WTA_TREE_LAT", num(d.wta_tree_latency)},
+                                  {"MATCH_SIDE", "1"},
+                                  {"DM_LAG", num(lr2_dm_lag(d))}},
+                  ports + Connections{{"agg_on", "match_on"},
+                                      {"cost_q", fmt::format("{}'d0", int64_t(P) * 2 * d.code_entry_bits)},
+                                      {"code_data", "lr2_code_data"},
+                                      {"code_extra", fmt::format("{}'d0", P)},
+                                      {"code_prefix", "lr2_code_prefix"},
+                                      {"out_on", "1'b0"},
+                                      {"uniqueness", "7'd0"},
+                                      {"lr_threshold", "4'd0"},
+                                      {"dm_we", "lr2_dm_we"},
+                                      {"dm_waddr", "lr2_dm_waddr"},
+                                      {"dm_wdata", "lr2_dm_wdata"},
+                                      {"match_dm_we", fmt::format("{}'d0", P)},
+                                      {"match_dm_waddr", fmt::format("{}'d0", int64_t(P) * dm_bits)},
+                                      {"match_dm_wdata", fmt::format("{}'d0", int64_t(P) * w.disparity)}});
   }
 
   // ---- HLS: the base costs regrouped per match pixel, their aggregation and winner-take-all.

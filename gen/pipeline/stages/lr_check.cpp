@@ -19,7 +19,7 @@ class LrCheckStage : public Stage {
   // In strips fpstereo_strip_lr_check registers the read stream first: a step more, and with the
   // right view above min-disp 0 its lookups wait.
   Latency latency(const Geometry& g) const override {
-    return {0, 0, g.strips > 1 ? 4 + right_view_wait_slots(g) : 3};
+    return {0, 0, g.strips > 1 ? 4 + check_wait_slots(g) : 3};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) return {};  // in strips, the aggregation stage's (fpstereo_strip_lr_check)

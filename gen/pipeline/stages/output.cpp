@@ -46,10 +46,12 @@ class OutputStage : public Stage {
  private:
   // Rows of confidences between the disparity reorder RAM and the output: more than the rows the
   // speckle filter, the median and gap interpolation delay the stream; none when nothing but the
-  // check lies between.
+  // check lies between, or nothing at all (in strips the check comes before the read stream: its
+  // confidences are read where they are written).
   static int confidence_rows(const Geometry& g) {
     const StereoConfig& c = g.cfg;
-    if (!c.confidence || (c.speckle_size == 0 && c.median == 0 && !c.gap_interpolation && c.lr == LrCheck::None))
+    const bool check_between = c.lr != LrCheck::None && g.strips == 1;
+    if (!c.confidence || (c.speckle_size == 0 && c.median == 0 && !c.gap_interpolation && !check_between))
       return 0;
     return g.speckle_rows + c.median / 2 + (c.gap_interpolation ? 1 : 0) + 2;
   }

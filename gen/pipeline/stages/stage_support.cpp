@@ -76,16 +76,54 @@ std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
   return fmt::format("{}[{}:{}]", net, lsb + bits - 1, lsb);
 }
 
-int code_base_wait_slots(const Geometry& g) {
-  return !g.reorders_codes || g.cfg.min_disp >= 0 ? 0 : (-g.cfg.min_disp + g.strips - 1) / g.strips;
+int code_base_wait_slots(const Geometry& g) { return code_base_wait_slots(g, g.cfg.min_disp); }
+
+int code_base_wait_slots(const Geometry& g, int min_disp) {
+  return !g.reorders_codes || min_disp >= 0 ? 0 : (-min_disp + g.strips - 1) / g.strips;
 }
 
-int right_view_wait_slots(const Geometry& g) {
-  return g.strips == 1 || !g.cfg.right_view || g.cfg.min_disp <= 0 ? 0 : (g.cfg.min_disp + g.strips - 1) / g.strips;
+int lr2_match_min_disp(const Geometry& g) { return -(g.cfg.min_disp + g.cfg.dmax - 1); }
+
+namespace {
+
+// fpstereo_strip_aggregation's MATCH_SIDE: its writes' address takes steps of its own (DM_LAG >= 3).
+constexpr int kMatchSideAddressSteps = 3;
+
+// The steps the base side's words take from the sums to the disparity RAMs' writes (the winner,
+// the sub-pixel fit, the confidence and the write's register), LR1's writes' lag plus one.
+int base_word_steps(const Geometry& g) {
+  return g.wta_word_lag + g.subpixel_steps + (g.cfg.confidence ? kConfidenceSteps : 0) + 1;
 }
 
-int chain_prefix_entries(const Geometry& g) {
-  return g.cfg.min_disp >= 0 ? 0 : std::min(-g.cfg.min_disp, g.cfg.dmax - 1);
+}  // namespace
+
+int lr2_schedule_lead(const Geometry& g) {
+  // The base side's writes wait for adaptive P2's penalties (fpstereo_strip_code_reorder's
+  // held register and EXTRA_LAT), the match side's, which has none, do not.
+  const int penalty_wait = g.penalty_bits != 0 ? 1 + g.cost_latency : 0;
+  return code_base_wait_slots(g, lr2_match_min_disp(g)) - code_base_wait_slots(g) - penalty_wait;
+}
+
+int lr2_dm_lag(const Geometry& g) {
+  return std::max(kMatchSideAddressSteps, base_word_steps(g) - g.wta_tree_latency) +
+         std::max(0, -lr2_schedule_lead(g));
+}
+
+int check_wait_slots(const Geometry& g) {
+  if (g.strips == 1) return 0;
+  const int P = g.strips, m = g.cfg.min_disp;
+  if (g.cfg.lr == LrCheck::Lr2) {
+    // The match side's later schedule, and its address steps where they outlast the base side's.
+    const int address_late = std::max(0, kMatchSideAddressSteps + g.wta_tree_latency - base_word_steps(g));
+    return std::max(0, lr2_schedule_lead(g)) + address_late;
+  }
+  return !g.cfg.right_view || m <= 0 ? 0 : (m + P - 1) / P;
+}
+
+int chain_prefix_entries(const Geometry& g) { return chain_prefix_entries(g, g.cfg.min_disp); }
+
+int chain_prefix_entries(const Geometry& g, int min_disp) {
+  return min_disp >= 0 ? 0 : std::min(-min_disp, g.cfg.dmax - 1);
 }
 
 std::string concat_high_to_low(int count, const std::function<std::string(int)>& part) {

@@ -40,16 +40,38 @@ int window_columns(const Geometry& g);
 // penalties) wait for the slots holding their match pixels x - m: ceil(-m / P), fpstereo_code_reorder's
 // -MIN_DISP at P = 1 and fpstereo_strip_code_reorder's BASE_WAIT; the aggregation reads that much
 // later. 0 otherwise.
+// With min_disp, as the code entries of LR2's match side in strips have (below).
 int code_base_wait_slots(const Geometry& g);
+int code_base_wait_slots(const Geometry& g, int min_disp);
 
-// In strips with the right view and min-disp m above 0, the slots the left-right check's lookups
-// wait (fpstereo_strip_lr_check's VIEW_WAIT): Dm(x) is completed m pixels further right than
-// anything the check looks up from x, so ceil(m / P). 0 otherwise.
-int right_view_wait_slots(const Geometry& g);
+// LR2's match side in strips is a base side over the match image (docs/ppc-hardware.md, "LR2 in
+// strips"): its entries are the base side's with base and match swapped, and match pixel x' at
+// index d pairs with base pixel x' + m + d, which is x' - m' - (dmax - 1 - d) for
+// m' = -(m + dmax - 1), its min-disp, its lanes the indices from dmax - 1 down.
+int lr2_match_min_disp(const Geometry& g);
+
+// LR2's match side's schedule in strips after the base side's, in steps (negative where earlier):
+// its entries' wait below its min-disp less the base side's, and less the base side's writes' wait
+// for adaptive P2's penalties, which the match side does without (its reads follow its writes as
+// closely as the base side's do theirs: a strip's last word is overwritten K steps after it is due
+// where SEG = P).
+int lr2_schedule_lead(const Geometry& g);
+
+// In strips, the slots the left-right check's lookups wait (fpstereo_strip_lr_check's VIEW_WAIT).
+// LR1 with the right view and min-disp m above 0: Dm(x) is completed m pixels further right than
+// anything the check looks up from x, so ceil(m / P). LR2: the steps by which the match side's
+// writes land after the base side's words (lr2_dm_lag). 0 otherwise.
+int check_wait_slots(const Geometry& g);
+
+// LR2's match side in strips: the steps its winners' writes wait (fpstereo_strip_aggregation's
+// DM_LAG), so that they land with the base side's words where the match side's schedule is not
+// later than the base side's.
+int lr2_dm_lag(const Geometry& g);
 
 // With min-disp m below 0, the match entries a row's first pixel needs left of its own match pixel
 // -m: min(-m, dmax - 1) of them, fpstereo_chain_cost's PREFIX (the cost reorder stage holds them).
 int chain_prefix_entries(const Geometry& g);
+int chain_prefix_entries(const Geometry& g, int min_disp);
 
 // `net`'s field of `bits` bits from bit `lsb`: "net[lsb + bits - 1:lsb]".
 std::string bit_field(const std::string& net, int64_t lsb, int64_t bits);
