@@ -151,6 +151,9 @@ module fpstereo_strip_lr_check #(
       wire [P_W-1:0] x_ahead = {in_x, Q} + AHEAD;
       wire [P_W-1:0] d_behind = d + BEHIND;
       wire outside = w[INVALID_BIT] || x_ahead < d_behind || (MIN_DISP < 0 && x_ahead >= d_behind + frame_width);
+      // the lookup's place: LR1, x - D + DMAX - 1, the completing pixel; LR2, x' = x - MIN_DISP - D
+      wire [P_W-1:0] completing = {in_x, Q} + (DMAX - 1) - d;
+      wire [P_W-1:0] x_match = x_ahead - d_behind;
       wire [DISP_W-1:0] dm;
       fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
                                     .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
@@ -158,8 +161,7 @@ module fpstereo_strip_lr_check #(
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
         .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
         .xm_behind(x_ahead - d),  // x' + BEHIND
-        // LR1: x - D + DMAX - 1; LR2: x' = x - MIN_DISP - D
-        .completing(LR2 != 0 ? x_ahead - d_behind : {in_x, Q} + (DMAX - 1) - d), .dm(dm));
+        .completing(LR2 != 0 ? x_match : completing), .dm(dm));
       reg              outside_c, outside_q;
       reg [IN_W-1:0]   word_c, word_q;
       reg [CHECKED_W-1:0] checked_q;
@@ -183,14 +185,17 @@ module fpstereo_strip_lr_check #(
       assign checked_word[q*CHECKED_W +: CHECKED_W] = checked_q;
       if (RIGHT_VIEW != 0) begin : right_view
         // Dm(x): x' + BEHIND = x + BEHIND, completed by x + MIN_DISP + DMAX - 1 (LR2: at x)
+        wire [P_W-1:0] right_completing = {in_x, Q} + (MIN_DISP + DMAX - 1);
+        wire [P_W-1:0] right_x = {in_x, Q};
+        wire [P_W-1:0] right_behind = {in_x, Q} + BEHIND;
         wire [DISP_W-1:0] dm_right;
         fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
                                       .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
           .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
           .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
           .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
-          .xm_behind({in_x, Q} + BEHIND),
-          .completing(LR2 != 0 ? {in_x, Q} : {in_x, Q} + (MIN_DISP + DMAX - 1)), .dm(dm_right));
+          .xm_behind(right_behind),
+          .completing(LR2 != 0 ? right_x : right_completing), .dm(dm_right));
         reg [DISP_W-1:0] dm_right_q, right_q;
         always @(posedge clk)
           if (adv) begin
