@@ -113,7 +113,7 @@ class AggregationStage : public Stage {
   static void strips_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams&) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
-    const int P = d.strips, code_bits = std::max(1, w.code);
+    const int P = d.strips;
     // A winner-take-all with the uniqueness check per strip, which the confidence's two best sums
     // come from too.
     const bool unique = c.uniqueness != 0 || c.confidence;
@@ -132,7 +132,7 @@ class AggregationStage : public Stage {
     // check takes there, are not read here. With LR2 the check there takes the LR2 match stage's
     // writes. Strip 0's Dm take the most address bits.
     const bool lr1 = c.lr == LrCheck::Lr1, lr2 = c.lr == LrCheck::Lr2;
-    const int dm_bits = lr1 || lr2 ? clog2((int64_t(P) * d.chains + 1) * d.row_slots) : 1;
+    const int dm_bits = lr1 || lr2 ? strip_dm_address_bits(d) : 1;
     core.wire("strip_dm_we", P);
     core.wire("strip_dm_waddr", int64_t(P) * dm_bits);
     core.wire("strip_dm_wdata", int64_t(P) * w.disparity);
@@ -140,23 +140,9 @@ class AggregationStage : public Stage {
     core.wire("strip_dm_end_waddr", int64_t(P) * d.out_row_bits);
     core.wire("strip_dm_end_wdata", int64_t(P) * c.uf * w.disparity);
     core.wire("right_dm", int64_t(P) * w.disparity);  // the right view reads it
-    // The aggregators' parameters but the groups (G = 1 in strips), and the strips' own.
-    Connections parameters;
-    for (const auto& p : aggregator_parameters(d))
-      if (p.first != "G" && p.first != "G_W") parameters.push_back(p);
     core.instance("fpstereo_strip_aggregation", "aggregation",
-                  Connections{{"P", num(P)}} + parameters + fused_cost_parameters(d) +
-                      Connections{{"CODES", "1"},
-                                  {"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
-                                  {"CODE_W", num(code_bits)},
-                                  {"ENTRY_W", num(d.code_entry_bits)},
-                                  {"LANES_LAT", num(d.cost_lanes_latency)},
-                                  {"CHAIN_LAT", num(d.cost_latency)},
-                                  {"COST_LEAD", num(d.cost_lead)},
-                                  {"RAM", "1"},
-                                  {"SLOT_ROWS", num(d.slot_rows)},
-                                  {"SLOT_W", num(d.cost_row_bits)},
-                                  {"EXTRA_LAT", num(d.cost_latency)},
+                  strip_aggregation_parameters(d) +
+                      Connections{{"EXTRA_LAT", num(d.cost_latency)},
                                   {"BASE_WAIT", num(code_base_wait_slots(d))},
                                   {"LR1", lr1 ? "1" : "0"},
                                   {"LR2", lr2 ? "1" : "0"},

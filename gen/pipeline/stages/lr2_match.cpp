@@ -73,7 +73,7 @@ class Lr2MatchStage : public Stage {
     core.text("\n  // LR2 match side in strips: the match image's code entries, aggregated, their winners.\n");
     start_flag(core, d, Lr2MatchStage(), "match_on");
     // What the match side leaves but its writes: read nowhere.
-    const int dm_bits = clog2((int64_t(P) * d.chains + 1) * d.row_slots);
+    const int dm_bits = strip_dm_address_bits(d);
     const std::vector<std::pair<std::string, int64_t>> unread = {
         {"raddr", int64_t(P) * d.cost_addr_bits},
         {"sums", int64_t(P) * c.uf * w.aggregated},
@@ -98,22 +98,9 @@ class Lr2MatchStage : public Stage {
     core.wire("lr2_dm_we", P);
     core.wire("lr2_dm_waddr", int64_t(P) * dm_bits);
     core.wire("lr2_dm_wdata", int64_t(P) * w.disparity);
-    Connections parameters;
-    for (const auto& p : aggregator_parameters(d))
-      if (p.first != "G" && p.first != "G_W") parameters.push_back(p);
     core.instance("fpstereo_strip_aggregation", "lr2_match",
-                  Connections{{"P", num(P)}} + parameters + fused_cost_parameters(d) +
-                      Connections{{"CODES", "1"},
-                                  {"HAMMING", c.cost == CostFunction::Rank ? "0" : "1"},
-                                  {"CODE_W", num(std::max(1, w.code))},
-                                  {"ENTRY_W", num(d.code_entry_bits)},
-                                  {"LANES_LAT", num(d.cost_lanes_latency)},
-                                  {"CHAIN_LAT", num(d.cost_latency)},
-                                  {"COST_LEAD", num(d.cost_lead)},
-                                  {"RAM", "1"},
-                                  {"SLOT_ROWS", num(d.slot_rows)},
-                                  {"SLOT_W", num(d.cost_row_bits)},
-                                  {"BASE_WAIT", num(code_base_wait_slots(d, lr2_match_min_disp(d)))},
+                  strip_aggregation_parameters(d) +
+                      Connections{{"BASE_WAIT", num(code_base_wait_slots(d, lr2_match_min_disp(d)))},
                                   {"MIN_DISP", num(lr2_match_min_disp(d))},
                                   {"LR1_AW", num(dm_bits)},
                                   {"DISP_W", num(w.disparity)},

@@ -89,6 +89,13 @@ constexpr const char* kStripConfidentWords = "strip_read_words";
 std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope, int pixels = 0);
 Connections aggregator_parameters(const RtlDesign& d);
 
+// fpstereo_strip_aggregation's parameters that the base side and LR2's match side share: the
+// strips, the aggregators' (but the groups: G = 1 in strips), the fused cost's, the code entries'
+// and their RAMs'.
+Connections strip_aggregation_parameters(const RtlDesign& d);
+// The address bits of a strip's match-side Dm writes (strip 0's, the most: (P * K + 1) * R words).
+int strip_dm_address_bits(const Geometry& g);
+
 // The fused cost's parameters of the cost lanes (fpstereo_point_lanes and the stages around it):
 // WEIGHT, TRUNC, FEATURE_W and GRADIENT; none without the fused cost (the templates' defaults).
 Connections fused_cost_parameters(const Geometry& g);
