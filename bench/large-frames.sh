@@ -6,8 +6,8 @@
 # of simulation on an idle 2-core machine; needs ../shared/data/stereo. The -ppc sizes take beats of
 # 2 (or 4) pixels with the core in strips (docs/ppc-hardware.md: census with the median, as C2);
 # 1080p-ppc4 at 64 disparities; 1080p-ppc2-lr1 with LR1 and the right view (as C3, and the right
-# view's stream checked too).
-#   bench/large-frames.sh [--build-dir B] [1080p|4k|1080p-ppc2|4k-ppc2|1080p-ppc4|1080p-ppc2-lr1 ...]
+# view's stream checked too); 1080p-ppc2-lr2 with LR2 and the right view (as C4).
+#   bench/large-frames.sh [--build-dir B] [1080p|4k|1080p-ppc2|4k-ppc2|1080p-ppc4|1080p-ppc2-lr1|1080p-ppc2-lr2 ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
@@ -25,7 +25,8 @@ for size in "${sizes[@]}"; do
     4k-ppc2) geometry=(--width 3840 --height 2160 --ppc 2); factor=6 ;;
     1080p-ppc4) geometry=(--width 1920 --height 1080 --ppc 4); factor=3; range=(--dmax 64 --uf 64) ;;
     1080p-ppc2-lr1) geometry=(--width 1920 --height 1080 --ppc 2 --lr lr1 --right-view on); factor=3 ;;
-    *) echo "large-frames: unknown size '$size' (1080p, 4k, 1080p-ppc2, 4k-ppc2, 1080p-ppc4 or 1080p-ppc2-lr1)" >&2
+    1080p-ppc2-lr2) geometry=(--width 1920 --height 1080 --ppc 2 --lr lr2 --right-view on); factor=3 ;;
+    *) echo "large-frames: unknown size '$size' (1080p, 4k, 1080p-ppc2, 4k-ppc2, 1080p-ppc4, 1080p-ppc2-lr1 or 1080p-ppc2-lr2)" >&2
        exit 2 ;;
   esac
   echo "== $size"
