@@ -140,9 +140,18 @@ module fpstereo_strip_code_reorder #(
       end else begin : later_strip
         assign mine = {1'b0, wslot_in} >= FIRST && {1'b0, wslot_in} < AFTER;
       end
-      // The address is a product of narrow values and constants, cut to the RAM's address width.
+      // The row's first word, (wrow mod ROWS) * WORDS, as a function of the row slot's bits alone
+      // (a table of constants): a modulus and a product of the slot were 7 LUTs deep where ROWS
+      // is not a power of two (1080p, four strips of six chains). The other addresses are narrow
+      // values and constants, cut to the RAM's address width.
       /* verilator lint_off WIDTH */
-      wire [RAM_AW-1:0] row_first = (wrow_in % ROWS) * WORDS;
+      reg [RAM_AW-1:0] row_first;
+      integer r;
+      always @* begin
+        row_first = {RAM_AW{1'b0}};
+        for (r = 0; r < SLOT_ROWS; r = r + 1)
+          if (wrow_in == r) row_first = (r % ROWS) * WORDS;
+      end
       wire [RAM_AW-1:0] word_in_row = wslot_in - FIRST;
       wire [AW-1:0] at = raddr[s*AW +: AW];
       wire [RAM_AW-1:0] word_addr = at >> LOG_P;
