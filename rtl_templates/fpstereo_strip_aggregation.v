@@ -135,11 +135,11 @@ module fpstereo_strip_aggregation #(
   output wire [P*COST_AW-1:0]  cost_raddr,
   // each strip's cost word, or with CODES its entry, a step after its address
   /* verilator lint_off UNUSEDSIGNAL */  // cost_q with RAM, the code ports without
-  input  wire [P*(CODES != 0 ? 2*ENTRY_W+EXTRA_W : UF*COST_W)-1:0] cost_q,
+  input  wire [P*((CODES != 0 ? 2*ENTRY_W : UF*COST_W) + EXTRA_W)-1:0] cost_q,
   input  wire                  code_we,
   input  wire [X_W-1:0]        code_slot,
   input  wire [SLOT_W-1:0]     code_row,
-  input  wire [P*2*ENTRY_W-1:0] code_data,
+  input  wire [P*(CODES != 0 ? 2*ENTRY_W : UF*COST_W+EXTRA_W)-1:0] code_data,
   input  wire [P*(EXTRA_W > 0 ? EXTRA_W : 1)-1:0] code_extra,
   // (PREFIX entries, below; at least one)
   input  wire [(CODES != 0 && MIN_DISP < 0 ? (-MIN_DISP < UF - 1 ? -MIN_DISP : UF - 1) : 1)*ENTRY_W-1:0] code_prefix,
@@ -182,8 +182,8 @@ module fpstereo_strip_aggregation #(
     if (P < 2 || (P - 1) * ROW_SLOTS >= W || P * ROW_SLOTS < W) begin : invalid_P
       fpstereo_invalid_parameters_strip_aggregation_P_strips_of_ROW_SLOTS_do_not_cover_W failed ();
     end
-    if (EXTRA_W != 0 && (CODES == 0 || EXTRA_W != NP * PATH_W)) begin : invalid_EXTRA_W
-      fpstereo_invalid_parameters_strip_aggregation_EXTRA_W_is_not_a_P2_per_path_with_CODES failed ();
+    if (EXTRA_W != 0 && ((CODES == 0 && RAM == 0) || EXTRA_W != NP * PATH_W)) begin : invalid_EXTRA_W
+      fpstereo_invalid_parameters_strip_aggregation_EXTRA_W_is_not_a_P2_per_path_with_CODES_or_RAM failed ();
     end
     if (CONFIDENCE != 0 && (UNIQUE == 0 || CONFIDENCE != 1)) begin : invalid_CONFIDENCE
       fpstereo_invalid_parameters_strip_aggregation_CONFIDENCE_needs_UNIQUE failed ();
@@ -197,7 +197,7 @@ module fpstereo_strip_aggregation #(
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;
-  localparam Q_W = CODES != 0 ? 2 * ENTRY_W + EXTRA_W : UF * COST_W;
+  localparam Q_W = (CODES != 0 ? 2 * ENTRY_W : UF * COST_W) + EXTRA_W;
   localparam NP = PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2;
   localparam PENALTIES = EXTRA_W != 0 ? NP : 0;
   localparam RING_W = UF * ENTRY_W;
@@ -212,15 +212,16 @@ module fpstereo_strip_aggregation #(
   /* verilator lint_on UNUSEDSIGNAL */
   generate
     if (RAM != 0) begin : code_ram
-      if (CODES == 0) begin : invalid_ram
-        fpstereo_invalid_parameters_strip_aggregation_RAM_needs_CODES failed ();
-      end
-      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(2 * ENTRY_W),
-                                    .EXTRA_W(EXTRA_W), .EXTRA_LAT(EXTRA_LAT), .BASE_WAIT(BASE_WAIT),
+      // Without CODES a pixel's entry is its cost word with adaptive P2's penalties above, which
+      // come together (the cost stage's writes wait for both).
+      localparam RAM_EXTRA_W = CODES != 0 ? EXTRA_W : 0;
+      fpstereo_strip_code_reorder #(.P(P), .K(K), .STRIP_PIXELS(ROW_SLOTS), .ENTRY_W(CODES != 0 ? 2 * ENTRY_W : Q_W),
+                                    .EXTRA_W(RAM_EXTRA_W), .EXTRA_LAT(EXTRA_LAT),
+                                    .BASE_WAIT(CODES != 0 ? BASE_WAIT : 0),
                                     .SLOT_ROWS(SLOT_ROWS),
                                     .SLOT_W(SLOT_W), .X_W(X_W), .AW(COST_AW)) codes (
         .clk(clk), .adv(adv), .we(code_we), .wslot(code_slot), .wrow(code_row), .wdata(code_data),
-        .extra(code_extra), .raddr(cost_raddr), .q(entries));
+        .extra(code_extra[P*(RAM_EXTRA_W > 0 ? RAM_EXTRA_W : 1)-1:0]), .raddr(cost_raddr), .q(entries));
     end else begin : from_port
       assign entries = cost_q;
     end
@@ -273,7 +274,7 @@ module fpstereo_strip_aggregation #(
           .ring_in(rings[p*RING_W +: RING_W]), .ring_out(rings[(p+1)*RING_W +: RING_W]));
         /* verilator lint_on PINCONNECTEMPTY */
       end else begin : cost_words
-        assign costs = entries[p*Q_W +: UF*COST_W];
+        assign costs = entries[p*Q_W +: Q_W];
         assign rings[(p+1)*RING_W +: RING_W] = 0;
       end
       /* verilator lint_off PINCONNECTEMPTY */

@@ -4,8 +4,8 @@
 # -check, no warning), linted with `verilator --lint-only -Wall` and verified bit-exact in
 # Verilator (scripts/verify-rtl.sh) on a small frame with idle cycles and backpressure.
 #   scripts/random-rtl.sh [--build-dir B] [--tb-opt N] [--strips] SEED [COUNT]
-# --strips draws configurations whose core takes ppc pixels a clock in strips (census or rank,
-# uf = dmax, ppc 2 or 4, rows wide enough for the strips; docs/ppc-hardware.md), which the general
+# --strips draws configurations whose core takes ppc pixels a clock in strips (census, rank, SAD
+# or ZSAD, uf = dmax, ppc 2 or 4, rows wide enough for the strips; docs/ppc-hardware.md), which the general
 # draw reaches rarely. COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
 # invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
 # configuration with its flags, so a failure can be repeated with verify-rtl.sh alone (or, for a
@@ -58,7 +58,7 @@ draw() {
     flags=(--width $((48 + RANDOM % 80)) --height $((10 + RANDOM % 17)) --dmax "$dmax" --uf "$dmax"
            --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 41 - 20)))
     local uf=$dmax
-    add --cost census rank
+    add --cost census rank sad zsad
   else
     flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
            --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 17 - 8)))

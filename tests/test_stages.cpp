@@ -46,11 +46,16 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.cost = CostFunction::Sad;
+  beats.cost = CostFunction::Shd;
+  beats.shd_window = 3;
   out.push_back(beats);
+  // ... SAD in strips (its window costs a slot's two pixels a step, fpstereo_strip_window_cost).
+  StereoConfig window_strips = beats;
+  window_strips.cost = CostFunction::Sad;
+  out.push_back(window_strips);
   // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,
   // the confidence, adaptive P2, the fused cost, min-disp, the median and gap interpolation).
-  StereoConfig strips = beats;
+  StereoConfig strips = window_strips;
   strips.cost = CostFunction::Census;
   strips.gap_interpolation = true;
   strips.confidence = true;

@@ -368,10 +368,16 @@ std::vector<double> features(const rtl::RtlDesign& d) {
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
   // winner-take-all, the sub-pixel fit, the confidence, adaptive P2, the fused term and the
-  // median are there once per strip; the options strips leave out stay 0.
+  // median are there once per strip, SAD's and ZSAD's window-cost lanes once per pixel of a slot
+  // beside one shared ring of match columns (fpstereo_strip_window_cost); the options strips
+  // leave out stay 0.
   const double sets = d.strips;
+  const bool window_costs = c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad;
+  const double ring_sets = window_costs ? 1.0 : sets;
+  pixel_lanes *= sets;
+  zero_mean *= sets;
   return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
-          (ring + ring_features) * sets,
+          (ring + ring_features) * ring_sets,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel * sets,
           c.median > 0 ? double(c.median * c.median) * (w.disparity + 1) * sets : 0.0,
           c.lr == LrCheck::Lr1 ? uf * (w.aggregated + w.disparity) : 0.0,
@@ -396,7 +402,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           (aggregator_registers(d, d.penalty_bits) +
            (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0)) *
               sets,
-          (cost_registers(d, ring + ring_features) + fused_term_registers(d)) * sets,
+          cost_registers(d, ring + ring_features) * ring_sets + fused_term_registers(d) * sets,
           (winner_registers(d, d.finds_second_best, word_tag) +
            (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0)) *
               sets,

@@ -53,12 +53,14 @@ void check_hardware_rules(const StereoConfig& cfg) {
 int lr2_strip_min_width(const StereoConfig& c) { return c.dmax + std::abs(c.min_disp) + c.ppc - 1; }
 
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
-// configuration: so far census and rank costs, with every option the hardware takes at ppc > 1
-// (not the speckle filter, which needs uf < dmax). Elsewhere ppc > 1 converts beats to pixels
-// around the one-pixel core.
+// configuration: census and rank costs with every option the hardware takes at ppc > 1 (not the
+// speckle filter, which needs uf < dmax), SAD and ZSAD without LR2 (whose match side reads code
+// entries). Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
-  return c.ppc > 1 && (c.cost == CostFunction::Census || c.cost == CostFunction::Rank) &&
-         (c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c));
+  if (c.ppc == 1) return false;
+  if (c.cost == CostFunction::Census || c.cost == CostFunction::Rank)
+    return c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c);
+  return (c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad) && c.lr != LrCheck::Lr2;
 }
 
 }  // namespace

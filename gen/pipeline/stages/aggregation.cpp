@@ -167,7 +167,7 @@ class AggregationStage : public Stage {
                                   {"MIN_DISP", num(c.min_disp)},
                                   {"EXTRA_W", num(d.penalty_bits)}},
                   {{"cost_raddr", "strip_raddr"},
-                   {"cost_q", fmt::format("{}'d0", P * (2 * d.code_entry_bits + d.penalty_bits))},
+                   {"cost_q", fmt::format("{}'d0", P * strip_entry_bits(d))},
                    {"sums", "strip_sums"},
                    {"sums_active", "strip_active"},
                    {"sums_x", "strip_x"},

@@ -25,14 +25,16 @@ class CostStage : public Stage {
   // The base word waits a slot next to the match ring (SHD: after its code window, rs rows and
   // rs + 1 slots; ZSAD: two more, for the base window's mean; a negative min-disp m: -m more,
   // fpstereo_cost_history); the lanes take their register stages (with the fused cost, the term's).
-  // In strips the costs follow the code RAMs (fpstereo_chain_cost), whose writes wait only for
-  // adaptive P2's penalties (fpstereo_strip_code_reorder's EXTRA_LAT): without them the lanes'
-  // steps are not waited for here. (A strip reads a slot's word up to the row-time's end; reads
-  // more than K steps behind the writes found a strip's last word overwritten where SEG = P: the
-  // fused cost's four steps did, at 64 x 24, dmax 16, ppc 4.)
+  // In strips the code entries' costs follow the code RAMs (fpstereo_chain_cost), whose writes
+  // wait only for adaptive P2's penalties (fpstereo_strip_code_reorder's EXTRA_LAT): without them
+  // the lanes' steps are not waited for here. (A strip reads a slot's word up to the row-time's
+  // end; reads more than K steps behind the writes found a strip's last word overwritten where
+  // SEG = P: the fused cost's four steps did, at 64 x 24, dmax 16, ppc 4.) SAD's and ZSAD's cost
+  // words are written as they leave the lanes.
   Latency latency(const Geometry& g) const override {
     const Latency wait = base_wait(g);
-    return {wait.rows, 1 + wait.slots, g.strips > 1 && g.penalty_bits == 0 ? 0 : g.cost_latency};
+    const bool codes_wait_for_nothing = g.strips > 1 && g.reorders_codes && g.penalty_bits == 0;
+    return {wait.rows, 1 + wait.slots, codes_wait_for_nothing ? 0 : g.cost_latency};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (cost_ != CostFunction::Shd) return {};
@@ -65,7 +67,12 @@ class CostStage : public Stage {
     // The fused cost's pixel features, beside the transform's codes (census, rank and SHD, the
     // costs validate() lets have it).
     if (c.fused_weight != 0) fused_features(d, core);
-    if (!d.reorders_codes) raster_cost(d, core);
+    if (!d.reorders_codes) {
+      if (d.strips > 1)
+        strip_window_cost(d, core);
+      else
+        raster_cost(d, core);
+    }
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
     const Connections parameters = {{"N", num(c.window)},
@@ -195,6 +202,31 @@ class CostStage : public Stage {
                   features);
   }
 
+  // With strips (SAD and ZSAD): a slot's P pixels' cost words a step, with the slot they belong to
+  // (cost_we, cost_slot, cost_row), which the cost reorder stage writes into the strips' RAMs.
+  void strip_window_cost(const RtlDesign& d, CoreBuilder& core) const {
+    const StereoConfig& c = d.cfg;
+    core.wire("cost_we", 1);
+    core.wire("cost_slot", d.x_bits);
+    core.wire("cost_row", d.cost_row_bits);
+    core.wire("costs", int64_t(d.strips) * c.uf * d.widths.cost);
+    core.instance("fpstereo_strip_window_cost", "cost",
+                  {{"P", num(d.strips)},
+                   {"N", num(c.window)},
+                   {"COLS", num(window_columns(d))},
+                   {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                   {"UF", num(c.uf)},
+                   {"COST_W", num(d.widths.cost)},
+                   {"COST_MAX", num(int64_t(d.widths.cost_max))},
+                   {"COLUMN_SUM_W", num(d.column_sum_bits)},
+                   {"MEAN_MUL", num(int64_t(d.mean_mul))},
+                   {"MEAN_SHIFT", num(d.mean_shift)},
+                   {"ROW_W", num(d.cost_row_bits)},
+                   {"X_W", num(d.x_bits)},
+                   {"MIN_DISP", num(c.min_disp)},
+                   {"LAT", num(d.cost_latency)}});
+  }
+
   // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.
   std::string hls_calls(const RtlDesign& d, HlsStreams& s) const override {
     using hls::stream_declarations;
@@ -222,12 +254,13 @@ class CostStage : public Stage {
 
  private:
   // What the base waits beside the match ring (adaptive P2's steps wait as long). Where the
-  // reorder holds codes, a negative min-disp's wait is the cost reorder stage's.
+  // reorder holds codes, a negative min-disp's wait is the cost reorder stage's; in strips the
+  // base waits whole slots, ceil(-m / P) (fpstereo_strip_window_cost's BASE_WAIT).
   Latency base_wait(const Geometry& g) const {
     const StereoConfig& c = g.cfg;
     const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
     const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
-    return {rs, wait + (g.reorders_codes ? 0 : std::max(0, -c.min_disp)), 0};
+    return {rs, wait + (g.reorders_codes ? 0 : (std::max(0, -c.min_disp) + g.strips - 1) / g.strips), 0};
   }
 
   CostFunction cost_;  // SHD over a 1 x 1 window is census

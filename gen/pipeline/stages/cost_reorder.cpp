@@ -19,17 +19,18 @@ class CostReorderStage : public Stage {
   // (fpstereo_strip_code_reorder registers it), and below min-disp 0 a slot's entries are
   // written when its match pixels are there, code_base_wait_slots later.
   Latency latency(const Geometry& g) const override {
-    if (!g.reorders_codes) return {0, 0, 1};
-    return {0, code_base_wait_slots(g), g.strips > 1 ? 2 : 1};
+    if (g.strips > 1) return {0, code_base_wait_slots(g), 2};
+    return {0, code_base_wait_slots(g), 1};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) {
-      // Strip s's code RAM: (s + 1) * K rows of R / P words, a slot's P entries each.
+      // Strip s's RAM: (s + 1) * K rows of R / P words, a slot's P entries each (code entries, or
+      // SAD's and ZSAD's cost words).
       std::vector<StageMemory> m;
       const int64_t words = g.row_slots / g.strips;
       for (int s = 0; s < g.strips; ++s)
         m.push_back({"core.aggregation.code_ram.codes.strip[" + std::to_string(s) + "].ram.mem",
-                     int64_t(s + 1) * g.chains * words, 2 * int64_t(g.code_entry_bits) * g.strips});
+                     int64_t(s + 1) * g.chains * words, strip_entry_bits(g) * g.strips});
       return m;
     }
     if (!g.reorders_codes) return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
@@ -108,6 +109,7 @@ class CostReorderStage : public Stage {
   // With strips the RAMs are the strips' own (fpstereo_strip_code_reorder, in the aggregation
   // stage's fpstereo_strip_aggregation): here, what a shift writes there, a slot's P entries.
   static void strip_writes(const RtlDesign& d, CoreBuilder& core) {
+    if (!d.reorders_codes) return strip_cost_writes(d, core);
     const int P = d.strips, entry_bits = d.code_entry_bits;
     core.text("\n  // Code writes: a slot's P pixels' entries into their strip's code RAM.\n");
     // A pixel's entry is its code, with the fused cost its feature above it.
@@ -163,6 +165,31 @@ class CostReorderStage : public Stage {
                            })),
                {"lr2_code_data"});
     prefix(d, core, base, m, "lr2_");
+  }
+
+  // SAD and ZSAD in strips: the cost words as they leave the cost stage, each pixel's with its
+  // adaptive P2 penalties above (which leave with them).
+  static void strip_cost_writes(const RtlDesign& d, CoreBuilder& core) {
+    const int P = d.strips;
+    const int64_t cost_bits = int64_t(d.cfg.uf) * d.widths.cost, penalty_bits = d.penalty_bits;
+    core.text("\n  // Cost writes: a slot's P pixels' cost words into their strip's RAM.\n");
+    core.wire("code_we", 1);
+    core.wire("code_slot", d.x_bits);
+    core.wire("code_row", d.cost_row_bits);
+    core.wire("code_data", int64_t(P) * d.cost_word_bits);
+    const int64_t extra_bits = int64_t(P) * std::max<int64_t>(1, penalty_bits);  // (unread: in code_data)
+    core.wire("code_extra", extra_bits);
+    core.wire("code_prefix", 1);
+    const std::string data = concat_high_to_low(P, [&](int q) {
+      const std::string costs = bit_field("costs", q * cost_bits, cost_bits);
+      return penalty_bits == 0 ? costs : bit_field("cost_penalties", q * penalty_bits, penalty_bits) + ", " + costs;
+    });
+    core.logic(fmt::format("  assign {{code_we, code_slot, code_row}} = {{cost_we, cost_slot, cost_row}};\n"
+                           "  assign code_data = {};\n"
+                           "  assign code_extra = {}'d0;\n"
+                           "  assign code_prefix = 1'b0;\n",
+                           data, extra_bits),
+               {"code_we", "code_slot", "code_row", "code_data", "code_extra", "code_prefix"});
   }
 
   // The prefix, taken from the row's match slots as they pass and held from the slot whose entries

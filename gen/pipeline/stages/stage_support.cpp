@@ -137,16 +137,20 @@ Connections strip_aggregation_parameters(const RtlDesign& d) {
   for (const auto& p : aggregator_parameters(d))
     if (p.first != "G" && p.first != "G_W") parameters.push_back(p);
   return parameters + fused_cost_parameters(d) +
-         Connections{{"CODES", "1"},
+         Connections{{"CODES", d.reorders_codes ? "1" : "0"},
                      {"HAMMING", d.cfg.cost == CostFunction::Rank ? "0" : "1"},
                      {"CODE_W", num(std::max(1, d.widths.code))},
-                     {"ENTRY_W", num(d.code_entry_bits)},
+                     {"ENTRY_W", num(std::max(1, d.code_entry_bits))},
                      {"LANES_LAT", num(d.cost_lanes_latency)},
                      {"CHAIN_LAT", num(d.cost_latency)},
                      {"COST_LEAD", num(d.cost_lead)},
                      {"RAM", "1"},
                      {"SLOT_ROWS", num(d.slot_rows)},
                      {"SLOT_W", num(d.cost_row_bits)}};
+}
+
+int64_t strip_entry_bits(const Geometry& g) {
+  return g.reorders_codes ? 2 * int64_t(g.code_entry_bits) + g.penalty_bits : g.cost_word_bits;
 }
 
 int strip_dm_address_bits(const Geometry& g) { return clog2((int64_t(g.strips) * g.chains + 1) * g.row_slots); }

@@ -93,6 +93,9 @@ Connections aggregator_parameters(const RtlDesign& d);
 // strips, the aggregators' (but the groups: G = 1 in strips), the fused cost's, the code entries'
 // and their RAMs'.
 Connections strip_aggregation_parameters(const RtlDesign& d);
+// A pixel's entry in a strip's RAM: its base and match code entries (with adaptive P2's
+// penalties), or SAD's and ZSAD's cost word (with them).
+int64_t strip_entry_bits(const Geometry& g);
 // The address bits of a strip's match-side Dm writes (strip 0's, the most: (P * K + 1) * R words).
 int strip_dm_address_bits(const Geometry& g);
 
