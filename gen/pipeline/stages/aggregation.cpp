@@ -147,8 +147,7 @@ class AggregationStage : public Stage {
                                   {"LR1", lr1 ? "1" : "0"},
                                   {"LR2", lr2 ? "1" : "0"},
                                   {"LR1_AW", num(dm_bits)},
-                                  {"LR1_LAG", num(d.wta_word_lag + d.subpixel_steps +
-                                                  (c.confidence ? kConfidenceSteps : 0))},
+                                  {"LR1_LAG", num(strip_lr1_lag(d))},
                                   {"RIGHT_VIEW", c.right_view ? "1" : "0"},
                                   {"VIEW_WAIT", num(check_wait_slots(d))},
                                   {"OUTPUT", "1"},

@@ -1,6 +1,7 @@
 // Cost reorder RAM: the cost words in raster order in, in chain order out; or, where the geometry
 // reorders codes, the pixels' code entries (fpstereo_code_reorder), whose costs fpstereo_chain_cost
-// computes in chain order (the aggregation stage places it).
+// computes in chain order (the aggregation stage places it). In strips the RAMs are the strips'
+// own, of code entries or (SAD, ZSAD) cost words: here, their writes.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -19,8 +20,7 @@ class CostReorderStage : public Stage {
   // (fpstereo_strip_code_reorder registers it), and below min-disp 0 a slot's entries are
   // written when its match pixels are there, code_base_wait_slots later.
   Latency latency(const Geometry& g) const override {
-    if (g.strips > 1) return {0, code_base_wait_slots(g), 2};
-    return {0, code_base_wait_slots(g), 1};
+    return {0, code_base_wait_slots(g), g.strips > 1 ? 2 : 1};
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips > 1) {

@@ -91,11 +91,13 @@ constexpr int kMatchSideAddressSteps = 3;
 
 // The steps the base side's words take from the sums to the disparity RAMs' writes (the winner,
 // the sub-pixel fit, the confidence and the write's register), LR1's writes' lag plus one.
-int base_word_steps(const Geometry& g) {
-  return g.wta_word_lag + g.subpixel_steps + (g.cfg.confidence ? kConfidenceSteps : 0) + 1;
-}
+int base_word_steps(const Geometry& g) { return strip_lr1_lag(g) + 1; }
 
 }  // namespace
+
+int strip_lr1_lag(const Geometry& g) {
+  return g.wta_word_lag + g.subpixel_steps + (g.cfg.confidence ? kConfidenceSteps : 0);
+}
 
 int lr2_schedule_lead(const Geometry& g) {
   // The base side's writes wait for adaptive P2's penalties (fpstereo_strip_code_reorder's

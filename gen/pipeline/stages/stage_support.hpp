@@ -50,6 +50,11 @@ int code_base_wait_slots(const Geometry& g, int min_disp);
 // m' = -(m + dmax - 1), its min-disp, its lanes the indices from dmax - 1 down.
 int lr2_match_min_disp(const Geometry& g);
 
+// In strips, the steps LR1's writes wait so that they land with the strips' disparity words: the
+// winner's, the sub-pixel fit's and the confidence's latencies (fpstereo_strip_aggregation's
+// LR1_LAG).
+int strip_lr1_lag(const Geometry& g);
+
 // LR2's match side's schedule in strips after the base side's, in steps (negative where earlier):
 // its entries' wait below its min-disp less the base side's, and less the base side's writes' wait
 // for adaptive P2's penalties, which the match side does without (its reads follow its writes as
