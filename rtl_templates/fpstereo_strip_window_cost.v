@@ -65,7 +65,6 @@ module fpstereo_strip_window_cost #(
   localparam LENGTH = T + P - 1 + EXTRA + VIEW_COLS;  // the ring's columns
   localparam COLUMN_W = N * 8;
   localparam POSITION_W = 1 + X_W + ROW_W;
-  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || N < 3 || N % 2 == 0 || T < 0 || (COLS - N / 2) % P != 0) begin : invalid
@@ -75,7 +74,7 @@ module fpstereo_strip_window_cost #(
       fpstereo_invalid_parameters_strip_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
     end
   endgenerate
-  genvar q, e, r;
+  genvar q, e;
 
   // The base side: the P windows masked and registered, then with their position (the transform's,
   // a shift later) waiting 1 + MEAN_WAIT + BASE_WAIT shifts in all.
@@ -96,27 +95,8 @@ module fpstereo_strip_window_cost #(
   generate
     if (ZERO_MEAN != 0) begin : means
       for (q = 0; q < P; q = q + 1) begin : pixel
-        wire [N*COLUMN_SUM_W-1:0] row_sums;
-        for (r = 0; r < N; r = r + 1) begin : row
-          fpstereo_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
-            .clk(clk), .en(shift), .values(base_taken[(q*N*N + r*N)*8 +: N*8]),
-            .sum(row_sums[r*COLUMN_SUM_W +: COLUMN_SUM_W]));
-        end
-        reg  [N*COLUMN_SUM_W-1:0] row_sums_q;
-        wire [WINSUM_W-1:0]       total;
-        fpstereo_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
-          .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
-        reg  [WINSUM_W-1:0] total_q;
-        reg  [7:0]          mean_q;
-        always @(posedge clk)
-          if (shift) begin
-            row_sums_q <= row_sums;
-            total_q <= total;
-            /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-            mean_q <= (total_q * MEAN_MUL) >> MEAN_SHIFT;
-            /* verilator lint_on WIDTH */
-          end
-        assign means_now[q*8 +: 8] = mean_q;
+        fpstereo_window_mean #(.N(N), .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) base_mean_of (
+          .clk(clk), .en(shift), .window(base_taken[q*N*N*8 +: N*N*8]), .mean(means_now[q*8 +: 8]));
       end
     end else begin : no_means
       assign means_now = {(P*8){1'b0}};

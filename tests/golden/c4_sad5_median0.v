@@ -1421,7 +1421,6 @@ module fps_sad5_d128u32_baf239_pixel_window_cost #(
   wire [N*N*8-1:0] base_masked;
   fps_sad5_d128u32_baf239_window_mask #(.N(N), .WORD_W(8)) base_mask (
     .window(window_left), .row_valid(row_valid), .col_valid(col_valid), .masked(base_masked));
-  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
   localparam POSITION_W = X_W + SIGNED_Y_W + COST_ROW_W;
   localparam COLUMN_W = N*8 + COLUMN_SUM_W;
   // The match window's newest column, zero outside the image, and its sum.
@@ -1466,7 +1465,6 @@ module fps_sad5_d128u32_baf239_pixel_window_cost #(
   /* verilator lint_off UNUSEDSIGNAL */  // ZSAD only
   wire [7:0]          base_mean;
   /* verilator lint_on UNUSEDSIGNAL */
-  genvar r;
   generate
     if (ZERO_MEAN != 0) begin : mean_wait
       fps_sad5_d128u32_baf239_delay #(.WIDTH(COLUMN_W), .DEPTH(2)) column_wait (
@@ -1474,28 +1472,10 @@ module fps_sad5_d128u32_baf239_pixel_window_cost #(
       fps_sad5_d128u32_baf239_delay #(.WIDTH(N*N*8 + POSITION_W), .DEPTH(2)) base_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_h, position_h}),
         .out({base_l, history_x, history_y, history_slot}));
-      // The base window's mean over three shifts from the held window: its row sums at
-      // shift k + 1, their total at k + 2, the mean (a constant multiply) at k + 3.
-      wire [N*COLUMN_SUM_W-1:0] row_sums;
-      for (r = 0; r < N; r = r + 1) begin : row
-        fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
-          .clk(clk), .en(shift), .values(base_t[r*N*8 +: N*8]), .sum(row_sums[r*COLUMN_SUM_W +: COLUMN_SUM_W]));
-      end
-      reg  [N*COLUMN_SUM_W-1:0] row_sums_q;
-      wire [WINSUM_W-1:0]   total;
-      fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
-        .clk(clk), .en(shift), .values(row_sums_q), .sum(total));
-      reg  [WINSUM_W-1:0]   total_q;
-      reg  [7:0]            mean_q;
-      always @(posedge clk)
-        if (shift) begin
-          row_sums_q <= row_sums;
-          total_q <= total;
-          /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
-          mean_q <= (total_q * MEAN_MUL) >> MEAN_SHIFT;
-          /* verilator lint_on WIDTH */
-        end
-      assign base_mean = mean_q;
+      // The base window's mean over three shifts from the held window (its row sums at shift
+      // k + 1, their total at k + 2, the mean at k + 3).
+      fps_sad5_d128u32_baf239_window_mean #(.N(N), .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) base_mean_of (
+        .clk(clk), .en(shift), .window(base_t), .mean(base_mean));
     end else begin : no_wait
       assign column_l = column_t;
       assign {base_l, history_x, history_y, history_slot} = {base_h, position_h};
@@ -3181,6 +3161,48 @@ module fps_sad5_d128u32_baf239_delay #(
     end
   endgenerate
   assign out = line[WIDTH*DEPTH-1 -: WIDTH];
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// ZSAD's window mean (docs/semantics.md, section 2): floor(sum / N^2) of an N x N window of
+// pixels, as (sum * MEAN_MUL) >> MEAN_SHIFT, over three steps of en: the rows' sums, their total,
+// the constant multiply. mean is the window's of three steps before.
+module fps_sad5_d128u32_baf239_window_mean #(
+  parameter N = 5,
+  // width of a row's pixel sum (it holds 255 * N)
+  parameter COLUMN_SUM_W = 11,
+  parameter MEAN_MUL = 1,
+  parameter MEAN_SHIFT = 0
+) (
+  input  wire           clk,
+  input  wire           en,
+  input  wire [N*N*8-1:0] window,
+  output reg  [7:0]     mean
+);
+  localparam WINSUM_W = COLUMN_SUM_W + 4;  // a window's pixel sum (N <= 11)
+  wire [N*COLUMN_SUM_W-1:0] row_sums;
+  genvar r;
+  generate
+    for (r = 0; r < N; r = r + 1) begin : row
+      fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) row_total (
+        .clk(clk), .en(en), .values(window[r*N*8 +: N*8]), .sum(row_sums[r*COLUMN_SUM_W +: COLUMN_SUM_W]));
+    end
+  endgenerate
+  reg  [N*COLUMN_SUM_W-1:0] row_sums_q;
+  wire [WINSUM_W-1:0]       total;
+  fps_sad5_d128u32_baf239_sum_tree #(.N(N), .IN_W(COLUMN_SUM_W), .SUM_W(WINSUM_W)) window_total (
+    .clk(clk), .en(en), .values(row_sums_q), .sum(total));
+  reg  [WINSUM_W-1:0] total_q;
+  always @(posedge clk)
+    if (en) begin
+      row_sums_q <= row_sums;
+      total_q <= total;
+      /* verilator lint_off WIDTH */  // constant multiply and shift, cut to the 8-bit mean
+      mean <= (total_q * MEAN_MUL) >> MEAN_SHIFT;
+      /* verilator lint_on WIDTH */
+    end
 endmodule
 `resetall
 
