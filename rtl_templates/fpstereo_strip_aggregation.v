@@ -18,7 +18,9 @@
 // adaptive P2's penalties, a slot and EXTRA_LAT steps later; below MIN_DISP 0, code_prefix: the
 // first match entries of the row whose first pixel strip 0 reads next, fpstereo_chain_cost's
 // prefix), and each strip's RAM holds
-// (p + 1) * K rows (COST_ROWS is then unused). With OUTPUT each strip's sums
+// (p + 1) * K rows (COST_ROWS is then unused). With RAM and no CODES (SAD and ZSAD) the RAMs hold
+// cost words, adaptive P2's penalties above each (code_data: a slot's P words, written as the
+// window costs leave; no BASE_WAIT, no prefix). With OUTPUT each strip's sums
 // go on to a winner-take-all (fpstereo_wta, with UNIQUE fpstereo_wta_unique and its uniqueness
 // check), with SUBPIXEL_BITS a sub-pixel fit (fpstereo_subpixel), with CONFIDENCE the confidence
 // (fpstereo_confidence, from fpstereo_wta_unique's two best sums: UNIQUE must be set), and its

@@ -54,7 +54,7 @@ module fpstereo_strip_code_reorder #(
   generate
     if ((P != 2 && P != 4) || STRIP_PIXELS % P != 0 || P * WORDS > (1 << X_W) || SLOT_ROWS > (1 << SLOT_W) ||
         (1 << AW) < P * K * STRIP_PIXELS || (EXTRA_W > 0 && EXTRA_LAT < 1) || BASE_WAIT < 0 ||
-        ENTRY_W % 2 != 0) begin : invalid
+        (BASE_WAIT > 0 && ENTRY_W % 2 != 0)) begin : invalid
       fpstereo_invalid_parameters_strip_code_reorder_P_STRIP_PIXELS_widths_EXTRA_LAT_or_BASE_WAIT failed ();
     end
   endgenerate
