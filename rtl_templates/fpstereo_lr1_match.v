@@ -80,6 +80,9 @@ module fpstereo_lr1_match #(
   localparam integer X_FIRST_I = X_BASE, X_LAST_I = X_BASE + ROW_SLOTS - 1;
   localparam [X_W-1:0] X_FIRST = X_FIRST_I[X_W-1:0], X_LAST = X_LAST_I[X_W-1:0];
   assign previous = FROM_LEFT && x == X_FIRST ? edge_in : stored;
+  // Only the first strip (or the whole row) holds the row's first pixel; right of it x is never 0,
+  // and the compare would only deepen the take behind the left edge's multiplexer.
+  localparam ROW_FIRST = !FROM_LEFT;
   // The strip's last pixel's state, for the next strip's first pixel K + 1 steps later (the
   // last strip's goes nowhere).
   always @(posedge clk)
@@ -93,7 +96,7 @@ module fpstereo_lr1_match #(
       wire [DISP_W-1:0] disparity = group * UF + l;
       wire [E_W-1:0]    earlier = (l == 0) ? below_q : previous[(l-1)*E_W +: E_W];
       wire [SUM_W-1:0]  offered = sums[l*SUM_W +: SUM_W];
-      wire              take = disparity == 0 || (MIN_DISP < 0 && x == 0) || offered < earlier[E_W-1 -: SUM_W];
+      wire              take = disparity == 0 || (MIN_DISP < 0 && ROW_FIRST && x == 0) || offered < earlier[E_W-1 -: SUM_W];
       assign updated[l*E_W +: E_W] = take ? {offered, disparity} : earlier;
       assign row_end_wdata[l*DISP_W +: DISP_W] = updated[l*E_W +: DISP_W];
     end

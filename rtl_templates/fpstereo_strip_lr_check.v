@@ -9,9 +9,9 @@
 // x - MIN_DISP - D (fpstereo_strip_match_lookup: a copy of every strip's bank and of the row-end
 // RAM per word). read_slots are the strips' row slots of the read row
 // (fpstereo_strip_disparity_reorder's), with the read stream. uf = dmax. The read stream is
-// registered first (its words come from the disparity RAMs' read multiplexer, and the bank
-// addresses are sums of them), so the check takes four steps (and VIEW_WAIT) where the one-pixel
-// check takes three. As in fpstereo_lr_check, a read word with REFINED_W > 0 carries the refined disparity
+// registered first (its words come from the disparity RAMs' read multiplexer), beside each
+// lookup's bank addresses summed but for the words' disparities, so the check takes four steps
+// (and VIEW_WAIT) where the one-pixel check takes three. As in fpstereo_lr_check, a read word with REFINED_W > 0 carries the refined disparity
 // above the whole D, which the check uses, and leaves as {invalid, refined}; CARRY_W bits above
 // the invalid flag (the confidence) pass unchanged. With RIGHT_VIEW each word also looks up
 // Dm(x) itself, which leaves beside the checked word (right_word, the right view's disparity).
@@ -90,6 +90,32 @@ module fpstereo_strip_lr_check #(
       fpstereo_invalid_parameters_strip_lr_check_P_STRIP_PIXELS_or_widths failed ();
     end
   endgenerate
+  // Each lookup's bank addresses but for the disparity, from the read stream's registers before
+  // it is registered: bank b's row slot * R + x + OFFSET - b * R, so that a lookup's address is
+  // one subtraction of the word's D from registers (the check's: LR1, the completing pixel x - D +
+  // DMAX - 1; LR2, x' = x - MIN_DISP - D; the right view's Dm(x), no D: x + MIN_DISP + DMAX - 1
+  // with LR1, x with LR2). Lookup l of word q: bases[((q * LOOKUPS) + l) * P + b].
+  localparam LOOKUPS = RIGHT_VIEW != 0 ? 2 : 1;
+  localparam integer CHECK_OFFSET = LR2 != 0 ? -MIN_DISP : DMAX - 1;
+  localparam integer RIGHT_OFFSET = LR2 != 0 ? 0 : MIN_DISP + DMAX - 1;
+  localparam BASES_W = P * LOOKUPS * P * CAW;
+  wire [BASES_W-1:0] read_bases, in_bases;
+  genvar q, b, l;
+  generate
+    for (q = 0; q < P; q = q + 1) begin : word_base
+      localparam [LOG_P-1:0] Q = q;
+      for (l = 0; l < LOOKUPS; l = l + 1) begin : lookup_base
+        localparam integer OFFSET = l == 0 ? CHECK_OFFSET : RIGHT_OFFSET;
+        for (b = 0; b < P; b = b + 1) begin : bank_base
+          // modulo 2^CAW: the bank that holds the place reads within its rows
+          // verilator lint_off WIDTH
+          assign read_bases[((q * LOOKUPS + l) * P + b) * CAW +: CAW] =
+              read_slots[b*SLOT_W +: SLOT_W] * R + {read_x, Q} + OFFSET - b * R;
+          // verilator lint_on WIDTH
+        end
+      end
+    end
+  endgenerate
   // The read stream, registered (step 0) and VIEW_WAIT steps more: the lookups' (in_).
   wire                  in_done, in_event;
   wire [X_W-1:0]        in_x;
@@ -98,13 +124,12 @@ module fpstereo_strip_lr_check #(
   wire [P*IN_W-1:0]     in_word;
   fpstereo_delay #(.WIDTH(2), .DEPTH(1 + VIEW_WAIT), .RESET(1)) read_flags (
     .clk(clk), .rst(restart), .en(adv), .in({read_done, read_event}), .out({in_done, in_event}));
-  fpstereo_delay #(.WIDTH(X_W + Y_W + P * SLOT_W + P * IN_W), .DEPTH(1 + VIEW_WAIT)) read_stream (
-    .clk(clk), .rst(1'b0), .en(adv), .in({read_x, read_y, read_slots, read_word}),
-    .out({in_x, in_y, in_slots, in_word}));
+  fpstereo_delay #(.WIDTH(X_W + Y_W + P * SLOT_W + P * IN_W + BASES_W), .DEPTH(1 + VIEW_WAIT)) read_stream (
+    .clk(clk), .rst(1'b0), .en(adv), .in({read_x, read_y, read_slots, read_word, read_bases}),
+    .out({in_x, in_y, in_slots, in_word, in_bases}));
   // The strip that writes the row ends: the one holding the frame's last pixel (a register: the
   // frame size holds while a frame runs).
   wire [P-1:0] reaches;  // reaches[s]: the frame's last pixel lies in strip s or right of it
-  genvar q, b;
   generate
     for (b = 0; b < P; b = b + 1) begin : strip_reach
       localparam integer FIRST_I = b * R;
@@ -154,12 +179,16 @@ module fpstereo_strip_lr_check #(
       // the lookup's place: LR1, x - D + DMAX - 1, the completing pixel; LR2, x' = x - MIN_DISP - D
       wire [P_W-1:0] completing = {in_x, Q} + (DMAX - 1) - d;
       wire [P_W-1:0] x_match = x_ahead - d_behind;
+      wire [P*CAW-1:0] addrs;
+      for (b = 0; b < P; b = b + 1) begin : bank_addr
+        assign addrs[b*CAW +: CAW] = in_bases[(q * LOOKUPS * P + b) * CAW +: CAW] - d;
+      end
       wire [DISP_W-1:0] dm;
       fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
-                                    .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
+                                    .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
         .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
         .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
-        .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
+        .end_waddr(end_waddr), .end_wdata(end_wdata), .addrs(addrs), .end_slot(end_slot),
         .xm_behind(x_ahead - d),  // x' + BEHIND
         .completing(LR2 != 0 ? x_match : completing), .dm(dm));
       reg              outside_c, outside_q;
@@ -190,10 +219,11 @@ module fpstereo_strip_lr_check #(
         wire [P_W-1:0] right_behind = {in_x, Q} + BEHIND;
         wire [DISP_W-1:0] dm_right;
         fpstereo_strip_match_lookup #(.P(P), .K(K), .STRIP_PIXELS(R), .DMAX(DMAX), .DISP_W(DISP_W), .CAW(CAW),
-                                      .SLOT_W(SLOT_W), .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
+                                      .X_W(X_W), .MIN_DISP(MIN_DISP), .LR2(LR2)) lookup (
           .clk(clk), .adv(adv), .frame_width(frame_width), .completed_we(completed_we),
           .completed_waddr(completed_waddr), .completed_wdata(completed_wdata), .end_we(end_we),
-          .end_waddr(end_waddr), .end_wdata(end_wdata), .slots(in_slots), .end_slot(end_slot),
+          .end_waddr(end_waddr), .end_wdata(end_wdata), .addrs(in_bases[(q * LOOKUPS + 1) * P * CAW +: P * CAW]),
+          .end_slot(end_slot),
           .xm_behind(right_behind),
           .completing(LR2 != 0 ? right_x : right_completing), .dm(dm_right));
         reg [DISP_W-1:0] dm_right_q, right_q;

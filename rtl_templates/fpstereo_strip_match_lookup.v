@@ -5,11 +5,12 @@
 // given as x' + BEHIND (xm_behind) and with the place of the base pixel that completes it,
 // x' + MIN_DISP + DMAX - 1 (completing; the caller forms each in one adder from its registers).
 // Strip b's completed pixels are in a bank of their own, (P - b) * K + 1 rows of STRIP_PIXELS,
-// at row slot * STRIP_PIXELS + completing - b * STRIP_PIXELS; every bank is read at once and the
-// one holding the completing pixel picked in the second step. x' reads the row end where its
+// at row slot * STRIP_PIXELS + completing - b * STRIP_PIXELS (addrs: the caller forms each bank's
+// address in one subtraction from registers); every bank is read at once and the one holding the
+// completing pixel picked in the second step. x' reads the row end where its
 // completing pixel lies right of the row (from the row-end RAM, P * K + 1 rows), and is 0 where
-// no base pixel of the row meets it. slots: the strips' row slots of the row read (row end:
-// end_slot, the strip's that wrote the row end). With LR2 the banks hold LR2's match side's Dm of
+// no base pixel of the row meets it. end_slot: the row slot of the row read in the row-end RAM
+// (the strip's that wrote the row end). With LR2 the banks hold LR2's match side's Dm of
 // every match pixel at its own place (strip b: its pixels x', completing = x'), and there is no row
 // end.
 module fpstereo_strip_match_lookup #(
@@ -19,7 +20,6 @@ module fpstereo_strip_match_lookup #(
   parameter DMAX = 16,
   parameter DISP_W = 4,
   parameter CAW = 9,
-  parameter SLOT_W = 5,
   parameter X_W = 7,
   parameter MIN_DISP = 0,
   parameter LR2 = 0
@@ -37,8 +37,8 @@ module fpstereo_strip_match_lookup #(
   input  wire                 end_we,
   input  wire [$clog2(P*K+1)-1:0] end_waddr,
   input  wire [DMAX*DISP_W-1:0] end_wdata,
-  // first step
-  input  wire [P*SLOT_W-1:0]  slots,
+  // first step: each bank's read address (the top bits unused as in the writes'), the row end's
+  input  wire [P*CAW-1:0]     addrs,
   input  wire [$clog2(P*K+1)-1:0] end_slot,
   /* verilator lint_on UNUSEDSIGNAL */
   input  wire [X_W+9:0]       xm_behind,
@@ -75,10 +75,9 @@ module fpstereo_strip_match_lookup #(
     for (b = 0; b < P; b = b + 1) begin : bank_of_strip
       localparam ROWS = (P - b) * K + 1;
       localparam AW = $clog2(ROWS * R);
-      wire [AW-1:0] raddr = slots[b*SLOT_W +: SLOT_W] * R + (completing - b * R);
       fpstereo_ram_sdp #(.WIDTH(DISP_W), .DEPTH(ROWS * R), .ADDR_W(AW)) completed (
         .clk(clk), .we(completed_we[b]), .waddr(completed_waddr[b*CAW +: AW]),
-        .wdata(completed_wdata[b*DISP_W +: DISP_W]), .re(adv), .raddr(raddr), .rdata(banks_q[b*DISP_W +: DISP_W]));
+        .wdata(completed_wdata[b*DISP_W +: DISP_W]), .re(adv), .raddr(addrs[b*CAW +: AW]), .rdata(banks_q[b*DISP_W +: DISP_W]));
     end
   endgenerate
   wire [DMAX*DISP_W-1:0] end_q;

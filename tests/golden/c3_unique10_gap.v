@@ -663,36 +663,18 @@ module fps_census7_d128u32_79bc18_control #(
   reg [31:0]      rejected, frames_done, frames_dropped, frames_truncated, protocol_errors;
   assign enable = enable_q;
 
-  // ---- Writes: address and data together, one response at a time. A write is checked as it is
-  // taken and applied in the next cycle, its response following it, so that the range checks and
-  // the register updates lie in different cycles (no other write comes between them).
+  // ---- Writes: address and data together, one response at a time. A write is registered as it
+  // is taken, then checked and applied in the next cycle, its response following it, so that the
+  // handshake and the range checks lie in different cycles (no other write comes between them).
   // the widest setting
   localparam V_W = X_W > Y_W ? (X_W > PATH_W ? (X_W > 7 ? X_W : 7) : (PATH_W > 7 ? PATH_W : 7))
                              : (Y_W > PATH_W ? (Y_W > 7 ? Y_W : 7) : (PATH_W > 7 ? PATH_W : 7));
-  reg         request, request_accepted;
+  reg         request, request_full, request_high_zero;
   reg [7:0]   request_addr;
   reg [V_W-1:0] v;
   wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
-  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
-  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
-  wire [31:0] w = s_axi_wdata;
-  reg accepted;
-  always @* begin
-    case (s_axi_awaddr)
-      A_CONTROL:      accepted = 1'b1;
-      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           accepted = w <= P1_MAX_V && w <= p2_now;
-      A_P2:           accepted = w <= P2_MAX_V && w >= p1_now;
-      A_UNIQUENESS:   accepted = UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
-      A_LR_THRESHOLD: accepted = LR_SETTABLE != 0 && w <= 32'd15;
-      A_WIDTH:        accepted = w >= MIN_WIDTH_V && w <= MAX_WIDTH_V && (w & (WIDTH_STEP_V - 1)) == 0;
-      A_HEIGHT:       accepted = w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
-      default:        accepted = 1'b0;
-    endcase
-    if (s_axi_wstrb != 4'hF) accepted = 1'b0;
-  end
   always @(posedge clk)
     if (rst) request <= 1'b0;
     else request <= write;
@@ -700,8 +682,30 @@ module fps_census7_d128u32_79bc18_control #(
     if (write) begin
       request_addr <= s_axi_awaddr;
       v <= s_axi_wdata[V_W-1:0];
-      request_accepted <= accepted;
+      request_high_zero <= s_axi_wdata[31:V_W] == 0;
+      request_full <= s_axi_wstrb == 4'hF;
     end
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  // Every range's upper bound fits in V_W bits, so a value is in range only if its bits above
+  // V_W are zero, and then it is w.
+  wire [31:0] w = {{(32-V_W){1'b0}}, v};
+  reg request_accepted;
+  always @* begin
+    case (request_addr)
+      A_CONTROL:      request_accepted = 1'b1;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      A_P1:           request_accepted = request_high_zero && w <= P1_MAX_V && w <= p2_now;
+      A_P2:           request_accepted = request_high_zero && w <= P2_MAX_V && w >= p1_now;
+      A_UNIQUENESS:   request_accepted = UNIQUENESS_SETTABLE != 0 && request_high_zero && w <= 32'd99;
+      A_LR_THRESHOLD: request_accepted = LR_SETTABLE != 0 && request_high_zero && w <= 32'd15;
+      A_WIDTH:        request_accepted = request_high_zero && w >= MIN_WIDTH_V && w <= MAX_WIDTH_V &&
+                                         (w & (WIDTH_STEP_V - 1)) == 0;
+      A_HEIGHT:       request_accepted = request_high_zero && w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      default:        request_accepted = 1'b0;
+    endcase
+    if (!request_full) request_accepted = 1'b0;
+  end
 
   always @(posedge clk)
     if (rst) begin
@@ -2435,6 +2439,9 @@ module fps_census7_d128u32_79bc18_lr1_match #(
   localparam integer X_FIRST_I = X_BASE, X_LAST_I = X_BASE + ROW_SLOTS - 1;
   localparam [X_W-1:0] X_FIRST = X_FIRST_I[X_W-1:0], X_LAST = X_LAST_I[X_W-1:0];
   assign previous = FROM_LEFT && x == X_FIRST ? edge_in : stored;
+  // Only the first strip (or the whole row) holds the row's first pixel; right of it x is never 0,
+  // and the compare would only deepen the take behind the left edge's multiplexer.
+  localparam ROW_FIRST = !FROM_LEFT;
   // The strip's last pixel's state, for the next strip's first pixel K + 1 steps later (the
   // last strip's goes nowhere).
   always @(posedge clk)
@@ -2448,7 +2455,7 @@ module fps_census7_d128u32_79bc18_lr1_match #(
       wire [DISP_W-1:0] disparity = group * UF + l;
       wire [E_W-1:0]    earlier = (l == 0) ? below_q : previous[(l-1)*E_W +: E_W];
       wire [SUM_W-1:0]  offered = sums[l*SUM_W +: SUM_W];
-      wire              take = disparity == 0 || (MIN_DISP < 0 && x == 0) || offered < earlier[E_W-1 -: SUM_W];
+      wire              take = disparity == 0 || (MIN_DISP < 0 && ROW_FIRST && x == 0) || offered < earlier[E_W-1 -: SUM_W];
       assign updated[l*E_W +: E_W] = take ? {offered, disparity} : earlier;
       assign row_end_wdata[l*DISP_W +: DISP_W] = updated[l*E_W +: DISP_W];
     end
