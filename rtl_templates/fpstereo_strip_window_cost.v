@@ -1,9 +1,11 @@
 `resetall
 `default_nettype none
-// SAD and ZSAD costs of a slot's P pixels a step, in raster order, for the strips
-// (docs/ppc-hardware.md, "SAD and ZSAD in strips"); fpstereo_pixel_window_cost is the one-pixel
-// stage. uf = dmax, so a slot is a step. Pixel q of the slot (x = slot * P + q) takes its base
-// window out of fpstereo_front_end's arrays (columns q .. q + N - 1, zero outside the image) and
+// SAD, ZSAD and SHD costs of a slot's P pixels a step, in raster order, for the strips
+// (docs/ppc-hardware.md, "SAD and ZSAD in strips"); fpstereo_pixel_window_cost and
+// fpstereo_code_window_cost are the one-pixel stages. uf = dmax, so a slot is a step. The arrays
+// are of pixels (fpstereo_front_end's) or, for SHD (HAMMING, ELEM_W the codes' width), of census
+// codes (fpstereo_strip_code_windows'). Pixel q of the slot (x = slot * P + q) takes its base
+// window out of the arrays (columns q .. q + N - 1, zero outside the image) and
 // its UF + N - 1 match columns from a ring that the slot's P input columns (the arrays' newest,
 // zero in rows outside the image) enter each step: pixel q's lanes (fpstereo_window_cost_lanes)
 // read the ring at a fixed offset, newest first, so no lane needs a multiplexer.
@@ -20,10 +22,13 @@
 module fpstereo_strip_window_cost #(
   parameter P = 2,
   parameter N = 5,
-  // fpstereo_front_end's array columns: P * (1 + CENTRE_LAG) + N / 2
+  // the arrays' columns: P * (1 + CENTRE_LAG) + N / 2
   parameter COLS = 6,
-  // ZSAD: subtract the windows' means
+  // ZSAD: subtract the windows' means (of pixels)
   parameter ZERO_MEAN = 0,
+  // SHD: the elements are census codes of ELEM_W bits, their distance a Hamming distance
+  parameter HAMMING = 0,
+  parameter ELEM_W = 8,
   parameter UF = 32,
   parameter COST_W = 13,
   parameter COST_MAX = 6375,
@@ -40,9 +45,9 @@ module fpstereo_strip_window_cost #(
   input  wire                  clk,
   input  wire                  shift,
   input  wire [X_W-1:0]        frame_width,
-  input  wire [N*COLS*8-1:0]   window_left,
+  input  wire [N*COLS*ELEM_W-1:0] window_left,
   /* verilator lint_off UNUSEDSIGNAL */  // the newest P columns only
-  input  wire [N*COLS*8-1:0]   window_right,
+  input  wire [N*COLS*ELEM_W-1:0] window_right,
   /* verilator lint_on UNUSEDSIGNAL */
   input  wire [N-1:0]          row_valid,
   input  wire [N+P-2:0]        col_valid,
@@ -63,31 +68,35 @@ module fpstereo_strip_window_cost #(
   localparam MEAN_WAIT = ZERO_MEAN != 0 ? 2 : 0;
   localparam VIEW_COLS = UF + N - 1;
   localparam LENGTH = T + P - 1 + EXTRA + VIEW_COLS;  // the ring's columns
-  localparam COLUMN_W = N * 8;
+  localparam COLUMN_W = N * ELEM_W;
+  localparam WINDOW_W = N * N * ELEM_W;
   localparam POSITION_W = 1 + X_W + ROW_W;
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if ((P != 2 && P != 4) || N < 3 || N % 2 == 0 || T < 0 || (COLS - N / 2) % P != 0) begin : invalid
       fpstereo_invalid_parameters_strip_window_cost_P_N_or_COLS_not_the_front_ends failed ();
     end
-    if (255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
+    if (ZERO_MEAN != 0 && 255 * N >= (1 << COLUMN_SUM_W)) begin : invalid_COLUMN_SUM_W
       fpstereo_invalid_parameters_strip_window_cost_COLUMN_SUM_W_does_not_hold_255_N failed ();
+    end
+    if ((ZERO_MEAN != 0 && (HAMMING != 0 || ELEM_W != 8)) || (HAMMING == 0 && ELEM_W != 8)) begin : invalid_elements
+      fpstereo_invalid_parameters_strip_window_cost_pixels_are_8_bits_and_zero_mean_only_for_pixels failed ();
     end
   endgenerate
   genvar q, e;
 
   // The base side: the P windows masked and registered, then with their position (the transform's,
   // a shift later) waiting 1 + MEAN_WAIT + BASE_WAIT shifts in all.
-  wire [P*N*N*8-1:0] masked;
+  wire [P*WINDOW_W-1:0] masked;
   generate
     for (q = 0; q < P; q = q + 1) begin : base_window
-      wire [N*N*8-1:0] window;
-      fpstereo_window_cut #(.N(N), .COLS(COLS), .WORD_W(8), .Q(q)) cut (.array(window_left), .window(window));
-      fpstereo_window_mask #(.N(N), .WORD_W(8)) mask (
-        .window(window), .row_valid(row_valid), .col_valid(col_valid[q +: N]), .masked(masked[q*N*N*8 +: N*N*8]));
+      wire [WINDOW_W-1:0] window;
+      fpstereo_window_cut #(.N(N), .COLS(COLS), .WORD_W(ELEM_W), .Q(q)) cut (.array(window_left), .window(window));
+      fpstereo_window_mask #(.N(N), .WORD_W(ELEM_W)) mask (
+        .window(window), .row_valid(row_valid), .col_valid(col_valid[q +: N]), .masked(masked[q*WINDOW_W +: WINDOW_W]));
     end
   endgenerate
-  reg [P*N*N*8-1:0] base_taken;
+  reg [P*WINDOW_W-1:0] base_taken;
   always @(posedge clk)
     if (shift) base_taken <= masked;
   // ZSAD: each window's mean from the taken window, over three shifts (row sums, total, mean).
@@ -96,24 +105,24 @@ module fpstereo_strip_window_cost #(
     if (ZERO_MEAN != 0) begin : means
       for (q = 0; q < P; q = q + 1) begin : pixel
         fpstereo_window_mean #(.N(N), .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT)) base_mean_of (
-          .clk(clk), .en(shift), .window(base_taken[q*N*N*8 +: N*N*8]), .mean(means_now[q*8 +: 8]));
+          .clk(clk), .en(shift), .window(base_taken[q*WINDOW_W +: WINDOW_W]), .mean(means_now[q*8 +: 8]));
       end
     end else begin : no_means
       assign means_now = {(P*8){1'b0}};
     end
   endgenerate
   // The windows with their position as the means are done, then BASE_WAIT slots more.
-  wire [P*N*N*8-1:0]    base_meaned;
+  wire [P*WINDOW_W-1:0] base_meaned;
   wire [POSITION_W-1:0] position_meaned;
-  fpstereo_delay #(.WIDTH(P*N*N*8 + POSITION_W), .DEPTH(1 + MEAN_WAIT)) base_mean_wait (
+  fpstereo_delay #(.WIDTH(P*WINDOW_W + POSITION_W), .DEPTH(1 + MEAN_WAIT)) base_mean_wait (
     .clk(clk), .rst(1'b0), .en(shift), .in({base_taken, transform_in_frame, transform_x, transform_slot}),
     .out({base_meaned, position_meaned}));
-  wire [P*N*N*8-1:0]    base;
+  wire [P*WINDOW_W-1:0] base;
   wire [POSITION_W-1:0] position;
   wire [P*8-1:0]        base_means;
   generate
     if (BASE_WAIT > 0) begin : base_late
-      fpstereo_delay #(.WIDTH(P*N*N*8 + POSITION_W + P*8), .DEPTH(BASE_WAIT)) base_wait (
+      fpstereo_delay #(.WIDTH(P*WINDOW_W + POSITION_W + P*8), .DEPTH(BASE_WAIT)) base_wait (
         .clk(clk), .rst(1'b0), .en(shift), .in({base_meaned, position_meaned, means_now}),
         .out({base, position, base_means}));
     end else begin : base_in_time
@@ -129,8 +138,8 @@ module fpstereo_strip_window_cost #(
   generate
     for (q = 0; q < P; q = q + 1) begin : input_column
       for (e = 0; e < N; e = e + 1) begin : element
-        assign columns_now[(P-1-q)*COLUMN_W + e*8 +: 8] =
-            newest_row_valid[e] ? window_right[(e*COLS + COLS - P + q)*8 +: 8] : 8'd0;
+        assign columns_now[(P-1-q)*COLUMN_W + e*ELEM_W +: ELEM_W] =
+            newest_row_valid[e] ? window_right[(e*COLS + COLS - P + q)*ELEM_W +: ELEM_W] : {ELEM_W{1'b0}};
       end
       if (ZERO_MEAN != 0) begin : column_sum
         fpstereo_sum_tree #(.N(N), .IN_W(8), .SUM_W(COLUMN_SUM_W)) total (
@@ -173,11 +182,11 @@ module fpstereo_strip_window_cost #(
       /* verilator lint_off WIDTH */  // the slot's first pixel and q, in the pixel width
       wire [X_W-1:0] x = (position[X_W+ROW_W-1:ROW_W] << LOG_P) + q;
       /* verilator lint_on WIDTH */
-      fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(0), .ELEM_W(8), .SPAN(N), .UF(UF),
+      fpstereo_window_cost_lanes #(.ZERO_MEAN(ZERO_MEAN), .HAMMING(HAMMING), .ELEM_W(ELEM_W), .SPAN(N), .UF(UF),
                                    .COST_W(COST_W), .COST_MAX(COST_MAX), .GROUP_W(1), .X_W(X_W),
                                    .COLUMN_SUM_W(COLUMN_SUM_W), .MEAN_MUL(MEAN_MUL), .MEAN_SHIFT(MEAN_SHIFT),
                                    .MIN_DISP(MIN_DISP), .LAT(LAT)) lanes (
-        .clk(clk), .en(shift), .base(base[q*N*N*8 +: N*N*8]), .base_mean(base_means[q*8 +: 8]),
+        .clk(clk), .en(shift), .base(base[q*WINDOW_W +: WINDOW_W]), .base_mean(base_means[q*8 +: 8]),
         .view(ring[FROM*COLUMN_W +: VIEW_COLS*COLUMN_W]),
         .view_sums(sum_ring[FROM*COLUMN_SUM_W +: VIEW_COLS*COLUMN_SUM_W]), .group(1'b0), .x(x),
         .width(frame_width), .costs(costs[q*UF*COST_W +: UF*COST_W]));

@@ -4,8 +4,8 @@
 # -check, no warning), linted with `verilator --lint-only -Wall` and verified bit-exact in
 # Verilator (scripts/verify-rtl.sh) on a small frame with idle cycles and backpressure.
 #   scripts/random-rtl.sh [--build-dir B] [--tb-opt N] [--strips] SEED [COUNT]
-# --strips draws configurations whose core takes ppc pixels a clock in strips (census, rank, SAD
-# or ZSAD, uf = dmax, ppc 2 or 4, rows wide enough for the strips; docs/ppc-hardware.md), which the general
+# --strips draws configurations whose core takes ppc pixels a clock in strips (census, rank, SAD,
+# ZSAD or SHD, uf = dmax, ppc 2 or 4, rows wide enough for the strips; docs/ppc-hardware.md), which the general
 # draw reaches rarely. COUNT (default 1) configurations are drawn from SEED; one the generator refuses (exit 2: an
 # invalid combination, which the generator's own tests cover) is drawn again. Prints one line per
 # configuration with its flags, so a failure can be repeated with verify-rtl.sh alone (or, for a
@@ -58,7 +58,7 @@ draw() {
     flags=(--width $((48 + RANDOM % 80)) --height $((10 + RANDOM % 17)) --dmax "$dmax" --uf "$dmax"
            --paths "$(IFS=,; echo "${paths[*]}")" --min-disp $((RANDOM % 41 - 20)))
     local uf=$dmax
-    add --cost census rank sad zsad
+    add --cost census rank sad zsad shd
     cost=$REPLY
   else
     flags=(--width $((dmax / 2 + 16 + RANDOM % 40)) --height $((5 + RANDOM % 8)) --dmax "$dmax"
@@ -69,7 +69,8 @@ draw() {
     cost=$REPLY
   fi
   add --window 3 5 7
-  add --shd-window 1 3 5
+  # (SHD over 1 x 1 is census, which in strips would be drawn as census.)
+  if (( strips )) && [ "$cost" = shd ]; then add --shd-window 3 5; else add --shd-window 1 3 5; fi
   add --p2-adapt 0 0 3 8
   add --lr none none lr1 lr2
   [ "$REPLY" = none ] || add --right-view off on
@@ -80,8 +81,12 @@ draw() {
   add --subpixel-bits 0 0 2 4
   add --subpixel-fit equiangular parabola
   add --confidence off on
-  # (SAD and ZSAD have no fused cost: draw no weight the generator refuses.)
-  if [ "$cost" = sad ] || [ "$cost" = zsad ]; then add --fused-weight 0; else add --fused-weight 0 0 1 4 11 32; fi
+  # (SAD and ZSAD have no fused cost: draw no weight the generator refuses; SHD has none in strips.)
+  if [ "$cost" = sad ] || [ "$cost" = zsad ] || { (( strips )) && [ "$cost" = shd ]; }; then
+    add --fused-weight 0
+  else
+    add --fused-weight 0 0 1 4 11 32
+  fi
   add --fused-trunc 8 32 255
   add --fused-term intensity gradient
   # The speckle filter's stage takes a word once in 4 clocks (dmax / uf >= 4).

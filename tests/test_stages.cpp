@@ -48,9 +48,14 @@ std::vector<StereoConfig> covering_configs() {
   beats.ppc = 2;
   beats.cost = CostFunction::Shd;
   beats.shd_window = 3;
+  beats.fused_weight = 4;
   out.push_back(beats);
-  // ... SAD in strips (its window costs a slot's two pixels a step, fpstereo_strip_window_cost).
+  // ... SHD in strips (its code windows, fpstereo_strip_code_windows, and the window costs of a
+  // slot's two pixels a step, fpstereo_strip_window_cost) ...
   StereoConfig window_strips = beats;
+  window_strips.fused_weight = 0;
+  out.push_back(window_strips);
+  // ... and SAD.
   window_strips.cost = CostFunction::Sad;
   out.push_back(window_strips);
   // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,

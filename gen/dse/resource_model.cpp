@@ -368,11 +368,12 @@ std::vector<double> features(const rtl::RtlDesign& d) {
       c.subpixel_bits > 0 ? dmax * w.aggregated + 3 * (kbits + 3) * (w.aggregated + kbits) : 0.0;
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
   // winner-take-all, the sub-pixel fit, the confidence, adaptive P2, the fused term and the
-  // median are there once per strip, SAD's and ZSAD's window-cost lanes once per pixel of a slot
-  // beside one shared ring of match columns (fpstereo_strip_window_cost); the options strips
+  // median are there once per strip, the window-cost lanes (SAD, ZSAD, SHD) once per pixel of a
+  // slot beside one shared ring of match columns (fpstereo_strip_window_cost); the options strips
   // leave out stay 0.
   const double sets = d.strips;
-  const bool window_costs = c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad;
+  const bool window_costs =
+      c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad || c.cost == CostFunction::Shd;
   const double ring_sets = window_costs ? 1.0 : sets;
   pixel_lanes *= sets;
   zero_mean *= sets;
@@ -408,7 +409,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
               sets,
           median_registers(d) * sets, subpixel_registers(d) * sets, check_and_gap_registers(d),
           // SAD, ZSAD and SHD: every lane sums a whole window (fpstereo_window_cost_lanes)
-          c.cost == CostFunction::Shd ? code_lanes : pixel_lanes,
+          c.cost == CostFunction::Shd ? code_lanes * sets : pixel_lanes,
           // fpstereo_speckle and its stage: its logic, as LUTs per register bit
           speckle_registers(d),
           // fpstereo_fused_term's lanes: the difference, truncation, weighting and sum, as LUTs

@@ -12,6 +12,11 @@
 namespace fpstereo::rtl {
 namespace {
 
+// SHD in strips: the code windows' centres lag the entering codes ceil(rs / P) slots, and their
+// arrays hold P more columns a slot of lag and rs (fpstereo_strip_code_windows).
+int code_window_lag(const Geometry& g) { return (g.cfg.shd_window / 2 + g.strips - 1) / g.strips; }
+int code_window_columns(const Geometry& g) { return g.strips * (1 + code_window_lag(g)) + g.cfg.shd_window / 2; }
+
 class CostStage : public Stage {
  public:
   explicit CostStage(const StereoConfig& c)
@@ -38,18 +43,24 @@ class CostStage : public Stage {
   }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (cost_ != CostFunction::Shd) return {};
-    const int64_t bits = int64_t(g.cfg.shd_window - 1) * std::max(1, g.widths.code);
-    std::vector<StageMemory> m = {{"core.cost.base_codes.line_buffer.mem", g.row_slots, bits},
-                                  {"core.cost.match_codes.line_buffer.mem", g.row_slots, bits}};
+    // In strips a line buffer word holds a slot's P codes (fpstereo_strip_code_windows).
+    const int64_t bits = int64_t(g.cfg.shd_window - 1) * std::max(1, g.widths.code) * g.strips;
+    const std::string at = g.strips > 1 ? "core.code_windows." : "core.cost.";
+    std::vector<StageMemory> m = {{at + "base_codes.line_buffer.mem", g.row_slots, bits},
+                                  {at + "match_codes.line_buffer.mem", g.row_slots, bits}};
     // The fused cost's features wait beside the codes in windows of their own.
     if (g.cfg.fused_weight != 0) {
       const int64_t feature_bits = int64_t(g.cfg.shd_window - 1) * g.widths.fused_feature;
       m.push_back({"core.cost.with_features.base_features.line_buffer.mem", g.row_slots, feature_bits});
       m.push_back({"core.cost.with_features.match_features.line_buffer.mem", g.row_slots, feature_bits});
     }
-    // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2).
+    // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2; in strips,
+    // one per pixel of the slot).
     if (g.cfg.p2_adapt != 0 && base_wait(g).rows > 0)
-      m.push_back({"core.adaptive_p2.row_wait.rows.mem", base_wait(g).rows * g.row_slots, 4 * 8});
+      for (int q = 0; q < g.strips; ++q)
+        m.push_back({g.strips > 1 ? fmt::format("core.adaptive_p2_{}.row_wait.rows.mem", q)
+                                  : std::string("core.adaptive_p2.row_wait.rows.mem"),
+                     base_wait(g).rows * g.row_slots, 4 * 8});
     return m;
   }
 
@@ -202,19 +213,62 @@ class CostStage : public Stage {
                   features);
   }
 
-  // With strips (SAD and ZSAD): a slot's P pixels' cost words a step, with the slot they belong to
-  // (cost_we, cost_slot, cost_row), which the cost reorder stage writes into the strips' RAMs.
+  // With strips (SAD, ZSAD and SHD): a slot's P pixels' cost words a step, with the slot they
+  // belong to (cost_we, cost_slot, cost_row), which the cost reorder stage writes into the strips'
+  // RAMs. SAD and ZSAD take the front end's pixel windows; SHD windows the transform's codes first
+  // (fpstereo_strip_code_windows) and sums their Hamming distances.
   void strip_window_cost(const RtlDesign& d, CoreBuilder& core) const {
     const StereoConfig& c = d.cfg;
+    const bool shd = cost_ == CostFunction::Shd;
+    int n = c.window, columns = window_columns(d), elem_bits = 8;
+    Connections windows;  // the front end's nets by default
+    if (shd) {
+      n = c.shd_window;
+      columns = code_window_columns(d);
+      elem_bits = std::max(1, d.widths.code);
+      core.text("  // SHD's code windows, P columns a shift.\n");
+      windows = {{"window_left", "codes_left"},       {"window_right", "codes_right"},
+                 {"row_valid", "code_row_valid"},      {"col_valid", "code_col_valid"},
+                 {"newest_row_valid", "code_newest_row_valid"}, {"transform_in_frame", "codes_in_frame"},
+                 {"transform_x", "codes_x"},           {"transform_slot", "codes_slot"}};
+      core.wire("codes_left", int64_t(n) * columns * elem_bits);
+      core.wire("codes_right", int64_t(n) * columns * elem_bits);
+      core.wire("code_row_valid", n);
+      core.wire("code_col_valid", n + d.strips - 1);
+      core.wire("code_newest_row_valid", n);
+      core.wire("codes_in_frame", 1);
+      core.wire("codes_x", d.x_bits);
+      core.wire("codes_slot", d.cost_row_bits);
+      core.instance("fpstereo_strip_code_windows", "code_windows",
+                    {{"P", num(d.strips)},
+                     {"SHD_K", num(n)},
+                     {"CODE_W", num(elem_bits)},
+                     {"ROW_SLOTS", num(d.row_slots)},
+                     {"ROWS", num(d.slot_rows)},
+                     {"ROW_W", num(d.cost_row_bits)},
+                     {"X_W", num(d.x_bits)},
+                     {"Y_W", num(d.y_bits)},
+                     {"SIGNED_Y_W", num(d.signed_y_bits)},
+                     {"CODE_LAG", num(code_window_lag(d))},
+                     {"COLS", num(columns)}},
+                    {{"row_valid", "code_row_valid"},
+                     {"col_valid", "code_col_valid"},
+                     {"newest_row_valid", "code_newest_row_valid"},
+                     {"taken_in_frame", "codes_in_frame"},
+                     {"taken_x", "codes_x"},
+                     {"taken_slot", "codes_slot"}});
+    }
     core.wire("cost_we", 1);
     core.wire("cost_slot", d.x_bits);
     core.wire("cost_row", d.cost_row_bits);
     core.wire("costs", int64_t(d.strips) * c.uf * d.widths.cost);
     core.instance("fpstereo_strip_window_cost", "cost",
                   {{"P", num(d.strips)},
-                   {"N", num(c.window)},
-                   {"COLS", num(window_columns(d))},
+                   {"N", num(n)},
+                   {"COLS", num(columns)},
                    {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                   {"HAMMING", shd ? "1" : "0"},
+                   {"ELEM_W", num(elem_bits)},
                    {"UF", num(c.uf)},
                    {"COST_W", num(d.widths.cost)},
                    {"COST_MAX", num(int64_t(d.widths.cost_max))},
@@ -224,7 +278,8 @@ class CostStage : public Stage {
                    {"ROW_W", num(d.cost_row_bits)},
                    {"X_W", num(d.x_bits)},
                    {"MIN_DISP", num(c.min_disp)},
-                   {"LAT", num(d.cost_latency)}});
+                   {"LAT", num(d.cost_latency)}},
+                  windows);
   }
 
   // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.
@@ -255,11 +310,13 @@ class CostStage : public Stage {
  private:
   // What the base waits beside the match ring (adaptive P2's steps wait as long). Where the
   // reorder holds codes, a negative min-disp's wait is the cost reorder stage's; in strips the
-  // base waits whole slots, ceil(-m / P) (fpstereo_strip_window_cost's BASE_WAIT).
+  // base waits whole slots, ceil(-m / P) (fpstereo_strip_window_cost's BASE_WAIT), and SHD's code
+  // window code_window_lag slots, then two more (its arrays, and the cost stage taking them).
   Latency base_wait(const Geometry& g) const {
     const StereoConfig& c = g.cfg;
     const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
-    const int64_t wait = cost_ == CostFunction::Shd ? rs + 1 : cost_ == CostFunction::Zsad ? 2 : 0;
+    const int64_t shd_wait = g.strips > 1 ? code_window_lag(g) + 2 : rs + 1;
+    const int64_t wait = cost_ == CostFunction::Shd ? shd_wait : cost_ == CostFunction::Zsad ? 2 : 0;
     return {rs, wait + (g.reorders_codes ? 0 : (std::max(0, -c.min_disp) + g.strips - 1) / g.strips), 0};
   }
 
