@@ -103,20 +103,26 @@ module fpstereo_control #(
   assign enable = enable_q;
 
   // ---- Writes: address and data together, one response at a time. A write is registered as it
-  // is taken, then checked and applied in the next cycle, its response following it, so that the
-  // handshake and the range checks lie in different cycles (no other write comes between them).
+  // is taken (request), checked in the next cycle and applied in the one after (applying), its
+  // response following it, so that the handshake, the range checks and the registers' enables lie
+  // in different cycles (no other write comes between them).
   // the widest setting
   localparam V_W = X_W > Y_W ? (X_W > PATH_W ? (X_W > 7 ? X_W : 7) : (PATH_W > 7 ? PATH_W : 7))
                              : (Y_W > PATH_W ? (Y_W > 7 ? Y_W : 7) : (PATH_W > 7 ? PATH_W : 7));
-  reg         request, request_full, request_high_zero;
+  reg         request, applying, request_full, request_high_zero, accepted;
   reg [7:0]   request_addr;
   reg [V_W-1:0] v;
-  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request;
+  wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request && !applying;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
   always @(posedge clk)
-    if (rst) request <= 1'b0;
-    else request <= write;
+    if (rst) begin
+      request <= 1'b0;
+      applying <= 1'b0;
+    end else begin
+      request <= write;
+      applying <= request;
+    end
   always @(posedge clk)
     if (write) begin
       request_addr <= s_axi_awaddr;
@@ -129,22 +135,23 @@ module fpstereo_control #(
   // Every range's upper bound fits in V_W bits, so a value is in range only if its bits above
   // V_W are zero, and then it is w.
   wire [31:0] w = {{(32-V_W){1'b0}}, v};
-  reg request_accepted;
+  reg in_range;
   always @* begin
     case (request_addr)
-      A_CONTROL:      request_accepted = 1'b1;
+      A_CONTROL:      in_range = 1'b1;
       // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           request_accepted = request_high_zero && w <= P1_MAX_V && w <= p2_now;
-      A_P2:           request_accepted = request_high_zero && w <= P2_MAX_V && w >= p1_now;
-      A_UNIQUENESS:   request_accepted = UNIQUENESS_SETTABLE != 0 && request_high_zero && w <= 32'd99;
-      A_LR_THRESHOLD: request_accepted = LR_SETTABLE != 0 && request_high_zero && w <= 32'd15;
-      A_WIDTH:        request_accepted = request_high_zero && w >= MIN_WIDTH_V && w <= MAX_WIDTH_V &&
-                                         (w & (WIDTH_STEP_V - 1)) == 0;
-      A_HEIGHT:       request_accepted = request_high_zero && w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
-      default:        request_accepted = 1'b0;
+      A_P1:           in_range = request_high_zero && w <= P1_MAX_V && w <= p2_now;
+      A_P2:           in_range = request_high_zero && w <= P2_MAX_V && w >= p1_now;
+      A_UNIQUENESS:   in_range = UNIQUENESS_SETTABLE != 0 && request_high_zero && w <= 32'd99;
+      A_LR_THRESHOLD: in_range = LR_SETTABLE != 0 && request_high_zero && w <= 32'd15;
+      A_WIDTH:        in_range = request_high_zero && w >= MIN_WIDTH_V && w <= MAX_WIDTH_V &&
+                                 (w & (WIDTH_STEP_V - 1)) == 0;
+      A_HEIGHT:       in_range = request_high_zero && w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      default:        in_range = 1'b0;
     endcase
-    if (!request_full) request_accepted = 1'b0;
   end
+  always @(posedge clk)
+    if (request) accepted <= request_full && in_range;
 
   always @(posedge clk)
     if (rst) begin
@@ -156,10 +163,10 @@ module fpstereo_control #(
       p2_q <= P2_INIT[PATH_W-1:0];
       uniqueness_q <= UNIQUENESS_INIT[6:0];
       lr_threshold_q <= LR_THRESHOLD_INIT[3:0];
-    end else if (request) begin
+    end else if (applying) begin
       s_axi_bvalid <= 1'b1;
-      s_axi_bresp <= request_accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
-      if (request_accepted)
+      s_axi_bresp <= accepted ? 2'b00 : 2'b10;  // OKAY or SLVERR
+      if (accepted)
         case (request_addr)
           A_CONTROL:      enable_q <= v[0];
           A_P1:           p1_q <= v[PATH_W-1:0];
@@ -184,14 +191,14 @@ module fpstereo_control #(
     end
 
   // The compare of the written settings with the frame's is a register of its own (it lags them a
-  // cycle, so a write keeps settings_held low a cycle longer: request_q), so that the AXI4-Lite
+  // cycle, so a write keeps settings_held low a cycle longer: applied), so that the AXI4-Lite
   // handshake (write) meets only its result.
-  reg settings_same, request_q;
+  reg settings_same, applied;
   always @(posedge clk) begin
     settings_same <= width_q == frame_width && height_q == frame_height && p1_q == frame_p1 && p2_q == frame_p2 &&
                      uniqueness_q == frame_uniqueness && lr_threshold_q == frame_lr_threshold;
-    request_q <= !rst && request;
-    settings_held <= !write && !request && !request_q && settings_same;
+    applied <= !rst && applying;
+    settings_held <= !write && !request && !applying && !applied && settings_same;
   end
 
   // ---- Counters (wrap at 2^32).
@@ -203,7 +210,7 @@ module fpstereo_control #(
       frames_truncated <= 0;
       protocol_errors <= 0;
     end else begin
-      if (request && !request_accepted) rejected <= rejected + 1'b1;
+      if (applying && !accepted) rejected <= rejected + 1'b1;
       if (frame_done) frames_done <= frames_done + 1'b1;
       if (frame_dropped) frames_dropped <= frames_dropped + 1'b1;
       if (frame_truncated) frames_truncated <= frames_truncated + 1'b1;

@@ -8,7 +8,9 @@
 // codes. row_valid / col_valid / newest_row_valid are the bounds of the windows the arrays hold
 // (zero outside the image, docs/semantics.md, section 2), and taken_* the position of the windows
 // of the previous shift (what the cost stage takes at the next): in_frame where its centre row
-// and its slot's first column lie in the frame.
+// and its slot's first column lie in the frame. With the fused cost (FUSED) the pixels' features
+// (fpstereo_fused_features, timed as the codes) enter windows of their own beside them, of which
+// the cost stage reads the centre row.
 module fpstereo_strip_code_windows #(
   parameter P = 2,
   parameter SHD_K = 3,
@@ -21,7 +23,9 @@ module fpstereo_strip_code_windows #(
   parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
   parameter CODE_LAG = (SHD_K / 2 + P - 1) / P,
-  parameter COLS = P * (1 + CODE_LAG) + SHD_K / 2
+  parameter COLS = P * (1 + CODE_LAG) + SHD_K / 2,
+  parameter FUSED = 0,
+  parameter FEATURE_W = 8
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -32,11 +36,17 @@ module fpstereo_strip_code_windows #(
   input  wire                   wrapped,
   input  wire [P*CODE_W-1:0]    code_base,
   input  wire [P*CODE_W-1:0]    code_match,
+  /* verilator lint_off UNUSEDSIGNAL */  // the fused cost's only
+  input  wire [P*FEATURE_W-1:0] feature_base,
+  input  wire [P*FEATURE_W-1:0] feature_match,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  wire [X_W-1:0]         transform_x,
   input  wire signed [SIGNED_Y_W-1:0] transform_y,
   input  wire [ROW_W-1:0]       transform_slot,
   output wire [SHD_K*COLS*CODE_W-1:0] codes_left,
   output wire [SHD_K*COLS*CODE_W-1:0] codes_right,
+  output wire [SHD_K*COLS*FEATURE_W-1:0] features_left,
+  output wire [SHD_K*COLS*FEATURE_W-1:0] features_right,
   output wire [SHD_K-1:0]       row_valid,
   output wire [SHD_K+P-2:0]     col_valid,
   output wire [SHD_K-1:0]       newest_row_valid,
@@ -64,6 +74,17 @@ module fpstereo_strip_code_windows #(
     .clk(clk), .shift(shift), .col(transform_x), .next_col(next_col), .word(code_base), .window(codes_left));
   fpstereo_window #(.N(SHD_K), .WORD_W(CODE_W), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) match_codes (
     .clk(clk), .shift(shift), .col(transform_x), .next_col(next_col), .word(code_match), .window(codes_right));
+  generate
+    if (FUSED != 0) begin : with_features
+      fpstereo_window #(.N(SHD_K), .WORD_W(FEATURE_W), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) base_features (
+        .clk(clk), .shift(shift), .col(transform_x), .next_col(next_col), .word(feature_base), .window(features_left));
+      fpstereo_window #(.N(SHD_K), .WORD_W(FEATURE_W), .P(P), .COLS(COLS), .ROW_SLOTS(ROW_SLOTS), .ADDR_W(X_W)) match_features (
+        .clk(clk), .shift(shift), .col(transform_x), .next_col(next_col), .word(feature_match), .window(features_right));
+    end else begin : codes_only
+      assign features_left = {SHD_K*COLS*FEATURE_W{1'b0}};
+      assign features_right = {SHD_K*COLS*FEATURE_W{1'b0}};
+    end
+  endgenerate
 
   // The centre of the windows that form in this shift, registered with them; the entering
   // columns' row and whether their slot lies in the width (the slots in the width a register: the

@@ -46,17 +46,21 @@ std::vector<StereoConfig> covering_configs() {
   beats.height = 16;
   beats.dmax = beats.uf = 32;
   beats.ppc = 2;
-  beats.cost = CostFunction::Shd;
-  beats.shd_window = 3;
-  beats.fused_weight = 4;
+  beats.cost = CostFunction::Sad;
+  beats.lr = LrCheck::Lr2;
   out.push_back(beats);
-  // ... SHD in strips (its code windows, fpstereo_strip_code_windows, and the window costs of a
-  // slot's two pixels a step, fpstereo_strip_window_cost) ...
+  // ... SHD in strips (its code windows, fpstereo_strip_code_windows, with the fused cost's
+  // features beside them, and the window costs of a slot's two pixels a step,
+  // fpstereo_strip_window_cost) ...
   StereoConfig window_strips = beats;
-  window_strips.fused_weight = 0;
+  window_strips.lr = LrCheck::None;
+  window_strips.cost = CostFunction::Shd;
+  window_strips.shd_window = 3;
+  window_strips.fused_weight = 4;
   out.push_back(window_strips);
   // ... and SAD.
   window_strips.cost = CostFunction::Sad;
+  window_strips.fused_weight = 0;
   out.push_back(window_strips);
   // ... and in strips, where the core takes a beat a step (census, uniqueness, the sub-pixel fit,
   // the confidence, adaptive P2, the fused cost, min-disp, the median and gap interpolation).

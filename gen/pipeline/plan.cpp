@@ -55,13 +55,12 @@ int lr2_strip_min_width(const StereoConfig& c) { return c.dmax + std::abs(c.min_
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
 // configuration: census and rank costs with every option the hardware takes at ppc > 1 (not the
 // speckle filter, which needs uf < dmax), SAD, ZSAD and SHD without LR2 (whose match side reads
-// code entries), SHD without the fused cost (its features would need windows of their own).
-// Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
+// code entries). Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
   if (c.ppc == 1) return false;
   if (c.cost == CostFunction::Census || c.cost == CostFunction::Rank)
     return c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c);
-  if (c.cost == CostFunction::Shd) return c.shd_window > 1 && c.fused_weight == 0 && c.lr != LrCheck::Lr2;
+  if (c.cost == CostFunction::Shd) return c.shd_window > 1 && c.lr != LrCheck::Lr2;
   return (c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad) && c.lr != LrCheck::Lr2;
 }
 

@@ -7,7 +7,7 @@
 //   - BVALID/RVALID low after reset, held until BREADY/RREADY with BRESP/RDATA/RRESP stable;
 //   - one response per request: a response only for a request accepted and not yet answered,
 //     at most one outstanding of each kind, and each accepted request's response presented (a
-//     write's in the cycle after the one that takes it, when the write takes effect; a read's
+//     write's two cycles after the one that takes it, when the write takes effect; a read's
 //     two cycles after, with the registers' values of the cycle after the one that takes it);
 //   - BRESP as the register map of docs/hardware.md says: OKAY for a full-strobe write in range to a
 //     writable register, SLVERR out of range, to a read-only register (STATUS, VERSION,
@@ -115,8 +115,9 @@ module control_props (
   wire aw_take = awvalid && awready, w_take = wvalid && wready, b_take = bvalid && bready;
   wire ar_take = arvalid && arready, r_take = rvalid && rready;
   reg [1:0] aw_open, w_open, ar_open;
-  // the write taken in the previous cycle, which takes effect now
-  reg        w_taken;
+  // the write taken two cycles before, which takes effect now (its range checked in the cycle
+  // between), and the one taken in the previous cycle
+  reg        w_taken, w_taken2;
   reg [7:0]  w_addr;
   reg [31:0] w_data;
   reg [3:0]  w_strb;
@@ -129,6 +130,7 @@ module control_props (
     ar_taken2 <= !rst && ar_taken;
     if (ar_take) ar_addr <= araddr;
     w_taken <= !rst && aw_take && w_take;
+    w_taken2 <= !rst && w_taken;
     if (aw_take && w_take) begin
       w_addr <= awaddr;
       w_data <= wdata;
@@ -151,7 +153,7 @@ module control_props (
       assert(awready == wready && aw_open == w_open);
       // one outstanding at a time, answered: a response exactly while a request is open
       assert(aw_open <= 2'd1 && w_open <= 2'd1 && ar_open <= 2'd1);
-      assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1 && !w_taken));
+      assert(bvalid == (aw_open == 2'd1 && w_open == 2'd1 && !w_taken && !w_taken2));
       assert(rvalid == (ar_open == 2'd1 && !ar_taken && !ar_taken2));
       // a response is taken only when one was offered (no new one in the cycle it is taken)
       if (b_take) assert(!aw_take && !w_take);
@@ -191,7 +193,7 @@ module control_props (
       m_p1 <= P1_INIT;
       m_p2 <= P2_INIT;
       m_lr <= LR_THRESHOLD_INIT;
-    end else if (w_taken) begin
+    end else if (w_taken2) begin
       b_check <= writable || read_only || w_strb != 4'hF;
       b_expect <= good ? OKAY : SLVERR;
       if (good)

@@ -50,9 +50,9 @@ class CostStage : public Stage {
                                   {at + "match_codes.line_buffer.mem", g.row_slots, bits}};
     // The fused cost's features wait beside the codes in windows of their own.
     if (g.cfg.fused_weight != 0) {
-      const int64_t feature_bits = int64_t(g.cfg.shd_window - 1) * g.widths.fused_feature;
-      m.push_back({"core.cost.with_features.base_features.line_buffer.mem", g.row_slots, feature_bits});
-      m.push_back({"core.cost.with_features.match_features.line_buffer.mem", g.row_slots, feature_bits});
+      const int64_t feature_bits = int64_t(g.cfg.shd_window - 1) * g.widths.fused_feature * g.strips;
+      m.push_back({at + "with_features.base_features.line_buffer.mem", g.row_slots, feature_bits});
+      m.push_back({at + "with_features.match_features.line_buffer.mem", g.row_slots, feature_bits});
     }
     // Adaptive P2's steps wait the code window's rows in a ring (fpstereo_adaptive_p2; in strips,
     // one per pixel of the slot).
@@ -216,11 +216,14 @@ class CostStage : public Stage {
   // With strips (SAD, ZSAD and SHD): a slot's P pixels' cost words a step, with the slot they
   // belong to (cost_we, cost_slot, cost_row), which the cost reorder stage writes into the strips'
   // RAMs. SAD and ZSAD take the front end's pixel windows; SHD windows the transform's codes first
-  // (fpstereo_strip_code_windows) and sums their Hamming distances.
+  // (fpstereo_strip_code_windows) and sums their Hamming distances, with the fused cost beside
+  // windows of the pixels' features.
   void strip_window_cost(const RtlDesign& d, CoreBuilder& core) const {
     const StereoConfig& c = d.cfg;
-    const bool shd = cost_ == CostFunction::Shd;
+    const bool shd = cost_ == CostFunction::Shd, fused = c.fused_weight != 0;
     int n = c.window, columns = window_columns(d), elem_bits = 8;
+    // Without the fused cost the features' ports keep their width of 8 and read 0.
+    const int64_t feature_bits = fused ? d.widths.fused_feature : 8;
     Connections windows;  // the front end's nets by default
     if (shd) {
       n = c.shd_window;
@@ -231,6 +234,14 @@ class CostStage : public Stage {
                  {"row_valid", "code_row_valid"},      {"col_valid", "code_col_valid"},
                  {"newest_row_valid", "code_newest_row_valid"}, {"transform_in_frame", "codes_in_frame"},
                  {"transform_x", "codes_x"},           {"transform_slot", "codes_slot"}};
+      // (the feature windows read 0 without the fused cost)
+      core.wire("code_features_left", int64_t(n) * columns * feature_bits);
+      core.wire("code_features_right", int64_t(n) * columns * feature_bits);
+      Connections features = {{"features_left", "code_features_left"}, {"features_right", "code_features_right"}};
+      windows = windows + features;
+      if (!fused)
+        features = features + Connections{{"feature_base", fmt::format("{}'d0", d.strips * feature_bits)},
+                                          {"feature_match", fmt::format("{}'d0", d.strips * feature_bits)}};
       core.wire("codes_left", int64_t(n) * columns * elem_bits);
       core.wire("codes_right", int64_t(n) * columns * elem_bits);
       core.wire("code_row_valid", n);
@@ -250,20 +261,27 @@ class CostStage : public Stage {
                      {"Y_W", num(d.y_bits)},
                      {"SIGNED_Y_W", num(d.signed_y_bits)},
                      {"CODE_LAG", num(code_window_lag(d))},
-                     {"COLS", num(columns)}},
-                    {{"row_valid", "code_row_valid"},
-                     {"col_valid", "code_col_valid"},
-                     {"newest_row_valid", "code_newest_row_valid"},
-                     {"taken_in_frame", "codes_in_frame"},
-                     {"taken_x", "codes_x"},
-                     {"taken_slot", "codes_slot"}});
+                     {"COLS", num(columns)},
+                     {"FUSED", fused ? "1" : "0"},
+                     {"FEATURE_W", num(feature_bits)}},
+                    Connections{{"row_valid", "code_row_valid"},
+                                {"col_valid", "code_col_valid"},
+                                {"newest_row_valid", "code_newest_row_valid"},
+                                {"taken_in_frame", "codes_in_frame"},
+                                {"taken_x", "codes_x"},
+                                {"taken_slot", "codes_slot"}} +
+                        features);
+    }
+    if (!shd) {  // SAD and ZSAD have no fused cost
+      const std::string zeros = fmt::format("{}'d0", int64_t(n) * columns * feature_bits);
+      windows = windows + Connections{{"features_left", zeros}, {"features_right", zeros}};
     }
     core.wire("cost_we", 1);
     core.wire("cost_slot", d.x_bits);
     core.wire("cost_row", d.cost_row_bits);
     core.wire("costs", int64_t(d.strips) * c.uf * d.widths.cost);
     core.instance("fpstereo_strip_window_cost", "cost",
-                  {{"P", num(d.strips)},
+                  Connections{{"P", num(d.strips)},
                    {"N", num(n)},
                    {"COLS", num(columns)},
                    {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
@@ -278,7 +296,9 @@ class CostStage : public Stage {
                    {"ROW_W", num(d.cost_row_bits)},
                    {"X_W", num(d.x_bits)},
                    {"MIN_DISP", num(c.min_disp)},
-                   {"LAT", num(d.cost_latency)}},
+                   {"LANES_LAT", num(d.cost_lanes_latency)},
+                   {"LAT", num(d.cost_latency)}} +
+                      fused_cost_parameters(d),
                   windows);
   }
 
