@@ -81,12 +81,8 @@ draw() {
   add --subpixel-bits 0 0 2 4
   add --subpixel-fit equiangular parabola
   add --confidence off on
-  # (SAD and ZSAD have no fused cost: draw no weight the generator refuses; SHD has none in strips.)
-  if [ "$cost" = sad ] || [ "$cost" = zsad ] || { (( strips )) && [ "$cost" = shd ]; }; then
-    add --fused-weight 0
-  else
-    add --fused-weight 0 0 1 4 11 32
-  fi
+  # (SAD and ZSAD have no fused cost: draw no weight the generator refuses.)
+  if [ "$cost" = sad ] || [ "$cost" = zsad ]; then add --fused-weight 0; else add --fused-weight 0 0 1 4 11 32; fi
   add --fused-trunc 8 32 255
   add --fused-term intensity gradient
   # The speckle filter's stage takes a word once in 4 clocks (dmax / uf >= 4).

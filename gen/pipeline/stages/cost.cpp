@@ -15,7 +15,9 @@ namespace {
 // SHD in strips: the code windows' centres lag the entering codes ceil(rs / P) slots, and their
 // arrays hold P more columns a slot of lag and rs (fpstereo_strip_code_windows).
 int code_window_lag(const Geometry& g) { return (g.cfg.shd_window / 2 + g.strips - 1) / g.strips; }
-int code_window_columns(const Geometry& g) { return g.strips * (1 + code_window_lag(g)) + g.cfg.shd_window / 2; }
+int code_window_columns(const Geometry& g) {
+  return g.strips * (1 + code_window_lag(g)) + g.cfg.shd_window / 2;
+}
 
 class CostStage : public Stage {
  public:
@@ -230,14 +232,19 @@ class CostStage : public Stage {
       columns = code_window_columns(d);
       elem_bits = std::max(1, d.widths.code);
       core.text("  // SHD's code windows, P columns a shift.\n");
-      windows = {{"window_left", "codes_left"},       {"window_right", "codes_right"},
-                 {"row_valid", "code_row_valid"},      {"col_valid", "code_col_valid"},
-                 {"newest_row_valid", "code_newest_row_valid"}, {"transform_in_frame", "codes_in_frame"},
-                 {"transform_x", "codes_x"},           {"transform_slot", "codes_slot"}};
+      windows = {{"window_left", "codes_left"},
+                 {"window_right", "codes_right"},
+                 {"row_valid", "code_row_valid"},
+                 {"col_valid", "code_col_valid"},
+                 {"newest_row_valid", "code_newest_row_valid"},
+                 {"transform_in_frame", "codes_in_frame"},
+                 {"transform_x", "codes_x"},
+                 {"transform_slot", "codes_slot"}};
       // (the feature windows read 0 without the fused cost)
       core.wire("code_features_left", int64_t(n) * columns * feature_bits);
       core.wire("code_features_right", int64_t(n) * columns * feature_bits);
-      Connections features = {{"features_left", "code_features_left"}, {"features_right", "code_features_right"}};
+      Connections features = {{"features_left", "code_features_left"},
+                              {"features_right", "code_features_right"}};
       windows = windows + features;
       if (!fused)
         features = features + Connections{{"feature_base", fmt::format("{}'d0", d.strips * feature_bits)},
@@ -282,22 +289,22 @@ class CostStage : public Stage {
     core.wire("costs", int64_t(d.strips) * c.uf * d.widths.cost);
     core.instance("fpstereo_strip_window_cost", "cost",
                   Connections{{"P", num(d.strips)},
-                   {"N", num(n)},
-                   {"COLS", num(columns)},
-                   {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
-                   {"HAMMING", shd ? "1" : "0"},
-                   {"ELEM_W", num(elem_bits)},
-                   {"UF", num(c.uf)},
-                   {"COST_W", num(d.widths.cost)},
-                   {"COST_MAX", num(int64_t(d.widths.cost_max))},
-                   {"COLUMN_SUM_W", num(d.column_sum_bits)},
-                   {"MEAN_MUL", num(int64_t(d.mean_mul))},
-                   {"MEAN_SHIFT", num(d.mean_shift)},
-                   {"ROW_W", num(d.cost_row_bits)},
-                   {"X_W", num(d.x_bits)},
-                   {"MIN_DISP", num(c.min_disp)},
-                   {"LANES_LAT", num(d.cost_lanes_latency)},
-                   {"LAT", num(d.cost_latency)}} +
+                              {"N", num(n)},
+                              {"COLS", num(columns)},
+                              {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                              {"HAMMING", shd ? "1" : "0"},
+                              {"ELEM_W", num(elem_bits)},
+                              {"UF", num(c.uf)},
+                              {"COST_W", num(d.widths.cost)},
+                              {"COST_MAX", num(int64_t(d.widths.cost_max))},
+                              {"COLUMN_SUM_W", num(d.column_sum_bits)},
+                              {"MEAN_MUL", num(int64_t(d.mean_mul))},
+                              {"MEAN_SHIFT", num(d.mean_shift)},
+                              {"ROW_W", num(d.cost_row_bits)},
+                              {"X_W", num(d.x_bits)},
+                              {"MIN_DISP", num(c.min_disp)},
+                              {"LANES_LAT", num(d.cost_lanes_latency)},
+                              {"LAT", num(d.cost_latency)}} +
                       fused_cost_parameters(d),
                   windows);
   }
