@@ -113,8 +113,9 @@ module fpstereo_strip_aggregation #(
   parameter RIGHT_VIEW = 0,
   parameter VIEW_WAIT = 0,
   // 1: LR2's match side (docs/ppc-hardware.md, "LR2 in strips"), without OUTPUT: the entries are
-  // the match image's ({base entry, match entry} swapped, MIN_DISP = -(min-disp + UF - 1)), so
-  // lane l holds the match side's index UF - 1 - l; each strip's winner over the lanes turned
+  // the match image's ({base entry, match entry} swapped, MIN_DISP = -(min-disp + UF - 1); without
+  // CODES the cost words of the window costs with the images swapped, at that MIN_DISP), so lane l
+  // holds the match side's index UF - 1 - l; each strip's winner over the lanes turned
   // back (no uniqueness) is Dm(x') of its pixel x', written on dm_* at slot * ROW_SLOTS + x' -
   // p * ROW_SLOTS DM_LAG (3 or more) steps after the winner, the row slots those of the base
   // side's strip ((P - p) * K + 1 rows)
@@ -193,9 +194,10 @@ module fpstereo_strip_aggregation #(
     if (RIGHT_VIEW != 0 && (LR1 + LR2 != 1 || OUTPUT == 0)) begin : invalid_RIGHT_VIEW
       fpstereo_invalid_parameters_strip_aggregation_RIGHT_VIEW_needs_LR1_or_LR2_and_OUTPUT failed ();
     end
-    if ((MATCH_SIDE != 0 && (OUTPUT != 0 || LR1 != 0 || LR2 != 0 || CODES == 0 || EXTRA_W != 0 || DM_LAG < 3)) ||
+    if ((MATCH_SIDE != 0 && (OUTPUT != 0 || LR1 != 0 || LR2 != 0 || (CODES == 0 && RAM == 0) || EXTRA_W != 0 ||
+                             DM_LAG < 3)) ||
         (LR2 != 0 && (OUTPUT == 0 || LR1 != 0))) begin : invalid_LR2
-      fpstereo_invalid_parameters_strip_aggregation_MATCH_SIDE_is_alone_with_CODES_LR2_needs_OUTPUT failed ();
+      fpstereo_invalid_parameters_strip_aggregation_MATCH_SIDE_is_alone_with_CODES_or_RAM_LR2_needs_OUTPUT failed ();
     end
   endgenerate
   localparam EDGE_W = (UF + 1) * PATH_W;

@@ -39,8 +39,9 @@ std::vector<StereoConfig> covering_configs() {
       c.speckle_size = cost == CostFunction::Census || cost == CostFunction::Rank ? 6 : 0;
       out.push_back(c);
     }
-  // Beats of two pixels (uf = dmax) with an option the strips lack, which the top's beat split and
-  // pack serve for the one-pixel core.
+  // Beats of two pixels (uf = dmax) where the strips do not go, which the top's beat split and
+  // pack serve for the one-pixel core: LR2 in a row of dmax + m, one pixel short of what its
+  // strips need.
   StereoConfig beats;
   beats.width = 64;
   beats.height = 16;
@@ -48,12 +49,14 @@ std::vector<StereoConfig> covering_configs() {
   beats.ppc = 2;
   beats.cost = CostFunction::Sad;
   beats.lr = LrCheck::Lr2;
+  beats.min_disp = 32;
   out.push_back(beats);
   // ... SHD in strips (its code windows, fpstereo_strip_code_windows, with the fused cost's
   // features beside them, and the window costs of a slot's two pixels a step,
   // fpstereo_strip_window_cost) ...
   StereoConfig window_strips = beats;
   window_strips.lr = LrCheck::None;
+  window_strips.min_disp = 0;
   window_strips.cost = CostFunction::Shd;
   window_strips.shd_window = 3;
   window_strips.fused_weight = 4;

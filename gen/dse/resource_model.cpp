@@ -369,14 +369,17 @@ std::vector<double> features(const rtl::RtlDesign& d) {
   // In strips (docs/ppc-hardware.md) the transform, the chain costs, the aggregator, the
   // winner-take-all, the sub-pixel fit, the confidence, adaptive P2, the fused term and the
   // median are there once per strip, the window-cost lanes (SAD, ZSAD, SHD) once per pixel of a
-  // slot beside one shared ring of match columns (fpstereo_strip_window_cost); the options strips
-  // leave out stay 0.
+  // slot beside one shared ring of match columns (fpstereo_strip_window_cost).
   const double sets = d.strips;
   const bool window_costs =
       c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad || c.cost == CostFunction::Shd;
-  const double ring_sets = window_costs ? 1.0 : sets;
-  pixel_lanes *= sets;
-  zero_mean *= sets;
+  // LR2 in strips computes the match side's costs again: census and rank in its chain costs,
+  // the window costs in a second fpstereo_strip_window_cost with the images swapped.
+  const double cost_sides = d.strips > 1 && c.lr == LrCheck::Lr2 ? 2.0 : 1.0;
+  const double ring_sets = (window_costs ? 1.0 : sets) * cost_sides;
+  code_lanes *= cost_sides;
+  pixel_lanes *= sets * cost_sides;
+  zero_mean *= sets * cost_sides;
   return {1.0, uf * c.path_count() * w.path_cost * sides * sets, code_lanes * sets, pixel_lanes,
           (ring + ring_features) * ring_sets,
           c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad ? 0.0 : 2 * n * n * w.pixel * sets,
@@ -403,7 +406,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           (aggregator_registers(d, d.penalty_bits) +
            (c.lr == LrCheck::Lr2 ? aggregator_registers(d, 0) : 0.0)) *
               sets,
-          cost_registers(d, ring + ring_features) * ring_sets + fused_term_registers(d) * sets,
+          cost_registers(d, ring + ring_features) * ring_sets + fused_term_registers(d) * sets * cost_sides,
           (winner_registers(d, d.finds_second_best, word_tag) +
            (c.lr == LrCheck::Lr2 ? winner_registers(d, false, word_tag) : 0.0)) *
               sets,
@@ -414,7 +417,7 @@ std::vector<double> features(const rtl::RtlDesign& d) {
           speckle_registers(d),
           // fpstereo_fused_term's lanes: the difference, truncation, weighting and sum, as LUTs
           // per register bit
-          fused_term_registers(d) * sets, speckle_registers(d)};
+          fused_term_registers(d) * sets * cost_sides, speckle_registers(d)};
 }
 
 const std::vector<std::string>& group_names() {

@@ -49,19 +49,17 @@ void check_hardware_rules(const StereoConfig& cfg) {
 
 // LR2's match side in strips holds a row's prefix from the row's slot ceil((m + dmax - 1) / P)
 // (its min-disp is -(m + dmax - 1), lr2_match_min_disp), which must lie in the row: rows of
-// dmax + |m| + P - 1 pixels at least (not dmax + |m|).
+// dmax + |m| + P - 1 pixels at least (not dmax + |m|). (Its window costs, which have no prefix,
+// keep the one rule.)
 int lr2_strip_min_width(const StereoConfig& c) { return c.dmax + std::abs(c.min_disp) + c.ppc - 1; }
 
 // Whether the core takes ppc pixels a clock in strips (docs/ppc-hardware.md) for this
-// configuration: census and rank costs with every option the hardware takes at ppc > 1 (not the
-// speckle filter, which needs uf < dmax), SAD, ZSAD and SHD without LR2 (whose match side reads
-// code entries). Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
+// configuration: every cost function (SHD over windows of more than one code) with every option
+// the hardware takes at ppc > 1 (not the speckle filter, which needs uf < dmax), LR2 in rows of
+// lr2_strip_min_width. Elsewhere ppc > 1 converts beats to pixels around the one-pixel core.
 bool strip_options(const StereoConfig& c) {
-  if (c.ppc == 1) return false;
-  if (c.cost == CostFunction::Census || c.cost == CostFunction::Rank)
-    return c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c);
-  if (c.cost == CostFunction::Shd) return c.shd_window > 1 && c.lr != LrCheck::Lr2;
-  return (c.cost == CostFunction::Sad || c.cost == CostFunction::Zsad) && c.lr != LrCheck::Lr2;
+  if (c.ppc == 1 || (c.cost == CostFunction::Shd && c.shd_window == 1)) return false;
+  return c.lr != LrCheck::Lr2 || c.width >= lr2_strip_min_width(c);
 }
 
 }  // namespace
@@ -167,7 +165,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
   g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
   // LR2's match side reads cost words at one pixel a clock (fpstereo_lr2_match's lane banks), and
-  // code entries of its own in strips.
+  // entries of its own in strips (code entries, or its own window costs' words).
   g.reorders_codes = point_cost && (cfg.lr != LrCheck::Lr2 || g.strips > 1);
   if (g.reorders_codes) {
     g.code_entry_bits = std::max(1, g.widths.code) + (cfg.fused_weight != 0 ? g.widths.fused_feature : 0);

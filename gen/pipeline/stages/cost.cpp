@@ -226,31 +226,34 @@ class CostStage : public Stage {
     int n = c.window, columns = window_columns(d), elem_bits = 8;
     // Without the fused cost the features' ports keep their width of 8 and read 0.
     const int64_t feature_bits = fused ? d.widths.fused_feature : 8;
-    Connections windows;  // the front end's nets by default
+    // The base and match arrays (the front end's pixels, or SHD's code windows) and their
+    // features; the positions and masks (the front end's nets by default).
+    std::string left = "window_left", right = "window_right", left_features, right_features;
+    Connections positions;
     if (shd) {
       n = c.shd_window;
       columns = code_window_columns(d);
       elem_bits = std::max(1, d.widths.code);
       core.text("  // SHD's code windows, P columns a shift.\n");
-      windows = {{"window_left", "codes_left"},
-                 {"window_right", "codes_right"},
-                 {"row_valid", "code_row_valid"},
-                 {"col_valid", "code_col_valid"},
-                 {"newest_row_valid", "code_newest_row_valid"},
-                 {"transform_in_frame", "codes_in_frame"},
-                 {"transform_x", "codes_x"},
-                 {"transform_slot", "codes_slot"}};
+      left = "codes_left";
+      right = "codes_right";
+      positions = {{"row_valid", "code_row_valid"},
+                   {"col_valid", "code_col_valid"},
+                   {"newest_row_valid", "code_newest_row_valid"},
+                   {"transform_in_frame", "codes_in_frame"},
+                   {"transform_x", "codes_x"},
+                   {"transform_slot", "codes_slot"}};
       // (the feature windows read 0 without the fused cost)
-      core.wire("code_features_left", int64_t(n) * columns * feature_bits);
-      core.wire("code_features_right", int64_t(n) * columns * feature_bits);
-      Connections features = {{"features_left", "code_features_left"},
-                              {"features_right", "code_features_right"}};
-      windows = windows + features;
+      left_features = "code_features_left";
+      right_features = "code_features_right";
+      core.wire(left_features, int64_t(n) * columns * feature_bits);
+      core.wire(right_features, int64_t(n) * columns * feature_bits);
+      Connections features = {{"features_left", left_features}, {"features_right", right_features}};
       if (!fused)
         features = features + Connections{{"feature_base", fmt::format("{}'d0", d.strips * feature_bits)},
                                           {"feature_match", fmt::format("{}'d0", d.strips * feature_bits)}};
-      core.wire("codes_left", int64_t(n) * columns * elem_bits);
-      core.wire("codes_right", int64_t(n) * columns * elem_bits);
+      core.wire(left, int64_t(n) * columns * elem_bits);
+      core.wire(right, int64_t(n) * columns * elem_bits);
       core.wire("code_row_valid", n);
       core.wire("code_col_valid", n + d.strips - 1);
       core.wire("code_newest_row_valid", n);
@@ -278,35 +281,49 @@ class CostStage : public Stage {
                                 {"taken_x", "codes_x"},
                                 {"taken_slot", "codes_slot"}} +
                         features);
+    } else {  // SAD and ZSAD have no fused cost
+      left_features = right_features = fmt::format("{}'d0", int64_t(n) * columns * feature_bits);
     }
-    if (!shd) {  // SAD and ZSAD have no fused cost
-      const std::string zeros = fmt::format("{}'d0", int64_t(n) * columns * feature_bits);
-      windows = windows + Connections{{"features_left", zeros}, {"features_right", zeros}};
-    }
-    core.wire("cost_we", 1);
-    core.wire("cost_slot", d.x_bits);
-    core.wire("cost_row", d.cost_row_bits);
-    core.wire("costs", int64_t(d.strips) * c.uf * d.widths.cost);
-    core.instance("fpstereo_strip_window_cost", "cost",
-                  Connections{{"P", num(d.strips)},
-                              {"N", num(n)},
-                              {"COLS", num(columns)},
-                              {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
-                              {"HAMMING", shd ? "1" : "0"},
-                              {"ELEM_W", num(elem_bits)},
-                              {"UF", num(c.uf)},
-                              {"COST_W", num(d.widths.cost)},
-                              {"COST_MAX", num(int64_t(d.widths.cost_max))},
-                              {"COLUMN_SUM_W", num(d.column_sum_bits)},
-                              {"MEAN_MUL", num(int64_t(d.mean_mul))},
-                              {"MEAN_SHIFT", num(d.mean_shift)},
-                              {"ROW_W", num(d.cost_row_bits)},
-                              {"X_W", num(d.x_bits)},
-                              {"MIN_DISP", num(c.min_disp)},
-                              {"LANES_LAT", num(d.cost_lanes_latency)},
-                              {"LAT", num(d.cost_latency)}} +
-                      fused_cost_parameters(d),
-                  windows);
+    const Connections parameters = Connections{{"P", num(d.strips)},
+                                               {"N", num(n)},
+                                               {"COLS", num(columns)},
+                                               {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
+                                               {"HAMMING", shd ? "1" : "0"},
+                                               {"ELEM_W", num(elem_bits)},
+                                               {"UF", num(c.uf)},
+                                               {"COST_W", num(d.widths.cost)},
+                                               {"COST_MAX", num(int64_t(d.widths.cost_max))},
+                                               {"COLUMN_SUM_W", num(d.column_sum_bits)},
+                                               {"MEAN_MUL", num(int64_t(d.mean_mul))},
+                                               {"MEAN_SHIFT", num(d.mean_shift)},
+                                               {"ROW_W", num(d.cost_row_bits)},
+                                               {"X_W", num(d.x_bits)}} +
+                                   Connections{{"LANES_LAT", num(d.cost_lanes_latency)}, {"LAT", num(d.cost_latency)}} +
+                                   fused_cost_parameters(d);
+    // The costs with the left image's windows as the base (the nets begin with `names`), or with
+    // the roles swapped.
+    const auto window_cost = [&](const std::string& names, int min_disp, bool swapped) {
+      core.wire(names + "cost_we", 1);
+      core.wire(names + "cost_slot", d.x_bits);
+      core.wire(names + "cost_row", d.cost_row_bits);
+      core.wire(names + "costs", int64_t(d.strips) * c.uf * d.widths.cost);
+      core.instance("fpstereo_strip_window_cost", names + "cost", parameters + Connections{{"MIN_DISP", num(min_disp)}},
+                    positions + Connections{{"window_left", swapped ? right : left},
+                                            {"window_right", swapped ? left : right},
+                                            {"features_left", swapped ? right_features : left_features},
+                                            {"features_right", swapped ? left_features : right_features},
+                                            {"cost_we", names + "cost_we"},
+                                            {"cost_slot", names + "cost_slot"},
+                                            {"cost_row", names + "cost_row"},
+                                            {"costs", names + "costs"}});
+    };
+    window_cost("", c.min_disp, false);
+    if (c.lr != LrCheck::Lr2) return;
+    // LR2's match side (the LR2 match stage): the costs of the match image's pixels, its windows
+    // the base, at its min-disp; every cost is symmetric in its two windows (docs/semantics.md,
+    // "LR2").
+    core.text("  // LR2's match side's costs: the images' roles swapped.\n");
+    window_cost("lr2_", lr2_match_min_disp(d), true);
   }
 
   // ---- HLS: G words of uf costs per pixel; with LR2 cost_stage also sends them to the match side.

@@ -167,8 +167,8 @@ class CostReorderStage : public Stage {
     prefix(d, core, base, m, "lr2_");
   }
 
-  // SAD and ZSAD in strips: the cost words as they leave the cost stage, each pixel's with its
-  // adaptive P2 penalties above (which leave with them).
+  // SAD, ZSAD and SHD in strips: the cost words as they leave the cost stage, each pixel's with
+  // its adaptive P2 penalties above (which leave with them).
   static void strip_cost_writes(const RtlDesign& d, CoreBuilder& core) {
     const int P = d.strips;
     const int64_t cost_bits = int64_t(d.cfg.uf) * d.widths.cost, penalty_bits = d.penalty_bits;
@@ -190,6 +190,19 @@ class CostReorderStage : public Stage {
                            "  assign code_prefix = 1'b0;\n",
                            data, extra_bits),
                {"code_we", "code_slot", "code_row", "code_data", "code_extra", "code_prefix"});
+    if (d.cfg.lr != LrCheck::Lr2) return;
+    // LR2's match side (the LR2 match stage): its own window costs' words (no penalties), as they
+    // leave, into RAMs of its own.
+    core.text("  // LR2's match side's cost writes.\n");
+    core.wire("lr2_code_we", 1);
+    core.wire("lr2_code_slot", d.x_bits);
+    core.wire("lr2_code_row", d.cost_row_bits);
+    core.wire("lr2_code_data", int64_t(P) * cost_bits);
+    core.wire("lr2_code_prefix", 1);
+    core.logic("  assign {lr2_code_we, lr2_code_slot, lr2_code_row} = {lr2_cost_we, lr2_cost_slot, lr2_cost_row};\n"
+               "  assign lr2_code_data = lr2_costs;\n"
+               "  assign lr2_code_prefix = 1'b0;\n",
+               {"lr2_code_we", "lr2_code_slot", "lr2_code_row", "lr2_code_data", "lr2_code_prefix"});
   }
 
   // The prefix, taken from the row's match slots as they pass and held from the slot whose entries

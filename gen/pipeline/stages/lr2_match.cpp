@@ -1,8 +1,8 @@
 // LR2's match side: a second cost volume (lane banks), aggregation and winner-take-all
 // (fpstereo_lr2_match), dmax + 2 slots behind the base side's aggregation (its costs need base
 // pixels up to x' + m + dmax - 1, so a positive min-disp m adds m). In strips, a second
-// fpstereo_strip_aggregation over the match image's code entries (docs/ppc-hardware.md, "LR2 in
-// strips"), whose winners go to the base side's check.
+// fpstereo_strip_aggregation over the match image's code entries or (SAD, ZSAD, SHD) cost words
+// (docs/ppc-hardware.md, "LR2 in strips"), whose winners go to the base side's check.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -33,7 +33,7 @@ class Lr2MatchStage : public Stage {
       const int64_t words = g.row_slots / g.strips;
       for (int s = 0; s < g.strips; ++s) {
         out.push_back({"core.lr2_match.code_ram.codes.strip[" + std::to_string(s) + "].ram.mem",
-                       int64_t(s + 1) * g.chains * words, 2 * int64_t(g.code_entry_bits) * g.strips});
+                       int64_t(s + 1) * g.chains * words, lr2_strip_entry_bits(g) * g.strips});
         const int pixels = std::min(g.row_slots, g.cfg.width - s * g.row_slots);
         for (auto& m : aggregator_memories(g, "core.lr2_match.strip[" + std::to_string(s) + "].aggregation", pixels))
           out.push_back(m);
@@ -63,9 +63,10 @@ class Lr2MatchStage : public Stage {
                                                          {"MIN_DISP", num(c.min_disp)}});
   }
 
-  // In strips: the code entries with base and match swapped (the cost reorder stage's lr2_code_*),
-  // their strips' aggregation at min-disp lr2_match_min_disp, and each strip's winner written as
-  // Dm(x') (lr2_dm_*) for the check in the aggregation stage's fpstereo_strip_aggregation.
+  // In strips: the code entries with base and match swapped, or the cost words of the match side's
+  // window costs (the cost reorder stage's lr2_code_*), their strips' aggregation at min-disp
+  // lr2_match_min_disp, and each strip's winner written as Dm(x') (lr2_dm_*) for the check in the
+  // aggregation stage's fpstereo_strip_aggregation.
   static void strips_verilog(const RtlDesign& d, CoreBuilder& core) {
     const StereoConfig& c = d.cfg;
     const Widths& w = d.widths;
@@ -95,6 +96,9 @@ class Lr2MatchStage : public Stage {
       core.wire("lr2_" + port, bits);
       ports.push_back({port == "raddr" ? "cost_raddr" : port, "lr2_" + port});
     }
+    // Code entries are written with the base side's (the cost reorder stage's lr2_code_data beside
+    // code_data); cost words as the match side's window costs leave (its lr2_code_*).
+    const std::string writes = d.reorders_codes ? "code_" : "lr2_code_";
     core.wire("lr2_dm_we", P);
     core.wire("lr2_dm_waddr", int64_t(P) * dm_bits);
     core.wire("lr2_dm_wdata", int64_t(P) * w.disparity);
@@ -110,7 +114,10 @@ class Lr2MatchStage : public Stage {
                                   {"MATCH_SIDE", "1"},
                                   {"DM_LAG", num(lr2_dm_lag(d))}},
                   ports + Connections{{"agg_on", "match_on"},
-                                      {"cost_q", fmt::format("{}'d0", int64_t(P) * 2 * d.code_entry_bits)},
+                                      {"cost_q", fmt::format("{}'d0", P * lr2_strip_entry_bits(d))},
+                                      {"code_we", writes + "we"},
+                                      {"code_slot", writes + "slot"},
+                                      {"code_row", writes + "row"},
                                       {"code_data", "lr2_code_data"},
                                       {"code_extra", fmt::format("{}'d0", P)},
                                       {"code_prefix", "lr2_code_prefix"},

@@ -100,10 +100,14 @@ int strip_lr1_lag(const Geometry& g) {
 }
 
 int lr2_schedule_lead(const Geometry& g) {
-  // The base side's writes wait for adaptive P2's penalties (fpstereo_strip_code_reorder's
-  // held register and EXTRA_LAT), the match side's, which has none, do not.
-  const int penalty_wait = g.penalty_bits != 0 ? 1 + g.cost_latency : 0;
-  return code_base_wait_slots(g, lr2_match_min_disp(g)) - code_base_wait_slots(g) - penalty_wait;
+  // Code entries: the base side's writes wait for adaptive P2's penalties
+  // (fpstereo_strip_code_reorder's held register and EXTRA_LAT), the match side's, which has
+  // none, do not. Cost words (SAD, ZSAD, SHD): the two window costs' base windows wait as the
+  // code entries would (fpstereo_strip_window_cost's BASE_WAIT), the penalties leave with the
+  // base side's words.
+  const auto wait = [&](int m) { return (std::max(0, -m) + g.strips - 1) / g.strips; };
+  const int penalty_wait = g.reorders_codes && g.penalty_bits != 0 ? 1 + g.cost_latency : 0;
+  return wait(lr2_match_min_disp(g)) - wait(g.cfg.min_disp) - penalty_wait;
 }
 
 int lr2_dm_lag(const Geometry& g) {
@@ -153,6 +157,10 @@ Connections strip_aggregation_parameters(const RtlDesign& d) {
 
 int64_t strip_entry_bits(const Geometry& g) {
   return g.reorders_codes ? 2 * int64_t(g.code_entry_bits) + g.penalty_bits : g.cost_word_bits;
+}
+
+int64_t lr2_strip_entry_bits(const Geometry& g) {
+  return g.reorders_codes ? 2 * int64_t(g.code_entry_bits) : int64_t(g.cfg.uf) * g.widths.cost;
 }
 
 int strip_dm_address_bits(const Geometry& g) { return clog2((int64_t(g.strips) * g.chains + 1) * g.row_slots); }

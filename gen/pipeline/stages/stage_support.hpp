@@ -56,7 +56,8 @@ int lr2_match_min_disp(const Geometry& g);
 int strip_lr1_lag(const Geometry& g);
 
 // LR2's match side's schedule in strips after the base side's, in steps (negative where earlier):
-// its entries' wait below its min-disp less the base side's, and less the base side's writes' wait
+// its entries' (or its window costs') wait below its min-disp less the base side's, and less the
+// base side's code writes' wait
 // for adaptive P2's penalties, which the match side does without (its reads follow its writes as
 // closely as the base side's do theirs: a strip's last word is overwritten K steps after it is due
 // where SEG = P).
@@ -101,6 +102,8 @@ Connections strip_aggregation_parameters(const RtlDesign& d);
 // A pixel's entry in a strip's RAM: its base and match code entries (with adaptive P2's
 // penalties), or SAD's and ZSAD's cost word (with them).
 int64_t strip_entry_bits(const Geometry& g);
+// LR2's match side's entry in its strips' RAMs: the same without penalties (it has none).
+int64_t lr2_strip_entry_bits(const Geometry& g);
 // The address bits of a strip's match-side Dm writes (strip 0's, the most: (P * K + 1) * R words).
 int strip_dm_address_bits(const Geometry& g);
 
