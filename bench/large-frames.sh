@@ -9,8 +9,9 @@
 # view's stream checked too); 1080p-ppc2-lr2 with LR2 and the right view (as C4); 1080p-ppc2-sad
 # with SAD 5x5 (its window costs a beat a step, the cost words in the strips' RAMs);
 # 1080p-ppc4-shd with SHD 3x3 over census 5x5 codes and the fused cost at 64 disparities (the
-# codes in windows of 4 columns a step first).
-#   bench/large-frames.sh [--build-dir B] [1080p|4k|1080p-ppc2|4k-ppc2|1080p-ppc4|1080p-ppc2-lr1|1080p-ppc2-lr2|1080p-ppc2-sad|1080p-ppc4-shd ...]
+# codes in windows of 4 columns a step first); 1080p-ppc2-sad-lr2 with SAD 5x5, LR2 and the right
+# view at 64 disparities (the match side's window costs with the images swapped).
+#   bench/large-frames.sh [--build-dir B] [1080p|4k|1080p-ppc2|4k-ppc2|1080p-ppc4|1080p-ppc2-lr1|1080p-ppc2-lr2|1080p-ppc2-sad|1080p-ppc4-shd|1080p-ppc2-sad-lr2 ...]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$root/build
@@ -33,7 +34,9 @@ for size in "${sizes[@]}"; do
     1080p-ppc2-sad) geometry=(--width 1920 --height 1080 --ppc 2); factor=3; cost=(--cost sad --window 5) ;;
     1080p-ppc4-shd) geometry=(--width 1920 --height 1080 --ppc 4); factor=3; range=(--dmax 64 --uf 64)
                     cost=(--cost shd --window 5 --shd-window 3 --fused-weight 4) ;;
-    *) echo "large-frames: unknown size '$size' (1080p, 4k, 1080p-ppc2, 4k-ppc2, 1080p-ppc4, 1080p-ppc2-lr1, 1080p-ppc2-lr2, 1080p-ppc2-sad or 1080p-ppc4-shd)" >&2
+    1080p-ppc2-sad-lr2) geometry=(--width 1920 --height 1080 --ppc 2 --lr lr2 --right-view on); factor=3
+                        range=(--dmax 64 --uf 64); cost=(--cost sad --window 5) ;;
+    *) echo "large-frames: unknown size '$size' (1080p, 4k, 1080p-ppc2, 4k-ppc2, 1080p-ppc4, 1080p-ppc2-lr1, 1080p-ppc2-lr2, 1080p-ppc2-sad, 1080p-ppc4-shd or 1080p-ppc2-sad-lr2)" >&2
        exit 2 ;;
   esac
   echo "== $size"

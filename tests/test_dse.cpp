@@ -174,6 +174,36 @@ TEST_CASE("the fitted model grows with uf and the frame rate comes from rtl::pla
   CHECK(dse::frames_per_second(d, 200) == 200e6 / double(d.cycles_per_frame));
 }
 
+TEST_CASE("LR2 in strips counts the match side's costs again, the one-pixel core does not", "[dse]") {
+  // In strips LR2's match side computes its costs itself (census and rank in its chain costs, the
+  // window costs in a second instance with the images swapped); at one pixel a clock it reads the
+  // base side's.
+  const auto term = [](const StereoConfig& c, const std::string& name) {
+    const auto& names = dse::feature_names();
+    const auto at = std::find(names.begin(), names.end(), name);
+    REQUIRE(at != names.end());
+    return dse::features(rtl::plan(c))[size_t(at - names.begin())];
+  };
+  for (const char* cost : {"census", "rank", "sad", "zsad", "shd"})
+    for (int ppc : {1, 2}) {
+      StereoConfig c;
+      c.width = 96;
+      c.height = 16;
+      c.dmax = c.uf = 16;
+      c.ppc = ppc;
+      set_param(c, "cost", cost);
+      c.shd_window = 3;
+      StereoConfig with_lr2 = c;
+      with_lr2.lr = LrCheck::Lr2;
+      REQUIRE(rtl::plan(with_lr2).strips == ppc);
+      INFO(cost << " at ppc " << ppc);
+      const double sides = ppc > 1 ? 2.0 : 1.0;
+      for (const std::string name : {"code cost lanes", "pixel cost lanes", "match ring", "ZSAD lanes"})
+        CHECK(term(with_lr2, name) == sides * term(c, name));
+      CHECK(term(with_lr2, "match ring") > 0);
+    }
+}
+
 TEST_CASE("non-negative least squares recovers exact coefficients and clamps negative ones", "[dse]") {
   const std::vector<std::vector<double>> a = {{1, 1, 0}, {1, 2, 1}, {1, 3, 0}, {1, 4, 2}, {1, 5, 1}};
   std::vector<double> b;

@@ -215,81 +215,92 @@ class CostStage : public Stage {
                   features);
   }
 
+  // What fpstereo_strip_window_cost takes its windows from: the base and match arrays, their
+  // features (the fused cost's), the arrays' shape and the positions and masks beside them (the
+  // front end's nets where not named).
+  struct WindowArrays {
+    std::string left, right, left_features, right_features;
+    int n = 0, columns = 0, elem_bits = 8;
+    Connections positions;
+  };
+
+  // SHD in strips: the transform's codes (and the fused cost's features) in SHD_K x SHD_K windows,
+  // P columns a shift (fpstereo_strip_code_windows).
+  static WindowArrays code_windows(const RtlDesign& d, CoreBuilder& core, int64_t feature_bits) {
+    const StereoConfig& c = d.cfg;
+    const bool fused = c.fused_weight != 0;
+    WindowArrays a{"codes_left", "codes_right", "code_features_left", "code_features_right", c.shd_window,
+                   code_window_columns(d), std::max(1, d.widths.code),
+                   Connections{{"row_valid", "code_row_valid"},
+                               {"col_valid", "code_col_valid"},
+                               {"newest_row_valid", "code_newest_row_valid"},
+                               {"transform_in_frame", "codes_in_frame"},
+                               {"transform_x", "codes_x"},
+                               {"transform_slot", "codes_slot"}}};
+    core.text("  // SHD's code windows, P columns a shift.\n");
+    const int64_t elements = int64_t(a.n) * a.columns;
+    // (the feature windows read 0 without the fused cost)
+    core.wire(a.left_features, elements * feature_bits);
+    core.wire(a.right_features, elements * feature_bits);
+    Connections features = {{"features_left", a.left_features}, {"features_right", a.right_features}};
+    if (!fused)
+      features = features + Connections{{"feature_base", fmt::format("{}'d0", d.strips * feature_bits)},
+                                        {"feature_match", fmt::format("{}'d0", d.strips * feature_bits)}};
+    core.wire(a.left, elements * a.elem_bits);
+    core.wire(a.right, elements * a.elem_bits);
+    core.wire("code_row_valid", a.n);
+    core.wire("code_col_valid", a.n + d.strips - 1);
+    core.wire("code_newest_row_valid", a.n);
+    core.wire("codes_in_frame", 1);
+    core.wire("codes_x", d.x_bits);
+    core.wire("codes_slot", d.cost_row_bits);
+    core.instance("fpstereo_strip_code_windows", "code_windows",
+                  {{"P", num(d.strips)},
+                   {"SHD_K", num(a.n)},
+                   {"CODE_W", num(a.elem_bits)},
+                   {"ROW_SLOTS", num(d.row_slots)},
+                   {"ROWS", num(d.slot_rows)},
+                   {"ROW_W", num(d.cost_row_bits)},
+                   {"X_W", num(d.x_bits)},
+                   {"Y_W", num(d.y_bits)},
+                   {"SIGNED_Y_W", num(d.signed_y_bits)},
+                   {"CODE_LAG", num(code_window_lag(d))},
+                   {"COLS", num(a.columns)},
+                   {"FUSED", fused ? "1" : "0"},
+                   {"FEATURE_W", num(feature_bits)}},
+                  Connections{{"row_valid", "code_row_valid"},
+                              {"col_valid", "code_col_valid"},
+                              {"newest_row_valid", "code_newest_row_valid"},
+                              {"taken_in_frame", "codes_in_frame"},
+                              {"taken_x", "codes_x"},
+                              {"taken_slot", "codes_slot"}} +
+                      features);
+    return a;
+  }
+
   // With strips (SAD, ZSAD and SHD): a slot's P pixels' cost words a step, with the slot they
   // belong to (cost_we, cost_slot, cost_row), which the cost reorder stage writes into the strips'
   // RAMs. SAD and ZSAD take the front end's pixel windows; SHD windows the transform's codes first
-  // (fpstereo_strip_code_windows) and sums their Hamming distances, with the fused cost beside
-  // windows of the pixels' features.
+  // (code_windows) and sums their Hamming distances, with the fused cost beside windows of the
+  // pixels' features. With LR2 a second instance computes the match side's costs.
   void strip_window_cost(const RtlDesign& d, CoreBuilder& core) const {
     const StereoConfig& c = d.cfg;
-    const bool shd = cost_ == CostFunction::Shd, fused = c.fused_weight != 0;
-    int n = c.window, columns = window_columns(d), elem_bits = 8;
+    const bool shd = cost_ == CostFunction::Shd;
     // Without the fused cost the features' ports keep their width of 8 and read 0.
-    const int64_t feature_bits = fused ? d.widths.fused_feature : 8;
-    // The base and match arrays (the front end's pixels, or SHD's code windows) and their
-    // features; the positions and masks (the front end's nets by default).
-    std::string left = "window_left", right = "window_right", left_features, right_features;
-    Connections positions;
+    const int64_t feature_bits = c.fused_weight != 0 ? d.widths.fused_feature : 8;
+    WindowArrays arrays;
     if (shd) {
-      n = c.shd_window;
-      columns = code_window_columns(d);
-      elem_bits = std::max(1, d.widths.code);
-      core.text("  // SHD's code windows, P columns a shift.\n");
-      left = "codes_left";
-      right = "codes_right";
-      positions = {{"row_valid", "code_row_valid"},
-                   {"col_valid", "code_col_valid"},
-                   {"newest_row_valid", "code_newest_row_valid"},
-                   {"transform_in_frame", "codes_in_frame"},
-                   {"transform_x", "codes_x"},
-                   {"transform_slot", "codes_slot"}};
-      // (the feature windows read 0 without the fused cost)
-      left_features = "code_features_left";
-      right_features = "code_features_right";
-      core.wire(left_features, int64_t(n) * columns * feature_bits);
-      core.wire(right_features, int64_t(n) * columns * feature_bits);
-      Connections features = {{"features_left", left_features}, {"features_right", right_features}};
-      if (!fused)
-        features = features + Connections{{"feature_base", fmt::format("{}'d0", d.strips * feature_bits)},
-                                          {"feature_match", fmt::format("{}'d0", d.strips * feature_bits)}};
-      core.wire(left, int64_t(n) * columns * elem_bits);
-      core.wire(right, int64_t(n) * columns * elem_bits);
-      core.wire("code_row_valid", n);
-      core.wire("code_col_valid", n + d.strips - 1);
-      core.wire("code_newest_row_valid", n);
-      core.wire("codes_in_frame", 1);
-      core.wire("codes_x", d.x_bits);
-      core.wire("codes_slot", d.cost_row_bits);
-      core.instance("fpstereo_strip_code_windows", "code_windows",
-                    {{"P", num(d.strips)},
-                     {"SHD_K", num(n)},
-                     {"CODE_W", num(elem_bits)},
-                     {"ROW_SLOTS", num(d.row_slots)},
-                     {"ROWS", num(d.slot_rows)},
-                     {"ROW_W", num(d.cost_row_bits)},
-                     {"X_W", num(d.x_bits)},
-                     {"Y_W", num(d.y_bits)},
-                     {"SIGNED_Y_W", num(d.signed_y_bits)},
-                     {"CODE_LAG", num(code_window_lag(d))},
-                     {"COLS", num(columns)},
-                     {"FUSED", fused ? "1" : "0"},
-                     {"FEATURE_W", num(feature_bits)}},
-                    Connections{{"row_valid", "code_row_valid"},
-                                {"col_valid", "code_col_valid"},
-                                {"newest_row_valid", "code_newest_row_valid"},
-                                {"taken_in_frame", "codes_in_frame"},
-                                {"taken_x", "codes_x"},
-                                {"taken_slot", "codes_slot"}} +
-                        features);
-    } else {  // SAD and ZSAD have no fused cost
-      left_features = right_features = fmt::format("{}'d0", int64_t(n) * columns * feature_bits);
+      arrays = code_windows(d, core, feature_bits);
+    } else {  // SAD and ZSAD: the front end's pixels, and no fused cost
+      const std::string zeros = fmt::format("{}'d0", int64_t(c.window) * window_columns(d) * feature_bits);
+      arrays = {"window_left", "window_right", zeros, zeros, c.window, window_columns(d), 8, {}};
     }
     const Connections parameters = Connections{{"P", num(d.strips)},
-                                               {"N", num(n)},
-                                               {"COLS", num(columns)},
+                                               {"N", num(arrays.n)},
+                                               {"COLS", num(arrays.columns)},
                                                {"ZERO_MEAN", cost_ == CostFunction::Zsad ? "1" : "0"},
                                                {"HAMMING", shd ? "1" : "0"},
-                                               {"ELEM_W", num(elem_bits)},
+                                               {"ELEM_W", num(arrays.elem_bits)},
                                                {"UF", num(c.uf)},
                                                {"COST_W", num(d.widths.cost)},
                                                {"COST_MAX", num(int64_t(d.widths.cost_max))},
@@ -297,8 +308,9 @@ class CostStage : public Stage {
                                                {"MEAN_MUL", num(int64_t(d.mean_mul))},
                                                {"MEAN_SHIFT", num(d.mean_shift)},
                                                {"ROW_W", num(d.cost_row_bits)},
-                                               {"X_W", num(d.x_bits)}} +
-                                   Connections{{"LANES_LAT", num(d.cost_lanes_latency)}, {"LAT", num(d.cost_latency)}} +
+                                               {"X_W", num(d.x_bits)},
+                                               {"LANES_LAT", num(d.cost_lanes_latency)},
+                                               {"LAT", num(d.cost_latency)}} +
                                    fused_cost_parameters(d);
     // The costs with the left image's windows as the base (the nets begin with `names`), or with
     // the roles swapped.
@@ -308,14 +320,15 @@ class CostStage : public Stage {
       core.wire(names + "cost_row", d.cost_row_bits);
       core.wire(names + "costs", int64_t(d.strips) * c.uf * d.widths.cost);
       core.instance("fpstereo_strip_window_cost", names + "cost", parameters + Connections{{"MIN_DISP", num(min_disp)}},
-                    positions + Connections{{"window_left", swapped ? right : left},
-                                            {"window_right", swapped ? left : right},
-                                            {"features_left", swapped ? right_features : left_features},
-                                            {"features_right", swapped ? left_features : right_features},
-                                            {"cost_we", names + "cost_we"},
-                                            {"cost_slot", names + "cost_slot"},
-                                            {"cost_row", names + "cost_row"},
-                                            {"costs", names + "costs"}});
+                    arrays.positions +
+                        Connections{{"window_left", swapped ? arrays.right : arrays.left},
+                                    {"window_right", swapped ? arrays.left : arrays.right},
+                                    {"features_left", swapped ? arrays.right_features : arrays.left_features},
+                                    {"features_right", swapped ? arrays.left_features : arrays.right_features},
+                                    {"cost_we", names + "cost_we"},
+                                    {"cost_slot", names + "cost_slot"},
+                                    {"cost_row", names + "cost_row"},
+                                    {"costs", names + "costs"}});
     };
     window_cost("", c.min_disp, false);
     if (c.lr != LrCheck::Lr2) return;
