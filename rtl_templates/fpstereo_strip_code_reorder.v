@@ -140,18 +140,19 @@ module fpstereo_strip_code_reorder #(
       end else begin : later_strip
         assign mine = {1'b0, wslot_in} >= FIRST && {1'b0, wslot_in} < AFTER;
       end
-      // The row's first word, (wrow mod ROWS) * WORDS, as a function of the row slot's bits alone
-      // (a table of constants): a modulus and a product of the slot were 7 LUTs deep where ROWS
-      // is not a power of two (1080p, four strips of six chains). The other addresses are narrow
-      // values and constants, cut to the RAM's address width.
+      // The row's first word, (wrow mod ROWS) * WORDS, read from a ROM by the row slot: a modulus
+      // and a product of the slot were 7 LUTs deep where ROWS is not a power of two (1080p, four
+      // strips of six chains), and a chain of compares over the slots, which the mapper left 9
+      // deep in the whole design where other paths set its delay target. A ROM is a mux tree on
+      // the slot's bits. The other addresses are narrow values and constants, cut to the RAM's
+      // address width.
       /* verilator lint_off WIDTH */
-      reg [RAM_AW-1:0] row_first;
+      reg [RAM_AW-1:0] first_words [0:(1<<SLOT_W)-1];
       integer r;
-      always @* begin
-        row_first = {RAM_AW{1'b0}};
-        for (r = 0; r < SLOT_ROWS; r = r + 1)
-          if (wrow_in == r) row_first = (r % ROWS) * WORDS;
-      end
+      initial
+        for (r = 0; r < (1 << SLOT_W); r = r + 1)
+          first_words[r] = (r % ROWS) * WORDS;
+      wire [RAM_AW-1:0] row_first = first_words[wrow_in];
       wire [RAM_AW-1:0] word_in_row = wslot_in - FIRST;
       wire [AW-1:0] at = raddr[s*AW +: AW];
       wire [RAM_AW-1:0] word_addr = at >> LOG_P;
