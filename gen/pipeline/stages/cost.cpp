@@ -367,14 +367,14 @@ class CostStage : public Stage {
  private:
   // What the base waits beside the match ring (adaptive P2's steps wait as long). Where the
   // reorder holds codes, a negative min-disp's wait is the cost reorder stage's; in strips the
-  // base waits whole slots, ceil(-m / P) (fpstereo_strip_window_cost's BASE_WAIT), and SHD's code
+  // base waits whole slots, min_disp_wait_slots (fpstereo_strip_window_cost's BASE_WAIT), and SHD's code
   // window code_window_lag slots, then two more (its arrays, and the cost stage taking them).
   Latency base_wait(const Geometry& g) const {
     const StereoConfig& c = g.cfg;
     const int64_t rs = cost_ == CostFunction::Shd ? c.shd_window / 2 : 0;
     const int64_t shd_wait = g.strips > 1 ? code_window_lag(g) + 2 : rs + 1;
     const int64_t wait = cost_ == CostFunction::Shd ? shd_wait : cost_ == CostFunction::Zsad ? 2 : 0;
-    return {rs, wait + (g.reorders_codes ? 0 : (std::max(0, -c.min_disp) + g.strips - 1) / g.strips), 0};
+    return {rs, wait + (g.reorders_codes ? 0 : min_disp_wait_slots(g, c.min_disp)), 0};
   }
 
   CostFunction cost_;  // SHD over a 1 x 1 window is census

@@ -78,8 +78,12 @@ std::string bit_field(const std::string& net, int64_t lsb, int64_t bits) {
 
 int code_base_wait_slots(const Geometry& g) { return code_base_wait_slots(g, g.cfg.min_disp); }
 
+int min_disp_wait_slots(const Geometry& g, int min_disp) {
+  return (std::max(0, -min_disp) + g.strips - 1) / g.strips;
+}
+
 int code_base_wait_slots(const Geometry& g, int min_disp) {
-  return !g.reorders_codes || min_disp >= 0 ? 0 : (-min_disp + g.strips - 1) / g.strips;
+  return g.reorders_codes ? min_disp_wait_slots(g, min_disp) : 0;
 }
 
 int lr2_match_min_disp(const Geometry& g) { return -(g.cfg.min_disp + g.cfg.dmax - 1); }
@@ -105,9 +109,8 @@ int lr2_schedule_lead(const Geometry& g) {
   // none, do not. Cost words (SAD, ZSAD, SHD): the two window costs' base windows wait as the
   // code entries would (fpstereo_strip_window_cost's BASE_WAIT), the penalties leave with the
   // base side's words.
-  const auto wait = [&](int m) { return (std::max(0, -m) + g.strips - 1) / g.strips; };
   const int penalty_wait = g.reorders_codes && g.penalty_bits != 0 ? 1 + g.cost_latency : 0;
-  return wait(lr2_match_min_disp(g)) - wait(g.cfg.min_disp) - penalty_wait;
+  return min_disp_wait_slots(g, lr2_match_min_disp(g)) - min_disp_wait_slots(g, g.cfg.min_disp) - penalty_wait;
 }
 
 int lr2_dm_lag(const Geometry& g) {

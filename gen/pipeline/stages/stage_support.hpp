@@ -36,10 +36,13 @@ std::string word_tag(const std::string& words, bool with_group, const std::vecto
 int window_centre_lag(const Geometry& g);
 int window_columns(const Geometry& g);
 
-// With min-disp m below 0 and a code reorder, the slots a slot's base entries (where they go, their
-// penalties) wait for the slots holding their match pixels x - m: ceil(-m / P), fpstereo_code_reorder's
-// -MIN_DISP at P = 1 and fpstereo_strip_code_reorder's BASE_WAIT; the aggregation reads that much
-// later. 0 otherwise.
+// With min-disp m below 0, the slots a base pixel x waits for the slot holding its match pixel
+// x - m: ceil(-m / P); 0 for m >= 0.
+int min_disp_wait_slots(const Geometry& g, int min_disp);
+
+// With a code reorder, min_disp_wait_slots: a slot's base entries (where they go, their penalties)
+// wait that long, fpstereo_code_reorder's -MIN_DISP at P = 1 and fpstereo_strip_code_reorder's
+// BASE_WAIT; the aggregation reads that much later. 0 otherwise.
 // With min_disp, as the code entries of LR2's match side in strips have (below).
 int code_base_wait_slots(const Geometry& g);
 int code_base_wait_slots(const Geometry& g, int min_disp);
@@ -57,10 +60,9 @@ int strip_lr1_lag(const Geometry& g);
 
 // LR2's match side's schedule in strips after the base side's, in steps (negative where earlier):
 // its entries' (or its window costs') wait below its min-disp less the base side's, and less the
-// base side's code writes' wait
-// for adaptive P2's penalties, which the match side does without (its reads follow its writes as
-// closely as the base side's do theirs: a strip's last word is overwritten K steps after it is due
-// where SEG = P).
+// base side's code writes' wait for adaptive P2's penalties, which the match side does without
+// (its reads follow its writes as closely as the base side's do theirs: a strip's last word is
+// overwritten K steps after it is due where SEG = P).
 int lr2_schedule_lead(const Geometry& g);
 
 // In strips, the slots the left-right check's lookups wait (fpstereo_strip_lr_check's VIEW_WAIT).
