@@ -156,15 +156,16 @@ module fpstereo_speckle #(
   reg              res2_self, res2_forward;   // the label is its own root; its parent is the label written now
   reg              k_pending;
   reg [P_W-1:0]    k_at, k_tail;
-  // The last append, a clock later: if the chain has just come to the run it wrote, the link
-  // read in that clock was the old one.
-  reg              k_appended;
-  reg [P_W-1:0]    k_appended_at, k_appended_link;
+  // An append behind a continuing chain writes the old tail's link (k_appended_link) two clocks
+  // before a read sees it (the link RAM's write is registered): if the chain comes to the old
+  // tail meanwhile, it reads the tail's mark and takes k_appended_link instead, once.
+  reg [1:0]        k_appended;                // the append's first and second clock after
+  reg [P_W-1:0]    k_appended_link;
   // The class write left over from phase 3 (the met mark, or the set a row's last pixel
   // finalised), done in the next clock, where no other class write can be.
   reg              post_valid;
+  reg              post_late;                 // the row's last set (else the met mark)
   reg [X_W:0]      post_addr;
-  reg [CLS_W-1:0]  post_data;
 
   // --- the exit ---
   reg [WORD_W-1:0] ex_left;
@@ -182,12 +183,24 @@ module fpstereo_speckle #(
   fpstereo_ram_tdp #(.WIDTH(1), .DEPTH(POS), .ADDR_W(P_W)) kill_mem (
     .clk(clk), .we_a(phase == 2'd1), .re_a(accept), .addr_a(pos), .wdata_a(1'b0), .rdata_a(ex_kill),
     .we_b(k_pending), .re_b(1'b0), .addr_b(k_at), .wdata_b(1'b1), .rdata_b(unused_kill_b));
-  // The runs lists and the kill chain: the labeller's splice or the chain's append (never both at
-  // one pixel) writes; the chain reads the link of the run it goes to.
-  wire             next_we;
-  wire [P_W-1:0]   next_waddr, next_wdata, next_rdata, k_at_next;
-  fpstereo_ram_sdp #(.WIDTH(P_W), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
-    .clk(clk), .we(next_we), .waddr(next_waddr), .wdata(next_wdata),
+  // The runs lists and the kill chain: a run's link {linked, next run}, its tail's not linked. A
+  // new run (phase 2) marks its own; the labeller's splice or the chain's append (never both at
+  // one pixel, phase 3) links a tail. The write is registered, so that the compares and the
+  // labeller's choices behind it stay off the RAM's write enable and address decode (logic depth,
+  // docs/timing.md). The chain reads the link of the run it goes to.
+  wire             link_we;
+  wire [P_W-1:0]   link_waddr, k_at_next;
+  wire [P_W:0]     link_wdata, next_rdata;
+  reg              link_we_q;
+  reg  [P_W-1:0]   link_waddr_q;
+  reg  [P_W:0]     link_wdata_q;
+  always @(posedge clk) begin
+    link_we_q <= link_we && !rst;
+    link_waddr_q <= link_waddr;
+    link_wdata_q <= link_wdata;
+  end
+  fpstereo_ram_sdp #(.WIDTH(P_W + 1), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
+    .clk(clk), .we(link_we_q), .waddr(link_waddr_q), .wdata(link_wdata_q),
     .re(1'b1), .raddr(k_at_next), .rdata(next_rdata));
   // The row above: the next pixel's read in phase 3 (a clock ahead of its root), this pixel's
   // write.
@@ -323,9 +336,12 @@ module fpstereo_speckle #(
         n_cur_tail = n_top_tail; n_cur_last = n_top_last;
         n_cur_on = 1'b0;
       end else begin
+        // The top as this step found it: a join, a push or an absorb into the top would have left
+        // the current set on the stack (n_cur_on), so the record written comes from registers
+        // (logic depth, docs/timing.md).
         wr_fin = 1'b1;
-        fin_label = n_top_label; fin_count = n_top_count; fin_head = n_top_head; fin_tail = n_top_tail;
-        fin_last = n_top_last;
+        fin_label = top_label; fin_count = top_count; fin_head = top_head; fin_tail = top_tail;
+        fin_last = top_last;
       end
       n_sp = n_sp - 1'b1;
       {n_top_label, n_top_count, n_top_head, n_top_tail, n_top_last, n_top_right} = below_q;
@@ -357,6 +373,10 @@ module fpstereo_speckle #(
   wire fin_run = run_ends && !cur_on;        // phase 2: the run's set is finalised
   assign cls_we = post_valid || (phase == 2'd2 && fin_run) || (phase == 2'd3 && wr_fin);
   assign cls_waddr = post_valid ? post_addr : {bank, phase == 2'd2 ? cur_label : fin_label};
+  // The post write's record is in registers by then: the set phase 3 left in cur_*, or the class
+  // read in phase 2 (rc_*, kept until the next phase 2).
+  wire [CLS_W-1:0] post_data = post_late ? {cur_count, cur_last, cur_head, cur_tail, 1'b0}
+                                         : {rc_count, rc_last, rc_head, rc_tail, 1'b1};
   assign cls_wdata = post_valid ? post_data
                    : phase == 2'd2 ? {cur_count, cur_last, cur_head, cur_tail, 1'b0}
                    : {fin_count, fin_last, fin_head, fin_tail, 1'b0};
@@ -368,151 +388,157 @@ module fpstereo_speckle #(
   // The kill chain walks one run a clock; a closed small region's list starts it or goes behind
   // its tail. The labeller's splices are to open lists, never the chain's, so only an append can
   // write the link the chain reads.
-  wire k_last = k_at == k_tail;
+  wire k_stale = k_appended != 2'b00 && !next_rdata[P_W];  // the old tail, read before the append's write
+  wire k_last = !next_rdata[P_W] && !k_stale;
   wire k_continue = k_pending && !k_last;
   wire append = phase == 2'd3 && enqueue;
-  wire [P_W-1:0] k_link = (k_appended && k_at == k_appended_at) ? k_appended_link : next_rdata;
+  wire [P_W-1:0] k_link = k_stale ? k_appended_link : next_rdata[P_W-1:0];
   assign k_at_next = (append && !k_continue) ? rc_head : k_link;
   wire splice = phase == 2'd3 && wr_next;
-  assign next_we = splice || (append && k_continue);
-  assign next_waddr = splice ? wr_next_at : k_tail;
-  assign next_wdata = splice ? wr_next_data : rc_head;
+  wire mark = phase == 2'd2 && starts;
+  assign link_we = mark || splice || (append && k_continue);
+  assign link_waddr = mark ? pos : splice ? wr_next_at : k_tail;
+  assign link_wdata = mark ? {1'b0, pos} : {1'b1, splice ? wr_next_data : rc_head};
 
   always @(posedge clk) begin
+    out_valid <= 1'b0;
+    // The row-end resolution: one label a clock, parents always smaller.
+    if (res_go) res_next <= res_next + 1'b1;
+    res1_valid <= res_go;
+    res1_label <= res_next[X_W-1:0];
+    res2_valid <= res1_valid;
+    res2_label <= res1_label;
+    res2_self <= res_parent == res1_label;
+    res2_forward <= res2_valid && res_parent == res2_label;
+    res2_root_prev <= res_root_w;
+    post_valid <= 1'b0;
+    // The kill chain (its link read bypassed while an append's write is on its way).
+    if (append && k_continue) begin
+      k_appended <= 2'b01;
+      k_appended_link <= rc_head;
+    end else begin
+      k_appended <= k_stale ? 2'b00 : {k_appended[0], 1'b0};
+    end
+    if (append) begin
+      k_at <= k_at_next;
+      k_tail <= rc_tail;
+      k_pending <= 1'b1;
+    end else if (k_pending) begin
+      if (k_last) k_pending <= 1'b0;
+      else k_at <= k_at_next;
+    end
+    case (phase)
+      2'd0: if (accept) begin
+        word_q <= in_word;
+        first_q <= in_first;
+        word_valid_q <= in_word != INVALID;
+        pos_w <= pos;
+        x_w <= x;
+        x0_q <= x == 0;
+        phase <= 2'd1;
+      end
+      2'd1: begin
+        ex_word_q <= ex_word;
+        ex_kill_q <= ex_kill;
+        c_q <= c;
+        left_q <= x != 0 && connected(left_word, word_q);
+        up_raw_q <= connected(aw, word_q);
+        if (x == 0) no_above <= first_q;
+        phase <= 2'd2;
+      end
+      2'd2: begin
+        ex_joins_q <= !x0_q && connected(ex_left, ex_word_q);
+        ex_left <= ex_word_q;
+        {rc_count, rc_last, rc_head, rc_tail, rc_met} <= cls_rdata;
+        closes_q <= cls_last_r == x;
+        beyond_x_q <= cls_last_r > x;
+        beyond_right_q <= cls_last_r > top_right;
+        small_q <= cls_count_r != BIG;
+        row_end_q <= x == LAST_X;
+        cur_smaller_q <= (starts ? next_label[X_W-1:0] : cur_label) < top_label;
+        {join_big_q, join_sum_q} <= join_next;
+        {absorb_big_q, absorb_sum_q} <= absorb_next;
+        below_q <= below;
+        join_q <= up_next && cls_rdata[0] && !cur_on_next;
+        absorb_q <= up_next && !cls_rdata[0];
+        top_at_x_q <= sp != 0 && top_right == x;
+        if (run_ends) begin
+          cur_act <= 1'b0;
+          cur_on <= 1'b0;
+        end
+        if (starts) begin
+          cur_act <= 1'b1;
+          cur_on <= 1'b0;
+          cur_label <= next_label[X_W-1:0];
+          cur_count <= {{(C_W - 1){1'b0}}, 1'b1};
+          cur_head <= pos;
+          cur_tail <= pos;
+          cur_last <= x;
+          next_label <= next_label + 1'b1;
+        end else if (left_q) begin
+          if (cur_on) begin
+            top_count <= sat_add(top_count, {{(C_W - 1){1'b0}}, 1'b1});
+            top_last <= x;
+          end else begin
+            cur_count <= sat_add(cur_count, {{(C_W - 1){1'b0}}, 1'b1});
+            cur_last <= x;
+          end
+        end
+        phase <= 2'd3;
+      end
+      default: begin
+        // The exit: a run's kill bit is at its first pixel.
+        if (!ex_joins_q) begin
+          ex_killed <= ex_kill_q;
+          out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
+        end else begin
+          out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
+        end
+        out_valid <= full;
+        cur_act <= n_cur_act; cur_on <= n_cur_on; cur_label <= n_cur_label; cur_last <= n_cur_last;
+        cur_count <= n_cur_count; cur_head <= n_cur_head; cur_tail <= n_cur_tail;
+        top_label <= n_top_label; top_last <= n_top_last; top_right <= n_top_right;
+        top_count <= n_top_count; top_head <= n_top_head; top_tail <= n_top_tail;
+        sp <= n_sp;
+        // The row's last set goes in the next clock; the met mark of the row's last pixel is
+        // then dropped (the next row overwrites this bank before the row after reads it).
+        if (wr_late) begin
+          post_valid <= 1'b1;
+          post_late <= 1'b1;
+          post_addr <= {bank, n_cur_label};
+        end else if (wr_met) begin
+          post_valid <= 1'b1;
+          post_late <= 1'b0;
+          post_addr <= {~bank, c_q};
+        end
+        left_word <= word_q;
+        if (x == LAST_X) begin
+          x <= {X_W{1'b0}};
+          slot <= (slot == LAST_SLOT) ? {SLOT_W{1'b0}} : slot + 1'b1;
+          pos <= (pos == LAST_POS) ? {P_W{1'b0}} : pos + 1'b1;
+          if (slot == LAST_SLOT) full <= 1'b1;
+          bank <= ~bank;
+          have_above <= 1'b1;
+          res_next <= {(X_W + 1){1'b0}};
+          res_count <= next_label;
+          next_label <= {(X_W + 1){1'b0}};
+        end else begin
+          x <= x + 1'b1;
+          pos <= pos + 1'b1;
+        end
+        phase <= 2'd0;
+      end
+    endcase
+    // A reset overrides the control registers only: the data beside them is read only where
+    // those say so, and their enables stay free of the reset's logic (logic depth, docs/timing.md).
     if (rst) begin
       phase <= 2'd0; x <= {X_W{1'b0}}; slot <= {SLOT_W{1'b0}}; bank <= 1'b0; full <= 1'b0;
       no_above <= 1'b1; pos <= {P_W{1'b0}};
       cur_act <= 1'b0; cur_on <= 1'b0; sp <= {SP_W{1'b0}}; next_label <= {(X_W + 1){1'b0}};
       res_next <= {(X_W + 1){1'b0}}; res_count <= {(X_W + 1){1'b0}};
       res1_valid <= 1'b0; res2_valid <= 1'b0;
-      k_pending <= 1'b0; post_valid <= 1'b0; out_valid <= 1'b0;
+      k_pending <= 1'b0; k_appended <= 2'b00; post_valid <= 1'b0; out_valid <= 1'b0;
       have_above <= 1'b0;
-    end else begin
-      out_valid <= 1'b0;
-      // The row-end resolution: one label a clock, parents always smaller.
-      if (res_go) res_next <= res_next + 1'b1;
-      res1_valid <= res_go;
-      res1_label <= res_next[X_W-1:0];
-      res2_valid <= res1_valid;
-      res2_label <= res1_label;
-      res2_self <= res_parent == res1_label;
-      res2_forward <= res2_valid && res_parent == res2_label;
-      res2_root_prev <= res_root_w;
-      post_valid <= 1'b0;
-      // The kill chain (its link read bypassed when the link is written as it is read).
-      k_appended <= append && k_continue;
-      k_appended_at <= k_tail;
-      k_appended_link <= rc_head;
-      if (append) begin
-        k_at <= k_at_next;
-        k_tail <= rc_tail;
-        k_pending <= 1'b1;
-      end else if (k_pending) begin
-        if (k_last) k_pending <= 1'b0;
-        else k_at <= k_at_next;
-      end
-      case (phase)
-        2'd0: if (accept) begin
-          word_q <= in_word;
-          first_q <= in_first;
-          word_valid_q <= in_word != INVALID;
-          pos_w <= pos;
-          x_w <= x;
-          x0_q <= x == 0;
-          phase <= 2'd1;
-        end
-        2'd1: begin
-          ex_word_q <= ex_word;
-          ex_kill_q <= ex_kill;
-          c_q <= c;
-          left_q <= x != 0 && connected(left_word, word_q);
-          up_raw_q <= connected(aw, word_q);
-          if (x == 0) no_above <= first_q;
-          phase <= 2'd2;
-        end
-        2'd2: begin
-          ex_joins_q <= !x0_q && connected(ex_left, ex_word_q);
-          ex_left <= ex_word_q;
-          {rc_count, rc_last, rc_head, rc_tail, rc_met} <= cls_rdata;
-          closes_q <= cls_last_r == x;
-          beyond_x_q <= cls_last_r > x;
-          beyond_right_q <= cls_last_r > top_right;
-          small_q <= cls_count_r != BIG;
-          row_end_q <= x == LAST_X;
-          cur_smaller_q <= (starts ? next_label[X_W-1:0] : cur_label) < top_label;
-          {join_big_q, join_sum_q} <= join_next;
-          {absorb_big_q, absorb_sum_q} <= absorb_next;
-          below_q <= below;
-          join_q <= up_next && cls_rdata[0] && !cur_on_next;
-          absorb_q <= up_next && !cls_rdata[0];
-          top_at_x_q <= sp != 0 && top_right == x;
-          if (run_ends) begin
-            cur_act <= 1'b0;
-            cur_on <= 1'b0;
-          end
-          if (starts) begin
-            cur_act <= 1'b1;
-            cur_on <= 1'b0;
-            cur_label <= next_label[X_W-1:0];
-            cur_count <= {{(C_W - 1){1'b0}}, 1'b1};
-            cur_head <= pos;
-            cur_tail <= pos;
-            cur_last <= x;
-            next_label <= next_label + 1'b1;
-          end else if (left_q) begin
-            if (cur_on) begin
-              top_count <= sat_add(top_count, {{(C_W - 1){1'b0}}, 1'b1});
-              top_last <= x;
-            end else begin
-              cur_count <= sat_add(cur_count, {{(C_W - 1){1'b0}}, 1'b1});
-              cur_last <= x;
-            end
-          end
-          phase <= 2'd3;
-        end
-        default: begin
-          // The exit: a run's kill bit is at its first pixel.
-          if (!ex_joins_q) begin
-            ex_killed <= ex_kill_q;
-            out_word <= (ex_word_q != INVALID && ex_kill_q) ? INVALID : ex_word_q;
-          end else begin
-            out_word <= (ex_word_q != INVALID && ex_killed) ? INVALID : ex_word_q;
-          end
-          out_valid <= full;
-          cur_act <= n_cur_act; cur_on <= n_cur_on; cur_label <= n_cur_label; cur_last <= n_cur_last;
-          cur_count <= n_cur_count; cur_head <= n_cur_head; cur_tail <= n_cur_tail;
-          top_label <= n_top_label; top_last <= n_top_last; top_right <= n_top_right;
-          top_count <= n_top_count; top_head <= n_top_head; top_tail <= n_top_tail;
-          sp <= n_sp;
-          // The row's last set goes in the next clock; the met mark of the row's last pixel is
-          // then dropped (the next row overwrites this bank before the row after reads it).
-          if (wr_late) begin
-            post_valid <= 1'b1;
-            post_addr <= {bank, n_cur_label};
-            post_data <= {n_cur_count, n_cur_last, n_cur_head, n_cur_tail, 1'b0};
-          end else if (wr_met) begin
-            post_valid <= 1'b1;
-            post_addr <= {~bank, c_q};
-            post_data <= {rc_count, rc_last, rc_head, rc_tail, 1'b1};
-          end
-          left_word <= word_q;
-          if (x == LAST_X) begin
-            x <= {X_W{1'b0}};
-            slot <= (slot == LAST_SLOT) ? {SLOT_W{1'b0}} : slot + 1'b1;
-            pos <= (pos == LAST_POS) ? {P_W{1'b0}} : pos + 1'b1;
-            if (slot == LAST_SLOT) full <= 1'b1;
-            bank <= ~bank;
-            have_above <= 1'b1;
-            res_next <= {(X_W + 1){1'b0}};
-            res_count <= next_label;
-            next_label <= {(X_W + 1){1'b0}};
-          end else begin
-            x <= x + 1'b1;
-            pos <= pos + 1'b1;
-          end
-          phase <= 2'd0;
-        end
-      endcase
     end
   end
 endmodule
