@@ -8,7 +8,7 @@
 // columns of one slot, CENTRE_LAG slots behind the input: window q is columns q .. q + N - 1 of
 // the COLS-wide arrays, whose column bounds are col_valid[q + N - 1 : q].
 // transform_x / transform_y / transform_slot are the centres' slot, row and cost RAM row of the
-// windows of the previous shift: the position of what the transform (or the SAD/ZSAD window
+// windows TRANSFORM_SLOTS shifts back: the position of what the transform (or the SAD/ZSAD window
 // registers) holds.
 // Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
 // the frame's last row. If the next frame has begun by the step that would take its first pixel
@@ -36,7 +36,10 @@ module fpstereo_front_end #(
   parameter P = 1,
   // the slots the windows' centres lag the input, and the window arrays' columns
   parameter CENTRE_LAG = (N / 2 + P - 1) / P,
-  parameter COLS = P * (1 + CENTRE_LAG) + N / 2
+  parameter COLS = P * (1 + CENTRE_LAG) + N / 2,
+  // shifts from a window to the transform's result: 1 (census; SAD and ZSAD's window registers),
+  // 2 (rank, whose count is registered halfway)
+  parameter TRANSFORM_SLOTS = 1
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -81,6 +84,9 @@ module fpstereo_front_end #(
     end
     if (FOLLOW_WAIT < 0 || FOLLOW_WAIT > 3 || (FOLLOW_WAIT != 0 && G != 1)) begin : invalid_FOLLOW_WAIT
       fpstereo_invalid_parameters_front_end_FOLLOW_WAIT_outside_0_to_3_or_with_G_above_1 failed ();
+    end
+    if (TRANSFORM_SLOTS != 1 && TRANSFORM_SLOTS != 2) begin : invalid_TRANSFORM_SLOTS
+      fpstereo_invalid_parameters_front_end_TRANSFORM_SLOTS_not_1_or_2 failed ();
     end
     if ((P != 1 && P != 2 && P != 4) || (P != 1 && G != 1) || ROW_SLOTS * P > (1 << X_W) ||
         CENTRE_LAG * P < N / 2 || COLS != P * (1 + CENTRE_LAG) + N / 2) begin : invalid_P
@@ -248,14 +254,18 @@ module fpstereo_front_end #(
   reg  [X_W-1:0] window_x;
   reg  signed [SIGNED_Y_W-1:0] window_y;
   reg  [COST_ROW_W-1:0] window_slot;
+  // The position a shift before the transform's result (the window's with one slot of transform).
+  wire [X_W-1:0] before_x;
+  wire signed [SIGNED_Y_W-1:0] before_y;
+  wire [COST_ROW_W-1:0] before_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      transform_x <= window_x;
-      transform_y <= window_y;
-      transform_slot <= window_slot;
+      transform_x <= before_x;
+      transform_y <= before_y;
+      transform_slot <= before_slot;
     end
 
   // The bounds of the window that forms in this shift are registered with its position, so that
@@ -293,14 +303,36 @@ module fpstereo_front_end #(
   // clears it for two shifts: the first one's bounds are not yet its window's, and the windows of
   // the first shifts lie above the image anyway.
   reg window_fresh;
+  wire before_in_frame;
   always @(posedge clk)
     if (restart) begin
       window_fresh <= 1'b1;
       transform_in_frame <= 1'b0;
     end else if (shift) begin
       window_fresh <= 1'b0;
-      transform_in_frame <= !window_fresh && row_valid_q[R] && col_valid_q[R];
+      transform_in_frame <= before_in_frame;
     end
+  wire window_in_frame = !window_fresh && row_valid_q[R] && col_valid_q[R];
+  generate
+    if (TRANSFORM_SLOTS == 2) begin : counted
+      reg [X_W-1:0] counted_x;
+      reg signed [SIGNED_Y_W-1:0] counted_y;
+      reg [COST_ROW_W-1:0] counted_slot;
+      reg counted_in_frame;
+      always @(posedge clk)
+        if (shift) begin
+          counted_x <= window_x;
+          counted_y <= window_y;
+          counted_slot <= window_slot;
+        end
+      always @(posedge clk)
+        if (restart) counted_in_frame <= 1'b0;
+        else if (shift) counted_in_frame <= window_in_frame;
+      assign {before_x, before_y, before_slot, before_in_frame} = {counted_x, counted_y, counted_slot, counted_in_frame};
+    end else begin : direct
+      assign {before_x, before_y, before_slot, before_in_frame} = {window_x, window_y, window_slot, window_in_frame};
+    end
+  endgenerate
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
   assign newest_row_valid = newest_row_valid_q;

@@ -1,14 +1,16 @@
 `resetall
 `default_nettype none
 // The fused cost's pixel-wise feature (docs/semantics.md, section 2, "Fused cost") of the base and
-// match windows' centres, registered once per slot like the transform's codes, so that each
-// feature travels with its pixel's code. Intensity: the centre pixel. Gradient: I(x+1) - I(x-1) on
+// match windows' centres, registered once per slot like the transform's codes and SLOTS shifts
+// after its window as they are (fpstereo_front_end's TRANSFORM_SLOTS), so that each feature
+// travels with its pixel's code. Intensity: the centre pixel. Gradient: I(x+1) - I(x-1) on
 // the centre row, neighbours outside the image (col_valid low) reading 0, as two's complement.
 module fpstereo_fused_features #(
   parameter N = 5,
   // 1: the horizontal gradient (9 bits, signed); 0: the intensity (8 bits)
   parameter GRADIENT = 0,
-  parameter FEATURE_W = 8
+  parameter FEATURE_W = 8,
+  parameter SLOTS = 1
 ) (
   input  wire                 clk,
   input  wire                 shift,
@@ -22,8 +24,8 @@ module fpstereo_fused_features #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (N < 3 || N % 2 == 0 || FEATURE_W != (GRADIENT != 0 ? 9 : 8)) begin : invalid
-      fpstereo_invalid_parameters_fused_features_needs_odd_N_3_up_and_FEATURE_W_8_or_9_for_the_gradient failed ();
+    if (N < 3 || N % 2 == 0 || FEATURE_W != (GRADIENT != 0 ? 9 : 8) || SLOTS < 1 || SLOTS > 2) begin : invalid
+      fpstereo_invalid_parameters_fused_features_needs_odd_N_3_up_FEATURE_W_8_or_9_for_the_gradient_SLOTS_1_or_2 failed ();
     end
   endgenerate
   localparam R = N / 2;
@@ -43,10 +45,26 @@ module fpstereo_fused_features #(
       assign match_now = window_right[CENTRE*8 +: 8];
     end
   endgenerate
+  wire [FEATURE_W-1:0] base_before, match_before;  // a shift before the output
+  generate
+    if (SLOTS == 2) begin : counted
+      reg [FEATURE_W-1:0] base_q, match_q;
+      always @(posedge clk)
+        if (shift) begin
+          base_q  <= base_now;
+          match_q <= match_now;
+        end
+      assign base_before = base_q;
+      assign match_before = match_q;
+    end else begin : direct
+      assign base_before = base_now;
+      assign match_before = match_now;
+    end
+  endgenerate
   always @(posedge clk)
     if (shift) begin
-      feature_base  <= base_now;
-      feature_match <= match_now;
+      feature_base  <= base_before;
+      feature_match <= match_before;
     end
 endmodule
 `resetall

@@ -1,13 +1,17 @@
 `resetall
 `default_nettype none
 // Rank of an N x N window's centre: the number of neighbours darker than it. Pixels outside
-// the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
+// the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1). The flags are
+// counted in chunks, registered at a shift, and summed after it: `rank` is the rank of the window
+// of the previous shift (a slot later than census codes, fpstereo_transform).
 module fpstereo_rank #(
   // window side
   parameter N = 7,
   // result width: clog2(N*N)
   parameter RANK_W = 6
 ) (
+  input  wire             clk,
+  input  wire             shift,
   input  wire [N*N*8-1:0] window,
   input  wire [N-1:0]     row_valid,
   input  wire [N-1:0]     col_valid,
@@ -26,8 +30,9 @@ module fpstereo_rank #(
   wire [7:0] centre = window[CENTRE*8 +: 8];
 
   // Each neighbour's flag (one outside the image reads 0: darker while the centre is not 0), the
-  // flags counted in chunks of 6 (one LUT level each), the counts summed in a balanced tree: a
-  // chain of N*N increments would be as many LUT levels deep (docs/timing.md).
+  // flags counted in chunks of 6 (one LUT level each), the counts registered and summed in a
+  // balanced tree: a chain of N*N increments would be as many LUT levels deep, the compares, the
+  // counts and the tree 7 (docs/timing.md).
   localparam CHUNKS = (N * N + 5) / 6;
   reg [CHUNKS*6-1:0] darker;
   reg [CHUNKS*3-1:0] counts;
@@ -42,9 +47,12 @@ module fpstereo_rank #(
       for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, darker[k*6 + b]};
     end
   end
+  reg [CHUNKS*3-1:0] counts_q;
+  always @(posedge clk)
+    if (shift) counts_q <= counts;
   wire [RANK_W-1:0] total;
   fpstereo_sum_tree #(.N(CHUNKS), .IN_W(3), .SUM_W(RANK_W), .REGISTER_LEVEL(0)) chunk_sum (
-    .clk(1'b0), .en(1'b0), .values(counts), .sum(total));
+    .clk(1'b0), .en(1'b0), .values(counts_q), .sum(total));
   always @* rank = total;
 endmodule
 `resetall

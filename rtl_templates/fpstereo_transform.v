@@ -1,7 +1,9 @@
 `resetall
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
-// centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
+// centres, registered once per slot (docs/semantics.md, section 2): census codes of the windows of
+// the previous shift, ranks of those a shift earlier (fpstereo_rank counts at one shift and sums
+// after it; the front end's TRANSFORM_SLOTS). With P pixels a slot the
 // window arrays are COLS columns wide and hold P windows side by side (fpstereo_front_end):
 // window q is columns q .. q + N - 1 (fpstereo_window_cut), its code in bits q * CODE_W of the
 // outputs.
@@ -44,10 +46,10 @@ module fpstereo_transform #(
       fpstereo_window_cut #(.N(N), .COLS(COLS), .Q(q)) right_cut (.array(window_right), .window(right));
       wire [N-1:0] cols = col_valid[q +: N];
       if (RANK) begin : rank
-        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),
-                                                       .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
-        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.window(right), .row_valid(row_valid),
-                                                        .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) base (.clk(clk), .shift(shift), .window(left),
+          .row_valid(row_valid), .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
+        fpstereo_rank #(.N(N), .RANK_W(CODE_W)) match (.clk(clk), .shift(shift), .window(right),
+          .row_valid(row_valid), .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
       end else begin : census
         fpstereo_census #(.N(N)) base (.window(left), .row_valid(row_valid), .col_valid(cols),
                                        .code(code_left[q*CODE_W +: CODE_W]));

@@ -86,6 +86,7 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   const bool point_cost = cfg.cost == CostFunction::Census || cfg.cost == CostFunction::Rank;
   g.cost_window = point_cost ? 1 : cfg.cost == CostFunction::Shd ? cfg.shd_window : cfg.window;
   g.window_fill_rows = (cfg.cost == CostFunction::Sad ? 0 : g.window_radius) + g.cost_window / 2;
+  g.transform_slots = cfg.cost == CostFunction::Rank ? 2 : 1;
   g.groups = cfg.dmax / cfg.uf;
   // The cost lanes' register steps: fpstereo_cost_lanes 2; fpstereo_window_cost_lanes 4, with
   // four more for ZSAD (the masked column sums, the match window's sum, its mean, the means'

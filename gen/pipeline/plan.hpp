@@ -41,6 +41,10 @@ struct Geometry {
   // SAD and ZSAD; and the rows by which the windows delay the stream up to the cost.
   int cost_window = 1;
   int window_fill_rows = 0;
+  // Shifts from a window to the transform's result (fpstereo_front_end's TRANSFORM_SLOTS): 2 for
+  // rank, whose count is registered halfway (logic depth), 1 otherwise. The fused cost's features
+  // and adaptive P2's steps, taken from the windows too, wait as long.
+  int transform_slots = 1;
   int cost_lanes_latency = 1;  // register stages of the cost lanes
   int cost_latency = 1;        // and of the cost stage: the lanes', with the fused cost's term one more
   int column_sum_bits = 0;  // SAD/ZSAD: bits of a window column's pixel sum

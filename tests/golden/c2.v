@@ -301,7 +301,7 @@ module fps_census7_d128u32_6e9658_sgm_core (
   /* verilator lint_on UNUSEDSIGNAL */
   fps_census7_d128u32_6e9658_front_end #(
     .N(7), .ROW_SLOTS(1242), .G(4), .COST_ROWS(3), .COST_ROW_W(2), .X_W(11), .Y_W(9), .SIGNED_Y_W(11),
-    .G_W(2), .FOLLOW_WAIT(0), .P(1)
+    .G_W(2), .FOLLOW_WAIT(0), .P(1), .TRANSFORM_SLOTS(1)
   ) front_end (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .overlap(overlap), .next_frame(next_frame), .next_taken(next_taken), .follow_open(follow_open),
@@ -1058,7 +1058,7 @@ endmodule
 // columns of one slot, CENTRE_LAG slots behind the input: window q is columns q .. q + N - 1 of
 // the COLS-wide arrays, whose column bounds are col_valid[q + N - 1 : q].
 // transform_x / transform_y / transform_slot are the centres' slot, row and cost RAM row of the
-// windows of the previous shift: the position of what the transform (or the SAD/ZSAD window
+// windows TRANSFORM_SLOTS shifts back: the position of what the transform (or the SAD/ZSAD window
 // registers) holds.
 // Back-to-back frames (docs/architecture.md): while `overlap` is high the row-times wrap after
 // the frame's last row. If the next frame has begun by the step that would take its first pixel
@@ -1086,7 +1086,10 @@ module fps_census7_d128u32_6e9658_front_end #(
   parameter P = 1,
   // the slots the windows' centres lag the input, and the window arrays' columns
   parameter CENTRE_LAG = (N / 2 + P - 1) / P,
-  parameter COLS = P * (1 + CENTRE_LAG) + N / 2
+  parameter COLS = P * (1 + CENTRE_LAG) + N / 2,
+  // shifts from a window to the transform's result: 1 (census; SAD and ZSAD's window registers),
+  // 2 (rank, whose count is registered halfway)
+  parameter TRANSFORM_SLOTS = 1
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -1131,6 +1134,9 @@ module fps_census7_d128u32_6e9658_front_end #(
     end
     if (FOLLOW_WAIT < 0 || FOLLOW_WAIT > 3 || (FOLLOW_WAIT != 0 && G != 1)) begin : invalid_FOLLOW_WAIT
       fps_census7_d128u32_6e9658_invalid_parameters_front_end_FOLLOW_WAIT_outside_0_to_3_or_with_G_above_1 failed ();
+    end
+    if (TRANSFORM_SLOTS != 1 && TRANSFORM_SLOTS != 2) begin : invalid_TRANSFORM_SLOTS
+      fps_census7_d128u32_6e9658_invalid_parameters_front_end_TRANSFORM_SLOTS_not_1_or_2 failed ();
     end
     if ((P != 1 && P != 2 && P != 4) || (P != 1 && G != 1) || ROW_SLOTS * P > (1 << X_W) ||
         CENTRE_LAG * P < N / 2 || COLS != P * (1 + CENTRE_LAG) + N / 2) begin : invalid_P
@@ -1298,14 +1304,18 @@ module fps_census7_d128u32_6e9658_front_end #(
   reg  [X_W-1:0] window_x;
   reg  signed [SIGNED_Y_W-1:0] window_y;
   reg  [COST_ROW_W-1:0] window_slot;
+  // The position a shift before the transform's result (the window's with one slot of transform).
+  wire [X_W-1:0] before_x;
+  wire signed [SIGNED_Y_W-1:0] before_y;
+  wire [COST_ROW_W-1:0] before_slot;
   always @(posedge clk)
     if (shift) begin
       window_x <= centre_x;
       window_y <= centre_y;
       window_slot <= centre_slot;
-      transform_x <= window_x;
-      transform_y <= window_y;
-      transform_slot <= window_slot;
+      transform_x <= before_x;
+      transform_y <= before_y;
+      transform_slot <= before_slot;
     end
 
   // The bounds of the window that forms in this shift are registered with its position, so that
@@ -1343,14 +1353,36 @@ module fps_census7_d128u32_6e9658_front_end #(
   // clears it for two shifts: the first one's bounds are not yet its window's, and the windows of
   // the first shifts lie above the image anyway.
   reg window_fresh;
+  wire before_in_frame;
   always @(posedge clk)
     if (restart) begin
       window_fresh <= 1'b1;
       transform_in_frame <= 1'b0;
     end else if (shift) begin
       window_fresh <= 1'b0;
-      transform_in_frame <= !window_fresh && row_valid_q[R] && col_valid_q[R];
+      transform_in_frame <= before_in_frame;
     end
+  wire window_in_frame = !window_fresh && row_valid_q[R] && col_valid_q[R];
+  generate
+    if (TRANSFORM_SLOTS == 2) begin : counted
+      reg [X_W-1:0] counted_x;
+      reg signed [SIGNED_Y_W-1:0] counted_y;
+      reg [COST_ROW_W-1:0] counted_slot;
+      reg counted_in_frame;
+      always @(posedge clk)
+        if (shift) begin
+          counted_x <= window_x;
+          counted_y <= window_y;
+          counted_slot <= window_slot;
+        end
+      always @(posedge clk)
+        if (restart) counted_in_frame <= 1'b0;
+        else if (shift) counted_in_frame <= window_in_frame;
+      assign {before_x, before_y, before_slot, before_in_frame} = {counted_x, counted_y, counted_slot, counted_in_frame};
+    end else begin : direct
+      assign {before_x, before_y, before_slot, before_in_frame} = {window_x, window_y, window_slot, window_in_frame};
+    end
+  endgenerate
   assign row_valid = row_valid_q;
   assign col_valid = col_valid_q;
   assign newest_row_valid = newest_row_valid_q;
@@ -1360,7 +1392,9 @@ endmodule
 `resetall
 `default_nettype none
 // Transform stage: the census codes (or, with RANK, the ranks) of the base and match windows'
-// centres, registered once per slot (docs/semantics.md, section 2). With P pixels a slot the
+// centres, registered once per slot (docs/semantics.md, section 2): census codes of the windows of
+// the previous shift, ranks of those a shift earlier (fps_census7_d128u32_6e9658_rank counts at one shift and sums
+// after it; the front end's TRANSFORM_SLOTS). With P pixels a slot the
 // window arrays are COLS columns wide and hold P windows side by side (fps_census7_d128u32_6e9658_front_end):
 // window q is columns q .. q + N - 1 (fps_census7_d128u32_6e9658_window_cut), its code in bits q * CODE_W of the
 // outputs.
@@ -1403,10 +1437,10 @@ module fps_census7_d128u32_6e9658_transform #(
       fps_census7_d128u32_6e9658_window_cut #(.N(N), .COLS(COLS), .Q(q)) right_cut (.array(window_right), .window(right));
       wire [N-1:0] cols = col_valid[q +: N];
       if (RANK) begin : rank
-        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.window(left), .row_valid(row_valid),
-                                                       .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
-        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) match (.window(right), .row_valid(row_valid),
-                                                        .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
+        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) base (.clk(clk), .shift(shift), .window(left),
+          .row_valid(row_valid), .col_valid(cols), .rank(code_left[q*CODE_W +: CODE_W]));
+        fps_census7_d128u32_6e9658_rank #(.N(N), .RANK_W(CODE_W)) match (.clk(clk), .shift(shift), .window(right),
+          .row_valid(row_valid), .col_valid(cols), .rank(code_right[q*CODE_W +: CODE_W]));
       end else begin : census
         fps_census7_d128u32_6e9658_census #(.N(N)) base (.window(left), .row_valid(row_valid), .col_valid(cols),
                                        .code(code_left[q*CODE_W +: CODE_W]));
@@ -2932,13 +2966,17 @@ endmodule
 `resetall
 `default_nettype none
 // Rank of an N x N window's centre: the number of neighbours darker than it. Pixels outside
-// the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1).
+// the image (row_valid / col_valid low) read as 0 (docs/semantics.md, section 1). The flags are
+// counted in chunks, registered at a shift, and summed after it: `rank` is the rank of the window
+// of the previous shift (a slot later than census codes, fps_census7_d128u32_6e9658_transform).
 module fps_census7_d128u32_6e9658_rank #(
   // window side
   parameter N = 7,
   // result width: clog2(N*N)
   parameter RANK_W = 6
 ) (
+  input  wire             clk,
+  input  wire             shift,
   input  wire [N*N*8-1:0] window,
   input  wire [N-1:0]     row_valid,
   input  wire [N-1:0]     col_valid,
@@ -2957,8 +2995,9 @@ module fps_census7_d128u32_6e9658_rank #(
   wire [7:0] centre = window[CENTRE*8 +: 8];
 
   // Each neighbour's flag (one outside the image reads 0: darker while the centre is not 0), the
-  // flags counted in chunks of 6 (one LUT level each), the counts summed in a balanced tree: a
-  // chain of N*N increments would be as many LUT levels deep (docs/timing.md).
+  // flags counted in chunks of 6 (one LUT level each), the counts registered and summed in a
+  // balanced tree: a chain of N*N increments would be as many LUT levels deep, the compares, the
+  // counts and the tree 7 (docs/timing.md).
   localparam CHUNKS = (N * N + 5) / 6;
   reg [CHUNKS*6-1:0] darker;
   reg [CHUNKS*3-1:0] counts;
@@ -2973,9 +3012,12 @@ module fps_census7_d128u32_6e9658_rank #(
       for (b = 0; b < 6; b = b + 1) counts[k*3 +: 3] = counts[k*3 +: 3] + {2'b00, darker[k*6 + b]};
     end
   end
+  reg [CHUNKS*3-1:0] counts_q;
+  always @(posedge clk)
+    if (shift) counts_q <= counts;
   wire [RANK_W-1:0] total;
   fps_census7_d128u32_6e9658_sum_tree #(.N(CHUNKS), .IN_W(3), .SUM_W(RANK_W), .REGISTER_LEVEL(0)) chunk_sum (
-    .clk(1'b0), .en(1'b0), .values(counts), .sum(total));
+    .clk(1'b0), .en(1'b0), .values(counts_q), .sum(total));
   always @* rank = total;
 endmodule
 `resetall

@@ -93,7 +93,7 @@ class CostStage : public Stage {
                                     {"NP", num(c.path_count())},
                                     {"GAIN", num(c.p2_adapt)},
                                     {"PATH_W", num(w.path_cost)},
-                                    {"WAIT_SLOTS", num(base_wait(d).slots)},
+                                    {"WAIT_SLOTS", num(base_wait(d).slots + d.transform_slots - 1)},
                                     {"WAIT_ROWS", num(base_wait(d).rows)},
                                     {"ROW_SLOTS", num(d.row_slots)},
                                     {"LAT", num(d.cost_latency)}};
@@ -123,7 +123,8 @@ class CostStage : public Stage {
     const int bits = d.widths.fused_feature, P = d.strips;
     const Connections parameters = {{"N", num(c.window)},
                                     {"GRADIENT", c.fused_term == FusedTerm::Gradient ? "1" : "0"},
-                                    {"FEATURE_W", num(bits)}};
+                                    {"FEATURE_W", num(bits)},
+                                    {"SLOTS", num(d.transform_slots)}};
     core.wire("feature_base", int64_t(P) * bits);
     core.wire("feature_match", int64_t(P) * bits);
     if (P == 1) {

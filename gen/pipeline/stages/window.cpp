@@ -18,8 +18,10 @@ class WindowStage : public Stage {
   std::vector<std::string> knobs() const override { return {"window", "cost"}; }
   // The window centred r rows and r slots behind the input (with strips, the windows of a slot's P
   // pixels, ceil(r / P) slots behind) is complete after the input's slot; its registered position
-  // (and the transform's codes) one slot later.
-  Latency latency(const Geometry& g) const override { return {g.window_radius, window_centre_lag(g) + 2, 0}; }
+  // (and the transform's codes) transform_slots later.
+  Latency latency(const Geometry& g) const override {
+    return {g.window_radius, window_centre_lag(g) + 1 + g.transform_slots, 0};
+  }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     const int64_t bits = int64_t(g.cfg.window - 1) * g.widths.pixel * g.strips;
     return {{"core.front_end.left_window.line_buffer.mem", g.row_slots, bits},
@@ -54,7 +56,8 @@ class WindowStage : public Stage {
                    {"SIGNED_Y_W", num(d.signed_y_bits)},
                    {"G_W", num(d.group_bits)},
                    {"FOLLOW_WAIT", num(d.follow_wait)},
-                   {"P", num(P)}});
+                   {"P", num(P)},
+                   {"TRANSFORM_SLOTS", num(d.transform_slots)}});
     if (!transform_) return;
     const int code_bits = std::max(1, d.widths.code);
     core.wire("code_base", int64_t(P) * code_bits);
