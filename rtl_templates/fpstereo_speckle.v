@@ -187,7 +187,10 @@ module fpstereo_speckle #(
   // new run (phase 2) marks its own; the labeller's splice or the chain's append (never both at
   // one pixel, phase 3) links a tail. The write is registered, so that the compares and the
   // labeller's choices behind it stay off the RAM's write enable and address decode (logic depth,
-  // docs/timing.md). The chain reads the link of the run it goes to.
+  // docs/timing.md). The chain reads the link of the run it goes to. The flag has a RAM of its
+  // own: a bit more beside the run numbers would take a column of block RAMs more where those
+  // fill a port's 18 bits (A6: 101 BRAM36 against 5), and a number no run has for the tail's mark
+  // two LUT levels more behind the read (8 at A4's size).
   wire             link_we;
   wire [P_W-1:0]   link_waddr, k_at_next;
   wire [P_W:0]     link_wdata, next_rdata;
@@ -199,9 +202,12 @@ module fpstereo_speckle #(
     link_waddr_q <= link_waddr;
     link_wdata_q <= link_wdata;
   end
-  fpstereo_ram_sdp #(.WIDTH(P_W + 1), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
-    .clk(clk), .we(link_we_q), .waddr(link_waddr_q), .wdata(link_wdata_q),
-    .re(1'b1), .raddr(k_at_next), .rdata(next_rdata));
+  fpstereo_ram_sdp #(.WIDTH(P_W), .DEPTH(POS), .ADDR_W(P_W)) next_mem (
+    .clk(clk), .we(link_we_q), .waddr(link_waddr_q), .wdata(link_wdata_q[P_W-1:0]),
+    .re(1'b1), .raddr(k_at_next), .rdata(next_rdata[P_W-1:0]));
+  fpstereo_ram_sdp #(.WIDTH(1), .DEPTH(POS), .ADDR_W(P_W)) linked_mem (
+    .clk(clk), .we(link_we_q), .waddr(link_waddr_q), .wdata(link_wdata_q[P_W]),
+    .re(1'b1), .raddr(k_at_next), .rdata(next_rdata[P_W]));
   // The row above: the next pixel's read in phase 3 (a clock ahead of its root), this pixel's
   // write.
   wire [WORD_W-1:0] aw;

@@ -24,7 +24,8 @@ class SpeckleStage : public Stage {
     const std::string at = "core.speckle.filter.";
     return {{at + "words_mem.mem", positions, g.widths.output_word},
             {at + "kill_mem.mem", positions, 1},
-            {at + "next_mem.mem", positions, run_w + 1},  // a link and whether it is one
+            {at + "next_mem.mem", positions, run_w},
+            {at + "linked_mem.mem", positions, 1},  // whether a run's link is one
             {at + "above_mem.mem", W, g.widths.output_word + 1 + x_w},
             {at + "parent_mem.mem", labels, x_w},
             {at + "root_res_mem.mem", W, x_w},
