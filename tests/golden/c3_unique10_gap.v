@@ -673,6 +673,9 @@ module fps_census7_d128u32_79bc18_control #(
   reg         request, applying, request_full, request_high_zero, accepted;
   reg [7:0]   request_addr;
   reg [V_W-1:0] v;
+  // Whether the value is in each setting's range, compared as it is taken (the settings hold then:
+  // no write is in flight), so the check selects one of them by the address (logic depth).
+  reg         p1_fits, p2_fits, uniqueness_fits, lr_threshold_fits, width_fits, height_fits;
   wire write = s_axi_awvalid && s_axi_wvalid && !s_axi_bvalid && !request && !applying;
   assign s_axi_awready = write;
   assign s_axi_wready = write;
@@ -684,30 +687,35 @@ module fps_census7_d128u32_79bc18_control #(
       request <= write;
       applying <= request;
     end
+  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
+  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
+  // Every range's upper bound fits in V_W bits, so a value is in range only if its bits above
+  // V_W are zero, and then it is w.
+  wire [31:0] w = {{(32-V_W){1'b0}}, s_axi_wdata[V_W-1:0]};
   always @(posedge clk)
     if (write) begin
       request_addr <= s_axi_awaddr;
       v <= s_axi_wdata[V_W-1:0];
       request_high_zero <= s_axi_wdata[31:V_W] == 0;
       request_full <= s_axi_wstrb == 4'hF;
+      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
+      p1_fits <= w <= P1_MAX_V && w <= p2_now;
+      p2_fits <= w <= P2_MAX_V && w >= p1_now;
+      uniqueness_fits <= UNIQUENESS_SETTABLE != 0 && w <= 32'd99;
+      lr_threshold_fits <= LR_SETTABLE != 0 && w <= 32'd15;
+      width_fits <= w >= MIN_WIDTH_V && w <= MAX_WIDTH_V && (w & (WIDTH_STEP_V - 1)) == 0;
+      height_fits <= w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
     end
-  wire [31:0] p1_now = {{(32-PATH_W){1'b0}}, p1_q};
-  wire [31:0] p2_now = {{(32-PATH_W){1'b0}}, p2_q};
-  // Every range's upper bound fits in V_W bits, so a value is in range only if its bits above
-  // V_W are zero, and then it is w.
-  wire [31:0] w = {{(32-V_W){1'b0}}, v};
   reg in_range;
   always @* begin
     case (request_addr)
       A_CONTROL:      in_range = 1'b1;
-      // p1 <= p2 at all times: raise p2 before p1, lower p1 before p2
-      A_P1:           in_range = request_high_zero && w <= P1_MAX_V && w <= p2_now;
-      A_P2:           in_range = request_high_zero && w <= P2_MAX_V && w >= p1_now;
-      A_UNIQUENESS:   in_range = UNIQUENESS_SETTABLE != 0 && request_high_zero && w <= 32'd99;
-      A_LR_THRESHOLD: in_range = LR_SETTABLE != 0 && request_high_zero && w <= 32'd15;
-      A_WIDTH:        in_range = request_high_zero && w >= MIN_WIDTH_V && w <= MAX_WIDTH_V &&
-                                 (w & (WIDTH_STEP_V - 1)) == 0;
-      A_HEIGHT:       in_range = request_high_zero && w >= MIN_HEIGHT_V && w <= MAX_HEIGHT_V;
+      A_P1:           in_range = request_high_zero && p1_fits;
+      A_P2:           in_range = request_high_zero && p2_fits;
+      A_UNIQUENESS:   in_range = request_high_zero && uniqueness_fits;
+      A_LR_THRESHOLD: in_range = request_high_zero && lr_threshold_fits;
+      A_WIDTH:        in_range = request_high_zero && width_fits;
+      A_HEIGHT:       in_range = request_high_zero && height_fits;
       default:        in_range = 1'b0;
     endcase
   end
