@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # Synthesises Verilog with Yosys (synth_xilinx -abc9) and reports resources as a share of one part,
 # the abc9 logic delay and LUT levels, and which memories did not become block RAM.
-# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--uram] [--top MODULE] [--log FILE]
-#                               [--netlist FILE.json] [--kv] FILE.v|FILE.sv|filelist.f ...
+# Usage: scripts/synth-yosys.sh [--family xcup|xc7] [--part NAME] [--uram] [--hierarchical]
+#                               [--top MODULE] [--log FILE] [--netlist FILE.json] [--kv]
+#                               FILE.v|FILE.sv|filelist.f ...
 # A filelist holds one path per line (relative to the filelist; '#' and '//' start comments).
 # --netlist writes the mapped netlist (Yosys JSON), which `fpstereo synth` reads for the paths.
 # --uram lets Yosys map large memories to UltraRAM (synth_xilinx -uram; parts that have it).
+# --hierarchical maps each module once per parameter set, then flattens the mapped netlist: for
+# designs too large to flatten first (less memory and time; no optimisation across modules).
 # Exit status: 0 done, 2 bad usage, missing input or Yosys failure (one line on stderr).
 set -euo pipefail
 
 die() { echo "synth-yosys: $*" >&2; exit 2; }
 
-family="" part="" top="" log="" netlist="" kv=0 uram=0
+family="" part="" top="" log="" netlist="" kv=0 uram=0 hierarchical=0
 files=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -23,7 +26,8 @@ while [ $# -gt 0 ]; do
       shift 2 ;;
     --kv) kv=1; shift ;;
     --uram) uram=1; shift ;;
-    -h|--help) sed -n '2,9s/^# \{0,1\}//p' "$0"; exit 0 ;;
+    --hierarchical) hierarchical=1; shift ;;
+    -h|--help) sed -n '2,12s/^# \{0,1\}//p' "$0"; exit 0 ;;
     -*) die "unknown option $1" ;;
     *) files+=("$1"); shift ;;
   esac
@@ -100,7 +104,12 @@ fi
 # default flattening does. The run is split at 'coarse' only to list the memories (name, width,
 # depth) while they are still memory objects. Any command between the halves may move ABC's
 # LUT count by a few tenths of a percent (Yosys' internal ordering shifts); nothing else changes.
-synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
+# --hierarchical instead maps each module once per parameter set, so a design of many identical
+# lanes needs a fraction of the memory; the mapped netlist is flattened before it is counted and
+# written, so every figure (and fpstereo's path depth) is of the whole design, but abc9 neither
+# optimises nor times across module boundaries: LUTs and depth are at or above a flat run's.
+synth="synth_xilinx -family $family -abc9${top:+ -top $top}"
+[ $hierarchical = 1 ] || synth="$synth -flatten"
 [ $uram = 0 ] || synth="$synth -uram"
 # -defer: modules are elaborated only with the parameters they are instantiated with; elaborating
 # a generic module with its defaults would reach generate branches whose submodules a
@@ -112,6 +121,7 @@ synth="synth_xilinx -family $family -abc9 -flatten${top:+ -top $top}"
   echo "$synth -run :coarse"
   echo "tee -q -o $tmp/mems.txt dump m:*"
   echo "$synth -run coarse:"
+  [ $hierarchical = 0 ] || { echo "flatten"; echo "opt_clean"; }
   echo "tee -q -o $tmp/stat.txt stat -tech xilinx"
   [ -z "$netlist" ] || echo "write_json \"$netlist\""
 } >"$tmp/run.ys"
@@ -130,8 +140,20 @@ fi
 
 # One awk pass over the three files emits key=value lines; the table is formatted from them.
 report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_ff" \
-    -v p_bram36="$p_bram36" -v p_dsp="$p_dsp" -v p_lutram="$p_lutram" -v p_uram="$p_uram" '
+    -v p_bram36="$p_bram36" -v p_dsp="$p_dsp" -v p_lutram="$p_lutram" -v p_uram="$p_uram" \
+    -v hierarchical="$hierarchical" '
   function pct(n, d) { return sprintf("%.1f", d ? 100 * n / d : 0) }
+  # A memory'"'"'s name: flat, its hierarchical name in the one module; with --hierarchical, one per
+  # module and parameter set, named by the module and, for a parameterised one, its hash'"'"'s first
+  # 8 digits ("$paramod$<hash>\\name"): "name$1a2b3c4d.mem".
+  function mem_name(module, mem) {
+    if (!hierarchical) return mem
+    if (module ~ /^\$paramod\$/) {
+      hash = substr(module, 10, 8); sub(/^[^\\]*\\/, "", module); module = module "$" hash
+    }
+    sub(/^\\/, "", module)
+    return module "." mem
+  }
   # LUTs each distributed-RAM or SRL primitive occupies (UG474, UG574).
   function lutram_luts(c) {
     if (c ~ /^(SRL16E?|SRLC16E?|SRLC32E|RAM(16|32|64)X1S(_1)?)$/) return 1
@@ -140,10 +162,12 @@ report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_f
     if (c ~ /^(RAM32M16|RAM64M8|RAM256X1D|RAM512X1S|RAM64X8SW|RAM32X16DR8|RAM(16|32)X8S)$/) return 8
     return 0
   }
+  FILENAME ~ /mems.txt$/ && $1 == "module" { module = $2; next }
   FILENAME ~ /mems.txt$/ && $1 == "memory" {
     w = s = 0
     for (i = 2; i < NF; i++) { if ($i == "width") w = $(i+1); if ($i == "size") s = $(i+1) }
-    name = $NF; sub(/^\\/, "", name); width[name] = w; depth[name] = s; order[++nmem] = name
+    name = $NF; sub(/^\\/, "", name); name = mem_name(module, name)
+    width[name] = w; depth[name] = s; order[++nmem] = name
     next
   }
   # stat lists each module; with kept hierarchy (keep_hierarchy) the "design hierarchy" section
@@ -156,13 +180,14 @@ report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_f
   }
   # memory_libmap names each memory and its target; what it leaves to FF mapping is logic.
   /^mapping memory .* via / {
-    m = $3; sub(/^[^.]*\./, "", m); t = $5
+    m = $3; mod = m; sub(/\..*/, "", mod); sub(/^[^.]*\./, "", m); m = mem_name(mod, m); t = $5
     map[m] = t ~ /BLOCKRAM/ ? "bram" : t ~ /LUTRAM/ ? "lutram" : t ~ /URAM/ ? "uram" : t
     if (!(m in width)) order[++nmem] = m
     next
   }
   /^using FF mapping for memory / {
-    m = $6; sub(/^[^.]*\./, "", m); map[m] = "ff"; if (!(m in width)) order[++nmem] = m; next
+    m = $6; mod = m; sub(/\..*/, "", mod); sub(/^[^.]*\./, "", m); m = mem_name(mod, m)
+    map[m] = "ff"; if (!(m in width)) order[++nmem] = m; next
   }
   # abc9 prints one Del line per mapping round and one "Mapping (K=" summary per run: the last
   # Del before a summary is that run'"'"'s result.
@@ -193,7 +218,7 @@ report=$(awk -v part="$part" -v family="$family" -v p_lut="$p_lut" -v p_ff="$p_f
     lut = small + lutk[6]
     lut_min = lutk[6] + int((small + 1) / 2)
     eq = bram36 + bram18 / 2
-    print "top=" top; print "family=" family; print "part=" part
+    print "top=" top; print "family=" family; print "part=" part; print "hierarchical=" hierarchical
     print "lut=" lut+0; print "lut_pct=" pct(lut, p_lut)
     printf "lut_by_inputs=%d/%d/%d/%d/%d/%d\n", lutk[1], lutk[2], lutk[3], lutk[4], lutk[5], lutk[6]
     print "lut_min=" lut_min; print "lut_min_pct=" pct(lut_min, p_lut)
@@ -239,7 +264,8 @@ awk -F= '
     printf "  %-13s %9s %8s %6s %%   %s\n", name, used, avail, p, note
   }
   END {
-    printf "%s on %s (%s), Yosys synth_xilinx -abc9 -flatten\n", v["top"], v["part"], v["family"]
+    printf "%s on %s (%s), Yosys synth_xilinx -abc9 %s\n", v["top"], v["part"], v["family"], \
+      v["hierarchical"] ? "per module, then flattened" : "-flatten"
     printf "  %-13s %9s %8s %8s\n", "resource", "used", "of", "util"
     row("LUT", v["lut"], v["part_lut"], v["lut_pct"], "LUT1..LUT6 cells " v["lut_by_inputs"])
     row("LUT min", v["lut_min"], v["part_lut"], v["lut_min_pct"], "LUT6 + half of LUT1..5 (ideal pairing)")

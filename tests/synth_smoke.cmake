@@ -82,9 +82,27 @@ if(NOT kv MATCHES "\nlut=${luts}\n" OR NOT kv MATCHES "\ncached=1\n$" OR NOT kv 
   message(SEND_ERROR "--kv should give lut=${luts}, depth_levels=${depth}, path.1 and cached=1; got:\n${kv}")
 endif()
 
-# One record, no leftover temporary file or work directory.
+# --hierarchical: its own record (not the flat one's), every module mapped once and the netlist
+# flattened, so the block RAMs are the flat run's and the depth is of the whole design.
+if(NOT kv MATCHES "\nbram36_equiv=([0-9.]+)\n")
+  message(SEND_ERROR "no bram36_equiv in --kv:\n${kv}")
+endif()
+set(bram ${CMAKE_MATCH_1})
+synth(hier hier_err ${config} --cache ${cache} --kv --hierarchical)
+if(NOT hier MATCHES "\nhierarchical=1\n" OR NOT hier MATCHES "\ncached=0\n$"
+   OR NOT hier MATCHES "\nbram36_equiv=${bram}\n" OR NOT hier MATCHES "\ndepth_levels=[1-9][0-9]*\n"
+   OR NOT hier MATCHES "\nmem\\.[^=\n]+_ram_sdp\\$[0-9a-f]+\\.mem=")
+  message(SEND_ERROR "--hierarchical should give hierarchical=1, cached=0, bram36_equiv=${bram}, a depth and "
+                     "memories by module; got:\n${hier}")
+endif()
+if(NOT kv MATCHES "\nhierarchical=0\n")
+  message(SEND_ERROR "the flat run should say hierarchical=0; got:\n${kv}")
+endif()
+
+# A record each, no leftover temporary file or work directory.
 file(GLOB entries RELATIVE ${cache} ${cache}/* ${cache}/work/*)
-if(NOT entries MATCHES "^fps_census3_d16u16_[0-9a-f]+-default-default-[0-9a-f]+\\.kv;work$")
+set(stem "fps_census3_d16u16_[0-9a-f]+-default-default")
+if(NOT entries MATCHES "^${stem}-[0-9a-f]+\\.kv;${stem}-hierarchical-[0-9a-f]+\\.kv;work$")
   message(SEND_ERROR "unexpected cache contents: ${entries}")
 endif()
 

@@ -202,6 +202,10 @@ TEST_CASE("format_report shows every figure with its share of the part", "[synth
   CHECK_THAT(table, Catch::Contains("core.cost_reorder.code_ram.mem") && Catch::Contains("10250x16 -> uram"));
   CHECK_THAT(table, !Catch::Contains("(cached)"));
   CHECK_THAT(format_report(r, true), Catch::Contains("-abc9 -flatten (cached)\n"));
+  CHECK_FALSE(r.hierarchical);
+  const SynthReport per_module = parse_kv(kScriptKv + "hierarchical=1\n");
+  CHECK(per_module.hierarchical);
+  CHECK_THAT(format_report(per_module, false), Catch::Contains("-abc9 per module, then flattened\n"));
 
   const SynthReport no_abc9 = parse_kv(with_line(kScriptKv, "delay_ps", "na"));
   CHECK_THAT(format_report(no_abc9, false), Catch::Contains("n/a"));
@@ -242,22 +246,26 @@ TEST_CASE("parse_kv and format_report carry the netlist's logic depth and deepes
 TEST_CASE("cache_key changes with everything that decides the result", "[synth]") {
   const StereoConfig cfg = tiny_config();
   const std::string verilog = "module top; endmodule\n", script = "#!/usr/bin/env bash\n";
-  const std::string key = cache_key(cfg, "", "", false, verilog, script);
-  CHECK(key == cache_key(cfg, "", "", false, verilog, script));
+  const std::string key = cache_key(cfg, "", "", false, false, verilog, script);
+  CHECK(key == cache_key(cfg, "", "", false, false, verilog, script));
   CHECK_THAT(key, Catch::StartsWith(config_tag(cfg) + "-default-default-"));
-  CHECK(cache_key(cfg, "xc7", "", false, verilog, script) != key);
-  CHECK(cache_key(cfg, "", "xck26", false, verilog, script) != key);
-  CHECK(cache_key(cfg, "", "xczu7ev", true, verilog, script) != cache_key(cfg, "", "xczu7ev", false, verilog, script));
-  CHECK_THAT(cache_key(cfg, "", "xczu7ev", true, verilog, script), Catch::Contains("-xczu7ev-uram-"));
-  CHECK(cache_key(cfg, "xc7", "xc7z020", false, verilog, script) !=
-        cache_key(cfg, "xc7", "xc7a100t", false, verilog, script));
+  CHECK(cache_key(cfg, "xc7", "", false, false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "xck26", false, false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "xczu7ev", true, false, verilog, script) !=
+        cache_key(cfg, "", "xczu7ev", false, false, verilog, script));
+  CHECK_THAT(cache_key(cfg, "", "xczu7ev", true, false, verilog, script), Catch::Contains("-xczu7ev-uram-"));
+  CHECK(cache_key(cfg, "", "", false, true, verilog, script) != key);
+  CHECK_THAT(cache_key(cfg, "", "xczu7ev", true, true, verilog, script),
+             Catch::Contains("-xczu7ev-uram-hierarchical-"));
+  CHECK(cache_key(cfg, "xc7", "xc7z020", false, false, verilog, script) !=
+        cache_key(cfg, "xc7", "xc7a100t", false, false, verilog, script));
   StereoConfig other = cfg;
   other.p2 = 87;  // same tag prefix (cost, window, dmax, uf); only the full configuration tells them apart
-  CHECK(cache_key(other, "", "", false, verilog, script) != key);
-  CHECK(cache_key(cfg, "", "", false, verilog + " ", script) != key);
-  CHECK(cache_key(cfg, "", "", false, verilog, script + "# changed\n") != key);
+  CHECK(cache_key(other, "", "", false, false, verilog, script) != key);
+  CHECK(cache_key(cfg, "", "", false, false, verilog + " ", script) != key);
+  CHECK(cache_key(cfg, "", "", false, false, verilog, script + "# changed\n") != key);
   // Keys are file names: a part name cannot reach outside the cache directory.
-  CHECK(cache_key(cfg, "", "../x/y", false, verilog, script).find('/') == std::string::npos);
+  CHECK(cache_key(cfg, "", "../x/y", false, false, verilog, script).find('/') == std::string::npos);
 }
 
 TEST_CASE("verilog_hash follows the gates, not the module names or the comments", "[synth]") {

@@ -60,7 +60,8 @@ struct SynthOptions {
   std::string family, part, cache_dir, log, netlist;
   bool no_cache = false;
   bool kv = false;
-  bool uram = false;  // synth_xilinx -uram
+  bool uram = false;          // synth_xilinx -uram
+  bool hierarchical = false;  // synth-yosys.sh --hierarchical
 };
 
 // ---- parsing ---------------------------------------------------------------------------------
@@ -424,6 +425,7 @@ std::vector<std::string> script_args(const SynthOptions& o, const fs::path& scri
   if (!o.family.empty()) args.insert(args.end(), {"--family", o.family});
   if (!o.part.empty()) args.insert(args.end(), {"--part", o.part});
   if (o.uram) args.push_back("--uram");
+  if (o.hierarchical) args.push_back("--hierarchical");
   if (!o.log.empty()) args.insert(args.end(), {"--log", (work / "yosys.log").string()});
   args.push_back(filelist.string());
   return args;
@@ -486,7 +488,8 @@ void run(const SynthOptions& o) {
   const fs::path script = synth_script_path();
   const std::optional<std::string> script_text = read_text(script);
   if (!script_text) throw SynthError(fmt::format("cannot read {}", quoted(script.string())));
-  const std::string key = cache_key(cfg, o.family, o.part, o.uram, verilog_text(files), *script_text);
+  const std::string key =
+      cache_key(cfg, o.family, o.part, o.uram, o.hierarchical, verilog_text(files), *script_text);
   const fs::path cache = o.cache_dir.empty() ? cache_dir("synth") : fs::path(o.cache_dir);
   create_cache_directory(cache);
   const fs::path record_path = cache / (key + ".kv");
@@ -573,13 +576,15 @@ SynthReport parse_kv(const std::string& text) {
   if (kv.count("depth_levels_with_carry")) r.depth_levels_with_carry = integer_or_na(kv, "depth_levels_with_carry");
   if (kv.count("carry_path")) r.worst_carry_path = parse_path("carry_path", kv["carry_path"]);
   if (kv.count("config")) r.config = kv["config"];
+  if (kv.count("hierarchical")) r.hierarchical = integer(kv, "hierarchical") != 0;
   if (kv.count("synth_seconds")) r.synth_seconds = parse_number<double>("synth_seconds", kv["synth_seconds"]);
   return r;
 }
 
 std::string format_report(const SynthReport& r, bool cached) {
-  std::string out = fmt::format("{} on {} ({}), Yosys synth_xilinx -abc9 -flatten{}\n", r.top, r.part,
-                                r.family, cached ? " (cached)" : "");
+  const char* flow = r.hierarchical ? "per module, then flattened" : "-flatten";
+  std::string out = fmt::format("{} on {} ({}), Yosys synth_xilinx -abc9 {}{}\n", r.top, r.part, r.family, flow,
+                                cached ? " (cached)" : "");
   out += fmt::format("  {:<13} {:>9} {:>8} {:>7}\n", "resource", "used", "of", "util");
   out += resource_row("LUT", std::to_string(r.lut), r.part_lut, r.lut_pct,
                       "LUT1..LUT6 cells " + r.lut_by_inputs);
@@ -604,13 +609,13 @@ std::filesystem::path synth_script_path() {
 }
 
 std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part, bool uram,
-                      const std::string& verilog_text, const std::string& script_text) {
+                      bool hierarchical, const std::string& verilog_text, const std::string& script_text) {
   // The configuration is hashed in full too: config_tag's own hash is only 24 bits.
   const std::string decisive = describe(cfg) + '\0' + family + '\0' + part + '\0' + (uram ? "uram" : "") + '\0' +
-                               verilog_text + '\0' + script_text + '\0' + part_table_text() + '\0' +
-                               kLogicDepthModel;
-  return fmt::format("{}-{}-{}{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
-                     uram ? "-uram" : "", fnv1a64(decisive));
+                               (hierarchical ? "hierarchical" : "") + '\0' + verilog_text + '\0' + script_text +
+                               '\0' + part_table_text() + '\0' + kLogicDepthModel;
+  return fmt::format("{}-{}-{}{}{}-{:016x}", config_tag(cfg), file_name_safe(family), file_name_safe(part),
+                     uram ? "-uram" : "", hierarchical ? "-hierarchical" : "", fnv1a64(decisive));
 }
 
 void register_synth_command(CLI::App& app, int& exit_code) {
@@ -627,6 +632,10 @@ void register_synth_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--uram", o->uram,
                 "let Yosys map large memories to UltraRAM (synth_xilinx -uram): UltraScale+ parts that have it, "
                 "e.g. --part xczu7ev");
+  sub->add_flag("--hierarchical", o->hierarchical,
+                "map each module once per parameter set, then flatten the mapped netlist (synth_xilinx without "
+                "-flatten): for designs too large to flatten first; no optimisation across modules, so LUTs and "
+                "depth are at or above a flat run's, and memories are listed per module");
   sub->add_option("--cache", o->cache_dir, "cache directory [" + cache_dir_rule("synth") + "]")
       ->type_name("DIR");
   sub->add_flag("--no-cache", o->no_cache, "run Yosys even if a cached result exists (and refresh it)");

@@ -34,6 +34,7 @@ struct SynthMemory {
 struct SynthReport {
   std::string config;  // configuration tag; empty when the text came straight from the script
   std::string top, family, part;
+  bool hierarchical = false;  // mapped module by module, then flattened (--hierarchical)
   int64_t lut = 0, lut_min = 0, lutram = 0, lut_total = 0, ff = 0, latches = 0;
   int64_t bram18 = 0, bram36 = 0, uram = 0, dsp = 0, carry4 = 0, carry8 = 0, carry4_equiv = 0;
   double bram36_equiv = 0;    // BRAM36 + BRAM18 / 2
@@ -69,11 +70,11 @@ std::string verilog_hash(const StereoConfig& cfg);
 // mapped to.
 std::string format_report(const SynthReport& report, bool cached);
 
-// The cache file's stem: readable (tag, family, part, "-uram" with UltraRAM) plus a hash of
-// everything that decides the result, so a changed generator, script or part table never serves a
-// stale report. Empty family or part means the script's default.
+// The cache file's stem: readable (tag, family, part, "-uram" with UltraRAM, "-hierarchical") plus
+// a hash of everything that decides the result, so a changed generator, script or part table never
+// serves a stale report. Empty family or part means the script's default.
 std::string cache_key(const StereoConfig& cfg, const std::string& family, const std::string& part, bool uram,
-                      const std::string& verilog_text, const std::string& script_text);
+                      bool hierarchical, const std::string& verilog_text, const std::string& script_text);
 
 // scripts/synth-yosys.sh in the source tree, which synth runs.
 std::filesystem::path synth_script_path();
