@@ -45,7 +45,9 @@ module fpstereo_video_in #(
   output wire           in_valid,
   output wire [DATA_W-1:0] in_left,
   output wire [DATA_W-1:0] in_right,
-  input  wire           in_take,
+  // the core's pixel register slice takes a pixel while high (taken: in_valid && in_ready,
+  // inside this module, so that the take's logic is mapped with the flags it depends on)
+  input  wire           in_ready,
   // events
   output wire           frame_dropped,
   output wire           frame_truncated,
@@ -96,6 +98,7 @@ module fpstereo_video_in #(
   assign in_valid = passing || (state == PAD && !done);
   assign in_left = passing ? left[DATA_W-1:0] : {DATA_W{1'b0}};
   assign in_right = passing ? right[DATA_W-1:0] : {DATA_W{1'b0}};
+  wire in_take = in_valid && in_ready;
   wire pass_take = passing && in_take;
   assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
   assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;

@@ -188,7 +188,7 @@ std::string top_module(const RtlDesign& d, const ModuleSignature& core_signature
                                             {"in_valid", "framed_valid"},
                                             {"in_left", "framed_left"},
                                             {"in_right", "framed_right"},
-                                            {"in_take", "framed_valid && framed_ready"}};
+                                            {"in_ready", "framed_ready"}};
   if (P > 1) {
     // The framing checks count beats.
     const int shift = clog2(P);

@@ -2,9 +2,9 @@
 // Formal properties of rtl_templates/fpstereo_video_in.v (tests/formal/run_proof.sh), frames up
 // to 7 x 3 (X_W 3, Y_W 2). The environment (assumed): both input streams obey AXI4-Stream (no
 // TVALID in reset or in the cycle after it, held until TREADY with {tuser, tlast, tdata} stable),
-// with any tuser/tlast (framing faults included); the core takes a pixel only while one is
-// offered, and its frame size (at least 2 x 2, as the unit requires) holds from the cycle after core_start until the
-// frame's last pixel is taken. The unit (asserted):
+// with any tuser/tlast (framing faults included); the core's ready is free (a pixel is taken
+// when offered and ready), and its frame size (at least 2 x 2, as the unit requires) holds from
+// the cycle after core_start until the frame's last pixel is taken. The unit (asserted):
 //   - an input beat is taken only while its TVALID is high;
 //   - during a frame the streams are taken only in pairs, each pair as the pixel the core takes;
 //   - the core gets exactly width x height pixels per frame (core_start only between frames,
@@ -32,7 +32,7 @@ module video_in_props (
   input wire       core_accepting,
   input wire [2:0] frame_width,
   input wire [1:0] frame_height,
-  input wire       in_take
+  input wire       in_ready
 );
   localparam X_W = 3, Y_W = 2;
   wire       left_ready, right_ready, core_start, in_valid;
@@ -44,7 +44,7 @@ module video_in_props (
     .right(right), .right_valid(right_valid), .right_ready(right_ready),
     .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height), .in_valid(in_valid), .in_left(in_left), .in_right(in_right),
-    .in_take(in_take), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
+    .in_ready(in_ready), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
     .protocol_error(protocol_error));
 
 `ifdef FORMAL
@@ -53,6 +53,7 @@ module video_in_props (
   (* keep *) wire [Y_W-1:0] probe_y;
   (* keep *) wire           probe_first, probe_row_end, probe_last_row, probe_frame_end, probe_done;
 
+  wire in_take = in_valid && in_ready;  // the core's take
   wire past_valid, past_rst;
   formal_start run_start (.clk(clk), .rst(rst), .past_valid(past_valid), .past_rst(past_rst));
 
@@ -79,7 +80,6 @@ module video_in_props (
   // ---- The environment.
   always @* begin
     assume(frame_width >= 2 && frame_height >= 2);
-    if (in_take) assume(in_valid);
     if (in_frame) assume(frame_width == w && frame_height == h);
   end
   formal_axis_in #(.W(10)) left_stream (.clk(clk), .rst(rst), .valid(left_valid), .ready(left_ready), .payload(left));

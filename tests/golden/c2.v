@@ -162,7 +162,7 @@ module fps_census7_d128u32_6e9658_top (
     .left_ready(left_ready), .right(right_beat), .right_valid(right_valid), .right_ready(right_ready),
     .core_accepting(core_accepting), .core_start(core_start), .frame_width(frame_width),
     .frame_height(frame_height), .in_valid(framed_valid), .in_left(framed_left), .in_right(framed_right),
-    .in_take(framed_valid && framed_ready), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
+    .in_ready(framed_ready), .frame_dropped(frame_dropped), .frame_truncated(frame_truncated),
     .protocol_error(protocol_error));
 
   // Pixel register slice: the core's in_valid is a flip-flop, and no path runs from the
@@ -839,7 +839,9 @@ module fps_census7_d128u32_6e9658_video_in #(
   output wire           in_valid,
   output wire [DATA_W-1:0] in_left,
   output wire [DATA_W-1:0] in_right,
-  input  wire           in_take,
+  // the core's pixel register slice takes a pixel while high (taken: in_valid && in_ready,
+  // inside this module, so that the take's logic is mapped with the flags it depends on)
+  input  wire           in_ready,
   // events
   output wire           frame_dropped,
   output wire           frame_truncated,
@@ -890,6 +892,7 @@ module fps_census7_d128u32_6e9658_video_in #(
   assign in_valid = passing || (state == PAD && !done);
   assign in_left = passing ? left[DATA_W-1:0] : {DATA_W{1'b0}};
   assign in_right = passing ? right[DATA_W-1:0] : {DATA_W{1'b0}};
+  wire in_take = in_valid && in_ready;
   wire pass_take = passing && in_take;
   assign left_ready = skip_left || drop || (starts && left_stale) || pass_take;
   assign right_ready = skip_right || drop || (starts && right_stale) || pass_take;
