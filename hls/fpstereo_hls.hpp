@@ -1016,23 +1016,27 @@ median_pixels:
 
 // ---------------------------------------------------------------------------------------------
 // Section 7: gap interpolation, one row behind. While row y arrives, each invalid run's start
-// records the value that ends it (the invalid word at the row's end); meanwhile row y - 1 is
-// sent, runs filled from the last valid value on the left and the recorded right neighbour.
-// Two row RAMs each, ping-pong by row parity.
+// records the value that ends it and its x (the invalid word at the row's end); meanwhile row
+// y - 1 is sent, runs filled from the last valid value on the left and the recorded right
+// neighbour: the smaller of the two, or (kGapLinear) where they are close, the value on the line
+// between them. Two row RAMs each, ping-pong by row parity.
 template <class C>
 void gap_fill(hls::stream<Word<C>>& in, hls::stream<Word<C>>& out, int width, int height) {
   constexpr int kInvalid = C::kInvalidWord;
+  constexpr int kUnit = 1 << C::kSubpixelBits;  // words a pixel
   Word<C> rows[2][C::kMaxWidth];
   Word<C> run_end[2][C::kMaxWidth];  // at a run's start: the valid value right of the run
+  int run_end_x[2][C::kMaxWidth];    // and its x
 #pragma HLS ARRAY_PARTITION variable = rows complete dim = 1
 #pragma HLS ARRAY_PARTITION variable = run_end complete dim = 1
+#pragma HLS ARRAY_PARTITION variable = run_end_x complete dim = 1
 gap_rows:
   for (int y = 0; y <= height; ++y) {
 #pragma HLS LOOP_TRIPCOUNT max = C::kMaxHeight + 1
     const int in_bank = y & 1, out_bank = 1 - in_bank;
     bool in_run = false;
     int in_run_start = 0;
-    int left = kInvalid, right = kInvalid;
+    int left = kInvalid, right = kInvalid, left_x = 0, right_x = 0;
   gap_pixels:
     for (int x = 0; x < width; ++x) {
 #pragma HLS PIPELINE II = 1
@@ -1045,6 +1049,7 @@ gap_rows:
           in_run_start = x;
         } else if (int(v) != kInvalid && in_run) {
           run_end[in_bank][in_run_start] = v;
+          run_end_x[in_bank][in_run_start] = x;
           in_run = false;
         }
         if (x == width - 1 && in_run) run_end[in_bank][in_run_start] = kInvalid;
@@ -1053,12 +1058,20 @@ gap_rows:
         const int v = int(rows[out_bank][x]);
         if (v != kInvalid) {
           left = v;
+          left_x = x;
           right = kInvalid;
           out.write(v);
         } else {
-          if (x == 0 || int(rows[out_bank][x - 1]) != kInvalid) right = int(run_end[out_bank][x]);
+          if (x == 0 || int(rows[out_bank][x - 1]) != kInvalid) {
+            right = int(run_end[out_bank][x]);
+            right_x = run_end_x[out_bank][x];
+          }
           int fill = kInvalid;
-          if (left != kInvalid && right != kInvalid)
+          const int span = right_x - left_x, step = x - left_x;
+          const int diff = left < right ? right - left : left - right;
+          if (left != kInvalid && right != kInvalid && C::kGapLinear && 8 * diff <= (32 + span) * kUnit)
+            fill = (left * (span - step) + right * step + span / 2) / span;
+          else if (left != kInvalid && right != kInvalid)
             fill = left < right ? left : right;
           else if (left != kInvalid)
             fill = left;

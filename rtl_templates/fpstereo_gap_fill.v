@@ -18,7 +18,12 @@
 //   frames too).
 // Once wrapped (back-to-back frames), the next frame's row 0 brings the result of this frame's
 // last row, in place of the dummy row.
-// Latency: the result for (x, y - 1) leaves 4 adv-steps after the event of (x, y): the first
+// LINEAR: a run between valid words L at pixel xl and R at xr (m = xr - xl) whose ends differ by
+// at most 4 + m / 8 pixels (8 |R - L| <= (32 + m) 2^UNIT_LOG) is filled with
+// (L (xr - x) + R (x - xl) + floor(m / 2)) div m instead: the right neighbours' RAM also keeps
+// their pixel, and each word's quotient comes out of a restoring divider, a bit a step.
+// Latency: the result for (x, y - 1) leaves 4 adv-steps after the event of (x, y), with LINEAR
+// 6 + WORD_W - 1 (two steps of the divider's operands, then a step a quotient bit): the first
 // registers the event with the compares on its position, so that no compare lies on a path into
 // a RAM's write enable (logic depth, docs/timing.md).
 module fpstereo_gap_fill #(
@@ -30,7 +35,10 @@ module fpstereo_gap_fill #(
   parameter X_W = 7,
   parameter Y_W = 6,
   // words a slot: 1, 2 or 4 (W a multiple of P)
-  parameter P = 1
+  parameter P = 1,
+  // 1: runs between close ends filled along a line; words 2^UNIT_LOG a pixel (sub-pixel bits)
+  parameter LINEAR = 0,
+  parameter UNIT_LOG = 0
 ) (
   input  wire              clk,
   input  wire              restart,
@@ -52,8 +60,9 @@ module fpstereo_gap_fill #(
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
-    if (W < 1 || W >= (1 << X_W) || WORD_W < 2 || (P != 1 && P != 2 && P != 4) || W % P != 0) begin : invalid
-      fpstereo_invalid_parameters_gap_fill_needs_X_W_holding_W_WORD_W_at_least_2_and_W_a_multiple_of_P failed ();
+    if (W < 1 || W >= (1 << X_W) || WORD_W < 2 || (P != 1 && P != 2 && P != 4) || W % P != 0 ||
+        (LINEAR != 0 && LINEAR != 1) || UNIT_LOG < 0) begin : invalid
+      fpstereo_invalid_parameters_gap_fill_needs_X_W_holding_W_WORD_W_at_least_2_W_a_multiple_of_P_LINEAR_0_or_1 failed ();
     end
   endgenerate
   localparam LOG_P = $clog2(P);
@@ -62,6 +71,7 @@ module fpstereo_gap_fill #(
   localparam PIXEL_AW = $clog2(2 * W);
   localparam CELL_W = P * WORD_W + X_W;  // a slot's words and its last run's first pixel
   localparam [WORD_W-1:0] INVALID = {1'b1, {(WORD_W-1){1'b0}}};
+  localparam DISP_W = WORD_W - 1;  // a word's disparity bits (LINEAR: the divider's quotient bits)
   // ---- Stage 0: the event and what its position is.
   reg              event0, writing0, reading0, first0, last0;
   reg  [X_W-1:0]   x0;
@@ -116,6 +126,24 @@ module fpstereo_gap_fill #(
       last_valid = prior;
       for (i = 0; i < P; i = i + 1)
         if (i < upto && !words[i*WORD_W + WORD_W - 1]) last_valid = words[i*WORD_W +: WORD_W];
+    end
+  endfunction
+  // The pixels of those words in slot x (LINEAR; `prior` where there is none, 0 for the first).
+  function [X_W-1:0] first_valid_pixel(input [P*WORD_W-1:0] words, input integer from, input [X_W-1:0] x);
+    integer i;
+    begin
+      first_valid_pixel = {X_W{1'b0}};
+      for (i = P - 1; i >= 0; i = i - 1)
+        if (i >= from && !words[i*WORD_W + WORD_W - 1]) first_valid_pixel = pixel_of(x, i);
+    end
+  endfunction
+  function [X_W-1:0] last_valid_pixel(input [X_W-1:0] prior, input [P*WORD_W-1:0] words, input integer upto,
+                                      input [X_W-1:0] x);
+    integer i;
+    begin
+      last_valid_pixel = prior;
+      for (i = 0; i < P; i = i + 1)
+        if (i < upto && !words[i*WORD_W + WORD_W - 1]) last_valid_pixel = pixel_of(x, i);
     end
   endfunction
 
@@ -189,9 +217,22 @@ module fpstereo_gap_fill #(
   wire [P*WORD_W-1:0] word1 = stored[CELL_W-1:X_W];
   wire [X_W-1:0]    start1 = stored[X_W-1:0];  // the slot's last run's
   wire [WORD_W-1:0] right2;
-  fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(PIXEL_AW)) right_neighbours (
-    .clk(clk), .we(side_we), .waddr(pixel_address(parity, run_start)), .wdata(first_valid(word0, 0)),
-    .re(adv), .raddr(pixel_address(parity1, start1)), .rdata(right2));
+  /* verilator lint_off UNUSEDSIGNAL */  // read with LINEAR only
+  wire [X_W-1:0]    right_pixel2;  // LINEAR: its pixel
+  /* verilator lint_on UNUSEDSIGNAL */
+  generate
+    if (LINEAR == 0) begin : right_words
+      fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(2 * W), .ADDR_W(PIXEL_AW)) right_neighbours (
+        .clk(clk), .we(side_we), .waddr(pixel_address(parity, run_start)), .wdata(first_valid(word0, 0)),
+        .re(adv), .raddr(pixel_address(parity1, start1)), .rdata(right2));
+      assign right_pixel2 = {X_W{1'b0}};
+    end else begin : right_words_and_pixels
+      fpstereo_ram_sdp #(.WIDTH(X_W + WORD_W), .DEPTH(2 * W), .ADDR_W(PIXEL_AW)) right_neighbours (
+        .clk(clk), .we(side_we), .waddr(pixel_address(parity, run_start)),
+        .wdata({first_valid_pixel(word0, 0, x0), first_valid(word0, 0)}),
+        .re(adv), .raddr(pixel_address(parity1, start1)), .rdata({right_pixel2, right2}));
+    end
+  endgenerate
   // Whether the slot's last run is the row end's (no right neighbour).
   reg to_end2;
   always @(posedge clk)
@@ -239,15 +280,152 @@ module fpstereo_gap_fill #(
                                : left_ok ? left_word : right_word;
       assign results[q*WORD_W +: WORD_W] = word[WORD_W-1] ? filled : word;
     end
-  endgenerate
-  always @(posedge clk)
-    if (restart) out_event <= 1'b0;
-    else if (adv) out_event <= event2;
-  always @(posedge clk)
-    if (adv) begin
-      out_x <= x2;
-      out_y <= y2;
-      out_word <= results;
+    if (LINEAR == 0) begin : smaller_end
+      always @(posedge clk)
+        if (restart) out_event <= 1'b0;
+        else if (adv) out_event <= event2;
+      always @(posedge clk)
+        if (adv) begin
+          out_x <= x2;
+          out_y <= y2;
+          out_word <= results;
+        end
+    end else begin : linear
+      // The pixels of the valid words around each word, read beside the words (stage 2).
+      reg [X_W-1:0]   left_pixel;  // of `left`
+      reg [P*X_W-1:0] left_pixels2, near_pixels2;
+      for (q = 0; q < P; q = q + 1) begin : read_pixel
+        always @(posedge clk)
+          if (adv) begin
+            left_pixels2[q*X_W +: X_W] <= last_valid_pixel(left_pixel, word1, q, x1);
+            near_pixels2[q*X_W +: X_W] <= first_valid_pixel(word1, q + 1, x1);
+          end
+      end
+      always @(posedge clk)
+        if (adv && event1) left_pixel <= last_valid_pixel(left_pixel, word1, P, x1);
+
+      // Steps 4 (the operands), 5 (products, span, difference), 6 (numerator, the rule), then the
+      // divider, whose last stage writes the output word.
+      localparam NUM_W = DISP_W + X_W;  // the numerator is below 2^DISP_W m: so is the quotient
+      localparam CMP_W = DISP_W + X_W + UNIT_LOG + 6;  // 8 |R - L| and (32 + m) 2^UNIT_LOG
+      localparam DELAY = DISP_W + 2;  // steps from stage 3 to the output
+      localparam [X_W+5:0] REACH_BASE = 32;  // 4 pixels in eighths
+      reg [DELAY-1:0]     events;
+      reg [DELAY*X_W-1:0] xs;
+      reg [DELAY*Y_W-1:0] ys;
+      always @(posedge clk)
+        if (restart) begin
+          events <= {DELAY{1'b0}};
+          out_event <= 1'b0;
+        end else if (adv) begin
+          events <= {events[DELAY-2:0], event2};
+          out_event <= events[DELAY-1];
+        end
+      always @(posedge clk)
+        if (adv) begin
+          xs <= {xs[(DELAY-1)*X_W-1:0], x2};
+          ys <= {ys[(DELAY-1)*Y_W-1:0], y2};
+          out_x <= xs[(DELAY-1)*X_W +: X_W];
+          out_y <= ys[(DELAY-1)*Y_W +: Y_W];
+        end
+      for (q = 0; q < P; q = q + 1) begin : fill
+        wire [WORD_W-1:0] word = word2[q*WORD_W +: WORD_W], left_word = left2[q*WORD_W +: WORD_W];
+        wire [WORD_W-1:0] near = near2[q*WORD_W +: WORD_W];
+        wire [WORD_W-1:0] right_word = near[WORD_W-1] ? far : near;
+        wire [X_W-1:0]    right_pixel = near[WORD_W-1] ? right_pixel2 : near_pixels2[q*X_W +: X_W];
+        wire [X_W-1:0]    here = pixel_of(x2, q);
+        // step 4
+        reg              between4;  // invalid, valid words on both sides
+        reg [WORD_W-1:0] result4;   // the smaller end's
+        reg [DISP_W-1:0] left4, right4;
+        reg [X_W-1:0]    left_step4, right_step4;  // x - xl, xr - x
+        always @(posedge clk)
+          if (adv) begin
+            between4 <= word[WORD_W-1] && !left_word[WORD_W-1] && !right_word[WORD_W-1];
+            result4 <= results[q*WORD_W +: WORD_W];
+            left4 <= left_word[DISP_W-1:0];
+            right4 <= right_word[DISP_W-1:0];
+            left_step4 <= here - left_pixels2[q*X_W +: X_W];
+            right_step4 <= right_pixel - here;
+          end
+        // step 5
+        reg              between5;
+        reg [WORD_W-1:0] result5;
+        reg [NUM_W-1:0]  left_part5, right_part5;  // L (xr - x), R (x - xl)
+        reg [X_W-1:0]    span5;                    // m
+        reg [X_W+5:0]    reach5;                   // 32 + m
+        reg [DISP_W-1:0] difference5;              // |R - L|
+        wire [NUM_W-1:0] left_wide = {{X_W{1'b0}}, left4}, right_wide = {{X_W{1'b0}}, right4};
+        wire [NUM_W-1:0] left_step_wide = {{DISP_W{1'b0}}, left_step4};
+        wire [NUM_W-1:0] right_step_wide = {{DISP_W{1'b0}}, right_step4};
+        always @(posedge clk)
+          if (adv) begin
+            between5 <= between4;
+            result5 <= result4;
+            left_part5 <= left_wide * right_step_wide;
+            right_part5 <= right_wide * left_step_wide;
+            span5 <= left_step4 + right_step4;
+            reach5 <= {6'd0, left_step4} + {6'd0, right_step4} + REACH_BASE;
+            difference5 <= right4 > left4 ? right4 - left4 : left4 - right4;
+          end
+        wire [CMP_W-1:0] difference_wide = {{(CMP_W-DISP_W){1'b0}}, difference5};
+        wire [CMP_W-1:0] reach_wide = {{(CMP_W-X_W-6){1'b0}}, reach5};
+        // step 6
+        reg              linear6;
+        reg [WORD_W-1:0] result6;
+        reg [X_W-1:0]    span6;
+        reg [NUM_W:0]    numerator6;
+        always @(posedge clk)
+          if (adv) begin
+            linear6 <= between5 && (difference_wide << 3) <= (reach_wide << UNIT_LOG);
+            result6 <= result5;
+            span6 <= span5;
+            numerator6 <= {1'b0, left_part5} + {1'b0, right_part5} + {{(NUM_W+2-X_W){1'b0}}, span5[X_W-1:1]};
+          end
+        // The divider: stage j decides quotient bit DISP_W - 1 - j; after it the remainder is below
+        // m 2^(DISP_W-1-j). Stages 0 .. DISP_W - 2 are registered, the last one writes the output.
+        wire [DISP_W*(NUM_W+1)-1:0] remainders;  // into stage j: the j-th slice
+        wire [DISP_W*DISP_W-1:0]    quotients;
+        wire [DISP_W*X_W-1:0]       spans;
+        wire [DISP_W-1:0]           linears;
+        wire [DISP_W*WORD_W-1:0]    results_in;
+        assign remainders[NUM_W:0] = numerator6;
+        assign quotients[DISP_W-1:0] = {DISP_W{1'b0}};
+        assign spans[X_W-1:0] = span6;
+        assign linears[0] = linear6;
+        assign results_in[WORD_W-1:0] = result6;
+        genvar j;
+        for (j = 0; j < DISP_W; j = j + 1) begin : divide
+          wire [NUM_W:0]    remainder = remainders[j*(NUM_W+1) +: NUM_W+1];
+          wire [NUM_W:0]    divisor = {{(NUM_W+1-X_W){1'b0}}, spans[j*X_W +: X_W]} << (DISP_W - 1 - j);
+          wire              fits = remainder >= divisor;
+          wire [DISP_W-1:0] quotient = quotients[j*DISP_W +: DISP_W] | ({{(DISP_W-1){1'b0}}, fits} << (DISP_W - 1 - j));
+          if (j < DISP_W - 1) begin : stage
+            reg [NUM_W:0]    remainder_q;
+            reg [DISP_W-1:0] quotient_q;
+            reg [X_W-1:0]    span_q;
+            reg              linear_q;
+            reg [WORD_W-1:0] result_q;
+            always @(posedge clk)
+              if (adv) begin
+                remainder_q <= fits ? remainder - divisor : remainder;
+                quotient_q <= quotient;
+                span_q <= spans[j*X_W +: X_W];
+                linear_q <= linears[j];
+                result_q <= results_in[j*WORD_W +: WORD_W];
+              end
+            assign remainders[(j+1)*(NUM_W+1) +: NUM_W+1] = remainder_q;
+            assign quotients[(j+1)*DISP_W +: DISP_W] = quotient_q;
+            assign spans[(j+1)*X_W +: X_W] = span_q;
+            assign linears[j+1] = linear_q;
+            assign results_in[(j+1)*WORD_W +: WORD_W] = result_q;
+          end else begin : last
+            always @(posedge clk)
+              if (adv) out_word[q*WORD_W +: WORD_W] <= linears[j] ? {1'b0, quotient} : results_in[j*WORD_W +: WORD_W];
+          end
+        end
+      end
     end
+  endgenerate
 endmodule
 `resetall

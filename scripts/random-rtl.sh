@@ -77,7 +77,7 @@ draw() {
   add --lr-threshold 0 1 2
   add --uniqueness 0 0 10 30
   add --median 0 3 5
-  add --gap-interp off on
+  add --gap-interp off on linear
   add --subpixel-bits 0 0 2 4
   add --subpixel-fit equiangular parabola
   add --confidence off on

@@ -119,12 +119,27 @@ TEST_CASE("parameters parse from text", "[config]") {
   CHECK(c.paths == (kPath0 | kPath90));
   CHECK(c.median == 0);
   CHECK(c.gap_interpolation);
+  CHECK_FALSE(c.gap_linear);
   CHECK(c.lr == LrCheck::Lr2);
   CHECK(c.mgm);
-  // Every parameter prints back to text that parses to the same value.
+  // Every parameter prints back to text that parses to the same value (the linear fill too).
+  set_param(c, "gap-interp", "linear");
+  CHECK(c.gap_interpolation);
+  CHECK(c.gap_linear);
   StereoConfig copy;
   for (const auto& spec : param_specs()) set_param(copy, spec.name, spec.get(c));
   CHECK(copy == c);
+  set_param(c, "gap-interp", "off");  // off turns the linear fill off with it
+  CHECK_FALSE(c.gap_interpolation);
+  CHECK_FALSE(c.gap_linear);
+}
+
+TEST_CASE("the linear gap fill needs gap interpolation", "[config]") {
+  StereoConfig c;
+  c.gap_linear = true;
+  CHECK_THROWS_WITH(validate(c), "gap-interp: the linear fill is a mode of gap interpolation, which is off");
+  c.gap_interpolation = true;
+  CHECK_NOTHROW(validate(c));
 }
 
 TEST_CASE("every invalid value is rejected with its name, value and what is allowed", "[config]") {
@@ -162,7 +177,7 @@ TEST_CASE("every invalid value is rejected with its name, value and what is allo
       {"uniqueness", "100", "uniqueness = 100: must be a percentage in 0 .. 99"},
       {"median", "4", "median = 4: expected 0 (off), 3, 5 or 7"},
       {"median", "9", "median = 9: expected 0 (off), 3, 5 or 7"},
-      {"gap-interp", "maybe", "gap-interp = 'maybe': expected on or off"},
+      {"gap-interp", "maybe", "gap-interp = 'maybe': expected on, off or linear"},
       {"mgm", "2", "mgm = '2': expected on or off"},
       {"speckle-size", "-1", "speckle-size = -1: must be in 0 .. 4096"},
       {"speckle-size", "4097", "speckle-size = 4097: must be in 0 .. 4096"},

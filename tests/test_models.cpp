@@ -49,6 +49,7 @@ StereoConfig random_config(std::mt19937& rng) {
   c.uniqueness = pick(rng, {0, 0, 5, 15, 40});
   c.median = pick(rng, {0, 3, 5, 7});
   c.gap_interpolation = pick(rng, {false, true});
+  c.gap_linear = c.gap_interpolation && pick(rng, {false, true});
   c.speckle_size = pick(rng, {0, 0, 1, 2, 5, 12, 40, 400});
   c.speckle_range = pick(rng, {0, 1, 2, 5});
   c.subpixel_bits = pick(rng, {0, 0, 1, 3, 5});
@@ -151,6 +152,7 @@ TEST_CASE("golden model equals the naive model for each option alone", "[models]
                            {"median", "5"},
                            {"median", "7"},
                            {"gap-interp", "on"},
+                           {"gap-interp", "linear"},
                            {"speckle-size", "6"},
                            {"fused-weight", "8"},
                            {"subpixel-bits", "4"},

@@ -31,10 +31,10 @@ int parse_int(const std::string& name, const std::string& text) {
   return int(v);
 }
 
-bool parse_bool(const std::string& name, const std::string& text) {
+bool parse_bool(const std::string& name, const std::string& text, const char* expected = "expected on or off") {
   if (text == "on" || text == "true" || text == "1" || text == "yes") return true;
   if (text == "off" || text == "false" || text == "0" || text == "no") return false;
-  reject(name, quoted(text), "expected on or off");
+  reject(name, quoted(text), expected);
 }
 
 // "off" is accepted wherever 0 means off.
@@ -211,9 +211,12 @@ const std::vector<ParamSpec>& param_specs() {
       {"median", "median filter window: 0 or off, 3, 5 or 7",
        [](StereoConfig& c, const std::string& v) { c.median = parse_int_or_off("median", v); },
        [](const StereoConfig& c) { return std::to_string(c.median); }},
-      {"gap-interp", "fill invalid pixels along the row: on or off",
-       [](StereoConfig& c, const std::string& v) { c.gap_interpolation = parse_bool("gap-interp", v); },
-       [](const StereoConfig& c) { return std::string(c.gap_interpolation ? "on" : "off"); }},
+      {"gap-interp", "fill invalid pixels along the row: on (the smaller end), linear (a line between close ends) or off",
+       [](StereoConfig& c, const std::string& v) {
+         c.gap_linear = v == "linear";
+         c.gap_interpolation = c.gap_linear || parse_bool("gap-interp", v, "expected on, off or linear");
+       },
+       [](const StereoConfig& c) { return std::string(c.gap_linear ? "linear" : c.gap_interpolation ? "on" : "off"); }},
       {"subpixel-bits", "fraction bits of the output disparity, 0 for whole pixels: 0 to 5",
        [](StereoConfig& c, const std::string& v) { c.subpixel_bits = parse_int("subpixel-bits", v); },
        [](const StereoConfig& c) { return std::to_string(c.subpixel_bits); }},
@@ -273,6 +276,8 @@ void validate(const StereoConfig& c) {
   // A region of at most S pixels spans at most S rows: S bounds the hardware's row delay.
   check_range("speckle-size", c.speckle_size, 0, kMaxSpeckleSize);
   check_range("speckle-range", c.speckle_range, 0, c.dmax);
+  if (c.gap_linear && !c.gap_interpolation)
+    throw ConfigError("gap-interp: the linear fill is a mode of gap interpolation, which is off");
   if (c.median != 0 && c.median != 3 && c.median != 5 && c.median != 7)
     reject("median", std::to_string(c.median), "expected 0 (off), 3, 5 or 7");
   check_range("subpixel-bits", c.subpixel_bits, 0, 5);
@@ -314,7 +319,8 @@ StereoConfig preset(const std::string& name) {
     c.subpixel_bits = 4;
     if (name == "A5" || name == "A6") {
       // A6: A4 with the speckle filter (100, 2) and the fused intensity cost (k 4, T 32), the
-      // best four-path setting on the tuning pairs (docs/accuracy.md, "Right-to-left path").
+      // best four-path setting on the tuning pairs (docs/accuracy.md, "Right-to-left path"), and
+      // the linear gap fill (docs/accuracy.md, "The linear gap fill").
       // A5 adds the 180-degree path, chosen on the same pairs; models only: the hardware has no
       // 180-degree path yet.
       if (name == "A5") c.paths = kEveryPath;
@@ -323,6 +329,8 @@ StereoConfig preset(const std::string& name) {
       c.fused_weight = 4;
       c.fused_trunc = 32;
       c.fused_term = FusedTerm::Intensity;
+      c.gap_interpolation = true;
+      c.gap_linear = true;
     }
   } else {
     std::string allowed = "expected one of";

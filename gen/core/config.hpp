@@ -81,6 +81,9 @@ struct StereoConfig {
   int uniqueness = 0;    // percent; 0 = off
   int median = 5;        // median window side; 0 = off
   bool gap_interpolation = false;
+  // Gap interpolation fills a run linearly between its ends where they are close (docs/semantics.md
+  // section 7); set with gap-interp = linear, which also turns gap_interpolation on.
+  bool gap_linear = false;
   // Speckle filter (docs/semantics.md section 5a): 4-connected regions of valid pixels whose
   // neighbours differ by at most speckle_range whole disparities, of at most speckle_size
   // pixels, become invalid (OpenCV's filterSpeckles); speckle_size 0 = off.

@@ -227,9 +227,9 @@ void median_filter(DisparityImage& map, int window, uint16_t invalid, int values
     for (int t = 0; t < threads; ++t) band(t);
 }
 
-void interpolate_gaps(DisparityImage& map, uint16_t invalid) {
+void interpolate_gaps(DisparityImage& map, uint16_t invalid, int64_t linear_unit) {
   for (int y = 0; y < map.height; ++y)
-    fill_row_gaps(&map.at(0, y), map.width, [&](uint16_t v) { return v != invalid; });
+    fill_row_gaps(&map.at(0, y), map.width, [&](uint16_t v) { return v != invalid; }, linear_unit);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -515,7 +515,8 @@ DisparityImage run_pipeline(const StereoConfig& cfg, const Widths& widths, const
   const int dmax = cfg.dmax;
   if (cfg.median != 0)
     median_filter(out, cfg.median, widths.invalid_word, ((dmax - 1) << cfg.subpixel_bits) + 1, threads);
-  if (cfg.gap_interpolation) interpolate_gaps(out, widths.invalid_word);
+  if (cfg.gap_interpolation)
+    interpolate_gaps(out, widths.invalid_word, cfg.gap_linear ? int64_t(1) << cfg.subpixel_bits : 0);
   return out;
 }
 

@@ -450,8 +450,10 @@ DispMap median_filter(const DispMap& in, int side) {
   return out;
 }
 
-// Section 7: fill each maximal invalid run of a row from the valid pixels bounding it.
-void gap_interpolate(DispMap& disp) {
+// Section 7: fill each maximal invalid run of a row from the valid pixels bounding it; with
+// `linear`, runs whose bounding values are close along a straight line between them (`unit`
+// values a pixel).
+void gap_interpolate(DispMap& disp, bool linear, int64_t unit) {
   for (int y = 0; y < disp.height; ++y) {
     int x = 0;
     while (x < disp.width) {
@@ -465,6 +467,19 @@ void gap_interpolate(DispMap& disp) {
       const bool has_left = run_start > 0;
       const bool has_right = run_end < disp.width;
       if (!has_left && !has_right) continue;  // whole row invalid: stays invalid
+      if (linear && has_left && has_right) {
+        const int64_t a = disp.at(run_start - 1, y), b = disp.at(run_end, y);
+        const int64_t span = run_end - (run_start - 1);  // from one valid pixel to the other
+        // |b - a| <= 4 + span / 8 pixels, in values
+        if (8 * (a > b ? a - b : b - a) <= (32 + span) * unit) {
+          for (int i = run_start; i < run_end; ++i) {
+            const int64_t t = i - (run_start - 1);  // steps from the left valid pixel
+            // a + (b - a) t / span, rounded half up, over non-negative terms
+            disp.at(i, y) = (a * (span - t) + b * t + span / 2) / span;
+          }
+          continue;
+        }
+      }
       int64_t fill = 0;
       if (has_left && has_right)
         fill = std::min(disp.at(run_start - 1, y), disp.at(run_end, y));
@@ -530,7 +545,7 @@ Planes run_naive(const StereoConfig& cfg, const GrayImage& left, const GrayImage
 
   if (cfg.median > 0) disp = median_filter(disp, cfg.median);
 
-  if (cfg.gap_interpolation) gap_interpolate(disp);
+  if (cfg.gap_interpolation) gap_interpolate(disp, cfg.gap_linear, int64_t(1) << cfg.subpixel_bits);
 
   // Output words: the disparity, or the invalid flag alone.
   if (wanted(Plane::Disparity)) {

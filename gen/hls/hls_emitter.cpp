@@ -144,6 +144,8 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << ";  // in output-word units (r << sub-pixel bits)\n"
      << "  static constexpr int kMedian = " << cfg.median << ";\n"
      << "  static constexpr bool kGapInterpolation = " << (cfg.gap_interpolation ? "true" : "false") << ";\n"
+     << "  static constexpr bool kGapLinear = " << (cfg.gap_linear ? "true" : "false")
+     << ";  // runs between close ends filled along a line\n"
      << "  static constexpr int kSubpixelBits = " << cfg.subpixel_bits << ";  // 0: whole pixels\n"
      << "  static constexpr bool kRightView = " << (cfg.right_view ? "true" : "false")
      << ";  // the right view's stream (m_axis_disp_right)\n"

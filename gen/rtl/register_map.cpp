@@ -81,11 +81,11 @@ std::vector<std::pair<std::string, uint32_t>> info_words(const RtlDesign& d) {
       {"PATHS", c.paths},
       {"P2_MAX", uint32_t(c.p2)},
       // lr 3..0, median 7..4, gap 8, uniqueness 9, sub-pixel bits 14..12 and fit 15, right view 16,
-      // adaptive P2's gain 21..17, confidence 22
+      // adaptive P2's gain 21..17, confidence 22, the linear gap fill 23
       {"OPTIONS", uint32_t(c.lr) | uint32_t(c.median) << 4 | uint32_t(c.gap_interpolation) << 8 |
                       uint32_t(c.uniqueness != 0) << 9 | uint32_t(c.subpixel_bits) << 12 |
                       uint32_t(c.subpixel_fit) << 15 | uint32_t(c.right_view) << 16 |
-                      uint32_t(c.p2_adapt) << 17 | uint32_t(c.confidence) << 22},
+                      uint32_t(c.p2_adapt) << 17 | uint32_t(c.confidence) << 22 | uint32_t(c.gap_linear) << 23},
       {"OUTPUT", uint32_t(w.output_disparity) | uint32_t(w.output_word) << 8 | uint32_t(d.output_bits) << 16},
       {"MIN_WIDTH", uint32_t(d.min_width)},
       {"MIN_HEIGHT", uint32_t(d.min_height)},

@@ -4,7 +4,8 @@
 // group's later frames follow back to back (wrapped: their row 0 brings the result of the frame
 // before), and a dummy row after the group's last frame brings out its last row. Rows mix runs
 // inside a slot, across slots, at the row ends and whole invalid rows. Every word of every row
-// must leave, in raster order, equal to the model's.
+// must leave, in raster order, equal to the model's. LINEAR: the linear fill of runs between close
+// ends (fill_row_gaps with words 2^UNIT_LOG a pixel), on rows that also change slowly.
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@
 namespace {
 
 struct GapParams {
-  int W = 16, WORD_W = 8, X_W = 5, Y_W = 6, P = 1;
+  int W = 16, WORD_W = 8, X_W = 5, Y_W = 6, P = 1, LINEAR = 0, UNIT_LOG = 0;
 };
 
 // A row of `width` words of WORD_W bits (the top bit: invalid), in one of a few shapes.
@@ -25,7 +26,7 @@ std::vector<uint64_t> random_row(int width, int word_w, int p, modtb::Rng& rng) 
   const bool narrow = rng.chance(40);  // few values: ties between the neighbours
   auto value = [&] { return narrow ? rng.below(3) : rng.bits(word_w - 1); };
   std::vector<uint64_t> row(size_t(width), invalid);
-  switch (rng.below(6)) {
+  switch (rng.below(7)) {
     case 0: {  // each word invalid with one share
       const unsigned share = unsigned(rng.below(5)) * 25;
       for (auto& w : row) w = rng.chance(share) ? invalid : value();
@@ -49,6 +50,16 @@ std::vector<uint64_t> random_row(int width, int word_w, int p, modtb::Rng& rng) 
         for (int q = 0; q < p; ++q) row[size_t(x + q)] = valid || rng.chance(20) ? value() : invalid;
       }
       break;
+    case 6: {  // a slow walk with invalid runs: ends close enough for the linear fill, and some not
+      int64_t v = int64_t(rng.bits(word_w - 1));
+      const int64_t top = int64_t(invalid) - 1;
+      for (auto& w : row) {
+        v += int64_t(rng.below(9)) - 4;
+        v = v < 0 ? 0 : v > top ? top : v;
+        w = rng.chance(45) ? invalid : uint64_t(v);
+      }
+      break;
+    }
     default:  // valid but for runs at the row's ends
       for (auto& w : row) w = value();
       for (int x = 0, n = int(rng.below(uint64_t(width))); x < n; ++x) row[size_t(x)] = invalid;
@@ -81,15 +92,21 @@ int run_gap_fill(const char* name, const GapParams& p, const modtb::Options& o) 
   };
   std::vector<Event> events;
   std::vector<Out> expected;
-  long filled = 0;
+  long filled = 0, linear = 0;  // linear: words whose linear fill differs from the smaller end's
   while (long(events.size()) < o.cycles / 2) {
     const int slots = int(rng.range(1, uint64_t(max_slots))), width = slots * p.P;
     const int height = int(rng.range(2, 6)), frames = int(rng.range(1, 3));
     for (int f = 0; f < frames; ++f)
       for (int y = 0; y < height; ++y) {
         std::vector<uint64_t> row = random_row(width, p.WORD_W, p.P, rng), want = row;
-        fpstereo::fill_row_gaps(want.data(), width, [&](uint64_t w) { return w < invalid; });
-        for (int x = 0; x < width; ++x) filled += want[size_t(x)] != row[size_t(x)];
+        fpstereo::fill_row_gaps(want.data(), width, [&](uint64_t w) { return w < invalid; },
+                                p.LINEAR ? int64_t{1} << p.UNIT_LOG : 0);
+        std::vector<uint64_t> smaller_end = row;
+        fpstereo::fill_row_gaps(smaller_end.data(), width, [&](uint64_t w) { return w < invalid; });
+        for (int x = 0; x < width; ++x) {
+          filled += want[size_t(x)] != row[size_t(x)];
+          linear += want[size_t(x)] != smaller_end[size_t(x)];
+        }
         for (int s = 0; s < slots; ++s) {
           const auto first = row.begin() + s * p.P, first_want = want.begin() + s * p.P;
           events.push_back({s, y, {first, first + p.P}, f > 0, height, slots});
@@ -146,9 +163,10 @@ int run_gap_fill(const char* name, const GapParams& p, const modtb::Options& o) 
   }
   check.expect(cycle, "events after the last slot", 0, uint64_t(extra));
   check.expect(cycle, "slots out", expected.size(), seen);
-  return check.finish("W=" + std::to_string(p.W) + " P=" + std::to_string(p.P) + " WORD_W=" +
+  return check.finish("W=" + std::to_string(p.W) + " P=" + std::to_string(p.P) + " LINEAR=" + std::to_string(p.LINEAR) +
+                      " UNIT_LOG=" + std::to_string(p.UNIT_LOG) + " WORD_W=" +
                       std::to_string(p.WORD_W) + ": fill_row_gaps word for word, " + std::to_string(expected.size()) +
-                      " slots (" + std::to_string(filled) + " words filled), frames back to back and lone, " +
+                      " slots (" + std::to_string(filled) + " words filled, " + std::to_string(linear) + " of them along a line), frames back to back and lone, " +
                       std::to_string(cycle) + " cycles, " + std::to_string(idle) + " idle");
 }
 

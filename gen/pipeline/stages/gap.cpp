@@ -12,13 +12,17 @@ class GapStage : public Stage {
  public:
   std::string title() const override { return "gap interpolation"; }
   std::vector<std::string> knobs() const override { return {"gap-interp"}; }
-  Latency latency(const Geometry&) const override { return {1, 0, 4}; }
+  // The linear fill adds its divider: two steps of operands and a step a quotient bit.
+  Latency latency(const Geometry& g) const override {
+    return {1, 0, 4 + (g.cfg.gap_linear ? 2 + (g.widths.output_word - 1) : 0)};
+  }
   // Two rows of the slots' words with their last runs' first pixels, and of the runs' right
-  // neighbours by first pixel.
+  // neighbours by first pixel (with the linear fill, with the neighbours' pixels).
   std::vector<StageMemory> memories(const Geometry& g) const override {
     return {{"core.gap.words.mem", 2 * int64_t(g.cfg.width) / g.strips,
              int64_t(g.strips) * g.widths.output_word + g.x_bits},
-            {"core.gap.right_neighbours.mem", 2 * int64_t(g.cfg.width), g.widths.output_word}};
+            {"core.gap.right_neighbours.mem", 2 * int64_t(g.cfg.width),
+             g.widths.output_word + (g.cfg.gap_linear ? g.x_bits : 0)}};
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
@@ -31,7 +35,9 @@ class GapStage : public Stage {
                    {"WORD_W", num(d.widths.output_word)},
                    {"X_W", num(d.x_bits)},
                    {"Y_W", num(d.y_bits)},
-                   {"P", num(d.strips)}},
+                   {"P", num(d.strips)},
+                   {"LINEAR", d.cfg.gap_linear ? "1" : "0"},
+                   {"UNIT_LOG", num(d.cfg.subpixel_bits)}},
                   Connections{{"in_event", in.event}} + stream_connections(in, out));
   }
 
