@@ -2,7 +2,8 @@
 # Accuracy of the options beyond the paper against OpenCV's StereoSGBM (MODE_SGBM and MODE_HH4),
 # per dataset of a stereo data folder, for the two KITTI sets pooled and for every pair pooled,
 # as the table of docs/accuracy.md, "Accuracy beyond the paper" (markdown on stdout):
-#   bench/accuracy-beyond.sh [--build-dir B] [--speckle | --fused | --path180] [DATA]   (DATA: ../shared/data/stereo)
+#   bench/accuracy-beyond.sh [--build-dir B] [--speckle | --fused | --path180 | --gap] [DATA]
+# (DATA: ../shared/data/stereo)
 # With --speckle, the table of docs/accuracy.md, "Speckle filter": A4 with speckle sizes 0, 50,
 # 100, 200 and ranges 1, 2, against MODE_HH4 without and with OpenCV's speckle filter (100, 2).
 # With --fused, the table of docs/accuracy.md, "Fused matching cost": A4 and A4 with the fused
@@ -11,6 +12,9 @@
 # With --path180, the table of docs/accuracy.md, "Right-to-left path": A4 with the 180-degree path
 # added (and paths 0,90,180 and the 45/135 variants), without and with the speckle filter
 # (100, 2) and the fused cost, against MODE_HH4 without and with its own speckle filter.
+# With --gap, the table of docs/accuracy.md, "The linear gap fill": A6 and A5 with the linear gap
+# fill (the presets), with the smaller end's fill, and without gap interpolation, against MODE_HH4
+# without and with its own speckle filter.
 # Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
 # after KITTI background interpolation of invalid pixels.
 set -euo pipefail
@@ -21,6 +25,7 @@ data=$root/../shared/data/stereo
 speckle=0
 fused=0
 path180=0
+gap=0
 while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
@@ -28,11 +33,12 @@ while [ $# -gt 0 ]; do
     --speckle) speckle=1; shift ;;
     --fused) fused=1; shift ;;
     --path180) path180=1; shift ;;
+    --gap) gap=1; shift ;;
     -*) fail "unknown option '$1'" ;;
     *) data=$1; shift ;;
   esac
 done
-[ $((speckle + fused + path180)) -gt 1 ] && fail "--speckle, --fused and --path180 each make a table of their own: give one"
+[ $((speckle + fused + path180 + gap)) -gt 1 ] && fail "--speckle, --fused, --path180 and --gap each make a table of their own: give one"
 [ -x "$build/fpstereo" ] || fail "$build/fpstereo not found: build the project first (scripts/build.sh)"
 [ -d "$data" ] || fail "no data folder '$data'"
 data=$(cd "$data" && pwd)
@@ -90,6 +96,14 @@ if [ $path180 = 1 ]; then
   for paths in 0,45,90,135,180 0,90,180 0,45,90,180 0,90,135,180; do methods+=("A4$speckle_on --paths $paths"); done
   methods+=("A4$speckle_on$intensity" "A4$speckle_on$intensity --paths 0,45,90,135,180"
             "A4$speckle_on$gradient --paths 0,45,90,135,180" "A4$speckle_on$intensity --paths 0,90,180")
+  baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")
+fi
+
+if [ $gap = 1 ]; then
+  methods=()
+  for preset in A6 A5; do
+    methods+=("$preset --gap-interp off" "$preset --gap-interp on" "$preset")
+  done
   baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")
 fi
 

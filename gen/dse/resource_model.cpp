@@ -310,16 +310,30 @@ double speckle_registers(const rtl::RtlDesign& d) {
   return filter + stage;
 }
 
+// fpstereo_gap_fill's linear fill (LINEAR): per word its three operand steps and the divider's
+// stages (remainder, quotient, span, the rule's flag and the smaller end's word), the pixels of
+// the nearest valid words, and the position's delay. Not yet fitted: its LUTs (the divider's
+// compare-subtracts, about a LUT a remainder bit a stage) are not in the LUT terms.
+double linear_gap_registers(const rtl::RtlDesign& d) {
+  if (!d.cfg.gap_linear) return 0;
+  const double word = d.widths.output_word, disparity = word - 1, x = d.x_bits, numerator = disparity + x;
+  const double operands = (1 + word + 2 * disparity + 2 * x) + (1 + word + 2 * numerator + x + (x + 6) + disparity) +
+                          (1 + word + x + numerator + 1);
+  const double divider = (disparity - 1) * ((numerator + 1) + disparity + x + 1 + word);
+  return d.strips * (operands + divider + 2 * x) + x + (disparity + 2) * (1 + x + d.y_bits);
+}
+
 // fpstereo_lr_check's two register steps (position, words, the match side's disparity and the
 // base disparity's two bounds) and fpstereo_gap_fill's four (position, a slot's words, the row's
 // last valid word; the first step's four position flags; with strips the words' nearest valid
-// words in the slot).
+// words in the slot); with the linear fill, each word's operand steps and divider and the
+// position's delay beside them.
 double check_and_gap_registers(const rtl::RtlDesign& d) {
   const double position = 1.0 + d.x_bits + d.y_bits, word = d.widths.output_word;
   const double check =
       d.cfg.lr != LrCheck::None ? 2 * (position + 1) + 3 * word + d.widths.disparity + 2 * (d.widths.disparity + 2) : 0.0;
   const double gap = d.cfg.gap_interpolation ? 4 * position + (4 * d.strips - 1) * word + 4 : 0.0;
-  return check + gap;
+  return check + gap + linear_gap_registers(d);
 }
 
 }  // namespace
