@@ -70,6 +70,10 @@ class ComputeEqualsRun(unittest.TestCase):
         self.check("A3", ["--uniqueness", "10", "--gap-interp", "on", "--paths", "0,45,90"],
                    uniqueness=10, gap_interp=True, paths=[0, 45, 90])
 
+    def test_linear_gap_fill(self):
+        # The linear gap fill as a keyword's text value, on the left-right check's invalid runs.
+        self.check("C3", ["--gap-interp", "linear", "--subpixel-bits", "4"], gap_interp="linear", subpixel_bits=4)
+
     def test_colour_arrays_convert_as_files_do(self):
         # A BGR array (cv2.imread's layout) gives the gray image the file gives.
         gray = fpstereo.load_gray(LEFT)
