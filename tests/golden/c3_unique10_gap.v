@@ -3086,8 +3086,8 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
     if (W < 1 || W >= (1 << X_W) || WORD_W < 2 || (P != 1 && P != 2 && P != 4) || W % P != 0 ||
-        (LINEAR != 0 && LINEAR != 1) || UNIT_LOG < 0) begin : invalid
-      fps_census7_d128u32_79bc18_invalid_parameters_gap_fill_needs_X_W_holding_W_WORD_W_at_least_2_W_a_multiple_of_P_LINEAR_0_or_1 failed ();
+        (LINEAR != 0 && LINEAR != 1) || UNIT_LOG < 0 || (LINEAR == 1 && X_W < 5)) begin : invalid
+      fps_census7_d128u32_79bc18_invalid_parameters_gap_fill_needs_X_W_holding_W_WORD_W_at_least_2_W_a_multiple_of_P_LINEAR_0_or_1_with_X_W_5 failed ();
     end
   endgenerate
   localparam LOG_P = $clog2(P);
@@ -3329,12 +3329,14 @@ module fps_census7_d128u32_79bc18_gap_fill #(
       always @(posedge clk)
         if (adv && event1) left_pixel <= last_valid_pixel(left_pixel, word1, P, x1);
 
-      // Steps 4 (the operands), 5 (products, span, difference), 6 (numerator, the rule), then the
-      // divider, whose last stage writes the output word.
+      // Steps 4 (the operands), 5 (products, span, difference), 6 (numerator, the rule's compare),
+      // then the divider, whose first stage registers the rule's outcome and whose last one writes
+      // the output word.
       localparam NUM_W = DISP_W + X_W;  // the numerator is below 2^DISP_W m: so is the quotient
-      localparam CMP_W = DISP_W + X_W + UNIT_LOG + 6;  // 8 |R - L| and (32 + m) 2^UNIT_LOG
+      // 8 |R - L| (below 2^(DISP_W+3)) and (32 + m) 2^UNIT_LOG (below 2^(X_W+1+UNIT_LOG)), a bit to spare
+      localparam CMP_W = (DISP_W + 3 > X_W + 1 + UNIT_LOG ? DISP_W + 3 : X_W + 1 + UNIT_LOG) + 1;
       localparam DELAY = DISP_W + 2;  // steps from stage 3 to the output
-      localparam [X_W+5:0] REACH_BASE = 32;  // 4 pixels in eighths
+      localparam [X_W:0] REACH_BASE = 32;  // 4 pixels in eighths (X_W >= 5)
       reg [DELAY-1:0]     events;
       reg [DELAY*X_W-1:0] xs;
       reg [DELAY*Y_W-1:0] ys;
@@ -3378,7 +3380,7 @@ module fps_census7_d128u32_79bc18_gap_fill #(
         reg [WORD_W-1:0] result5;
         reg [NUM_W-1:0]  left_part5, right_part5;  // L (xr - x), R (x - xl)
         reg [X_W-1:0]    span5;                    // m
-        reg [X_W+5:0]    reach5;                   // 32 + m
+        reg [X_W:0]      reach5;                   // 32 + m
         reg [DISP_W-1:0] difference5;              // |R - L|
         wire [NUM_W-1:0] left_wide = {{X_W{1'b0}}, left4}, right_wide = {{X_W{1'b0}}, right4};
         wire [NUM_W-1:0] left_step_wide = {{DISP_W{1'b0}}, left_step4};
@@ -3390,19 +3392,20 @@ module fps_census7_d128u32_79bc18_gap_fill #(
             left_part5 <= left_wide * right_step_wide;
             right_part5 <= right_wide * left_step_wide;
             span5 <= left_step4 + right_step4;
-            reach5 <= {6'd0, left_step4} + {6'd0, right_step4} + REACH_BASE;
+            reach5 <= {1'b0, left_step4} + {1'b0, right_step4} + REACH_BASE;
             difference5 <= right4 > left4 ? right4 - left4 : left4 - right4;
           end
         wire [CMP_W-1:0] difference_wide = {{(CMP_W-DISP_W){1'b0}}, difference5};
-        wire [CMP_W-1:0] reach_wide = {{(CMP_W-X_W-6){1'b0}}, reach5};
-        // step 6
-        reg              linear6;
+        wire [CMP_W-1:0] reach_wide = {{(CMP_W-X_W-1){1'b0}}, reach5};
+        // step 6 (the compare alone: with the flag beside it, one level more than the project's 6)
+        reg              between6, close6;
         reg [WORD_W-1:0] result6;
         reg [X_W-1:0]    span6;
         reg [NUM_W:0]    numerator6;
         always @(posedge clk)
           if (adv) begin
-            linear6 <= between5 && (difference_wide << 3) <= (reach_wide << UNIT_LOG);
+            between6 <= between5;
+            close6 <= (difference_wide << 3) <= (reach_wide << UNIT_LOG);
             result6 <= result5;
             span6 <= span5;
             numerator6 <= {1'b0, left_part5} + {1'b0, right_part5} + {{(NUM_W+2-X_W){1'b0}}, span5[X_W-1:1]};
@@ -3417,7 +3420,7 @@ module fps_census7_d128u32_79bc18_gap_fill #(
         assign remainders[NUM_W:0] = numerator6;
         assign quotients[DISP_W-1:0] = {DISP_W{1'b0}};
         assign spans[X_W-1:0] = span6;
-        assign linears[0] = linear6;
+        assign linears[0] = between6 && close6;
         assign results_in[WORD_W-1:0] = result6;
         genvar j;
         for (j = 0; j < DISP_W; j = j + 1) begin : divide
