@@ -451,8 +451,8 @@ DispMap median_filter(const DispMap& in, int side) {
 }
 
 // Section 7: fill each maximal invalid run of a row from the valid pixels bounding it; with
-// `linear`, runs whose bounding values are close along a straight line between them (`unit`
-// values a pixel).
+// `linear`, a run whose bounding values are close is filled along the straight line between
+// them (`unit` values a pixel).
 void gap_interpolate(DispMap& disp, bool linear, int64_t unit) {
   for (int y = 0; y < disp.height; ++y) {
     int x = 0;

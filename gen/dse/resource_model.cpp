@@ -317,8 +317,8 @@ double speckle_registers(const rtl::RtlDesign& d) {
 double linear_gap_registers(const rtl::RtlDesign& d) {
   if (!d.cfg.gap_linear) return 0;
   const double word = d.widths.output_word, disparity = word - 1, x = d.x_bits, numerator = disparity + x;
-  const double operands = (1 + word + 2 * disparity + 2 * x) + (1 + word + 2 * numerator + x + (x + 6) + disparity) +
-                          (1 + word + x + numerator + 1);
+  const double operands = (1 + word + 2 * disparity + 2 * x) + (1 + word + 2 * numerator + x + (x + 1) + disparity) +
+                          (2 + word + x + numerator + 1);
   const double divider = (disparity - 1) * ((numerator + 1) + disparity + x + 1 + word);
   return d.strips * (operands + divider + 2 * x) + x + (disparity + 2) * (1 + x + d.y_bits);
 }
