@@ -230,11 +230,14 @@ TEST_CASE("paths: 180 is a fifth path, 'all' stays the four raster-order ones", 
   CHECK(a5.paths == unsigned(kEveryPath));
   CHECK(a5.speckle_size == 100);
   CHECK(a5.fused_weight == 4);
+  CHECK(a5.gap_linear);
   a5.paths = kAllPaths;
   CHECK(a5 == preset("A6"));  // A6 is A5 without the 180-degree path
   a5.speckle_size = 0;
   a5.fused_weight = 0;
   a5.fused_trunc = preset("A4").fused_trunc;
+  a5.gap_interpolation = false;
+  a5.gap_linear = false;
   CHECK(a5 == preset("A4"));
   set_param(c, "paths", "0,180");
   c.mgm = true;
