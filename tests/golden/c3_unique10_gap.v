@@ -3258,10 +3258,12 @@ module fps_census7_d128u32_79bc18_gap_fill #(
         .re(adv), .raddr(pixel_address(parity1, start1)), .rdata({right_pixel2, right2}));
     end
   endgenerate
-  // Whether the slot's last run is the row end's (no right neighbour).
+  // Whether the slot's last run is the row end's (no right neighbour): where that matters the
+  // slot's last word is invalid, so it is whether the slot holds a pixel of the row end's run. From
+  // registers, not from the RAM's read word: a compare behind a RAM's output is a level deeper.
   reg to_end2;
   always @(posedge clk)
-    if (adv) to_end2 <= tail_open[parity1] && start1 == tail_start[parity1*X_W +: X_W];
+    if (adv) to_end2 <= tail_open[parity1] && x1 >= (tail_start[parity1*X_W +: X_W] >> LOG_P);
 
   // Each word's nearest valid words in the slot: to its left (or before the slot, `left`) and to
   // its right (INVALID: none in the slot).
@@ -3295,6 +3297,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   // ---- Stage 3: the results.
   wire [WORD_W-1:0] far = to_end2 ? INVALID : right2;  // the slot's last run's right neighbour
   wire [P*WORD_W-1:0] results;
+  /* verilator lint_off UNUSEDSIGNAL */  // read with LINEAR only
+  wire [P*WORD_W-1:0] rights;  // each word's right neighbour (INVALID: none)
+  /* verilator lint_on UNUSEDSIGNAL */
   generate
     for (q = 0; q < P; q = q + 1) begin : result
       wire [WORD_W-1:0] word = word2[q*WORD_W +: WORD_W], left_word = left2[q*WORD_W +: WORD_W];
@@ -3303,18 +3308,38 @@ module fps_census7_d128u32_79bc18_gap_fill #(
       wire left_ok = !left_word[WORD_W-1], right_ok = !right_word[WORD_W-1];
       wire [WORD_W-1:0] filled = (left_ok && right_ok) ? (right_word < left_word ? right_word : left_word)
                                : left_ok ? left_word : right_word;
+      assign rights[q*WORD_W +: WORD_W] = right_word;
       assign results[q*WORD_W +: WORD_W] = word[WORD_W-1] ? filled : word;
     end
+  endgenerate
+  // The position leaves with the word: at once, or with LINEAR after the divider's DISP_W + 2
+  // steps (its flag cleared by restart).
+  wire           event3;
+  wire [X_W-1:0] x3;
+  wire [Y_W-1:0] y3;
+  generate
+    if (LINEAR == 0) begin : at_once
+      assign {event3, x3, y3} = {event2, x2, y2};
+    end else begin : after_fill
+      localparam FILL_STEPS = DISP_W + 2;
+      fps_census7_d128u32_79bc18_delay #(.WIDTH(1), .DEPTH(FILL_STEPS), .RESET(1)) event_line (
+        .clk(clk), .rst(restart), .en(adv), .in(event2), .out(event3));
+      fps_census7_d128u32_79bc18_delay #(.WIDTH(X_W + Y_W), .DEPTH(FILL_STEPS), .RESET(0)) position_line (
+        .clk(clk), .rst(restart), .en(adv), .in({x2, y2}), .out({x3, y3}));
+    end
+  endgenerate
+  always @(posedge clk)
+    if (restart) out_event <= 1'b0;
+    else if (adv) out_event <= event3;
+  always @(posedge clk)
+    if (adv) begin
+      out_x <= x3;
+      out_y <= y3;
+    end
+  generate
     if (LINEAR == 0) begin : smaller_end
       always @(posedge clk)
-        if (restart) out_event <= 1'b0;
-        else if (adv) out_event <= event2;
-      always @(posedge clk)
-        if (adv) begin
-          out_x <= x2;
-          out_y <= y2;
-          out_word <= results;
-        end
+        if (adv) out_word <= results;
     end else begin : linear
       // The pixels of the valid words around each word, read beside the words (stage 2).
       reg [X_W-1:0]   left_pixel;  // of `left`
@@ -3335,31 +3360,12 @@ module fps_census7_d128u32_79bc18_gap_fill #(
       localparam NUM_W = DISP_W + X_W;  // the numerator is below 2^DISP_W m: so is the quotient
       // 8 |R - L| (below 2^(DISP_W+3)) and (32 + m) 2^UNIT_LOG (below 2^(X_W+1+UNIT_LOG)), a bit to spare
       localparam CMP_W = (DISP_W + 3 > X_W + 1 + UNIT_LOG ? DISP_W + 3 : X_W + 1 + UNIT_LOG) + 1;
-      localparam DELAY = DISP_W + 2;  // steps from stage 3 to the output
       localparam [X_W:0] REACH_BASE = 32;  // 4 pixels in eighths (X_W >= 5)
-      reg [DELAY-1:0]     events;
-      reg [DELAY*X_W-1:0] xs;
-      reg [DELAY*Y_W-1:0] ys;
-      always @(posedge clk)
-        if (restart) begin
-          events <= {DELAY{1'b0}};
-          out_event <= 1'b0;
-        end else if (adv) begin
-          events <= {events[DELAY-2:0], event2};
-          out_event <= events[DELAY-1];
-        end
-      always @(posedge clk)
-        if (adv) begin
-          xs <= {xs[(DELAY-1)*X_W-1:0], x2};
-          ys <= {ys[(DELAY-1)*Y_W-1:0], y2};
-          out_x <= xs[(DELAY-1)*X_W +: X_W];
-          out_y <= ys[(DELAY-1)*Y_W +: Y_W];
-        end
       for (q = 0; q < P; q = q + 1) begin : fill
         wire [WORD_W-1:0] word = word2[q*WORD_W +: WORD_W], left_word = left2[q*WORD_W +: WORD_W];
-        wire [WORD_W-1:0] near = near2[q*WORD_W +: WORD_W];
-        wire [WORD_W-1:0] right_word = near[WORD_W-1] ? far : near;
-        wire [X_W-1:0]    right_pixel = near[WORD_W-1] ? right_pixel2 : near_pixels2[q*X_W +: X_W];
+        wire [WORD_W-1:0] right_word = rights[q*WORD_W +: WORD_W];
+        wire              near_none = near2[q*WORD_W + WORD_W - 1];  // the right neighbour is `far`
+        wire [X_W-1:0]    right_pixel = near_none ? right_pixel2 : near_pixels2[q*X_W +: X_W];
         wire [X_W-1:0]    here = pixel_of(x2, q);
         // step 4
         reg              between4;  // invalid, valid words on both sides
