@@ -3078,9 +3078,9 @@ module fps_census7_d128u32_79bc18_gap_fill #(
   input  wire [X_W-1:0]    in_x,
   input  wire [Y_W-1:0]    in_y,
   input  wire [P*WORD_W-1:0] in_word,
-  output reg               out_event,
-  output reg  [X_W-1:0]    out_x,
-  output reg  [Y_W-1:0]    out_y,
+  output wire              out_event,
+  output wire [X_W-1:0]    out_x,
+  output wire [Y_W-1:0]    out_y,
   output reg  [P*WORD_W-1:0] out_word
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
@@ -3312,30 +3312,13 @@ module fps_census7_d128u32_79bc18_gap_fill #(
       assign results[q*WORD_W +: WORD_W] = word[WORD_W-1] ? filled : word;
     end
   endgenerate
-  // The position leaves with the word: at once, or with LINEAR after the divider's DISP_W + 2
-  // steps (its flag cleared by restart).
-  wire           event3;
-  wire [X_W-1:0] x3;
-  wire [Y_W-1:0] y3;
-  generate
-    if (LINEAR == 0) begin : at_once
-      assign {event3, x3, y3} = {event2, x2, y2};
-    end else begin : after_fill
-      localparam FILL_STEPS = DISP_W + 2;
-      fps_census7_d128u32_79bc18_delay #(.WIDTH(1), .DEPTH(FILL_STEPS), .RESET(1)) event_line (
-        .clk(clk), .rst(restart), .en(adv), .in(event2), .out(event3));
-      fps_census7_d128u32_79bc18_delay #(.WIDTH(X_W + Y_W), .DEPTH(FILL_STEPS), .RESET(0)) position_line (
-        .clk(clk), .rst(restart), .en(adv), .in({x2, y2}), .out({x3, y3}));
-    end
-  endgenerate
-  always @(posedge clk)
-    if (restart) out_event <= 1'b0;
-    else if (adv) out_event <= event3;
-  always @(posedge clk)
-    if (adv) begin
-      out_x <= x3;
-      out_y <= y3;
-    end
+  // The position leaves with the word: a step after stage 2, with LINEAR after the divider's
+  // DISP_W + 2 steps too (the event flag cleared by restart).
+  localparam OUT_STEPS = LINEAR == 1 ? DISP_W + 3 : 1;
+  fps_census7_d128u32_79bc18_delay #(.WIDTH(1), .DEPTH(OUT_STEPS), .RESET(1)) event_line (
+    .clk(clk), .rst(restart), .en(adv), .in(event2), .out(out_event));
+  fps_census7_d128u32_79bc18_delay #(.WIDTH(X_W + Y_W), .DEPTH(OUT_STEPS), .RESET(0)) position_line (
+    .clk(clk), .rst(restart), .en(adv), .in({x2, y2}), .out({out_x, out_y}));
   generate
     if (LINEAR == 0) begin : smaller_end
       always @(posedge clk)

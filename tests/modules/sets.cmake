@@ -82,20 +82,19 @@ modtb_set(speckle speckle_w24_s1_r1 TOP fpstereo_speckle SOURCES fpstereo_speckl
           PARAMS W=24 S=1 R=1 WORD_W=6)
 # Gap interpolation at one, two and four words a slot (docs/ppc-hardware.md): run-time widths of
 # whole slots up to W.
-modtb_set(gap_fill gap_fill_w16_p1 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+set(MODTB_GAP_SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v fpstereo_delay.v)
+modtb_set(gap_fill gap_fill_w16_p1 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=16 WORD_W=8 X_W=5 Y_W=6 P=1)
-modtb_set(gap_fill gap_fill_w24_p2 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+modtb_set(gap_fill gap_fill_w24_p2 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=24 WORD_W=9 X_W=5 Y_W=6 P=2)
-modtb_set(gap_fill gap_fill_w32_p4 TOP fpstereo_gap_fill SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v
+modtb_set(gap_fill gap_fill_w32_p4 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=32 WORD_W=6 X_W=6 Y_W=6 P=4)
-# The linear fill: whole pixels and sixteenths, one, two and four words a slot (its positions wait
-# for the divider in fpstereo_delay lines).
-set(MODTB_LINEAR_GAP_SOURCES fpstereo_gap_fill.v fpstereo_ram_sdp.v fpstereo_delay.v)
-modtb_set(gap_fill gap_fill_linear_w16_p1 TOP fpstereo_gap_fill SOURCES ${MODTB_LINEAR_GAP_SOURCES}
+# The linear fill: whole pixels and sixteenths, one, two and four words a slot.
+modtb_set(gap_fill gap_fill_linear_w16_p1 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=16 WORD_W=8 X_W=5 Y_W=6 P=1 LINEAR=1 UNIT_LOG=0)
-modtb_set(gap_fill gap_fill_linear_w24_p2 TOP fpstereo_gap_fill SOURCES ${MODTB_LINEAR_GAP_SOURCES}
+modtb_set(gap_fill gap_fill_linear_w24_p2 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=24 WORD_W=12 X_W=5 Y_W=6 P=2 LINEAR=1 UNIT_LOG=4)
-modtb_set(gap_fill gap_fill_linear_w32_p4 TOP fpstereo_gap_fill SOURCES ${MODTB_LINEAR_GAP_SOURCES}
+modtb_set(gap_fill gap_fill_linear_w32_p4 TOP fpstereo_gap_fill SOURCES ${MODTB_GAP_SOURCES}
           PARAMS W=32 WORD_W=6 X_W=6 Y_W=6 P=4 LINEAR=1 UNIT_LOG=1)
 # Strips of aggregation (docs/ppc-hardware.md): two strips of one chain's latency; four, the last
 # one narrower than the others; two at uf 32 (K = 6) with the 0 and 135-degree paths only.
