@@ -86,6 +86,25 @@ template <class C>
 using CostWord = ap_uint<C::kUf * C::kCostBits + C::kPenaltyBits>;  // uf costs, disparity g * uf + lane
 template <class C>
 using PathWord = ap_uint<C::kUf * C::kPathCostBits>;
+// With the 180-degree path (C::kPaths bit 4) the aggregation's chains read each cost word with the
+// pixel's 180-degree path costs beside it (right_to_left); without it, the cost word alone.
+template <class C>
+constexpr bool kRightToLeft = (C::kPaths & 16u) != 0;
+template <class C>
+struct CostWithPath {
+  CostWord<C> cost;
+  PathWord<C> path;  // L_180 of the word's uf disparities
+};
+template <class C>
+using ChainWord = std::conditional_t<kRightToLeft<C>, CostWithPath<C>, CostWord<C>>;
+template <class C>
+const CostWord<C>& cost_of(const CostWord<C>& word) {
+  return word;
+}
+template <class C>
+const CostWord<C>& cost_of(const CostWithPath<C>& word) {
+  return word.cost;
+}
 template <class C>
 using SumWord = ap_uint<C::kUf * C::kSumBits>;
 template <class C>
@@ -529,6 +548,9 @@ struct Chains {
   explicit Chains(int width) : half((width + 1) / 2), slots(2 * ((width + 1) / 2)) {}
   int chain(int slot) const { return slot & 1; }
   int x(int slot) const { return chain(slot) * half + slot / 2; }
+  // The same slots from the row's end (right_to_left): chain 0 on the right half, from x = 2h - 1
+  // (a bubble when W is odd) down, chain 1 on the left half.
+  int mirrored_x(int slot) const { return slots - 1 - x(slot); }
   // Steps a chain-order loop to its next iteration: group g of slot `slot` in row-time t.
   void advance(int groups, int& g, int& slot, int& t) const {
     if (++g == groups) {
@@ -543,11 +565,11 @@ struct Chains {
 
 // Costs from raster order to chain order, one row-time behind: row t's pixels are kept (bank
 // t mod 2) for the first chain now and the second chain in the next row-time.
-template <class C>
-void to_chain_order(hls::stream<CostWord<C>>& in, hls::stream<CostWord<C>>& out, int width, int height) {
+template <class C, class T>
+void to_chain_order(hls::stream<T>& in, hls::stream<T>& out, int width, int height) {
   constexpr int G = C::kGroups;
   const Chains chains(width);
-  CostWord<C> banks[2][C::kMaxWidth * G];
+  T banks[2][C::kMaxWidth * G];
 #pragma HLS ARRAY_PARTITION variable = banks complete dim = 1
 #pragma HLS DEPENDENCE variable = banks inter false
   int t = 0, slot = 0, g = 0;
@@ -583,6 +605,23 @@ from_chain_groups:
   }
 }
 
+// One word of a path whose predecessor is the chain's previous pixel (0 and 180 degrees), from
+// that pixel's last G + 1 words (own, newest first; pushed) and minimum (pred_min; replaced by
+// this pixel's after its last group, running_min collecting it over the groups).
+template <class C>
+PathWord<C> chain_path_word(const CostWord<C>& cost_word, int g, bool has_pred, PathWord<C> own[C::kGroups + 1],
+                            int& pred_min, int& running_min, int p1, int p2, int sum[C::kUf]) {
+  constexpr int G = C::kGroups;
+  int word_min = 0;
+  const PathWord<C> word = path_word<C>(cost_word, g, has_pred, own[G], own[G - 1], own[G >= 2 ? G - 2 : 0],
+                                        pred_min, p1, p2, sum, word_min);
+  running_min = g == 0 || word_min < running_min ? word_min : running_min;
+  for (int k = G; k > 0; --k) own[k] = own[k - 1];
+  own[0] = word;
+  if (g == G - 1) pred_min = running_min;
+  return word;
+}
+
 // The path costs in chain order. The rows above (45, 90, 135 degrees: dx = -1, 0, +1) are packed
 // rows in block RAM, W * G words of uf path costs per path, ping-pong by row parity (the two chains
 // work on two rows), with the per-pixel minima beside them; a read never meets a write of the same
@@ -590,7 +629,7 @@ from_chain_groups:
 // last G + 1 words and its minimum) belongs to the row, so it is kept per row parity: the second
 // chain takes over the row where the first one stopped a row-time earlier.
 template <class C, int kInstance>
-void aggregate_chains(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height,
+void aggregate_chains(hls::stream<ChainWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height,
                       int p1, int p2) {
   constexpr int G = C::kGroups, U = C::kUf;
   constexpr int kUpperDx[3] = {-1, 0, 1};
@@ -628,7 +667,8 @@ aggregate_groups:
     const int x = chains.x(slot), row = t - chains.chain(slot);
     if (row >= 0 && row < height && x < width) {
       const int parity = row & 1;
-      const CostWord<C> cost_word = costs.read();
+      const ChainWord<C> chain_word = costs.read();
+      const CostWord<C>& cost_word = cost_of<C>(chain_word);
       // P2 on the four paths: the base instance's adaptive penalties, or the register.
       int path_p2[4];
       for (int p = 0; p < 4; ++p)
@@ -638,18 +678,12 @@ aggregate_groups:
                          : p2;
       int sum[U];
       for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
+      if constexpr (kRightToLeft<C>)
+        for (int lane = 0; lane < U; ++lane) sum[lane] = lane_of<C>(chain_word.path, lane);
 
-      if (kPath0) {
-        PathWord<C>* own = left_words[parity];
-        int word_min = 0;
-        const PathWord<C> word =
-            path_word<C>(cost_word, g, x > 0, own[G], own[G - 1], own[G >= 2 ? G - 2 : 0], left_min[parity],
-                         p1, path_p2[0], sum, word_min);
-        running_min[0] = g == 0 || word_min < running_min[0] ? word_min : running_min[0];
-        for (int k = G; k > 0; --k) own[k] = own[k - 1];
-        own[0] = word;
-        if (g == G - 1) left_min[parity] = running_min[0];
-      }
+      if (kPath0)
+        chain_path_word<C>(cost_word, g, x > 0, left_words[parity], left_min[parity], running_min[0], p1,
+                           path_p2[0], sum);
 
       for (int p = 0; p < 3; ++p) {
         if (!(C::kPaths & kUpperMask[p])) continue;
@@ -675,14 +709,84 @@ aggregate_groups:
   }
 }
 
+// Section 3, the 180-degree path: L(x, y) against (x + 1, y), from each row's last pixel to its
+// first once the row's costs are all in. P2 of the pair (x, x + 1) is the 0-degree P2 of x + 1
+// (the same two intensities), which the chain's previous pixel carried. The chains of
+// aggregate_chains, mirrored (Chains::mirrored_x): in row-time t, chain k works on row t - 1 - k,
+// chain 1 taking the row over where chain 0 stopped a row-time earlier, so a pixel's predecessor
+// is finished G + 1 iterations before it. Row t is kept (cost bank t mod 4) as it arrives; row
+// t - 3, which chain 1 finished in row-time t - 1, leaves in raster order, each cost word with its
+// L_180 (path bank (t - 3) mod 3). Three row-times of delay, four rows of cost words and three of
+// path words.
+template <class C, int kInstance>
+void right_to_left(hls::stream<CostWord<C>>& in, hls::stream<CostWithPath<C>>& out, int width, int height,
+                   int p1, int p2) {
+  constexpr int G = C::kGroups, U = C::kUf, kCostsBits = U * C::kCostBits;
+  constexpr int kCostRows = 4, kPathRows = 3, kDelay = 3;
+  p2 = clamp_int(p2, 0, C::kP2);
+  p1 = clamp_int(p1, 0, p2);
+  const Chains chains(width);
+  CostWord<C> costs[kCostRows][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = costs complete dim = 1
+#pragma HLS DEPENDENCE variable = costs inter false
+  PathWord<C> paths[kPathRows][C::kMaxWidth * G];
+#pragma HLS ARRAY_PARTITION variable = paths complete dim = 1
+#pragma HLS DEPENDENCE variable = paths inter false
+  // Per row parity, as aggregate_chains' 0-degree state: the previous pixel's last G + 1 words
+  // (newest first), its minimum and its 0-degree P2.
+  PathWord<C> right_words[2][G + 1];
+  int right_min[2] = {}, right_p2[2] = {};
+#pragma HLS ARRAY_PARTITION variable = right_words complete dim = 0
+#pragma HLS ARRAY_PARTITION variable = right_min complete
+#pragma HLS ARRAY_PARTITION variable = right_p2 complete
+#pragma HLS DEPENDENCE variable = right_words inter true distance = G + 1
+#pragma HLS DEPENDENCE variable = right_min inter true distance = G + 1
+#pragma HLS DEPENDENCE variable = right_p2 inter true distance = G + 1
+  int running_min = 0;
+
+  int t = 0, slot = 0, g = 0;
+right_to_left_groups:
+  for (int i = 0; i < (height + kDelay) * chains.slots * G; ++i) {
+#pragma HLS PIPELINE II = 1
+#pragma HLS LOOP_TRIPCOUNT max = (C::kMaxHeight + 3) * (C::kMaxWidth + 1) * C::kGroups
+    if (t < height && slot < width) costs[t % kCostRows][slot * G + g] = in.read();
+    const int x = chains.mirrored_x(slot), row = t - 1 - chains.chain(slot);
+    if (row >= 0 && row < height && x < width) {
+      const int parity = row & 1;
+      const CostWord<C> cost_word = costs[row % kCostRows][x * G + g];
+      const int pair_p2 = kInstance == 0 && C::kP2Adapt != 0 ? right_p2[parity] : p2;
+      int sum[U];  // not used: the forward chains add L_180 to their sums
+      for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
+      paths[row % kPathRows][x * G + g] = chain_path_word<C>(cost_word, g, x < width - 1, right_words[parity],
+                                                            right_min[parity], running_min, p1, pair_p2, sum);
+      if constexpr (kInstance == 0 && C::kP2Adapt != 0)
+        if (g == G - 1) right_p2[parity] = int(cost_word.range(kCostsBits + C::kPathCostBits - 1, kCostsBits));
+    }
+    const int out_row = t - kDelay;
+    if (out_row >= 0 && slot < width) {
+      CostWithPath<C> word;
+      word.cost = costs[out_row % kCostRows][slot * G + g];
+      word.path = paths[out_row % kPathRows][slot * G + g];
+      out.write(word);
+    }
+    chains.advance(G, g, slot, t);
+  }
+}
+
 // Section 3 as one block for the pipeline: raster costs in, raster sums out.
 template <class C, int kInstance>
 void aggregate(hls::stream<CostWord<C>>& costs, hls::stream<SumWord<C>>& sums, int width, int height, int p1,
                int p2) {
 #pragma HLS INLINE
-  hls::stream<CostWord<C>> chain_costs("chain_costs");
+  hls::stream<ChainWord<C>> chain_costs("chain_costs");
   hls::stream<SumWord<C>> chain_sums("chain_sums");
-  to_chain_order<C>(costs, chain_costs, width, height);
+  if constexpr (kRightToLeft<C>) {
+    hls::stream<CostWithPath<C>> with_paths("with_paths");
+    right_to_left<C, kInstance>(costs, with_paths, width, height, p1, p2);
+    to_chain_order<C>(with_paths, chain_costs, width, height);
+  } else {
+    to_chain_order<C>(costs, chain_costs, width, height);
+  }
   aggregate_chains<C, kInstance>(chain_costs, chain_sums, width, height, p1, p2);
   from_chain_order<C>(chain_sums, sums, width, height);
 }

@@ -398,7 +398,7 @@ TEST_CASE("a combination the hardware generators refuse is skipped with their re
   REQUIRE(configs.size() == 1);
   CHECK(configs[0].paths == unsigned(kAllPaths));
   REQUIRE(skipped.size() == 1);
-  CHECK(skipped[0].reason.find("the 180-degree path is not in the hardware generators yet") != std::string::npos);
+  CHECK(skipped[0].reason.find("the 180-degree path is not in the Verilog generator yet") != std::string::npos);
 }
 
 TEST_CASE("the axes enumerate in the old nested loops' order: cost outermost, uf fastest", "[dse]") {

@@ -132,7 +132,7 @@ std::string config_header(const rtl::Geometry& g, const std::string& config) {
      << "  static constexpr int kGroups = " << cfg.dmax / cfg.uf
      << ";  // dmax / uf: loop iterations per pixel\n"
      << "  static constexpr unsigned kPaths = " << cfg.paths
-     << ";  // bit 0: 0 degrees, 1: 45, 2: 90, 3: 135\n"
+     << ";  // bit 0: 0 degrees, 1: 45, 2: 90, 3: 135, 4: 180\n"
      << "  static constexpr int kP1 = " << cfg.p1 << ";  // register defaults\n"
      << "  static constexpr int kP2 = " << cfg.p2 << ";  // also the largest P2 the widths hold\n"
      << "  static constexpr int kP2Adapt = " << cfg.p2_adapt << ";  // adaptive P2's gain k, 0: constant P2\n"
@@ -207,7 +207,9 @@ std::vector<HlsFile> emit(const StereoConfig& cfg, const HlsOptions& options) {
   if (!(options.clock_mhz >= 10 && options.clock_mhz <= 1000))
     throw std::invalid_argument("--clock-mhz " + std::to_string(options.clock_mhz) + ": expected 10 .. 1000");
 
-  const rtl::RtlDesign design = rtl::plan(cfg);  // validates the configuration
+  rtl::RtlOptions for_hls;
+  for_hls.target = rtl::RtlOptions::Target::Hls;
+  const rtl::RtlDesign design = rtl::plan(cfg, for_hls);  // validates the configuration
   // The HLS kernels' loops take a pixel an iteration; their streams carry one pixel a beat.
   if (cfg.ppc != 1)
     throw ConfigError("ppc = " + std::to_string(cfg.ppc) +

@@ -26,7 +26,7 @@ std::pair<uint64_t, int> reciprocal(uint64_t divisor, uint64_t max_value) {
 }
 
 // The hardware's own rules beyond validate()'s.
-void check_hardware_rules(const StereoConfig& cfg) {
+void check_hardware_rules(const StereoConfig& cfg, RtlOptions::Target target) {
   validate(cfg);
   // One-pass MGM lost accuracy to SGM on every dataset (docs/accuracy.md, "MGM-style
   // aggregation"), so the aggregator keeps one predecessor per path.
@@ -41,10 +41,11 @@ void check_hardware_rules(const StereoConfig& cfg) {
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
     throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
                       std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
-  // The 180-degree path is specified in the models first (docs/semantics.md section 3).
-  if (cfg.paths & kPath180)
+  // The 180-degree path is in the models and the HLS kernels (right_to_left); the Verilog's plan
+  // is docs/path180-hardware.md.
+  if ((cfg.paths & kPath180) && target == RtlOptions::Target::Verilog)
     throw ConfigError("paths = " + paths_to_string(cfg.paths) +
-                      ": the 180-degree path is not in the hardware generators yet (the models have it); drop 180");
+                      ": the 180-degree path is not in the Verilog generator yet (the models and --emit hls have it); drop 180");
 }
 
 // LR2's match side in strips holds a row's prefix from the row's slot ceil((m + dmax - 1) / P)
@@ -70,7 +71,7 @@ int min_tree_latency(int n, int levels_per_stage) {
 }
 
 Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
-  check_hardware_rules(cfg);
+  check_hardware_rules(cfg, options.target);
   Geometry g;
   g.cfg = cfg;
   g.options = options;

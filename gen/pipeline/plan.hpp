@@ -19,6 +19,8 @@ namespace fpstereo::rtl {
 // Choices of the generated design that are not part of the stereo configuration.
 struct RtlOptions {
   bool control = true;  // AXI4-Lite control and status (otherwise the settings are fixed)
+  // The generator the plan is for: the HLS kernels have the 180-degree path, the Verilog not yet.
+  enum class Target { Verilog, Hls } target = Target::Verilog;
 };
 
 // Bits of the confidence (0..255) that rides above each word from the winner-take-all on.

@@ -68,6 +68,7 @@ class AggregationStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
+    if (d.cfg.paths & kPath180) throw std::logic_error("aggregation: no Verilog for the 180-degree path (an HLS plan)");
     if (d.strips > 1) return strips_verilog(d, core, streams);
     core.text("\n  // Aggregation in K interleaved chains, from step AGG_START.\n");
     start_flag(core, d, *this, "agg_on");
@@ -234,7 +235,8 @@ class AggregationStage : public Stage {
   }
 
   // ---- HLS: two interleaved chains (K = 2), between reorders into chain order and back, which
-  // delay the stream by a row-time.
+  // delay the stream by a row-time; with the 180-degree path, right_to_left's mirrored chains
+  // before them, three row-times more.
   std::string hls_calls(const RtlDesign&, HlsStreams& s) const override {
     const std::string costs = s.base;
     s.base = "sums";
@@ -242,10 +244,12 @@ class AggregationStage : public Stage {
            fmt::format("  aggregate<C, 0>({}, {}, W, H, p1, p2);\n", costs, s.base);
   }
   HlsLoop hls_loop(const Geometry& g) const override {
-    const int64_t W = g.cfg.width, H = g.cfg.height;
-    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf", (H + 1) * 2 * ((W + 1) / 2) * g.groups};
+    const int64_t W = g.cfg.width, H = g.cfg.height, slots = 2 * ((W + 1) / 2);
+    if (g.cfg.paths & kPath180)  // right_to_left's loop, the longer
+      return {"aggregation's 180-degree path (two mirrored chains)", "(H+3)*2*ceil(W/2)*dmax/uf", (H + 3) * slots * g.groups};
+    return {"aggregation (two interleaved chains)", "(H+1)*2*ceil(W/2)*dmax/uf", (H + 1) * slots * g.groups};
   }
-  int hls_fill_rows(const Geometry&) const override { return 1; }
+  int hls_fill_rows(const Geometry& g) const override { return g.cfg.paths & kPath180 ? 4 : 1; }
 };
 
 }  // namespace
