@@ -12,9 +12,9 @@
 # With --path180, the table of docs/accuracy.md, "Right-to-left path": A4 with the 180-degree path
 # added (and paths 0,90,180 and the 45/135 variants), without and with the speckle filter
 # (100, 2) and the fused cost, against MODE_HH4 without and with its own speckle filter.
-# With --gap, the table of docs/accuracy.md, "The linear gap fill": A6 and A5 with the linear gap
-# fill (the presets), with the smaller end's fill, and without gap interpolation, against MODE_HH4
-# without and with its own speckle filter.
+# With --gap, the table of docs/accuracy.md, "The linear gap fill": A6, A5 and A7 with the linear
+# gap fill (the presets), with the smaller end's fill, and without gap interpolation, against
+# MODE_HH4 without and with its own speckle filter.
 # Each cell comes from `fpstereo eval` (pixel counts pooled over the group's pairs); "filled" is
 # after KITTI background interpolation of invalid pixels.
 set -euo pipefail
@@ -101,7 +101,7 @@ fi
 
 if [ $gap = 1 ]; then
   methods=()
-  for preset in A6 A5; do
+  for preset in A6 A5 A7; do
     methods+=("$preset --gap-interp off" "$preset --gap-interp on" "$preset")
   done
   baselines=("hh4" "hh4 --sgbm-speckle-window 100 --sgbm-speckle-range 2")

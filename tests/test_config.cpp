@@ -225,7 +225,12 @@ TEST_CASE("paths: 180 is a fifth path, 'all' stays the four raster-order ones", 
   set_param(c, "paths", "all");
   CHECK(c.paths == unsigned(kAllPaths));
   CHECK(c.path_count() == 4);
-  for (const auto& name : preset_names()) CHECK(((preset(name).paths & kPath180) == 0 || name == "A5"));
+  for (const auto& name : preset_names())
+    CHECK(((preset(name).paths & kPath180) == 0 || name == "A5" || name == "A7"));
+  StereoConfig a7 = preset("A7");  // A5 with paths 0, 90, 180 in place of all five
+  CHECK(paths_to_string(a7.paths) == "0,90,180");
+  a7.paths = kEveryPath;
+  CHECK(a7 == preset("A5"));
   StereoConfig a5 = preset("A5");  // A4 and the options A5 adds, nothing else
   CHECK(a5.paths == unsigned(kEveryPath));
   CHECK(a5.speckle_size == 100);
