@@ -8,7 +8,7 @@
 // data-flow order:
 //
 //   read_pair ─ window (N) ─ transform ─ window (cost window) ─ cost
-//     ─ aggregate (to_chain_order ─ aggregate_chains ─ from_chain_order) ─ select
+//     ─ aggregate ([right_to_left ─] to_chain_order ─ aggregate_chains ─ from_chain_order) ─ select
 //     ─ [LR check] ─ [window (median) ─ median] ─ [gap fill] ─ write_words
 //   LR1: select also finds the match-side disparities from the base side's sums.
 //   LR2: match_costs (the base costs regrouped per match pixel) ─ aggregate ─ select_match.
@@ -678,7 +678,7 @@ aggregate_groups:
                          : p2;
       int sum[U];
       for (int lane = 0; lane < U; ++lane) sum[lane] = 0;
-      if constexpr (kRightToLeft<C>)
+      if constexpr (kRightToLeft<C>)  // the sums start from L_180
         for (int lane = 0; lane < U; ++lane) sum[lane] = lane_of<C>(chain_word.path, lane);
 
       if (kPath0)
