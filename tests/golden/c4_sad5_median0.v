@@ -1755,7 +1755,8 @@ endmodule
 // With several pixels per clock (docs/ppc-hardware.md) the row is cut into strips, one
 // aggregator each (fps_sad5_d128u32_baf239_strip_aggregation wires them): this one's pixels are X_BASE + k * SEGMENT + j, its
 // chain k works on row ta - CHAIN_BASE - k, and the edges carry what the strips' first and last
-// pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only).
+// pixels need from the neighbouring strips (STRIPS != 0, uf = dmax only). With MIRROR it runs the
+// 180-degree path (docs/path180-hardware.md): the 0-degree lanes on each row from its end.
 module fps_sad5_d128u32_baf239_aggregator #(
   // the largest image width (the path rows hold one row of it)
   parameter W = 64,
@@ -1797,7 +1798,12 @@ module fps_sad5_d128u32_baf239_aggregator #(
   // 1: one strip of several; X_BASE its first pixel, CHAIN_BASE the strips' chains to its left
   parameter STRIPS = 0,
   parameter X_BASE = 0,
-  parameter CHAIN_BASE = 0
+  parameter CHAIN_BASE = 0,
+  // 1: the 180-degree path, PATHS = 1 (the 0-degree lanes), cost words, no strips: chain k's pixel
+  // is frame_width - 1 - (k * SEGMENT + j), the path starts at the row's last pixel. With
+  // PENALTIES (the number of P2 fields in the word, the base side's, the 0-degree one first) the
+  // lanes take the 0-degree P2 of the chain's previous pixel x + 1: the same two intensities.
+  parameter MIRROR = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1861,11 +1867,14 @@ module fps_sad5_d128u32_baf239_aggregator #(
     if (PATHS < 1 || PATHS > 15) begin : invalid_PATHS
       fps_sad5_d128u32_baf239_invalid_parameters_aggregator_PATHS_is_not_a_nonempty_subset_of_4 failed ();
     end
-    if (PENALTIES != 0 && (MATCH_SIDE != 0 || PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2)) begin : invalid_PENALTIES
+    if (PENALTIES != 0 && (MATCH_SIDE != 0 || (MIRROR == 0 && PENALTIES != PATHS % 2 + (PATHS / 2) % 2 + (PATHS / 4) % 2 + (PATHS / 8) % 2))) begin : invalid_PENALTIES
       fps_sad5_d128u32_baf239_invalid_parameters_aggregator_PENALTIES_is_not_the_base_sides_number_of_PATHS failed ();
     end
-    if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && (X_BASE != 0 || CHAIN_BASE != 0)) || (STRIPS != 0 && G != 1)) begin : invalid_strip
+    if (X_BASE < 0 || X_BASE >= W || CHAIN_BASE < 0 || (STRIPS == 0 && X_BASE != 0) || (STRIPS != 0 && G != 1)) begin : invalid_strip
       fps_sad5_d128u32_baf239_invalid_parameters_aggregator_strips_need_G_1_and_X_BASE_within_W failed ();
+    end
+    if (MIRROR != 0 && (PATHS != 1 || STRIPS != 0 || CODES != 0)) begin : invalid_MIRROR
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_MIRROR_needs_PATHS_1_cost_words_and_no_strips failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -1963,11 +1972,16 @@ module fps_sad5_d128u32_baf239_aggregator #(
         end
       end
     end
-  // The step's pixel, a register fed like the read address.
+  // The step's pixel, a register fed like the read address: the chain's slot k * SEGMENT + j from
+  // the strip's first pixel, or with MIRROR from the row's last (beyond the frame when the slot
+  // is: the difference wraps to frame_width or more, since slots stay below 2^X_W).
   reg [X_W-1:0] x0;
+  wire [X_W-1:0] slot_a = ka_a * SEGMENT + ja_a;
+  wire [X_W-1:0] last_x = frame_width - 1'b1;
+  wire [X_W-1:0] x_a = MIRROR != 0 ? last_x - slot_a : X_FIRST + slot_a;
   always @(posedge clk)
-    if (restart) x0 <= X_FIRST;
-    else if (step) x0 <= X_FIRST + ka_a * SEGMENT + ja_a;
+    if (restart) x0 <= MIRROR != 0 ? last_x : X_FIRST;
+    else if (step) x0 <= x_a;
   // Chain ka's row is ta - CHAIN_BASE - ka: negative before the first frame's row 0, the previous
   // frame's once wrapped (the difference plus the frame's height).
   wire [Y_W:0]   lagged0 = {1'b0, ta} - CHAIN_BASE - {{(Y_W+1-K_W){1'b0}}, ka};
@@ -1975,13 +1989,16 @@ module fps_sad5_d128u32_baf239_aggregator #(
   localparam integer OUT_ROWS_UP = CHAIN_BASE == 0 ? OUT_ROWS : ((CHAIN_BASE + K) / OUT_ROWS + 1) * OUT_ROWS;
   wire [OUT_ROW_W-1:0] out_slot0 = (ta_out_slot + OUT_ROWS_UP - CHAIN_BASE - ka) % OUT_ROWS;
   wire [K_W-1:0] chain_slot0 = (ka + base) % K;
-  wire [COST_AW-1:0] raddr_a = CODES != 0 ? row_slot_a * ROW_SLOTS + ka_a * SEGMENT + ja_a
-                                            : (row_slot_a * ROW_SLOTS + ka_a * SEGMENT + ja_a) * G + ga_a;
+  // The RAM's column: the slot, or with MIRROR the pixel (0 where the slot is beyond the frame).
+  wire [X_W-1:0] column_a = MIRROR == 0 ? slot_a : slot_a < frame_width ? x_a : {X_W{1'b0}};
+  wire [COST_AW-1:0] raddr_a = CODES != 0 ? row_slot_a * ROW_SLOTS + column_a
+                                            : (row_slot_a * ROW_SLOTS + column_a) * G + ga_a;
   localparam integer FIRST_RADDR_I = FIRST_SLOT_I * ROW_SLOTS * (CODES != 0 ? 1 : G);
   localparam [COST_AW-1:0] FIRST_RADDR = FIRST_RADDR_I[COST_AW-1:0];
+  wire [COST_AW-1:0] first_raddr = MIRROR != 0 ? FIRST_RADDR + last_x * G : FIRST_RADDR;
   reg [COST_AW-1:0] raddr;
   always @(posedge clk)
-    if (restart) raddr <= FIRST_RADDR;
+    if (restart) raddr <= first_raddr;
     else if (step) raddr <= raddr_a;
   assign cost_raddr = raddr;
   assign cost_schedule = {ka == 0 && ja == 0, x0, ga};
@@ -2066,7 +2083,7 @@ module fps_sad5_d128u32_baf239_aggregator #(
   reg              first_group2, last_group2;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
   reg              first2;           // the strip's first pixel, whose 0 and 45-degree predecessors come from edge_in
-  reg              left_in2;         // x2 != 0
+  reg              left_in2;         // x2 has a 0-degree predecessor: x2 != 0, with MIRROR x2 != frame_width - 1
   reg              above_in2;        // row2 != 0
   reg  [1:0]       column_in2;       // x2 + dx < frame_width, dx = 0, 1
   /* verilator lint_on UNUSEDSIGNAL */
@@ -2082,7 +2099,7 @@ module fps_sad5_d128u32_baf239_aggregator #(
       first_group2 <= g1 == 0;
       last_group2 <= g1 == G - 1;
       first2 <= FROM_LEFT && x1 == X_FIRST;
-      left_in2 <= x1 != 0;
+      left_in2 <= MIRROR != 0 ? x1 != last_x : x1 != 0;
       above_in2 <= row1 != 0;
       column_in2 <= {{1'b0, x1} + 1'b1 < {1'b0, frame_width}, x1 < frame_width};
     end
@@ -2111,7 +2128,9 @@ module fps_sad5_d128u32_baf239_aggregator #(
 
   // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
+  /* verilator lint_off UNUSEDSIGNAL */  // with MIRROR, the P2 fields but the 0-degree one
   reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [UF*COST_W-1:0] cost2;
   always @(posedge clk)
     if (adv) cost_read2 <= cost_q;
@@ -2123,7 +2142,17 @@ module fps_sad5_d128u32_baf239_aggregator #(
   generate
     for (f = 0; f < 4; f = f + 1) begin : penalty
       localparam integer FIELD = (f > 0 ? PATHS % 2 : 0) + (f > 1 ? (PATHS / 2) % 2 : 0) + (f > 2 ? (PATHS / 4) % 2 : 0);
-      if (PENALTIES != 0 && (PATHS >> f) % 2 != 0) begin : adaptive
+      if (MIRROR != 0 && PENALTIES != 0 && f == 0) begin : of_previous_pixel
+        // The 0-degree field of the chain's previous pixel, kept by chain slot at its last group
+        // and read in S1 for S2 (the chain's next pixel comes K * G >= 2 steps later).
+        reg [PATH_W-1:0] kept [0:K-1];
+        reg [PATH_W-1:0] p2_2;
+        always @(posedge clk)
+          if (adv && last_group2) kept[chain2] <= cost_read2[UF*COST_W +: PATH_W];
+        always @(posedge clk)
+          if (adv) p2_2 <= kept[chain1];
+        assign p2_of[0 +: PATH_W] = p2_2;
+      end else if (PENALTIES != 0 && MIRROR == 0 && (PATHS >> f) % 2 != 0) begin : adaptive
         assign p2_of[f*PATH_W +: PATH_W] = cost_read2[UF*COST_W + FIELD*PATH_W +: PATH_W];
       end else begin : constant
         assign p2_of[f*PATH_W +: PATH_W] = p2;

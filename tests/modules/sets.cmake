@@ -177,3 +177,26 @@ modtb_set(strip_aggregation strip_aggregation_ram_p4 TOP fpstereo_strip_aggregat
           SOURCES ${MODTB_STRIP_CODES_SOURCES} fpstereo_strip_code_reorder.v
           PARAMS P=4 W=64 ROW_SLOTS=20 K=5 SEGMENT=4 UF=16 PATH_TREE_LAT=2 PATHS=15 X_W=7 COST_ROW_W=5
           SLOT_ROWS=60 SLOT_W=6 ${MODTB_STRIP_RAM_COMMON})
+# One aggregator (one strip) over a row of G groups: all four raster paths; three of them with
+# their P2 fields in the words; the 180-degree path (MIRROR) without and with the 0-degree P2
+# field, at G 4, 2 and 1 (K 5 for the minimum's latency).
+set(MODTB_AGGREGATOR_SOURCES fpstereo_aggregator.v fpstereo_delay.v fpstereo_frame_row.v fpstereo_ram_sdp.v
+    fpstereo_ram_async.v fpstereo_path_lanes.v fpstereo_path_minimum.v fpstereo_min_tree.v
+    fpstereo_reduction_tree.v fpstereo_unique_join.v)
+set(MODTB_AGGREGATOR_COMMON COST_W=5 COST_MAX=24 PATH_W=8 SUM_W=10 LEVELS_PER_STAGE=2 OUT_ROWS=16 OUT_ROW_W=4
+    COST_ROWS=16 COST_ROW_W=4 Y_W=5)
+modtb_set(aggregator aggregator_paths15_k2_g4 TOP fpstereo_aggregator SOURCES ${MODTB_AGGREGATOR_SOURCES}
+          PARAMS W=20 ROW_SLOTS=20 K=2 SEGMENT=10 G=4 UF=4 PATHS=15 PENALTIES=0 PATH_TREE_LAT=1 X_W=5 G_W=2 K_W=1
+          COST_AW=11 MIRROR=0 ${MODTB_AGGREGATOR_COMMON})
+modtb_set(aggregator aggregator_paths13_p2_fields_k3_g2 TOP fpstereo_aggregator SOURCES ${MODTB_AGGREGATOR_SOURCES}
+          PARAMS W=21 ROW_SLOTS=21 K=3 SEGMENT=7 G=2 UF=8 PATHS=13 PENALTIES=3 PATH_TREE_LAT=2 X_W=5 G_W=1 K_W=2
+          COST_AW=10 MIRROR=0 ${MODTB_AGGREGATOR_COMMON})
+modtb_set(aggregator aggregator_mirror_k2_g4 TOP fpstereo_aggregator SOURCES ${MODTB_AGGREGATOR_SOURCES}
+          PARAMS W=19 ROW_SLOTS=20 K=2 SEGMENT=10 G=4 UF=4 PATHS=1 PENALTIES=0 PATH_TREE_LAT=1 X_W=5 G_W=2 K_W=1
+          COST_AW=11 MIRROR=1 ${MODTB_AGGREGATOR_COMMON})
+modtb_set(aggregator aggregator_mirror_p2_fields_k3_g2 TOP fpstereo_aggregator SOURCES ${MODTB_AGGREGATOR_SOURCES}
+          PARAMS W=21 ROW_SLOTS=21 K=3 SEGMENT=7 G=2 UF=8 PATHS=1 PENALTIES=2 PATH_TREE_LAT=2 X_W=5 G_W=1 K_W=2
+          COST_AW=10 MIRROR=1 ${MODTB_AGGREGATOR_COMMON})
+modtb_set(aggregator aggregator_mirror_p2_field_k5_g1 TOP fpstereo_aggregator SOURCES ${MODTB_AGGREGATOR_SOURCES}
+          PARAMS W=20 ROW_SLOTS=20 K=5 SEGMENT=4 G=1 UF=16 PATHS=1 PENALTIES=1 PATH_TREE_LAT=2 X_W=5 G_W=1 K_W=3
+          COST_AW=9 MIRROR=1 ${MODTB_AGGREGATOR_COMMON})
