@@ -5,7 +5,9 @@
 // match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
 // cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
 // word of the match side reads all banks at one address.
-// From match_on on, completed_* writes Dm(x') of each match pixel.
+// From match_on on, completed_* writes Dm(x') of each match pixel. With RIGHT_TO_LEFT the match
+// side has the 180-degree path too (fpstereo_right_to_left on a second read of the banks), and its
+// forward chains run K + 2 row-times later, as the base side's.
 module fpstereo_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -34,7 +36,8 @@ module fpstereo_lr2_match #(
   parameter G_W = 2,
   parameter K_W = 1,
   parameter LANE_W = 3,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter RIGHT_TO_LEFT = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -61,14 +64,14 @@ module fpstereo_lr2_match #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DMAX != G * UF || COST_ROWS != K + 1) begin : invalid
-      fpstereo_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
+    if (DMAX != G * UF || COST_ROWS != (RIGHT_TO_LEFT != 0 ? 2 * K + 3 : K + 1)) begin : invalid
+      fpstereo_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows_2K_plus_3_with_RIGHT_TO_LEFT failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
-  wire [UF*COST_W-1:0] match_costs;
-  wire [COST_AW-1:0]   match_raddr;
+  wire [UF*COST_W-1:0] match_costs, mirror_costs;
+  wire [COST_AW-1:0]   match_raddr, mirror_raddr;
   // x - m - d as (x + AHEAD) - (d + BEHIND)
   localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
   localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
@@ -85,6 +88,39 @@ module fpstereo_lr2_match #(
         .waddr(waddr),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
+      // The 180-degree path's mirrored reads: a copy of the bank.
+      if (RIGHT_TO_LEFT != 0) begin : second
+        fpstereo_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+          .clk(clk), .we(adv && cost_valid && in_row), .waddr(waddr),
+          .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(mirror_raddr),
+          .rdata(mirror_costs[l*COST_W +: COST_W]));
+      end else begin : no_second
+        assign mirror_costs[l*COST_W +: COST_W] = {COST_W{1'b0}};
+      end
+    end
+  endgenerate
+  // The words the forward chains read: the costs, with the 180-degree path's above them.
+  wire [UF*COST_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] match_words;
+  generate
+    if (RIGHT_TO_LEFT != 0) begin : right_to_left
+      wire [UF*PATH_W-1:0] path180_q;
+      /* verilator lint_off PINCONNECTEMPTY */  // the costs come from the banks' copies
+      fpstereo_right_to_left #(
+        .W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF), .COST_W(COST_W),
+        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
+        .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W), .COST_ROWS(COST_ROWS),
+        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP), .COPY(0)
+      ) mirror (
+        .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+        .p1(p1), .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped),
+        .cost_valid(1'b0), .cost_x({X_W{1'b0}}), .cost_row_slot({COST_ROW_W{1'b0}}), .cost_group({G_W{1'b0}}),
+        .costs({UF*COST_W{1'b0}}), .mirror_q(mirror_costs), .mirror_raddr(mirror_raddr),
+        .path_raddr(match_raddr), .path_q(path180_q));
+      /* verilator lint_on PINCONNECTEMPTY */
+      assign match_words = {path180_q, match_costs};
+    end else begin : no_right_to_left
+      assign mirror_raddr = {COST_AW{1'b0}};
+      assign match_words = match_costs;
     end
   endgenerate
   wire [UF*SUM_W-1:0] sums;
@@ -106,10 +142,11 @@ module fpstereo_lr2_match #(
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP),
+                        .CHAIN_BASE(RIGHT_TO_LEFT != 0 ? K + 2 : 0), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
-    .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
+    .cost_q(match_words), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
     .sums_slot(slot), .edge_in(edges), .edge135_in(edges135), .edge_out(edges), .edge135_out(edges135));
   /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;

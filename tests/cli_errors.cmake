@@ -129,7 +129,9 @@ expect_error("right-view = on: needs a left-right check (lr = lr1 or lr2)" --rig
 expect_error("p2-adapt = 17: must be in 0 .. 16" --p2-adapt 17)
 expect_error("min-disp = -300: must be in -256 .. 256" --min-disp -300)
 expect_error("mgm = on: not in the hardware generators (the models have it)" --mgm on)
-expect_error("paths = 0,90,180: the 180-degree path is not in the Verilog generator yet (the models and --emit hls have it); drop 180" --paths 0,90,180)
+expect_error("paths = 0,180: the Verilog generator has the 180-degree path at ppc 1 so far" --paths 0,180 --ppc 2 --uf 128)
+expect_error("paths = 180: the Verilog generator needs a raster-order path beside the 180-degree one" --paths 180)
+expect_error("paths = 90,180: with p2-adapt the Verilog's 180-degree path takes the 0-degree path's P2: add 0" --paths 90,180 --p2-adapt 4)
 # Pixels per beat: the rules, and the HLS path's refusal (nothing written).
 expect_error("ppc = 3: expected 1, 2 or 4" --ppc 3 --uf 128)
 expect_error("ppc = 2: needs uf = dmax (uf 32, dmax 128)" --ppc 2)

@@ -43,9 +43,15 @@ void check_hardware_rules(const StereoConfig& cfg, RtlOptions::Target target) {
                       std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
   // The 180-degree path is in the models and the HLS kernels (right_to_left); the Verilog's plan
   // is docs/path180-hardware.md.
-  if ((cfg.paths & kPath180) && target == RtlOptions::Target::Verilog)
-    throw ConfigError("paths = " + paths_to_string(cfg.paths) +
-                      ": the 180-degree path is not in the Verilog generator yet (the models and --emit hls have it); drop 180");
+  if ((cfg.paths & kPath180) && target == RtlOptions::Target::Verilog) {
+    const std::string paths = "paths = " + paths_to_string(cfg.paths) + ": ";
+    if (cfg.ppc != 1)
+      throw ConfigError(paths + "the Verilog generator has the 180-degree path at ppc 1 so far (the models have it at any ppc); drop 180");
+    if ((cfg.paths & kAllPaths) == 0)
+      throw ConfigError(paths + "the Verilog generator needs a raster-order path beside the 180-degree one");
+    if (cfg.p2_adapt != 0 && !(cfg.paths & kPath0))
+      throw ConfigError(paths + "with p2-adapt the Verilog's 180-degree path takes the 0-degree path's P2: add 0");
+  }
 }
 
 // LR2's match side in strips holds a row's prefix from the row's slot ceil((m + dmax - 1) / P)
@@ -151,7 +157,13 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   // In strips a row is read once every strip has finished it, its match side's Dm with it: the
   // reads wait no rows more for the check.
   g.lr_rows = cfg.lr == LrCheck::None || g.strips > 1 ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
-  g.cost_rows = g.chains + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
+  // With the 180-degree path the forward chains run K + 2 row-times later (docs/path180-hardware.md):
+  // the writes' row, the mirrored chains' K and the forward chains' K, and one row-time for the
+  // mirrored pipeline's last writes.
+  g.right_to_left = (cfg.paths & kPath180) != 0;
+  g.raster_paths = cfg.paths & kAllPaths;
+  g.raster_path_count = cfg.path_count() - (g.right_to_left ? 1 : 0);
+  g.cost_rows = (g.right_to_left ? 2 * g.chains + 2 : g.chains) + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
   g.out_rows = g.chains + 1 + g.lr_rows;
   if (g.strips > 1) {
     // The strips' RAMs: strip s's code RAM (s + 1) * K rows, its disparity RAM (P - s) * K + 1;
@@ -164,11 +176,12 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   g.carries_whole = cfg.subpixel_bits != 0 && cfg.lr != LrCheck::None;
   g.reorder_word_bits = g.widths.output_word + (g.carries_whole ? g.widths.disparity : 0);
   g.reorder_ram_bits = g.reorder_word_bits + (cfg.confidence ? kConfidenceBits : 0);
-  g.penalty_bits = cfg.p2_adapt != 0 ? cfg.path_count() * g.widths.path_cost : 0;
+  g.penalty_bits = cfg.p2_adapt != 0 ? g.raster_path_count * g.widths.path_cost : 0;
   g.cost_word_bits = cfg.uf * g.widths.cost + g.penalty_bits;
   // LR2's match side reads cost words at one pixel a clock (fpstereo_lr2_match's lane banks), and
   // entries of its own in strips (code entries, or its own window costs' words).
-  g.reorders_codes = point_cost && (cfg.lr != LrCheck::Lr2 || g.strips > 1);
+  // The 180-degree path's mirrored aggregator reads cost words too.
+  g.reorders_codes = point_cost && (cfg.lr != LrCheck::Lr2 || g.strips > 1) && !g.right_to_left;
   if (g.reorders_codes) {
     g.code_entry_bits = std::max(1, g.widths.code) + (cfg.fused_weight != 0 ? g.widths.fused_feature : 0);
     g.cost_lead = 2 + g.cost_latency;

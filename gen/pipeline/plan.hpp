@@ -103,7 +103,13 @@ struct Geometry {
   // whole disparities (semantics section 5); the RAM keeps the confidence above them.
   bool carries_whole = false;
   int reorder_word_bits = 0, reorder_ram_bits = 0;
-  // With adaptive P2 the cost words carry, above the uf costs, each enabled path's P2.
+  // The raster-order paths (0, 45, 90, 135) the aggregator runs, and their number; the 180-degree
+  // path (docs/path180-hardware.md) runs on a mirrored aggregator of its own.
+  unsigned raster_paths = 0;
+  int raster_path_count = 0;
+  bool right_to_left = false;
+  // With adaptive P2 the cost words carry, above the uf costs, each raster path's P2 (the
+  // 180-degree path takes the 0-degree one of x + 1).
   int penalty_bits = 0, cost_word_bits = 0;
   // The output streams' tdata: the word's byte lane (8 or 16 bits), and with confidence 8 above.
   int output_bits = 0;

@@ -1783,7 +1783,10 @@ module fps_census7_d128u32_6e9658_aggregator #(
   // is frame_width - 1 - (k * SEGMENT + j), the path starts at the row's last pixel. With
   // PENALTIES (the number of P2 fields in the word, the base side's, the 0-degree one first) the
   // lanes take the 0-degree P2 of the chain's previous pixel x + 1: the same two intensities.
-  parameter MIRROR = 0
+  parameter MIRROR = 0,
+  // 1: each cost word carries, above its P2 fields, the 180-degree path's uf costs of its pixel
+  // (the mirrored aggregator's, read beside it), which the sums add.
+  parameter RIGHT_TO_LEFT = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1804,7 +1807,7 @@ module fps_census7_d128u32_6e9658_aggregator #(
   output wire [COST_AW-1:0]   cost_raddr,
   // the schedule where cost_raddr is read: {the slot opens a row-time, the pixel's x, the group}
   output wire [X_W+G_W:0]     cost_schedule,
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
+  input  wire [UF*COST_W+PENALTIES*PATH_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
   output wire                 sums_active,
@@ -1855,6 +1858,9 @@ module fps_census7_d128u32_6e9658_aggregator #(
     end
     if (MIRROR != 0 && (PATHS != 1 || STRIPS != 0 || CODES != 0)) begin : invalid_MIRROR
       fps_census7_d128u32_6e9658_invalid_parameters_aggregator_MIRROR_needs_PATHS_1_cost_words_and_no_strips failed ();
+    end
+    if (RIGHT_TO_LEFT != 0 && (MIRROR != 0 || STRIPS != 0 || CODES != 0)) begin : invalid_RIGHT_TO_LEFT
+      fps_census7_d128u32_6e9658_invalid_parameters_aggregator_RIGHT_TO_LEFT_needs_cost_words_no_strips_and_no_MIRROR failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -2109,7 +2115,7 @@ module fps_census7_d128u32_6e9658_aggregator #(
   // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
   /* verilator lint_off UNUSEDSIGNAL */  // with MIRROR, the P2 fields but the 0-degree one
-  reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
+  reg  [UF*COST_W+PENALTIES*PATH_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] cost_read2;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [UF*COST_W-1:0] cost2;
   always @(posedge clk)
@@ -2356,6 +2362,22 @@ module fps_census7_d128u32_6e9658_aggregator #(
     end
   endgenerate
 
+  // ---- The 180-degree path's costs, from the word at S2 to the sum at S4 (the lanes' two steps).
+  wire [LANES_W-1:0] path_180;
+  generate
+    if (RIGHT_TO_LEFT != 0) begin : right_to_left
+      reg [LANES_W-1:0] path3, path4;
+      always @(posedge clk)
+        if (adv) begin
+          path3 <= cost_read2[UF*COST_W+PENALTIES*PATH_W +: LANES_W];
+          path4 <= path3;
+        end
+      assign path_180 = path4;
+    end else begin : no_right_to_left
+      assign path_180 = 0;
+    end
+  endgenerate
+
   // ---- Sum over the paths (S4 -> S5).
   genvar l;
   generate
@@ -2363,7 +2385,8 @@ module fps_census7_d128u32_6e9658_aggregator #(
       wire [SUM_W-1:0] s = {{(SUM_W-PATH_W){1'b0}}, path_0[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_45[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
-                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
+                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]}
+                         + {{(SUM_W-PATH_W){1'b0}}, path_180[l*PATH_W +: PATH_W]};
       always @(posedge clk)
         if (adv) sums[l*SUM_W +: SUM_W] <= s;
     end

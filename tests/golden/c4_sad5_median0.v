@@ -351,7 +351,7 @@ module fps_sad5_d128u32_baf239_sgm_core (
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
     .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
     .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
-    .WTA_TREE_LAT(3), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0)
+    .WTA_TREE_LAT(3), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0), .RIGHT_TO_LEFT(0)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .match_on(match_on), .overlap(overlap), .wrapped(wrapped),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid),
@@ -1618,7 +1618,9 @@ endmodule
 // match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
 // cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
 // word of the match side reads all banks at one address.
-// From match_on on, completed_* writes Dm(x') of each match pixel.
+// From match_on on, completed_* writes Dm(x') of each match pixel. With RIGHT_TO_LEFT the match
+// side has the 180-degree path too (fps_sad5_d128u32_baf239_right_to_left on a second read of the banks), and its
+// forward chains run K + 2 row-times later, as the base side's.
 module fps_sad5_d128u32_baf239_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -1647,7 +1649,8 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   parameter G_W = 2,
   parameter K_W = 1,
   parameter LANE_W = 3,
-  parameter MIN_DISP = 0
+  parameter MIN_DISP = 0,
+  parameter RIGHT_TO_LEFT = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1674,14 +1677,14 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DMAX != G * UF || COST_ROWS != K + 1) begin : invalid
-      fps_sad5_d128u32_baf239_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows failed ();
+    if (DMAX != G * UF || COST_ROWS != (RIGHT_TO_LEFT != 0 ? 2 * K + 3 : K + 1)) begin : invalid
+      fps_sad5_d128u32_baf239_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows_2K_plus_3_with_RIGHT_TO_LEFT failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
-  wire [UF*COST_W-1:0] match_costs;
-  wire [COST_AW-1:0]   match_raddr;
+  wire [UF*COST_W-1:0] match_costs, mirror_costs;
+  wire [COST_AW-1:0]   match_raddr, mirror_raddr;
   // x - m - d as (x + AHEAD) - (d + BEHIND)
   localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
   localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
@@ -1698,6 +1701,39 @@ module fps_sad5_d128u32_baf239_lr2_match #(
         .waddr(waddr),
         .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(match_raddr),
         .rdata(match_costs[l*COST_W +: COST_W]));
+      // The 180-degree path's mirrored reads: a copy of the bank.
+      if (RIGHT_TO_LEFT != 0) begin : second
+        fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(COST_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) costs_of_lane (
+          .clk(clk), .we(adv && cost_valid && in_row), .waddr(waddr),
+          .wdata(costs[l*COST_W +: COST_W]), .re(adv), .raddr(mirror_raddr),
+          .rdata(mirror_costs[l*COST_W +: COST_W]));
+      end else begin : no_second
+        assign mirror_costs[l*COST_W +: COST_W] = {COST_W{1'b0}};
+      end
+    end
+  endgenerate
+  // The words the forward chains read: the costs, with the 180-degree path's above them.
+  wire [UF*COST_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] match_words;
+  generate
+    if (RIGHT_TO_LEFT != 0) begin : right_to_left
+      wire [UF*PATH_W-1:0] path180_q;
+      /* verilator lint_off PINCONNECTEMPTY */  // the costs come from the banks' copies
+      fps_sad5_d128u32_baf239_right_to_left #(
+        .W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF), .COST_W(COST_W),
+        .COST_MAX(COST_MAX), .PATH_W(PATH_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
+        .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W), .COST_ROWS(COST_ROWS),
+        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP), .COPY(0)
+      ) mirror (
+        .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+        .p1(p1), .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped),
+        .cost_valid(1'b0), .cost_x({X_W{1'b0}}), .cost_row_slot({COST_ROW_W{1'b0}}), .cost_group({G_W{1'b0}}),
+        .costs({UF*COST_W{1'b0}}), .mirror_q(mirror_costs), .mirror_raddr(mirror_raddr),
+        .path_raddr(match_raddr), .path_q(path180_q));
+      /* verilator lint_on PINCONNECTEMPTY */
+      assign match_words = {path180_q, match_costs};
+    end else begin : no_right_to_left
+      assign mirror_raddr = {COST_AW{1'b0}};
+      assign match_words = match_costs;
     end
   endgenerate
   wire [UF*SUM_W-1:0] sums;
@@ -1719,10 +1755,11 @@ module fps_sad5_d128u32_baf239_lr2_match #(
                         .PATHS(PATHS), .MATCH_SIDE(1), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
-                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP)) match_aggregation (
+                        .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP),
+                        .CHAIN_BASE(RIGHT_TO_LEFT != 0 ? K + 2 : 0), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
-    .cost_q(match_costs), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
+    .cost_q(match_words), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
     .sums_slot(slot), .edge_in(edges), .edge135_in(edges135), .edge_out(edges), .edge135_out(edges135));
   /* verilator lint_on PINCONNECTEMPTY */
   wire              active_w;
@@ -1803,7 +1840,10 @@ module fps_sad5_d128u32_baf239_aggregator #(
   // is frame_width - 1 - (k * SEGMENT + j), the path starts at the row's last pixel. With
   // PENALTIES (the number of P2 fields in the word, the base side's, the 0-degree one first) the
   // lanes take the 0-degree P2 of the chain's previous pixel x + 1: the same two intensities.
-  parameter MIRROR = 0
+  parameter MIRROR = 0,
+  // 1: each cost word carries, above its P2 fields, the 180-degree path's uf costs of its pixel
+  // (the mirrored aggregator's, read beside it), which the sums add.
+  parameter RIGHT_TO_LEFT = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1824,7 +1864,7 @@ module fps_sad5_d128u32_baf239_aggregator #(
   output wire [COST_AW-1:0]   cost_raddr,
   // the schedule where cost_raddr is read: {the slot opens a row-time, the pixel's x, the group}
   output wire [X_W+G_W:0]     cost_schedule,
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] cost_q,
+  input  wire [UF*COST_W+PENALTIES*PATH_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] cost_q,
   // the sums of one group of one pixel (S5), and where they belong
   output reg  [UF*SUM_W-1:0]  sums,
   output wire                 sums_active,
@@ -1875,6 +1915,9 @@ module fps_sad5_d128u32_baf239_aggregator #(
     end
     if (MIRROR != 0 && (PATHS != 1 || STRIPS != 0 || CODES != 0)) begin : invalid_MIRROR
       fps_sad5_d128u32_baf239_invalid_parameters_aggregator_MIRROR_needs_PATHS_1_cost_words_and_no_strips failed ();
+    end
+    if (RIGHT_TO_LEFT != 0 && (MIRROR != 0 || STRIPS != 0 || CODES != 0)) begin : invalid_RIGHT_TO_LEFT
+      fps_sad5_d128u32_baf239_invalid_parameters_aggregator_RIGHT_TO_LEFT_needs_cost_words_no_strips_and_no_MIRROR failed ();
     end
   endgenerate
   localparam ONES = {PATH_W{1'b1}};
@@ -2129,7 +2172,7 @@ module fps_sad5_d128u32_baf239_aggregator #(
   // The cost word of the pixel in S2 (read in S0, COST_LEAD steps to cost_q, one here). On the
   // match side, lanes whose base pixel x' + d lies beyond the image cost COST_MAX.
   /* verilator lint_off UNUSEDSIGNAL */  // with MIRROR, the P2 fields but the 0-degree one
-  reg  [UF*COST_W+PENALTIES*PATH_W-1:0] cost_read2;
+  reg  [UF*COST_W+PENALTIES*PATH_W+RIGHT_TO_LEFT*UF*PATH_W-1:0] cost_read2;
   /* verilator lint_on UNUSEDSIGNAL */
   wire [UF*COST_W-1:0] cost2;
   always @(posedge clk)
@@ -2376,6 +2419,22 @@ module fps_sad5_d128u32_baf239_aggregator #(
     end
   endgenerate
 
+  // ---- The 180-degree path's costs, from the word at S2 to the sum at S4 (the lanes' two steps).
+  wire [LANES_W-1:0] path_180;
+  generate
+    if (RIGHT_TO_LEFT != 0) begin : right_to_left
+      reg [LANES_W-1:0] path3, path4;
+      always @(posedge clk)
+        if (adv) begin
+          path3 <= cost_read2[UF*COST_W+PENALTIES*PATH_W +: LANES_W];
+          path4 <= path3;
+        end
+      assign path_180 = path4;
+    end else begin : no_right_to_left
+      assign path_180 = 0;
+    end
+  endgenerate
+
   // ---- Sum over the paths (S4 -> S5).
   genvar l;
   generate
@@ -2383,7 +2442,8 @@ module fps_sad5_d128u32_baf239_aggregator #(
       wire [SUM_W-1:0] s = {{(SUM_W-PATH_W){1'b0}}, path_0[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_45[l*PATH_W +: PATH_W]}
                          + {{(SUM_W-PATH_W){1'b0}}, path_90[l*PATH_W +: PATH_W]}
-                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]};
+                         + {{(SUM_W-PATH_W){1'b0}}, path_135[l*PATH_W +: PATH_W]}
+                         + {{(SUM_W-PATH_W){1'b0}}, path_180[l*PATH_W +: PATH_W]};
       always @(posedge clk)
         if (adv) sums[l*SUM_W +: SUM_W] <= s;
     end
@@ -3573,6 +3633,117 @@ module fps_sad5_d128u32_baf239_ram_sdp #(
     if (we) mem[waddr] <= wdata;
     if (re) rdata <= mem[raddr];
   end
+endmodule
+`resetall
+
+`resetall
+`default_nettype none
+// The 180-degree path (docs/path180-hardware.md, docs/semantics.md section 3): a mirrored
+// aggregator (fps_sad5_d128u32_baf239_aggregator with MIRROR) whose chain k works on row ta - 1 - k from the
+// row's end, reading the cost words from a copy of the cost reorder RAM written alike from the
+// cost tag (COPY), or from a second read port outside (mirror_raddr, mirror_q: LR2's match side,
+// whose lane banks hold them); its path costs go into the L_180 RAM at the cost RAM's addresses
+// (row slot, pixel, group), so the forward aggregator, which runs K + 2 row-times behind the
+// writes (CHAIN_BASE), reads a word's L_180 beside its costs at the same address and step. The
+// RAMs hold COST_ROWS rows, the cost RAM's.
+module fps_sad5_d128u32_baf239_right_to_left #(
+  parameter W = 64,
+  parameter ROW_SLOTS = 64,
+  parameter K = 2,
+  parameter SEGMENT = 32,
+  parameter G = 4,
+  parameter UF = 8,
+  parameter COST_W = 5,
+  parameter COST_MAX = 24,
+  parameter PATH_W = 7,
+  // the P2 fields above each word's costs (adaptive P2: the base side's paths, the 0-degree first)
+  parameter PENALTIES = 0,
+  parameter LEVELS_PER_STAGE = 3,
+  parameter PATH_TREE_LAT = 1,
+  parameter COST_AW = 10,
+  parameter X_W = 7,
+  parameter Y_W = 6,
+  parameter G_W = 2,
+  parameter K_W = 1,
+  parameter COST_ROWS = 2,
+  parameter COST_ROW_W = 1,
+  // LR2's match side (fps_sad5_d128u32_baf239_aggregator's MATCH_SIDE and MIN_DISP), and where its words come from
+  parameter MATCH_SIDE = 0,
+  parameter MIN_DISP = 0,
+  parameter COPY = 1
+) (
+  input  wire                   clk,
+  input  wire                   restart,
+  input  wire                   adv,
+  input  wire [X_W-1:0]         frame_width,
+  input  wire [Y_W-1:0]         frame_height,
+  input  wire [PATH_W-1:0]      p1,
+  input  wire [PATH_W-1:0]      p2,
+  input  wire                   agg_on,
+  input  wire                   overlap,
+  input  wire                   wrapped,
+  // the cost reorder RAM's writes: the word and its position (COPY)
+  /* verilator lint_off UNUSEDSIGNAL */  // without COPY
+  input  wire                   cost_valid,
+  input  wire [X_W-1:0]         cost_x,
+  input  wire [COST_ROW_W-1:0]  cost_row_slot,
+  input  wire [G_W-1:0]         cost_group,
+  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] costs,
+  // without COPY: the mirrored aggregator's reads, answered a step later
+  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] mirror_q,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [COST_AW-1:0]     mirror_raddr,
+  // the forward aggregator's read address, and L_180 of its word a step later
+  input  wire [COST_AW-1:0]     path_raddr,
+  output wire [UF*PATH_W-1:0]   path_q
+);
+  localparam DEPTH = COST_ROWS * ROW_SLOTS * G;
+  localparam WORD_W = UF * COST_W + PENALTIES * PATH_W;
+  // The addresses are products of narrow counters and constants, cut to the RAMs' address width.
+  wire [WORD_W-1:0] mirror_words;
+  generate
+    if (COPY != 0) begin : copy
+      /* verilator lint_off WIDTH */
+      wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
+      /* verilator lint_on WIDTH */
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(WORD_W), .DEPTH(DEPTH), .ADDR_W(COST_AW)) ram (
+        .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
+        .re(adv), .raddr(mirror_raddr), .rdata(mirror_words));
+    end else begin : outside
+      assign mirror_words = mirror_q;
+    end
+  endgenerate
+
+  wire [UF*PATH_W-1:0]  mirror_sums;
+  wire                  mirror_active;
+  wire [X_W-1:0]        mirror_x;
+  wire [G_W-1:0]        mirror_group;
+  wire [COST_ROW_W-1:0] mirror_slot;
+  localparam EDGE_W = (UF + 1) * PATH_W;
+  /* verilator lint_off PINCONNECTEMPTY */
+  fps_sad5_d128u32_baf239_aggregator #(
+    .W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF), .COST_W(COST_W),
+    .COST_MAX(COST_MAX), .PATH_W(PATH_W), .SUM_W(PATH_W), .PATHS(1), .PENALTIES(PENALTIES),
+    .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(COST_ROWS),
+    .OUT_ROW_W(COST_ROW_W), .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
+    .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .CHAIN_BASE(1), .MIRROR(1), .MATCH_SIDE(MATCH_SIDE),
+    .MIN_DISP(MIN_DISP)
+  ) mirror (
+    .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
+    .p1(p1), .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped),
+    .cost_raddr(mirror_raddr), .cost_schedule(), .cost_q(mirror_words),
+    .sums(mirror_sums), .sums_active(mirror_active), .sums_x(mirror_x), .sums_group(mirror_group),
+    .sums_chain(), .sums_slot(mirror_slot),
+    .edge_in({2*EDGE_W{1'b0}}), .edge135_in({EDGE_W{1'b0}}), .edge_out(), .edge135_out());
+  /* verilator lint_on PINCONNECTEMPTY */
+
+  // The sums' slot is the row's slot in the cost RAM (OUT_ROWS = COST_ROWS).
+  /* verilator lint_off WIDTH */
+  wire [COST_AW-1:0] path_waddr = (mirror_slot * ROW_SLOTS + mirror_x) * G + mirror_group;
+  /* verilator lint_on WIDTH */
+  fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(UF*PATH_W), .DEPTH(DEPTH), .ADDR_W(COST_AW)) paths (
+    .clk(clk), .we(adv && mirror_active), .waddr(path_waddr), .wdata(mirror_sums),
+    .re(adv), .raddr(path_raddr), .rdata(path_q));
 endmodule
 `resetall
 

@@ -1,5 +1,7 @@
 // Aggregation in K interleaved chains (fpstereo_aggregator); a row's last chain runs K - 1
 // row-times after its first, and the sums leave the aggregator's five register stages (S0 .. S5).
+// With the 180-degree path (fpstereo_right_to_left, docs/path180-hardware.md) the forward chains
+// run K + 2 row-times later, behind the mirrored ones.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -23,10 +25,21 @@ class AggregationStage : public Stage {
   // slot of P pixels, further right than one pixel a step would be).
   Latency latency(const Geometry& g) const override {
     if (g.strips > 1) return {int64_t(g.strips) * g.chains, 0, 4 + g.cost_lead};
-    return {g.chains - 1, 0, 4 + g.cost_lead};
+    return {g.chains - 1 + forward_lag(g), 0, 4 + g.cost_lead};
   }
+  // The forward chains' rows behind the writes (the aggregator's CHAIN_BASE).
+  static int forward_lag(const Geometry& g) { return g.right_to_left ? g.chains + 2 : 0; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
-    if (g.strips == 1) return aggregator_memories(g, "core.aggregation");
+    if (g.strips == 1) {
+      std::vector<StageMemory> m = aggregator_memories(g, "core.aggregation");
+      if (!g.right_to_left) return m;
+      // The cost RAM's copy, the mirrored aggregator's 0-degree state and the L_180 RAM.
+      const int64_t lanes_w = int64_t(g.cfg.uf) * g.widths.path_cost;
+      m.push_back({"core.right_to_left.copy.mem", g.cost_depth(), g.cost_word_bits});
+      m.push_back({"core.right_to_left.mirror.path0.state.mem", int64_t(g.chains) * g.groups, lanes_w, false});
+      m.push_back({"core.right_to_left.paths.mem", g.cost_depth(), lanes_w});
+      return m;
+    }
     // Each strip's aggregator over its pixels, then its disparity RAM's P banks ((P - s) * K + 1
     // rows of R / P words).
     std::vector<StageMemory> m;
@@ -68,7 +81,6 @@ class AggregationStage : public Stage {
   }
 
   void core_verilog(const RtlDesign& d, CoreBuilder& core, CoreStreams& streams) const override {
-    if (d.cfg.paths & kPath180) throw std::logic_error("aggregation: no Verilog for the 180-degree path (an HLS plan)");
     if (d.strips > 1) return strips_verilog(d, core, streams);
     core.text("\n  // Aggregation in K interleaved chains, from step AGG_START.\n");
     start_flag(core, d, *this, "agg_on");
@@ -79,9 +91,14 @@ class AggregationStage : public Stage {
     core.wire("agg_slot", d.out_row_bits);
     core.wire("agg_chain", d.chain_bits);  // LR1 follows the chains
     Connections side = {{"MATCH_SIDE", "0"}};
-    if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.cfg.path_count())});
+    if (d.cfg.p2_adapt != 0) side.push_back({"PENALTIES", num(d.raster_path_count)});
     core.wire("cost_schedule", d.x_bits + d.group_bits + 1);
     std::string cost_words = "cost_q";
+    if (d.right_to_left) {
+      right_to_left(d, core);
+      side = side + Connections{{"CHAIN_BASE", num(forward_lag(d))}, {"RIGHT_TO_LEFT", "1"}};
+      cost_words = "{path180_q, cost_q}";
+    }
     if (d.reorders_codes) {
       side = side + Connections{{"CODES", "1"}, {"COST_LEAD", num(d.cost_lead)}};
       cost_words = chain_cost(d, core);
@@ -104,6 +121,24 @@ class AggregationStage : public Stage {
                    {"edge135_in", "agg_edge135"},
                    {"edge_out", "agg_edge"},
                    {"edge135_out", "agg_edge135"}});
+  }
+
+  // The 180-degree path: the mirrored aggregator on a copy of the cost RAM, its L_180 read at the
+  // forward aggregator's address (fpstereo_right_to_left).
+  static void right_to_left(const RtlDesign& d, CoreBuilder& core) {
+    core.text("\n  // The 180-degree path: a mirrored aggregator a row-time behind the cost writes; the forward\n"
+              "  // one reads each word's L_180 beside it.\n");
+    core.wire("path180_q", int64_t(d.cfg.uf) * d.widths.path_cost);
+    Connections parameters = aggregator_parameters(d);
+    const std::vector<std::string> unused = {"SUM_W", "PATHS", "OUT_ROWS", "OUT_ROW_W"};
+    parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
+                                    [&](const auto& p) { return std::find(unused.begin(), unused.end(), p.first) != unused.end(); }),
+                     parameters.end());
+    if (d.cfg.p2_adapt != 0) parameters.push_back({"PENALTIES", num(d.raster_path_count)});
+    core.wire("mirror_raddr", d.cost_addr_bits);  // the copy's reads, inside
+    const std::string costs = d.penalty_bits != 0 ? "{cost_penalties, costs}" : "costs";
+    core.instance("fpstereo_right_to_left", "right_to_left", parameters,
+                  {{"costs", costs}, {"mirror_q", costs}, {"path_raddr", "cost_raddr"}, {"path_q", "path180_q"}});
   }
 
   // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,

@@ -89,8 +89,8 @@ class CostStage : public Stage {
     if (c.p2_adapt == 0) return;
     core.text("  // Adaptive P2: each path's P2 for the pixel, beside its costs.\n");
     const Connections parameters = {{"N", num(c.window)},
-                                    {"PATHS", num(c.paths)},
-                                    {"NP", num(c.path_count())},
+                                    {"PATHS", num(d.raster_paths)},
+                                    {"NP", num(d.raster_path_count)},
                                     {"GAIN", num(c.p2_adapt)},
                                     {"PATH_W", num(w.path_cost)},
                                     {"WAIT_SLOTS", num(base_wait(d).slots + d.transform_slots - 1)},

@@ -40,9 +40,18 @@ class Lr2MatchStage : public Stage {
       }
       return out;
     }
-    for (int l = 0; l < g.cfg.uf; ++l)
+    for (int l = 0; l < g.cfg.uf; ++l) {
       out.push_back({fmt::format("core.lr2_match.bank[{}].costs_of_lane.mem", l), g.cost_depth(), g.widths.cost});
+      if (g.right_to_left)
+        out.push_back({fmt::format("core.lr2_match.bank[{}].second.costs_of_lane.mem", l), g.cost_depth(), g.widths.cost});
+    }
     for (auto& m : aggregator_memories(g, "core.lr2_match.match_aggregation")) out.push_back(m);
+    if (g.right_to_left) {
+      // The mirrored aggregator's 0-degree state and the L_180 RAM (fpstereo_right_to_left).
+      const int64_t lanes_w = int64_t(g.cfg.uf) * g.widths.path_cost;
+      out.push_back({"core.lr2_match.right_to_left.mirror.mirror.path0.state.mem", int64_t(g.chains) * g.groups, lanes_w, false});
+      out.push_back({"core.lr2_match.right_to_left.mirror.paths.mem", g.cost_depth(), lanes_w});
+    }
     return out;
   }
 
@@ -60,7 +69,8 @@ class Lr2MatchStage : public Stage {
                                                          {"WTA_TREE_LAT", num(d.wta_tree_latency)},
                                                          {"DISP_AW", num(d.disp_addr_bits)},
                                                          {"LANE_W", num(d.lane_bits)},
-                                                         {"MIN_DISP", num(c.min_disp)}});
+                                                         {"MIN_DISP", num(c.min_disp)},
+                                                         {"RIGHT_TO_LEFT", d.right_to_left ? "1" : "0"}});
   }
 
   // In strips: the code entries with base and match swapped, or the cost words of the match side's

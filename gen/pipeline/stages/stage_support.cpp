@@ -180,7 +180,7 @@ Connections aggregator_parameters(const RtlDesign& g) {
           {"COST_MAX", num(int64_t(g.widths.cost_max))},
           {"PATH_W", num(g.widths.path_cost)},
           {"SUM_W", num(g.widths.aggregated)},
-          {"PATHS", num(c.paths)},
+          {"PATHS", num(g.raster_paths)},
           {"LEVELS_PER_STAGE", num(g.levels_per_stage)},
           {"PATH_TREE_LAT", num(g.path_tree_latency)},
           {"OUT_ROWS", num(g.out_rows)},
