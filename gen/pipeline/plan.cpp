@@ -41,8 +41,8 @@ void check_hardware_rules(const StereoConfig& cfg, RtlOptions::Target target) {
   if (cfg.dmax + std::abs(cfg.min_disp) > cfg.width)
     throw ConfigError("min-disp = " + std::to_string(cfg.min_disp) + ": the hardware generators need dmax + |min-disp| <= width (" +
                       std::to_string(cfg.dmax + std::abs(cfg.min_disp)) + " > " + std::to_string(cfg.width) + ")");
-  // The 180-degree path is in the models and the HLS kernels (right_to_left); the Verilog's plan
-  // is docs/path180-hardware.md.
+  // The 180-degree path: the HLS kernels take it wherever the models do, the Verilog at one pixel
+  // a clock beside a raster-order path (docs/path180-hardware.md).
   if ((cfg.paths & kPath180) && target == RtlOptions::Target::Verilog) {
     const std::string paths = "paths = " + paths_to_string(cfg.paths) + ": ";
     if (cfg.ppc != 1)
