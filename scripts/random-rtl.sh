@@ -53,6 +53,8 @@ draw() {
   for d in 1 2 3 4 6 8 12 16 24 32 48 64; do (( dmax % d == 0 )) && divisors+=("$d"); done
   for p in 0 45 90 135; do (( RANDOM % 2 )) && paths+=("$p"); done
   [ ${#paths[@]} -gt 0 ] || { pick 0 45 90 135; paths=("$REPLY"); }
+  # The 180-degree path at one pixel a clock, a time in four (a ppc drawn later redraws it).
+  (( strips == 0 && RANDOM % 4 == 0 )) && paths+=(180)
   if (( strips )); then
     # ppc strips of segments of 3 pixels at least: rows of 48 to 127 pixels, frames that follow on.
     flags=(--width $((48 + RANDOM % 80)) --height $((10 + RANDOM % 17)) --dmax "$dmax" --uf "$dmax"

@@ -1683,8 +1683,12 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
-  wire [UF*COST_W-1:0] match_costs, mirror_costs;
-  wire [COST_AW-1:0]   match_raddr, mirror_raddr;
+  wire [UF*COST_W-1:0] match_costs;
+  wire [COST_AW-1:0]   match_raddr;
+  /* verilator lint_off UNUSEDSIGNAL */  // read with RIGHT_TO_LEFT only
+  wire [UF*COST_W-1:0] mirror_costs;
+  wire [COST_AW-1:0]   mirror_raddr;
+  /* verilator lint_on UNUSEDSIGNAL */
   // x - m - d as (x + AHEAD) - (d + BEHIND)
   localparam integer BEHIND = MIN_DISP > 0 ? MIN_DISP : 0;
   localparam integer AHEAD = MIN_DISP < 0 ? -MIN_DISP : 0;
