@@ -157,13 +157,14 @@ Geometry plan_geometry(const StereoConfig& cfg, const RtlOptions& options) {
   // In strips a row is read once every strip has finished it, its match side's Dm with it: the
   // reads wait no rows more for the check.
   g.lr_rows = cfg.lr == LrCheck::None || g.strips > 1 ? 0 : cfg.lr == LrCheck::Lr1 ? 1 : 2;
-  // With the 180-degree path the forward chains run K + 2 row-times later (docs/path180-hardware.md):
-  // the writes' row, the mirrored chains' K and the forward chains' K, and one row-time for the
-  // mirrored pipeline's last writes.
+  // With the 180-degree path the forward chains run K + 2 row-times later (docs/path180-hardware.md),
+  // and the cost RAM keeps their rows too: the row being written, the mirrored chains' K and the
+  // forward chains' K, and one row-time for the mirrored pipeline's last writes.
   g.right_to_left = (cfg.paths & kPath180) != 0;
   g.raster_paths = cfg.paths & kAllPaths;
   g.raster_path_count = cfg.path_count() - (g.right_to_left ? 1 : 0);
-  g.cost_rows = (g.right_to_left ? 2 * g.chains + 2 : g.chains) + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
+  g.forward_lag = g.right_to_left ? g.chains + 2 : 0;
+  g.cost_rows = g.chains + g.forward_lag + (cfg.lr == LrCheck::Lr2 ? 1 : 0);
   g.out_rows = g.chains + 1 + g.lr_rows;
   if (g.strips > 1) {
     // The strips' RAMs: strip s's code RAM (s + 1) * K rows, its disparity RAM (P - s) * K + 1;

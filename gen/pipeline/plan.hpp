@@ -108,6 +108,9 @@ struct Geometry {
   unsigned raster_paths = 0;
   int raster_path_count = 0;
   bool right_to_left = false;
+  // The forward chains' row-times behind the cost writes (the aggregator's CHAIN_BASE): 0, or with
+  // the 180-degree path K + 2 (the mirrored chains' K, their row's write and their pipeline's tail).
+  int forward_lag = 0;
   // With adaptive P2 the cost words carry, above the uf costs, each raster path's P2 (the
   // 180-degree path takes the 0-degree one of x + 1).
   int penalty_bits = 0, cost_word_bits = 0;

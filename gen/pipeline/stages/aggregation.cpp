@@ -25,10 +25,8 @@ class AggregationStage : public Stage {
   // slot of P pixels, further right than one pixel a step would be).
   Latency latency(const Geometry& g) const override {
     if (g.strips > 1) return {int64_t(g.strips) * g.chains, 0, 4 + g.cost_lead};
-    return {g.chains - 1 + forward_lag(g), 0, 4 + g.cost_lead};
+    return {g.chains - 1 + g.forward_lag, 0, 4 + g.cost_lead};
   }
-  // The forward chains' rows behind the writes (the aggregator's CHAIN_BASE).
-  static int forward_lag(const Geometry& g) { return g.right_to_left ? g.chains + 2 : 0; }
   std::vector<StageMemory> memories(const Geometry& g) const override {
     if (g.strips == 1) {
       std::vector<StageMemory> m = aggregator_memories(g, "core.aggregation");
@@ -96,7 +94,7 @@ class AggregationStage : public Stage {
     std::string cost_words = "cost_q";
     if (d.right_to_left) {
       right_to_left(d, core);
-      side = side + Connections{{"CHAIN_BASE", num(forward_lag(d))}, {"RIGHT_TO_LEFT", "1"}};
+      side = side + Connections{{"CHAIN_BASE", num(d.forward_lag)}, {"RIGHT_TO_LEFT", "1"}};
       cost_words = "{path180_q, cost_q}";
     }
     if (d.reorders_codes) {
