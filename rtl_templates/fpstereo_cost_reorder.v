@@ -5,6 +5,8 @@
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
 // COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
 // A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
+// With SECOND_READ a copy of the RAM, written alike, answers a second reader (the mirrored
+// chains of the 180-degree path): a block RAM has one read port beside its write.
 module fpstereo_cost_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -19,7 +21,8 @@ module fpstereo_cost_reorder #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  parameter SECOND_READ = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -36,7 +39,11 @@ module fpstereo_cost_reorder #(
   output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
-  output wire [UF*COST_W+EXTRA_W-1:0] cost_q
+  output wire [UF*COST_W+EXTRA_W-1:0] cost_q,
+  /* verilator lint_off UNUSEDSIGNAL */  // without SECOND_READ
+  input  wire [COST_AW-1:0]     second_raddr,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [UF*COST_W+EXTRA_W-1:0] second_q
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -61,5 +68,14 @@ module fpstereo_cost_reorder #(
   fpstereo_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
+  generate
+    if (SECOND_READ != 0) begin : second
+      fpstereo_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+        .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
+        .re(adv), .raddr(second_raddr), .rdata(second_q));
+    end else begin : no_second
+      assign second_q = {UF*COST_W+EXTRA_W{1'b0}};
+    end
+  endgenerate
 endmodule
 `resetall

@@ -5,9 +5,9 @@
 // match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
 // cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
 // word of the match side reads all banks at one address.
-// From match_on on, completed_* writes Dm(x') of each match pixel. With RIGHT_TO_LEFT the match
-// side has the 180-degree path too (fpstereo_right_to_left on a second read of the banks), and its
-// forward chains run K + 2 row-times later, as the base side's.
+// From match_on on, completed_* writes Dm(x') of each match pixel. With the 180-degree path
+// (FORWARD_LAG not 0) the match side has it too (fpstereo_right_to_left on copies of the banks),
+// and its forward chains run FORWARD_LAG row-times later, as the base side's.
 module fpstereo_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -37,7 +37,9 @@ module fpstereo_lr2_match #(
   parameter K_W = 1,
   parameter LANE_W = 3,
   parameter MIN_DISP = 0,
-  parameter RIGHT_TO_LEFT = 0
+  // the row-times the forward chains run behind the cost writes (the base side's CHAIN_BASE):
+  // not 0 with the 180-degree path only, whose mirrored chains go first
+  parameter FORWARD_LAG = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -61,18 +63,19 @@ module fpstereo_lr2_match #(
   output wire [DISP_W-1:0]    completed_wdata
 );
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
+  localparam RIGHT_TO_LEFT = FORWARD_LAG != 0 ? 1 : 0;
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DMAX != G * UF || COST_ROWS != (RIGHT_TO_LEFT != 0 ? 2 * K + 3 : K + 1)) begin : invalid
-      fpstereo_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows_2K_plus_3_with_RIGHT_TO_LEFT failed ();
+    if (DMAX != G * UF || COST_ROWS != K + FORWARD_LAG + 1) begin : invalid
+      fpstereo_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_FORWARD_LAG_plus_1_cost_rows failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
   wire [UF*COST_W-1:0] match_costs;
   wire [COST_AW-1:0]   match_raddr;
-  /* verilator lint_off UNUSEDSIGNAL */  // read with RIGHT_TO_LEFT only
+  /* verilator lint_off UNUSEDSIGNAL */  // read with the 180-degree path only
   wire [UF*COST_W-1:0] mirror_costs;
   wire [COST_AW-1:0]   mirror_raddr;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -108,19 +111,15 @@ module fpstereo_lr2_match #(
   generate
     if (RIGHT_TO_LEFT != 0) begin : right_to_left
       wire [UF*PATH_W-1:0] path180_q;
-      /* verilator lint_off PINCONNECTEMPTY */  // the costs come from the banks' copies
       fpstereo_right_to_left #(
         .W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF), .COST_W(COST_W),
         .COST_MAX(COST_MAX), .PATH_W(PATH_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W), .COST_ROWS(COST_ROWS),
-        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP), .COPY(0)
+        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP)
       ) mirror (
         .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
         .p1(p1), .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped),
-        .cost_valid(1'b0), .cost_x({X_W{1'b0}}), .cost_row_slot({COST_ROW_W{1'b0}}), .cost_group({G_W{1'b0}}),
-        .costs({UF*COST_W{1'b0}}), .mirror_q(mirror_costs), .mirror_raddr(mirror_raddr),
-        .path_raddr(match_raddr), .path_q(path180_q));
-      /* verilator lint_on PINCONNECTEMPTY */
+        .mirror_raddr(mirror_raddr), .mirror_q(mirror_costs), .path_raddr(match_raddr), .path_q(path180_q));
       assign match_words = {path180_q, match_costs};
     end else begin : no_right_to_left
       assign mirror_raddr = {COST_AW{1'b0}};
@@ -147,7 +146,7 @@ module fpstereo_lr2_match #(
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP),
-                        .CHAIN_BASE(RIGHT_TO_LEFT != 0 ? K + 2 : 0), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
+                        .CHAIN_BASE(FORWARD_LAG), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
     .cost_q(match_words), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),

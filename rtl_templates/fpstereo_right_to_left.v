@@ -2,12 +2,12 @@
 `default_nettype none
 // The 180-degree path (docs/path180-hardware.md, docs/semantics.md section 3): a mirrored
 // aggregator (fpstereo_aggregator with MIRROR) whose chain k works on row ta - 1 - k from the
-// row's end, reading the cost words from a copy of the cost reorder RAM written alike from the
-// cost tag (COPY), or from a second read port outside (mirror_raddr, mirror_q: LR2's match side,
-// whose lane banks hold them); its path costs go into the L_180 RAM at the cost RAM's addresses
-// (row slot, pixel, group), so the forward aggregator, which runs K + 2 row-times behind the
-// writes (CHAIN_BASE), reads a word's L_180 beside its costs at the same address and step. The
-// RAMs hold COST_ROWS rows, the cost RAM's.
+// row's end, reading the cost words from a second read of the RAM that holds them (mirror_raddr,
+// mirror_q: the cost reorder RAM's copy, or on LR2's match side its lane banks' copies); its path
+// costs go into the L_180 RAM at the cost RAM's addresses (row slot, pixel, group), so the forward
+// aggregator, which runs K + 2 row-times behind the writes (CHAIN_BASE), reads a word's L_180
+// beside its costs at the same address and step. The L_180 RAM holds COST_ROWS rows, the cost
+// RAM's.
 module fpstereo_right_to_left #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -29,10 +29,9 @@ module fpstereo_right_to_left #(
   parameter K_W = 1,
   parameter COST_ROWS = 2,
   parameter COST_ROW_W = 1,
-  // LR2's match side (fpstereo_aggregator's MATCH_SIDE and MIN_DISP), and where its words come from
+  // LR2's match side (fpstereo_aggregator's MATCH_SIDE and MIN_DISP)
   parameter MATCH_SIDE = 0,
-  parameter MIN_DISP = 0,
-  parameter COPY = 1
+  parameter MIN_DISP = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -44,38 +43,14 @@ module fpstereo_right_to_left #(
   input  wire                   agg_on,
   input  wire                   overlap,
   input  wire                   wrapped,
-  // the cost reorder RAM's writes: the word and its position (COPY)
-  /* verilator lint_off UNUSEDSIGNAL */  // without COPY
-  input  wire                   cost_valid,
-  input  wire [X_W-1:0]         cost_x,
-  input  wire [COST_ROW_W-1:0]  cost_row_slot,
-  input  wire [G_W-1:0]         cost_group,
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] costs,
-  // without COPY: the mirrored aggregator's reads, answered a step later
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] mirror_q,
-  /* verilator lint_on UNUSEDSIGNAL */
+  // the mirrored aggregator's reads of the cost words, answered a step later
   output wire [COST_AW-1:0]     mirror_raddr,
+  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] mirror_q,
   // the forward aggregator's read address, and L_180 of its word a step later
   input  wire [COST_AW-1:0]     path_raddr,
   output wire [UF*PATH_W-1:0]   path_q
 );
   localparam DEPTH = COST_ROWS * ROW_SLOTS * G;
-  localparam WORD_W = UF * COST_W + PENALTIES * PATH_W;
-  // The addresses are products of narrow counters and constants, cut to the RAMs' address width.
-  wire [WORD_W-1:0] mirror_words;
-  generate
-    if (COPY != 0) begin : copy
-      /* verilator lint_off WIDTH */
-      wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
-      /* verilator lint_on WIDTH */
-      fpstereo_ram_sdp #(.WIDTH(WORD_W), .DEPTH(DEPTH), .ADDR_W(COST_AW)) ram (
-        .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
-        .re(adv), .raddr(mirror_raddr), .rdata(mirror_words));
-    end else begin : outside
-      assign mirror_words = mirror_q;
-    end
-  endgenerate
-
   wire [UF*PATH_W-1:0]  mirror_sums;
   wire                  mirror_active;
   wire [X_W-1:0]        mirror_x;
@@ -93,7 +68,7 @@ module fpstereo_right_to_left #(
   ) mirror (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .p1(p1), .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped),
-    .cost_raddr(mirror_raddr), .cost_schedule(), .cost_q(mirror_words),
+    .cost_raddr(mirror_raddr), .cost_schedule(), .cost_q(mirror_q),
     .sums(mirror_sums), .sums_active(mirror_active), .sums_x(mirror_x), .sums_group(mirror_group),
     .sums_chain(), .sums_slot(mirror_slot),
     .edge_in({2*EDGE_W{1'b0}}), .edge135_in({EDGE_W{1'b0}}), .edge_out(), .edge135_out());

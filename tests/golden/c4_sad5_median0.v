@@ -329,6 +329,9 @@ module fps_sad5_d128u32_baf239_sgm_core (
   wire [1:0] cost_group;
   wire [14:0] cost_raddr;
   wire [415:0] cost_q;
+  /* verilator lint_off UNUSEDSIGNAL */  // not read in this configuration
+  wire [415:0] cost_second_q;
+  /* verilator lint_on UNUSEDSIGNAL */
   fps_sad5_d128u32_baf239_cost_reorder #(
     .ROW_SLOTS(1242), .G(4), .UF(32), .COST_W(13), .LAT(4), .COST_ROWS(4), .COST_ROW_W(2), .COST_AW(15),
     .X_W(11), .Y_W(9), .SIGNED_Y_W(11), .G_W(2)
@@ -336,7 +339,7 @@ module fps_sad5_d128u32_baf239_sgm_core (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .group(group), .history_x(history_x), .history_y(history_y), .history_slot(history_slot), .costs(costs),
     .cost_valid(cost_valid), .cost_x(cost_x), .cost_row_slot(cost_row_slot), .cost_group(cost_group),
-    .cost_raddr(cost_raddr), .cost_q(cost_q));
+    .cost_raddr(cost_raddr), .cost_q(cost_q), .second_raddr(15'd0), .second_q(cost_second_q));
 
   // LR2 match side: second cost volume, aggregation and winner-take-all.
   localparam MATCH_START = 10481;
@@ -351,7 +354,7 @@ module fps_sad5_d128u32_baf239_sgm_core (
     .W(1242), .ROW_SLOTS(1242), .K(3), .SEGMENT(414), .G(4), .UF(32), .COST_W(13), .COST_MAX(6375),
     .PATH_W(13), .SUM_W(15), .PATHS(15), .LEVELS_PER_STAGE(2), .PATH_TREE_LAT(3), .OUT_ROWS(6), .OUT_ROW_W(3),
     .COST_AW(15), .X_W(11), .Y_W(9), .G_W(2), .K_W(2), .COST_ROWS(4), .COST_ROW_W(2), .DMAX(128), .DISP_W(7),
-    .WTA_TREE_LAT(3), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0), .RIGHT_TO_LEFT(0)
+    .WTA_TREE_LAT(3), .DISP_AW(13), .LANE_W(5), .MIN_DISP(0), .FORWARD_LAG(0)
   ) lr2_match (
     .clk(clk), .restart(restart), .adv(adv), .match_on(match_on), .overlap(overlap), .wrapped(wrapped),
     .frame_width(frame_width), .frame_height(frame_height), .p1(p1), .p2(p2), .cost_valid(cost_valid),
@@ -1552,6 +1555,8 @@ endmodule
 // order. Rows outside the image are never written, so only valid rows' slots (row mod
 // COST_ROWS) matter. The written word's position leaves as the cost tag (LR2's banks use it).
 // A word may carry EXTRA_W bits above its costs (adaptive P2's penalties), stored with them.
+// With SECOND_READ a copy of the RAM, written alike, answers a second reader (the mirrored
+// chains of the 180-degree path): a block RAM has one read port beside its write.
 module fps_sad5_d128u32_baf239_cost_reorder #(
   parameter ROW_SLOTS = 64,
   parameter G = 4,
@@ -1566,7 +1571,8 @@ module fps_sad5_d128u32_baf239_cost_reorder #(
   parameter X_W = 7,
   parameter Y_W = 6,
   parameter SIGNED_Y_W = 8,
-  parameter G_W = 2
+  parameter G_W = 2,
+  parameter SECOND_READ = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -1583,7 +1589,11 @@ module fps_sad5_d128u32_baf239_cost_reorder #(
   output wire [COST_ROW_W-1:0]    cost_row_slot,
   output wire [G_W-1:0]         cost_group,
   input  wire [COST_AW-1:0]     cost_raddr,
-  output wire [UF*COST_W+EXTRA_W-1:0] cost_q
+  output wire [UF*COST_W+EXTRA_W-1:0] cost_q,
+  /* verilator lint_off UNUSEDSIGNAL */  // without SECOND_READ
+  input  wire [COST_AW-1:0]     second_raddr,
+  /* verilator lint_on UNUSEDSIGNAL */
+  output wire [UF*COST_W+EXTRA_W-1:0] second_q
 );
   // Parameter invariants: a violation fails elaboration with the rule in the missing module's name.
   generate
@@ -1608,6 +1618,15 @@ module fps_sad5_d128u32_baf239_cost_reorder #(
   fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
     .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
     .re(adv), .raddr(cost_raddr), .rdata(cost_q));
+  generate
+    if (SECOND_READ != 0) begin : second
+      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(UF*COST_W+EXTRA_W), .DEPTH(COST_DEPTH), .ADDR_W(COST_AW)) cost_ram (
+        .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
+        .re(adv), .raddr(second_raddr), .rdata(second_q));
+    end else begin : no_second
+      assign second_q = {UF*COST_W+EXTRA_W{1'b0}};
+    end
+  endgenerate
 endmodule
 `resetall
 
@@ -1618,9 +1637,9 @@ endmodule
 // match side's C(x', d) is the base side's C(x' + m + d, d) (m = MIN_DISP): lane l of each base
 // cost word goes to its own RAM bank at match pixel x - m - d where that lies in the row, and a
 // word of the match side reads all banks at one address.
-// From match_on on, completed_* writes Dm(x') of each match pixel. With RIGHT_TO_LEFT the match
-// side has the 180-degree path too (fps_sad5_d128u32_baf239_right_to_left on a second read of the banks), and its
-// forward chains run K + 2 row-times later, as the base side's.
+// From match_on on, completed_* writes Dm(x') of each match pixel. With the 180-degree path
+// (FORWARD_LAG not 0) the match side has it too (fps_sad5_d128u32_baf239_right_to_left on copies of the banks),
+// and its forward chains run FORWARD_LAG row-times later, as the base side's.
 module fps_sad5_d128u32_baf239_lr2_match #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -1650,7 +1669,9 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   parameter K_W = 1,
   parameter LANE_W = 3,
   parameter MIN_DISP = 0,
-  parameter RIGHT_TO_LEFT = 0
+  // the row-times the forward chains run behind the cost writes (the base side's CHAIN_BASE):
+  // not 0 with the 180-degree path only, whose mirrored chains go first
+  parameter FORWARD_LAG = 0
 ) (
   input  wire                 clk,
   input  wire                 restart,
@@ -1674,18 +1695,19 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   output wire [DISP_W-1:0]    completed_wdata
 );
   localparam COST_DEPTH = COST_ROWS * ROW_SLOTS * G;
+  localparam RIGHT_TO_LEFT = FORWARD_LAG != 0 ? 1 : 0;
   localparam integer LAST_GROUP_I = G - 1;
   localparam [G_W-1:0] LAST_GROUP = LAST_GROUP_I[G_W-1:0];
   generate
-    if (DMAX != G * UF || COST_ROWS != (RIGHT_TO_LEFT != 0 ? 2 * K + 3 : K + 1)) begin : invalid
-      fps_sad5_d128u32_baf239_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_1_cost_rows_2K_plus_3_with_RIGHT_TO_LEFT failed ();
+    if (DMAX != G * UF || COST_ROWS != K + FORWARD_LAG + 1) begin : invalid
+      fps_sad5_d128u32_baf239_invalid_parameters_lr2_needs_DMAX_G_times_UF_and_K_plus_FORWARD_LAG_plus_1_cost_rows failed ();
     end
   endgenerate
   // Addresses and disparities are products of narrow counters and constants, cut to width.
   // verilator lint_off WIDTH
   wire [UF*COST_W-1:0] match_costs;
   wire [COST_AW-1:0]   match_raddr;
-  /* verilator lint_off UNUSEDSIGNAL */  // read with RIGHT_TO_LEFT only
+  /* verilator lint_off UNUSEDSIGNAL */  // read with the 180-degree path only
   wire [UF*COST_W-1:0] mirror_costs;
   wire [COST_AW-1:0]   mirror_raddr;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -1721,19 +1743,15 @@ module fps_sad5_d128u32_baf239_lr2_match #(
   generate
     if (RIGHT_TO_LEFT != 0) begin : right_to_left
       wire [UF*PATH_W-1:0] path180_q;
-      /* verilator lint_off PINCONNECTEMPTY */  // the costs come from the banks' copies
       fps_sad5_d128u32_baf239_right_to_left #(
         .W(W), .ROW_SLOTS(ROW_SLOTS), .K(K), .SEGMENT(SEGMENT), .G(G), .UF(UF), .COST_W(COST_W),
         .COST_MAX(COST_MAX), .PATH_W(PATH_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE), .PATH_TREE_LAT(PATH_TREE_LAT),
         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W), .COST_ROWS(COST_ROWS),
-        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP), .COPY(0)
+        .COST_ROW_W(COST_ROW_W), .MATCH_SIDE(1), .MIN_DISP(MIN_DISP)
       ) mirror (
         .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
         .p1(p1), .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped),
-        .cost_valid(1'b0), .cost_x({X_W{1'b0}}), .cost_row_slot({COST_ROW_W{1'b0}}), .cost_group({G_W{1'b0}}),
-        .costs({UF*COST_W{1'b0}}), .mirror_q(mirror_costs), .mirror_raddr(mirror_raddr),
-        .path_raddr(match_raddr), .path_q(path180_q));
-      /* verilator lint_on PINCONNECTEMPTY */
+        .mirror_raddr(mirror_raddr), .mirror_q(mirror_costs), .path_raddr(match_raddr), .path_q(path180_q));
       assign match_words = {path180_q, match_costs};
     end else begin : no_right_to_left
       assign mirror_raddr = {COST_AW{1'b0}};
@@ -1760,7 +1778,7 @@ module fps_sad5_d128u32_baf239_lr2_match #(
                         .PATH_TREE_LAT(PATH_TREE_LAT), .OUT_ROWS(OUT_ROWS), .OUT_ROW_W(OUT_ROW_W),
                         .COST_AW(COST_AW), .X_W(X_W), .Y_W(Y_W), .G_W(G_W), .K_W(K_W),
                         .COST_ROWS(COST_ROWS), .COST_ROW_W(COST_ROW_W), .MIN_DISP(MIN_DISP),
-                        .CHAIN_BASE(RIGHT_TO_LEFT != 0 ? K + 2 : 0), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
+                        .CHAIN_BASE(FORWARD_LAG), .RIGHT_TO_LEFT(RIGHT_TO_LEFT)) match_aggregation (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height), .p1(p1),
     .p2(p2), .agg_on(match_on), .overlap(overlap), .wrapped(wrapped), .cost_raddr(match_raddr), .cost_schedule(),
     .cost_q(match_words), .sums(sums), .sums_active(active), .sums_x(x), .sums_group(group), .sums_chain(chain),
@@ -3644,12 +3662,12 @@ endmodule
 `default_nettype none
 // The 180-degree path (docs/path180-hardware.md, docs/semantics.md section 3): a mirrored
 // aggregator (fps_sad5_d128u32_baf239_aggregator with MIRROR) whose chain k works on row ta - 1 - k from the
-// row's end, reading the cost words from a copy of the cost reorder RAM written alike from the
-// cost tag (COPY), or from a second read port outside (mirror_raddr, mirror_q: LR2's match side,
-// whose lane banks hold them); its path costs go into the L_180 RAM at the cost RAM's addresses
-// (row slot, pixel, group), so the forward aggregator, which runs K + 2 row-times behind the
-// writes (CHAIN_BASE), reads a word's L_180 beside its costs at the same address and step. The
-// RAMs hold COST_ROWS rows, the cost RAM's.
+// row's end, reading the cost words from a second read of the RAM that holds them (mirror_raddr,
+// mirror_q: the cost reorder RAM's copy, or on LR2's match side its lane banks' copies); its path
+// costs go into the L_180 RAM at the cost RAM's addresses (row slot, pixel, group), so the forward
+// aggregator, which runs K + 2 row-times behind the writes (CHAIN_BASE), reads a word's L_180
+// beside its costs at the same address and step. The L_180 RAM holds COST_ROWS rows, the cost
+// RAM's.
 module fps_sad5_d128u32_baf239_right_to_left #(
   parameter W = 64,
   parameter ROW_SLOTS = 64,
@@ -3671,10 +3689,9 @@ module fps_sad5_d128u32_baf239_right_to_left #(
   parameter K_W = 1,
   parameter COST_ROWS = 2,
   parameter COST_ROW_W = 1,
-  // LR2's match side (fps_sad5_d128u32_baf239_aggregator's MATCH_SIDE and MIN_DISP), and where its words come from
+  // LR2's match side (fps_sad5_d128u32_baf239_aggregator's MATCH_SIDE and MIN_DISP)
   parameter MATCH_SIDE = 0,
-  parameter MIN_DISP = 0,
-  parameter COPY = 1
+  parameter MIN_DISP = 0
 ) (
   input  wire                   clk,
   input  wire                   restart,
@@ -3686,38 +3703,14 @@ module fps_sad5_d128u32_baf239_right_to_left #(
   input  wire                   agg_on,
   input  wire                   overlap,
   input  wire                   wrapped,
-  // the cost reorder RAM's writes: the word and its position (COPY)
-  /* verilator lint_off UNUSEDSIGNAL */  // without COPY
-  input  wire                   cost_valid,
-  input  wire [X_W-1:0]         cost_x,
-  input  wire [COST_ROW_W-1:0]  cost_row_slot,
-  input  wire [G_W-1:0]         cost_group,
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] costs,
-  // without COPY: the mirrored aggregator's reads, answered a step later
-  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] mirror_q,
-  /* verilator lint_on UNUSEDSIGNAL */
+  // the mirrored aggregator's reads of the cost words, answered a step later
   output wire [COST_AW-1:0]     mirror_raddr,
+  input  wire [UF*COST_W+PENALTIES*PATH_W-1:0] mirror_q,
   // the forward aggregator's read address, and L_180 of its word a step later
   input  wire [COST_AW-1:0]     path_raddr,
   output wire [UF*PATH_W-1:0]   path_q
 );
   localparam DEPTH = COST_ROWS * ROW_SLOTS * G;
-  localparam WORD_W = UF * COST_W + PENALTIES * PATH_W;
-  // The addresses are products of narrow counters and constants, cut to the RAMs' address width.
-  wire [WORD_W-1:0] mirror_words;
-  generate
-    if (COPY != 0) begin : copy
-      /* verilator lint_off WIDTH */
-      wire [COST_AW-1:0] cost_waddr = (cost_row_slot * ROW_SLOTS + cost_x) * G + cost_group;
-      /* verilator lint_on WIDTH */
-      fps_sad5_d128u32_baf239_ram_sdp #(.WIDTH(WORD_W), .DEPTH(DEPTH), .ADDR_W(COST_AW)) ram (
-        .clk(clk), .we(adv && cost_valid), .waddr(cost_waddr), .wdata(costs),
-        .re(adv), .raddr(mirror_raddr), .rdata(mirror_words));
-    end else begin : outside
-      assign mirror_words = mirror_q;
-    end
-  endgenerate
-
   wire [UF*PATH_W-1:0]  mirror_sums;
   wire                  mirror_active;
   wire [X_W-1:0]        mirror_x;
@@ -3735,7 +3728,7 @@ module fps_sad5_d128u32_baf239_right_to_left #(
   ) mirror (
     .clk(clk), .restart(restart), .adv(adv), .frame_width(frame_width), .frame_height(frame_height),
     .p1(p1), .p2(p2), .agg_on(agg_on), .overlap(overlap), .wrapped(wrapped),
-    .cost_raddr(mirror_raddr), .cost_schedule(), .cost_q(mirror_words),
+    .cost_raddr(mirror_raddr), .cost_schedule(), .cost_q(mirror_q),
     .sums(mirror_sums), .sums_active(mirror_active), .sums_x(mirror_x), .sums_group(mirror_group),
     .sums_chain(), .sums_slot(mirror_slot),
     .edge_in({2*EDGE_W{1'b0}}), .edge135_in({EDGE_W{1'b0}}), .edge_out(), .edge135_out());

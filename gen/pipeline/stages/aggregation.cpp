@@ -31,9 +31,9 @@ class AggregationStage : public Stage {
     if (g.strips == 1) {
       std::vector<StageMemory> m = aggregator_memories(g, "core.aggregation");
       if (!g.right_to_left) return m;
-      // The cost RAM's copy, the mirrored aggregator's 0-degree state and the L_180 RAM.
+      // The mirrored aggregator's 0-degree state and the L_180 RAM (the cost RAM's copy is the
+      // cost reorder stage's).
       const int64_t lanes_w = int64_t(g.cfg.uf) * g.widths.path_cost;
-      m.push_back({"core.right_to_left.copy.ram.mem", g.cost_depth(), g.cost_word_bits});
       m.push_back({"core.right_to_left.mirror.path0.state.mem", int64_t(g.chains) * g.groups, lanes_w, false});
       m.push_back({"core.right_to_left.paths.mem", g.cost_depth(), lanes_w});
       return m;
@@ -121,22 +121,17 @@ class AggregationStage : public Stage {
                    {"edge135_out", "agg_edge135"}});
   }
 
-  // The 180-degree path: the mirrored aggregator on a copy of the cost RAM, its L_180 read at the
-  // forward aggregator's address (fpstereo_right_to_left).
+  // The 180-degree path: the mirrored aggregator on the cost RAM's copy (mirror_raddr, mirror_q:
+  // the cost reorder stage's), its L_180 read at the forward aggregator's address
+  // (fpstereo_right_to_left).
   static void right_to_left(const RtlDesign& d, CoreBuilder& core) {
     core.text("\n  // The 180-degree path: a mirrored aggregator a row-time behind the cost writes; the forward\n"
               "  // one reads each word's L_180 beside it.\n");
     core.wire("path180_q", int64_t(d.cfg.uf) * d.widths.path_cost);
-    // The aggregator's parameters but those fpstereo_right_to_left sets for its mirror itself.
-    Connections parameters = aggregator_parameters(d);
-    const std::vector<std::string> own = {"SUM_W", "PATHS", "OUT_ROWS", "OUT_ROW_W"};
-    const auto its_own = [&](const auto& p) { return std::find(own.begin(), own.end(), p.first) != own.end(); };
-    parameters.erase(std::remove_if(parameters.begin(), parameters.end(), its_own), parameters.end());
+    Connections parameters = mirror_aggregator_parameters(d);
     if (d.cfg.p2_adapt != 0) parameters.push_back({"PENALTIES", num(d.raster_path_count)});
-    core.wire("mirror_raddr", d.cost_addr_bits);  // the copy's reads, inside
-    const std::string costs = d.penalty_bits != 0 ? "{cost_penalties, costs}" : "costs";
     core.instance("fpstereo_right_to_left", "right_to_left", parameters,
-                  {{"costs", costs}, {"mirror_q", costs}, {"path_raddr", "cost_raddr"}, {"path_q", "path180_q"}});
+                  {{"path_raddr", "cost_raddr"}, {"path_q", "path180_q"}});
   }
 
   // With strips (docs/ppc-hardware.md): fpstereo_strip_aggregation holds the strips' code RAMs,

@@ -1,4 +1,5 @@
-// Cost reorder RAM: the cost words in raster order in, in chain order out; or, where the geometry
+// Cost reorder RAM: the cost words in raster order in, in chain order out (with the 180-degree
+// path also in the mirrored chains' order, from a copy); or, where the geometry
 // reorders codes, the pixels' code entries (fpstereo_code_reorder), whose costs fpstereo_chain_cost
 // computes in chain order (the aggregation stage places it). In strips the RAMs are the strips'
 // own, of code entries or (SAD, ZSAD) cost words: here, their writes.
@@ -33,7 +34,11 @@ class CostReorderStage : public Stage {
                      int64_t(s + 1) * g.chains * words, strip_entry_bits(g) * g.strips});
       return m;
     }
-    if (!g.reorders_codes) return {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
+    if (!g.reorders_codes) {
+      std::vector<StageMemory> m = {{"core.cost_reorder.cost_ram.mem", g.cost_depth(), g.cost_word_bits}};
+      if (g.right_to_left) m.push_back({"core.cost_reorder.second.cost_ram.mem", g.cost_depth(), g.cost_word_bits});
+      return m;
+    }
     std::vector<StageMemory> m = {{"core.cost_reorder.code_ram.mem", g.cost_depth(), 2 * g.code_entry_bits}};
     if (g.penalty_bits != 0) m.push_back({"core.cost_reorder.extras.extra_ram.mem", g.cost_depth(), g.penalty_bits});
     return m;
@@ -67,6 +72,17 @@ class CostReorderStage : public Stage {
     core.wire("cost_group", d.group_bits);
     core.wire("cost_raddr", d.cost_addr_bits);
     core.wire("cost_q", d.cost_word_bits);
+    if (d.right_to_left) {
+      // The 180-degree path's mirrored chains read a copy (the aggregation stage's
+      // fpstereo_right_to_left drives mirror_raddr).
+      parameters.push_back({"SECOND_READ", "1"});
+      core.wire("mirror_raddr", d.cost_addr_bits);
+      core.wire("mirror_q", d.cost_word_bits);
+      ports = ports + Connections{{"second_raddr", "mirror_raddr"}, {"second_q", "mirror_q"}};
+    } else {
+      core.wire("cost_second_q", d.cost_word_bits);  // no second reader
+      ports = ports + Connections{{"second_raddr", fmt::format("{}'d0", d.cost_addr_bits)}, {"second_q", "cost_second_q"}};
+    }
     core.instance("fpstereo_cost_reorder", "cost_reorder", parameters, ports);
   }
 

@@ -70,7 +70,7 @@ class Lr2MatchStage : public Stage {
                                                          {"DISP_AW", num(d.disp_addr_bits)},
                                                          {"LANE_W", num(d.lane_bits)},
                                                          {"MIN_DISP", num(c.min_disp)},
-                                                         {"RIGHT_TO_LEFT", d.right_to_left ? "1" : "0"}});
+                                                         {"FORWARD_LAG", num(d.forward_lag)}});
   }
 
   // In strips: the code entries with base and match swapped, or the cost words of the match side's

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <set>
 
 namespace fpstereo::rtl {
 
@@ -192,6 +193,14 @@ Connections aggregator_parameters(const RtlDesign& g) {
           {"K_W", num(g.chain_bits)},
           {"COST_ROWS", num(g.cost_rows)},
           {"COST_ROW_W", num(g.cost_row_bits)}};
+}
+
+Connections mirror_aggregator_parameters(const RtlDesign& d) {
+  static const std::set<std::string> its_own = {"SUM_W", "PATHS", "OUT_ROWS", "OUT_ROW_W"};
+  Connections out;
+  for (const auto& p : aggregator_parameters(d))
+    if (!its_own.count(p.first)) out.push_back(p);
+  return out;
 }
 
 Connections fused_cost_parameters(const Geometry& g) {

@@ -96,6 +96,9 @@ constexpr const char* kStripConfidentWords = "strip_read_words";
 // itself.
 std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::string& scope, int pixels = 0);
 Connections aggregator_parameters(const RtlDesign& d);
+// ... and those of the 180-degree path's mirrored one (fpstereo_right_to_left), which sets its
+// sums' width, its one path and its output rows itself.
+Connections mirror_aggregator_parameters(const RtlDesign& d);
 
 // fpstereo_strip_aggregation's parameters that the base side and LR2's match side share: the
 // strips, the aggregators' (but the groups: G = 1 in strips), the fused cost's, the code entries'
