@@ -21,7 +21,7 @@ if [ "${1:-}" = --build-dir ]; then
 fi
 tb_opt=2
 if [ "${1:-}" = --tb-opt ]; then
-  [[ "${2:-}" =~ ^[0-3]$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2 or 3"
+  [[ "${2:-}" =~ ^([0-3]|auto)$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2, 3 or auto"
   tb_opt=$2
   shift 2
 fi

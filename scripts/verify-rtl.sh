@@ -6,8 +6,11 @@
 # B/rtl/<hash of the config flags>/{rtl,tb}. With --rtl-dir, DIR holds a design already
 # generated with fpstereo-rtl -o DIR (perhaps altered since, as tests/rtl_timing_check.cmake
 # does): it is linted and verified as it is, and the test bench goes to B/rtl/<hash of DIR>/tb.
-# --tb-opt N (0 to 3, default 2) compiles the bench and its Verilated model with -ON: the test
-# suite's small frames take 1 (half the build, most of a test's time), long runs 2.
+# --tb-opt N (0 to 3, default 2) compiles the bench and its Verilated model with -ON; auto (the
+# test suite's) takes 0 for a design of fewer than 3,000 cycles a frame and 1 for the others: a
+# test's few frames simulate in seconds, so the build is most of its time, -O0 builds in half the
+# time of -O1 and runs about five times slower, and the cycles a frame say which one weighs more
+# (the build and a cycle's simulation both grow with the design).
 # Exits with the test bench's status (0 pass, 1 mismatch, protocol, register or timing error,
 # 2 bad input, 3 timeout), the generator's status if it fails (2 for a bad configuration), or 1
 # when linting or building fails.
@@ -23,7 +26,7 @@ while [ $# -gt 0 ]; do
   case $1 in
     --build-dir) build=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--build-dir '${2:-}': no such directory"
                  shift 2 ;;
-    --tb-opt) [[ "${2:-}" =~ ^[0-3]$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2 or 3"
+    --tb-opt) [[ "${2:-}" =~ ^([0-3]|auto)$ ]] || fail "--tb-opt '${2:-}': expected 0, 1, 2, 3 or auto"
               tb_opt=$2; shift 2 ;;
     --rtl-dir) rtl_dir=$(cd "${2:-}" 2>/dev/null && pwd) || fail "--rtl-dir '${2:-}': no such directory"
                shift 2 ;;
@@ -58,6 +61,14 @@ else
   for f in "$work/rtl.new"/*; do cmp -s "$f" "$rtl/${f##*/}" || cp "$f" "$rtl/"; done
   for f in "$rtl"/*; do [ -e "$work/rtl.new/${f##*/}" ] || rm "$f"; done
   rm -rf "$work/rtl.new"
+fi
+
+# The top's banner states its cycles a frame (fpstereo-rtl's "expected cycles per frame").
+if [ "$tb_opt" = auto ]; then
+  top=$rtl/$(awk '!/^ *$/ && !/^ *\/\// { print; exit }' "$rtl/filelist.f")
+  cycles=$(grep -o -m 1 'expected cycles per frame without stalls: [0-9]*' "$top" | grep -o '[0-9]*$') ||
+    fail "$top states no cycles per frame for --tb-opt auto"
+  if [ "$cycles" -lt 3000 ]; then tb_opt=0; else tb_opt=1; fi
 fi
 
 # 2. Lint: any warning fails.

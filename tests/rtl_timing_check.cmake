@@ -61,7 +61,7 @@ if(NOT header_text MATCHES "(#define [A-Z0-9_]+_CYCLES_PER_FRAME_VALUE +)${cycle
 endif()
 alter(${header} "${CMAKE_MATCH_0}" "${CMAKE_MATCH_1}${wrong_cycles}u" 1)
 
-execute_process(COMMAND ${VERIFY_RTL} --build-dir ${BUILD_DIR} --tb-opt 1 --rtl-dir ${rtl} -- --idle 0 --backpressure 0
+execute_process(COMMAND ${VERIFY_RTL} --build-dir ${BUILD_DIR} --tb-opt auto --rtl-dir ${rtl} -- --idle 0 --backpressure 0
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "the bench on the altered design (stated ${wrong_cycles} cycles per frame and a first-output "
                "latency of ${wrong_latency}; generated with ${cycles} and ${latency}), exit ${rc}:\n${out}${err}")
@@ -85,7 +85,7 @@ endif()
 # (the bench built above is reused).
 string(REPEAT "1 2 3 4 5 6 7 8 " 32 pixels)
 file(WRITE ${WORK}/levels.pgm "P2\n32 8\n255\n${pixels}\n")
-execute_process(COMMAND ${VERIFY_RTL} --build-dir ${BUILD_DIR} --tb-opt 1 --rtl-dir ${rtl} --
+execute_process(COMMAND ${VERIFY_RTL} --build-dir ${BUILD_DIR} --tb-opt auto --rtl-dir ${rtl} --
                         --left ${WORK}/levels.pgm --right ${WORK}/levels.pgm --levels 4
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 string(FIND "${err}" "--levels" at)
