@@ -341,8 +341,9 @@ module fpstereo_aggregator #(
   wire [G_W-1:0]   g1 = `FPS_TAG_GROUP(tag1);
   wire [X_W-1:0]   x1 = `FPS_TAG_X(tag1);
   wire [Y_W:0]     row1 = `FPS_TAG_ROW(tag1);
-  reg              first_group2, last_group2;
+  reg              first_group2;
   /* verilator lint_off UNUSEDSIGNAL */  // those of the enabled paths
+  reg              last_group2;      // the 0 and 45-degree paths' and the mirror's
   reg              first2;           // the strip's first pixel, whose 0 and 45-degree predecessors come from edge_in
   reg              left_in2;         // x2 has a 0-degree predecessor: x2 != 0, with MIRROR x2 != frame_width - 1
   reg              above_in2;        // row2 != 0
@@ -567,7 +568,9 @@ module fpstereo_aggregator #(
   endgenerate
 
   // ---- 90 and 135 degrees: the predecessor is (x, row-1) or (x+1, row-1), read from the row
-  // RAM one group ahead, so the d+1 neighbour of the last lane is there before it is overwritten.
+  // RAM. The d+1 neighbour of a group's last lane, lane 0 of the next group, comes from a narrow
+  // RAM of its own that holds it at the group's address (written with the next group, G > 1): it
+  // is read with the group's word and reaches the lanes from a register (logic depth, docs/timing.md).
   generate
     genvar p;
     for (p = 0; p < 2; p = p + 1) begin : vertical
@@ -613,9 +616,23 @@ module fpstereo_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
+        // Lane 0 of the next group, all ones at the pixel's last group (always, with G = 1).
+        wire [PATH_W-1:0] above_next2;
+        if (G > 1) begin : next_lane
+          wire [PATH_W-1:0] next_read_q;
+          reg  [PATH_W-1:0] next2;
+          fpstereo_ram_sdp #(.WIDTH(PATH_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row_next (
+            .clk(clk), .we(adv && active4 && g4 != 0), .waddr(row_waddr4 - 1'b1), .wdata(path_out[PATH_W-1:0]),
+            .re(adv), .raddr(row_raddr), .rdata(next_read_q));
+          always @(posedge clk)
+            if (adv) next2 <= g1 == G - 1 ? ONES : next_read_q;
+          assign above_next2 = next2;
+        end else begin : no_next_lane
+          assign above_next2 = ONES;
+        end
         fpstereo_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (
           .clk(clk), .en(adv), .p1(p1), .p2(p == 0 ? p2_90 : p2_135), .cost(cost2), .has_pred(above_in2 && column_in2[DX]), .prev(cur),
-          .prev_below(first_group2 ? ONES : below_q), .prev_above(last_group2 ? ONES : above_q[PATH_W-1:0]),
+          .prev_below(first_group2 ? ONES : below_q), .prev_above(above_next2),
           .prev_min(above_min2), .path(path_out));
         fpstereo_path_minimum #(.UF(UF), .PATH_W(PATH_W), .G_W(G_W), .LEVELS_PER_STAGE(LEVELS_PER_STAGE),
                               .TREE_LAT(PATH_TREE_LAT))

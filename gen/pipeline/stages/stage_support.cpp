@@ -66,6 +66,8 @@ std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::strin
     const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
     out.push_back({p + ".row.mem", row_depth, lanes_w});
     out.push_back({p + ".row_min.mem", width + 1, g.widths.path_cost});
+    // lane 0 of each next group, the last lane's neighbour
+    if (g.groups > 1) out.push_back({p + ".next_lane.row_next.mem", row_depth, g.widths.path_cost});
   }
   return out;
 }
