@@ -2346,23 +2346,28 @@ module fps_census7_d128u32_79bc18_aggregator #(
   endgenerate
 
   // ---- 90 and 135 degrees: the predecessor is (x, row-1) or (x+1, row-1), read from the row
-  // RAM. The d+1 neighbour of a group's last lane, lane 0 of the next group, comes from a narrow
-  // RAM of its own that holds it at the group's address (written with the next group, G > 1): it
-  // is read with the group's word and reaches the lanes from a register (logic depth, docs/timing.md).
+  // RAM. With G > 1 each row word carries, above its lanes, lane 0 of the pixel's next group
+  // (all ones in the last group's word): the d+1 neighbour of the group's last lane is read with
+  // the group's own word and reaches the lanes from a register (logic depth, docs/timing.md).
+  // The word is written one step late, when that lane is known.
   generate
     genvar p;
     for (p = 0; p < 2; p = p + 1) begin : vertical
       localparam ENABLED = p == 0 ? (PATHS & 4) != 0 : (PATHS & 8) != 0;
       localparam DX = p;  // predecessor column offset
       if (ENABLED) begin : path
-        wire [LANES_W-1:0] above_read_q, above_q, path_out;
+        localparam ROW_W = LANES_W + (G > 1 ? PATH_W : 0);
+        wire [ROW_W-1:0]   above_read_q, row_wdata;
+        wire [LANES_W-1:0] above_q, path_out;
         wire [PATH_W-1:0]  above_min_read_q, above_min_q, min_out;
+        wire               row_we;
+        wire [ROW_AW-1:0]  row_waddr;
         reg  [LANES_W-1:0] cur;
         reg  [PATH_W-1:0]  below_q, above_min2;
         wire [ROW_AW-1:0]  row_raddr = (x_read + DX - X_FIRST) * G + g_read;
         wire [MIN_AW-1:0]  min_waddr = `FPS_TAG_X(tag_m) - X_FIRST, min_raddr = x_read + DX - X_FIRST;
-        fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(LANES_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
-          .clk(clk), .we(adv && active4), .waddr(row_waddr4), .wdata(path_out),
+        fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(ROW_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row (
+          .clk(clk), .we(row_we), .waddr(row_waddr), .wdata(row_wdata),
           .re(adv), .raddr(row_raddr), .rdata(above_read_q));
         fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(PATH_W), .DEPTH(STRIP_W + 1), .ADDR_W(MIN_AW)) row_min (
           .clk(clk), .we(adv && pixel_done_m), .waddr(min_waddr), .wdata(min_out),
@@ -2373,10 +2378,10 @@ module fps_census7_d128u32_79bc18_aggregator #(
           reg after_q;
           always @(posedge clk)
             if (adv) after_q <= x_read + DX == X_AFTER;
-          assign above_q = after_q ? edge135_in[0 +: LANES_W] : above_read_q;
+          assign above_q = after_q ? edge135_in[0 +: LANES_W] : above_read_q[LANES_W-1:0];
           assign above_min_q = after_q ? edge135_in[LANES_W +: PATH_W] : above_min_read_q;
         end else begin : within_strip
-          assign above_q = above_read_q;
+          assign above_q = above_read_q[LANES_W-1:0];
           assign above_min_q = above_min_read_q;
         end
         if (DX == 1 && FROM_LEFT) begin : strip_edge
@@ -2394,18 +2399,33 @@ module fps_census7_d128u32_79bc18_aggregator #(
             below_q <= cur[LANES_W-1 -: PATH_W];
             above_min2 <= above_min_q;
           end
-        // Lane 0 of the next group, all ones at the pixel's last group (always, with G = 1).
+        // The d+1 neighbour of the last lane: the word's next-group lane, all ones with G = 1.
         wire [PATH_W-1:0] above_next2;
         if (G > 1) begin : next_lane
-          wire [PATH_W-1:0] next_read_q;
-          reg  [PATH_W-1:0] next2;
-          fps_census7_d128u32_79bc18_ram_sdp #(.WIDTH(PATH_W), .DEPTH(ROW_DEPTH), .ADDR_W(ROW_AW)) row_next (
-            .clk(clk), .we(adv && active4 && g4 != 0), .waddr(row_waddr4 - 1'b1), .wdata(path_out[PATH_W-1:0]),
-            .re(adv), .raddr(row_raddr), .rdata(next_read_q));
+          // The previous step's word, written now with this step's lane 0 (a pixel's groups take
+          // consecutive steps) or, after the pixel's last group, with all ones.
+          reg               late_we, late_last;
+          reg [ROW_AW-1:0]  late_waddr;
+          reg [LANES_W-1:0] late_path;
+          reg [PATH_W-1:0]  next2;
           always @(posedge clk)
-            if (adv) next2 <= g1 == G - 1 ? ONES : next_read_q;
+            if (restart) late_we <= 1'b0;
+            else if (adv) late_we <= active4;
+          always @(posedge clk)
+            if (adv) begin
+              late_last <= g4 == G - 1;
+              late_waddr <= row_waddr4;
+              late_path <= path_out;
+              next2 <= above_read_q[ROW_W-1 -: PATH_W];
+            end
+          assign row_we = adv && late_we;
+          assign row_waddr = late_waddr;
+          assign row_wdata = {late_last ? ONES : path_out[PATH_W-1:0], late_path};
           assign above_next2 = next2;
         end else begin : no_next_lane
+          assign row_we = adv && active4;
+          assign row_waddr = row_waddr4;
+          assign row_wdata = path_out;
           assign above_next2 = ONES;
         end
         fps_census7_d128u32_79bc18_path_lanes #(.UF(UF), .COST_W(COST_W), .PATH_W(PATH_W)) lanes (

@@ -64,10 +64,9 @@ std::vector<StageMemory> aggregator_memories(const Geometry& g, const std::strin
   for (int v = 0; v < 2; ++v) {
     if (!(c.paths & (v == 0 ? kPath90 : kPath135))) continue;
     const std::string p = fmt::format("{}.vertical[{}].path", scope, v);
-    out.push_back({p + ".row.mem", row_depth, lanes_w});
+    // with G > 1 a word carries lane 0 of the pixel's next group too (the last lane's neighbour)
+    out.push_back({p + ".row.mem", row_depth, lanes_w + (g.groups > 1 ? g.widths.path_cost : 0)});
     out.push_back({p + ".row_min.mem", width + 1, g.widths.path_cost});
-    // lane 0 of each next group, the last lane's neighbour
-    if (g.groups > 1) out.push_back({p + ".next_lane.row_next.mem", row_depth, g.widths.path_cost});
   }
   return out;
 }
