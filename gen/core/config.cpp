@@ -323,7 +323,7 @@ StereoConfig preset(const std::string& name) {
       // the linear gap fill (docs/accuracy.md, "The linear gap fill").
       // A5 adds the 180-degree path, chosen on the same pairs. A7 has paths 0, 90 and 180 instead
       // of five, better on the held-out pairs (chosen after seeing them, docs/accuracy.md, "A7").
-      // The models and the HLS path run both; the Verilog has no 180-degree path yet.
+      // Every layer runs both; the Verilog's 180-degree path takes one pixel a clock.
       if (name == "A5") c.paths = kEveryPath;
       if (name == "A7") c.paths = kPath0 | kPath90 | kPath180;
       c.speckle_size = 100;
