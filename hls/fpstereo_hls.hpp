@@ -1079,11 +1079,14 @@ speckle_rows:
 
 // ---------------------------------------------------------------------------------------------
 // Section 6: the lower median of the valid values in the window (positions outside the image
-// arrive as invalid); an invalid centre stays invalid. Each valid value is the median iff the
-// number of valid values below it is at most the rank sought and those at or below exceed it.
+// arrive as invalid); an invalid centre stays invalid. Radix selection, as the Verilog's
+// fpstereo_median_select: the median's bits from the most significant one, each decided by
+// counting the values that agree with the bits found so far and have a 0 next (in sorted order
+// they come first). One count over the window a bit instead of one a pair of values: M^2 (W - 1)
+// narrow compares for W-bit words, where comparing every pair takes 2 M^4 full-width ones.
 template <class C>
 Word<C> median_of(const Window<Word<C>, C::kMedian>& w) {
-  constexpr int M = C::kMedian, n = M * M;
+  constexpr int M = C::kMedian, n = M * M, kValueBits = C::kWordBits - 1;  // below the invalid flag
   const Word<C> centre = w.v[M / 2][M / 2];
   if (int(centre) == C::kInvalidWord) return centre;
   int values[n];
@@ -1094,17 +1097,18 @@ Word<C> median_of(const Window<Word<C>, C::kMedian>& w) {
     valid[k] = values[k] != C::kInvalidWord;
     count += valid[k];
   }
-  const int target = (count - 1) / 2;
-  int median = int(centre);
-  for (int k = 0; k < n; ++k) {
-    int below = 0, at_or_below = 0;
-    for (int j = 0; j < n; ++j) {
-      below += valid[j] && values[j] < values[k];
-      at_or_below += valid[j] && values[j] <= values[k];
+  int rank = (count - 1) / 2;  // the rank sought among the values that agree with `median` so far
+  int median = 0;
+  for (int b = kValueBits - 1; b >= 0; --b) {
+    int zeros = 0;
+    for (int k = 0; k < n; ++k)
+      zeros += valid[k] && (values[k] >> (b + 1)) == (median >> (b + 1)) && ((values[k] >> b) & 1) == 0;
+    if (rank >= zeros) {
+      rank -= zeros;
+      median |= 1 << b;
     }
-    if (valid[k] && below <= target && target < at_or_below) median = values[k];
   }
-  return median;
+  return Word<C>(median);
 }
 
 template <class C>
